@@ -1,0 +1,60 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/hermite.h"
+#include "apcs/animation/sampled_curve.h"
+
+#include <span>
+#include <vector>
+
+namespace apcs {
+
+// How the shown in-betweens are placed on the curve (SPEC §4.3): `nearest` takes the sample
+// nearest to each target chord length (the thesis' method), `exact` inverts the arc length.
+enum class Spacing { nearest, exact };
+
+struct PathSettings {
+    EndSlopes slopes;
+    int samples_per_segment = 32;
+    int inbetween_count = 12;
+    Spacing spacing = Spacing::nearest;
+};
+
+// A run of control points sharing one acceleration (SPEC §2.1): it starts at first_point and
+// runs on to the next control point whose acceleration differs (last_point).
+struct AccelerationSpan {
+    std::size_t first_point = 0;
+    std::size_t last_point = 0;
+    double acceleration = 0.0;
+};
+
+std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> points);
+
+// Shares `total` among parts in proportion to their weights by the largest remainder method
+// (ties go to the earlier part). All-zero weights share equally.
+std::vector<int> share_by_largest_remainder(std::span<const double> weights, int total);
+
+struct Inbetween {
+    Vec3 position;
+    // Fraction of the whole path length reached here, in [0, 1] (chord length for `nearest`,
+    // arc length for `exact`).
+    double arc_fraction = 0.0;
+    // The curve sample shown (nearest spacing); for exact spacing the sample nearest to it.
+    std::size_t sample_index = 0;
+};
+
+// One graphic point's path, evaluated: the KB segments, the sampled curve and the shown
+// in-betweens (thesis DRAW, Cal_tangent_vector, Cal_INBETWEENS, Decide_Show_Inbetween).
+struct EvaluatedPath {
+    std::vector<HermiteSegment> segments;
+    SampledCurve curve;
+    std::vector<Inbetween> inbetweens;
+    // More in-betweens asked for than the curve has samples: some frames repeat ("freeze").
+    bool frames_freeze = false;
+};
+
+// Fewer than two control points give an empty path. Settings are clamped: at least one sample per
+// segment, no negative in-between count.
+EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings);
+
+} // namespace apcs

@@ -1,0 +1,64 @@
+#pragma once
+
+#include "apcs/geometry/pixel_point.h"
+#include "apcs/geometry/vec3.h"
+
+#include <span>
+
+namespace apcs {
+
+// The viewer's direction in degrees (thesis Ch. 2.3): θ about the z axis, Φ from the z axis.
+struct ViewAngles {
+    double theta_degrees = 30.0;
+    double phi_degrees = 40.0;
+};
+
+// Eye coordinates: x_e right, y_e up, z_e depth (positive in front of the eye).
+struct EyePoint {
+    double x = 0.0;
+    double y = 0.0;
+    double z = 0.0;
+};
+
+// A projected point in device pixels (Hercules: origin top-left, y down), not yet rounded.
+struct DevicePoint {
+    double x = 0.0;
+    double y = 0.0;
+    PixelPoint rounded() const;
+};
+
+// World → eye → device (thesis VIEW_Transform, SPEC §4.5). The viewpoint sits at distance D from
+// the scene centre; the device mapping is x_d = L + SCF·(d/S)·(x_e/z_e)·Vx,
+// y_d = M − (d/S)·(y_e/z_e)·Vy with SCF = 1.5 and Vx = Vy = half the drawing area's height.
+//
+// Fitting rule (`fit`): D = 3·R, where R is half the diagonal of the scene's bounding box (1 if
+// the scene is a single point), so every point is at least 2·R in front of the eye; d/S is then
+// the largest value that keeps every projected point inside 90 % of the drawing area's half width
+// and half height.
+class ViewTransform {
+public:
+    static ViewTransform fit(ViewAngles angles, std::span<const Vec3> scene, PixelRect drawing_area);
+
+    EyePoint to_eye(const Vec3& world) const;
+    DevicePoint to_device(const Vec3& world) const;
+
+    double viewer_distance() const { return m_viewer_distance; }
+    double focus() const { return m_focus; }
+    Vec3 centre() const { return m_centre; }
+
+private:
+    ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);
+
+    double m_sin_theta = 0.0;
+    double m_cos_theta = 1.0;
+    double m_sin_phi = 1.0;
+    double m_cos_phi = 0.0;
+    Vec3 m_centre;
+    double m_viewer_distance = 1.0; // D
+    double m_focus = 1.0;           // d/S
+    double m_centre_x = 0.0;        // L
+    double m_centre_y = 0.0;        // M
+    double m_half_height = 1.0;     // Vx = Vy
+};
+
+} // namespace apcs

@@ -1,0 +1,12 @@
+#pragma once
+
+#include <iosfwd>
+
+namespace apcs {
+
+// Parses the command line (SPEC §1) and runs the chosen command. Returns the exit status:
+// 0 success, 1 bad input, 2 bad usage (an unknown option or a bad value, with a one-line reason
+// and the usage on `err`), 3 a terminal problem.
+int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+} // namespace apcs

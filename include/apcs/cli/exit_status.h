@@ -1,0 +1,15 @@
+#pragma once
+
+namespace apcs {
+
+// Exit status of the apcs executable (SPEC §1).
+enum class ExitStatus : int {
+    success = 0,
+    bad_input = 1,
+    bad_usage = 2,
+    terminal_problem = 3,
+};
+
+constexpr int to_int(ExitStatus status) { return static_cast<int>(status); }
+
+} // namespace apcs

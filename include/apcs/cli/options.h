@@ -1,0 +1,32 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/animation/view_transform.h"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+enum class GlyphSet { automatic, ascii, braille, blocks };
+
+// The options every command shares (SPEC §1), validated by the command line parser.
+struct CommonOptions {
+    StaffValues staff;
+    PathSettings path;
+    ViewAngles view;
+    int delay_ms = 200;
+    std::filesystem::path workdir;
+    GlyphSet glyphs = GlyphSet::automatic;
+    double step = 0.05;
+    std::optional<std::filesystem::path> keys;
+    std::optional<std::filesystem::path> record;
+    std::optional<std::filesystem::path> png;
+    bool print = false;
+    std::optional<std::filesystem::path> out;
+};
+
+} // namespace apcs

@@ -1,0 +1,24 @@
+#pragma once
+
+#include "apcs/cli/exit_status.h"
+#include "apcs/cli/options.h"
+#include "apcs/formats/dat_file.h"
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+
+namespace apcs {
+
+// A path file's points as KB control points, all parts in file order: 7-column points keep their
+// own t c b a, shorter ones take `defaults`.
+ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults);
+
+// `# curve` (every sample) then `# inbetweens` (SPEC §4.3, §7.4).
+std::string format_path_print(const EvaluatedPath& path);
+
+// `apcs path FILE`: prints (--print, the default) or draws (--png) one point's path.
+ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,
+                            std::ostream& err);
+
+} // namespace apcs

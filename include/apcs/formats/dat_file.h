@@ -1,0 +1,53 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/formats/diagnostic.h"
+#include "apcs/geometry/vec3.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace apcs {
+
+enum class Closure { open, closed };
+
+// One point line of a .dat file: 2 or 3 numbers, or 7 with the staff values of a path file.
+struct DatPoint {
+    Vec3 position;
+    std::optional<StaffValues> staff;
+    int line = 0; // source line, for messages about this point
+};
+
+struct DatPart {
+    std::string name;
+    // Closed when marked CLOSED or when the first point equals the last.
+    Closure closure = Closure::open;
+    std::vector<DatPoint> points;
+};
+
+// The text format of SPEC §2.1, shared by key, path (ani) and in-between files.
+struct DatFile {
+    std::vector<DatPart> parts;
+
+    std::size_t point_count() const;
+};
+
+// Limits of SPEC §2.1, checked while reading, before memory for the points is reserved.
+inline constexpr std::size_t max_dat_points = 1'000'000;
+inline constexpr std::size_t max_dat_line_bytes = 4096;
+inline constexpr double max_dat_magnitude = 1e9;
+
+// Parses `text` (the whole file) read from `file_name`. Accepts CRLF, a trailing Ctrl-Z, a UTF-8
+// byte-order mark, tabs and exponents; rejects everything else SPEC §2.1 lists with
+// "FILE:LINE: what was expected". `minimum_points` is checked over the whole file.
+Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points = 2);
+
+// Formats a .dat file: one PART line per part when there is more than one part or a part is named
+// or closed, each point with the shortest decimal form that reads back exactly. Points with staff
+// values get all seven columns.
+std::string format_dat(const DatFile& file);
+
+} // namespace apcs

@@ -1,0 +1,39 @@
+#pragma once
+
+#include "apcs/formats/dat_file.h"
+#include "apcs/formats/diagnostic.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// The file a user means by `name`: the name itself when it exists, else the one entry of its
+// folder whose name matches case-insensitively (as DOS did: KEY1.DAT finds key1.dat), else `name`.
+std::filesystem::path resolve_input_path(const std::filesystem::path& name);
+
+// Whole text of a file, resolved as above. Errors name the file as the user typed it.
+Expected<std::string> read_text_file(const std::filesystem::path& name);
+
+Expected<DatFile> read_dat_file(const std::filesystem::path& name, std::size_t minimum_points = 2);
+
+enum class WriteOutcome { created, replaced, unchanged };
+
+struct WriteResult {
+    WriteOutcome outcome = WriteOutcome::created;
+    // Where the previous content was kept when the file was replaced (NAME.bak), else empty.
+    std::filesystem::path backup;
+};
+
+// Writes `content` to `target` atomically: a temporary file in the same folder, flushed, then
+// renamed over the target, so a reader never sees half a file. An existing target whose content
+// differs is first kept as the same name with the extension .bak (way1.dat → way1.bak, replacing an
+// older .bak); identical content leaves the file untouched. A target that is a directory, a
+// missing folder, a full disk or a failed rename is reported and leaves every file as it was.
+Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, std::string_view content);
+
+// NAME.ext → NAME.bak in the same folder.
+std::filesystem::path backup_path_for(const std::filesystem::path& target);
+
+} // namespace apcs

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// A decimal or exponent number, optionally signed (a leading '+' is allowed); the whole field
+// must be the number. NaN and infinities parse (the caller rejects them with its own message).
+std::optional<double> parse_number(std::string_view field);
+
+// A whole number of decimal digits, optionally with a leading '+'; values beyond size_t's range
+// come back as SIZE_MAX so that the caller's limit check reports them.
+std::optional<std::size_t> parse_count_value(std::string_view field);
+
+// The shortest decimal text that reads back as exactly `value`; −0 is written as 0.
+std::string shortest_number(double value);
+
+// `value` with exactly six decimals (SPEC §7.4); −0.000000 is written as 0.000000.
+std::string fixed_six(double value);
+
+// A field for an error message: in single quotes, at most 24 characters, control and non-ASCII
+// bytes as \xNN.
+std::string quote_field(std::string_view field);
+
+} // namespace apcs

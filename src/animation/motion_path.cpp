@@ -1,0 +1,131 @@
+#include "apcs/animation/motion_path.h"
+
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/animation/speed_law.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace apcs {
+
+std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> points)
+{
+    std::vector<AccelerationSpan> spans;
+    if (points.size() < 2)
+        return spans;
+    const std::size_t last = points.size() - 1;
+    AccelerationSpan current{0, last, points[0].staff.acceleration};
+    for (std::size_t k = 1; k < last; ++k) {
+        if (points[k].staff.acceleration != current.acceleration) {
+            current.last_point = k;
+            spans.push_back(current);
+            current = {k, last, points[k].staff.acceleration};
+        }
+    }
+    spans.push_back(current);
+    return spans;
+}
+
+std::vector<int> share_by_largest_remainder(std::span<const double> weights, int total)
+{
+    std::vector<int> shares(weights.size(), 0);
+    if (weights.empty() || total <= 0)
+        return shares;
+    double weight_sum = std::accumulate(weights.begin(), weights.end(), 0.0);
+    std::vector<double> quotas(weights.size());
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        quotas[i] = weight_sum > 0.0 ? total * std::max(weights[i], 0.0) / weight_sum
+                                     : static_cast<double>(total) / static_cast<double>(weights.size());
+    int given = 0;
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        shares[i] = static_cast<int>(std::floor(quotas[i]));
+        given += shares[i];
+    }
+    std::vector<std::size_t> order(weights.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t left, std::size_t right) {
+        return quotas[left] - shares[left] > quotas[right] - shares[right];
+    });
+    for (std::size_t i = 0; given < total; i = (i + 1) % order.size(), ++given)
+        ++shares[order[i]];
+    return shares;
+}
+
+namespace {
+
+std::size_t nearest_sample(const std::vector<double>& chord_length, double target)
+{
+    const auto above = std::lower_bound(chord_length.begin(), chord_length.end(), target);
+    if (above == chord_length.begin())
+        return 0;
+    if (above == chord_length.end())
+        return chord_length.size() - 1;
+    const auto below = above - 1;
+    const bool below_is_nearer = target - *below <= *above - target;
+    return static_cast<std::size_t>((below_is_nearer ? below : above) - chord_length.begin());
+}
+
+// Target distances of one span's in-betweens, measured from the span's start (SPEC §4.3).
+std::vector<double> span_targets(double span_start, double span_length, int count, double acceleration)
+{
+    std::vector<double> targets;
+    targets.reserve(static_cast<std::size_t>(count));
+    for (int j = 1; j <= count; ++j) {
+        const double tau = static_cast<double>(j) / (count + 1);
+        targets.push_back(span_start + span_length * acceleration_distance_fraction(tau, acceleration));
+    }
+    return targets;
+}
+
+} // namespace
+
+EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings)
+{
+    EvaluatedPath path;
+    path.segments = kb_segments(points, settings.slopes);
+    path.curve = sample_curve(path.segments, settings.samples_per_segment);
+    if (path.segments.empty())
+        return path;
+    const int inbetween_count = std::max(settings.inbetween_count, 0);
+    const std::size_t samples = static_cast<std::size_t>(path.curve.samples_per_segment);
+    path.frames_freeze = static_cast<std::size_t>(inbetween_count) > path.curve.points.size() - 1;
+
+    const std::vector<AccelerationSpan> spans = acceleration_spans(points);
+    const bool exact = settings.spacing == Spacing::exact;
+    const ArcLengthTable arc_table = exact ? ArcLengthTable(path.segments) : ArcLengthTable({});
+    // Distance from the curve's start to control point k, in the measure the spacing uses.
+    const auto boundary = [&](std::size_t control_point) {
+        return exact ? arc_table.length_to_segment_start(control_point)
+                     : path.curve.chord_length[control_point * samples];
+    };
+    const double total = exact ? arc_table.total_length() : path.curve.total_length();
+
+    std::vector<double> span_lengths;
+    for (const AccelerationSpan& span : spans)
+        span_lengths.push_back(boundary(span.last_point) - boundary(span.first_point));
+    const std::vector<int> shares = share_by_largest_remainder(span_lengths, inbetween_count);
+
+    path.inbetweens.reserve(static_cast<std::size_t>(inbetween_count));
+    for (std::size_t s = 0; s < spans.size(); ++s) {
+        const double start = boundary(spans[s].first_point);
+        for (const double target : span_targets(start, span_lengths[s], shares[s], spans[s].acceleration)) {
+            Inbetween shown;
+            if (exact) {
+                shown.position = arc_table.point_at(arc_table.parameter_at(target));
+                shown.arc_fraction = total > 0.0 ? target / total : 0.0;
+                const double chord_target = total > 0.0 ? shown.arc_fraction * path.curve.total_length() : 0.0;
+                shown.sample_index = nearest_sample(path.curve.chord_length, chord_target);
+            } else {
+                shown.sample_index = nearest_sample(path.curve.chord_length, target);
+                shown.position = path.curve.points[shown.sample_index];
+                shown.arc_fraction = total > 0.0 ? path.curve.chord_length[shown.sample_index] / total : 0.0;
+            }
+            path.inbetweens.push_back(shown);
+        }
+    }
+    return path;
+}
+
+} // namespace apcs

@@ -1,0 +1,80 @@
+#include "apcs/animation/view_transform.h"
+
+#include "apcs/geometry/bounding_box.h"
+#include "apcs/geometry/hercules.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace apcs {
+
+PixelPoint DevicePoint::rounded() const
+{
+    // Clamped far outside the raster so that the int conversion is always defined.
+    const auto to_int = [](double value) { return static_cast<int>(std::lround(std::clamp(value, -1e6, 1e6))); };
+    return {to_int(x), to_int(y)};
+}
+
+ViewTransform::ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area)
+    : m_centre(centre)
+    , m_viewer_distance(viewer_distance)
+    , m_centre_x((drawing_area.left + drawing_area.right) / 2.0)
+    , m_centre_y((drawing_area.top + drawing_area.bottom) / 2.0)
+    , m_half_height(std::max(drawing_area.height() / 2.0, 1.0))
+{
+    const double theta = angles.theta_degrees * std::numbers::pi / 180.0;
+    const double phi = angles.phi_degrees * std::numbers::pi / 180.0;
+    m_sin_theta = std::sin(theta);
+    m_cos_theta = std::cos(theta);
+    m_sin_phi = std::sin(phi);
+    m_cos_phi = std::cos(phi);
+}
+
+ViewTransform ViewTransform::fit(ViewAngles angles, std::span<const Vec3> scene, PixelRect drawing_area)
+{
+    BoundingBox box;
+    box.add(scene);
+    const double radius = box.empty() || box.half_diagonal() <= 0.0 ? 1.0 : box.half_diagonal();
+    ViewTransform view(angles, box.centre(), 3.0 * radius, drawing_area);
+
+    double widest = 0.0;
+    double tallest = 0.0;
+    for (const Vec3& point : scene) {
+        const EyePoint eye = view.to_eye(point);
+        widest = std::max(widest, std::abs(eye.x / eye.z));
+        tallest = std::max(tallest, std::abs(eye.y / eye.z));
+    }
+    const double half_width = std::max(drawing_area.width() / 2.0, 1.0);
+    double focus = 0.0;
+    if (widest > 0.0)
+        focus = half_width / (hercules::aspect_correction * view.m_half_height * widest);
+    if (tallest > 0.0)
+        focus = focus > 0.0 ? std::min(focus, 1.0 / tallest) : 1.0 / tallest;
+    view.m_focus = focus > 0.0 ? 0.9 * focus : 1.0;
+    return view;
+}
+
+EyePoint ViewTransform::to_eye(const Vec3& world) const
+{
+    const Vec3 p = world - m_centre;
+    return {
+        -p.x * m_sin_theta + p.y * m_cos_theta,
+        -p.x * m_cos_theta * m_cos_phi - p.y * m_sin_theta * m_cos_phi + p.z * m_sin_phi,
+        -p.x * m_cos_theta * m_sin_phi - p.y * m_sin_theta * m_sin_phi - p.z * m_cos_phi + m_viewer_distance,
+    };
+}
+
+DevicePoint ViewTransform::to_device(const Vec3& world) const
+{
+    const EyePoint eye = to_eye(world);
+    // Points at or behind the eye cannot occur for a fitted scene (z_e ≥ 2R); a tiny depth keeps
+    // the mapping total for any other point.
+    const double depth = std::max(eye.z, 1e-9);
+    return {
+        m_centre_x + hercules::aspect_correction * m_focus * (eye.x / depth) * m_half_height,
+        m_centre_y - m_focus * (eye.y / depth) * m_half_height,
+    };
+}
+
+} // namespace apcs

@@ -1,0 +1,158 @@
+#include "apcs/cli/command_line.h"
+
+#include "apcs/cli/exit_status.h"
+#include "apcs/cli/options.h"
+#include "apcs/cli/path_command.h"
+#include "apcs/version.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <ostream>
+
+namespace apcs {
+
+namespace {
+
+const CLI::Validator finite_number(
+    [](std::string& text) -> std::string {
+        try {
+            std::size_t used = 0;
+            const double value = std::stod(text, &used);
+            if (used == text.size() && std::isfinite(value))
+                return {};
+        } catch (const std::exception&) {
+        }
+        return "expected a finite number, found '" + text + "'";
+    },
+    "NUMBER");
+
+void add_staff_options(CLI::App& command, CommonOptions& options)
+{
+    const CLI::Range unit(-1.0, 1.0);
+    command.add_option("--tension", options.staff.tension, "tension t in [-1, 1] (default 0)")->check(finite_number & unit);
+    command.add_option("--continuity", options.staff.continuity, "continuity c in [-1, 1] (default 0)")
+        ->check(finite_number & unit);
+    command.add_option("--bias", options.staff.bias, "bias b in [-1, 1] (default 0)")->check(finite_number & unit);
+    command.add_option("--accel", options.staff.acceleration, "acceleration a in [-1, 1] (default 0)")
+        ->check(finite_number & unit);
+}
+
+void add_path_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    command.add_option("--slopes", slopes, "end slopes S0 S1, each in [0, 1] (default 1 1)")
+        ->expected(2)
+        ->check(finite_number & CLI::Range(0.0, 1.0));
+    command.add_option("--samples", options.path.samples_per_segment, "curve samples per segment (default 32)")
+        ->check(CLI::Range(1, 100000));
+    command.add_option("--inbetweens", options.path.inbetween_count, "in-between frames M (default 12)")
+        ->check(CLI::Range(0, 100000));
+    command
+        .add_option_function<std::string>(
+            "--spacing",
+            [&options](const std::string& name) {
+                options.path.spacing = name == "exact" ? Spacing::exact : Spacing::nearest;
+            },
+            "nearest (the thesis) or exact (arc length); default nearest")
+        ->check(CLI::IsMember({"nearest", "exact"}));
+}
+
+void add_screen_options(CLI::App& command, CommonOptions& options)
+{
+    command.add_option("--theta", options.view.theta_degrees, "viewer direction theta in degrees (default 30)")
+        ->check(finite_number & CLI::Range(-1e6, 1e6));
+    command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees (default 40)")
+        ->check(finite_number & CLI::Range(-1e6, 1e6));
+    command.add_option("--delay", options.delay_ms, "milliseconds per animation frame (default 200)")
+        ->check(CLI::Range(0, 60000));
+    command
+        .add_option_function<std::string>(
+            "--glyphs",
+            [&options](const std::string& name) {
+                options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
+            },
+            "ascii, braille or blocks (default: braille under UTF-8, else ascii)")
+        ->check(CLI::IsMember({"ascii", "braille", "blocks"}));
+    command.add_option("--step", options.step, "staff step per key (default 0.05)")
+        ->check(finite_number & CLI::Range(0.001, 2.0));
+    command.add_option("--png", options.png, "write the 720x348 screen as a PNG");
+}
+
+void add_common_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_staff_options(command, options);
+    add_path_options(command, options, slopes);
+    add_screen_options(command, options);
+    command.add_option("--workdir", options.workdir, "folder the session works in (default: current)");
+    command.add_option("--keys", options.keys, "replay keystrokes from FILE");
+    command.add_option("--record", options.record, "record keystrokes to FILE");
+    command.add_flag("--print", options.print, "write numbers to standard output");
+    command.add_option("--out", options.out, "output folder");
+}
+
+ExitStatus not_built(const std::string& command, std::ostream& err)
+{
+    err << "apcs: '" << command << "' is not built yet in this version\n";
+    return ExitStatus::bad_usage;
+}
+
+} // namespace
+
+int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
+{
+    CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths", "apcs"};
+    app.set_version_flag("--version", std::string("apcs ") + std::string(version));
+    app.require_subcommand(0, 1);
+
+    CommonOptions options;
+    std::vector<double> slopes;
+    add_common_options(app, options, slopes);
+
+    std::filesystem::path path_file;
+    CLI::App* path = app.add_subcommand("path", "one point's path: print it or draw it (SPEC 4)");
+    path->add_option("FILE", path_file, "path file (.dat)")->required();
+    add_common_options(*path, options, slopes);
+
+    std::vector<std::filesystem::path> key_files;
+    CLI::App* inbetween = app.add_subcommand("inbetween", "in-betweens by interpolation law and padding");
+    inbetween->add_option("KEYS", key_files, "KEY1 KEY2")->expected(2);
+    add_common_options(*inbetween, options, slopes);
+
+    std::vector<std::filesystem::path> fit_files;
+    CLI::App* fit = app.add_subcommand("fit", "surface fitting: all in-between frames");
+    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST")->expected(4);
+    add_common_options(*fit, options, slopes);
+
+    CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures as PNG");
+    add_common_options(*figures, options, slopes);
+
+    std::filesystem::path scene;
+    CLI::App* play = app.add_subcommand("play", "scenes of several objects and actors");
+    play->add_option("SCENE", scene, "scene file")->required();
+    add_common_options(*play, options, slopes);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        if (error.get_exit_code() == 0)
+            return app.exit(error, out, err);
+        err << "apcs: " << error.what() << "\n\n" << app.help();
+        return to_int(ExitStatus::bad_usage);
+    }
+    if (slopes.size() == 2)
+        options.path.slopes = {slopes[0], slopes[1]};
+
+    if (path->parsed())
+        return to_int(run_path_command(path_file, options, out, err));
+    if (inbetween->parsed())
+        return to_int(not_built("inbetween", err));
+    if (fit->parsed())
+        return to_int(not_built("fit", err));
+    if (figures->parsed())
+        return to_int(not_built("figures", err));
+    if (play->parsed())
+        return to_int(not_built("play", err));
+    return to_int(not_built("the interactive session", err));
+}
+
+} // namespace apcs

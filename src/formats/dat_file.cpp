@@ -1,0 +1,266 @@
+#include "apcs/formats/dat_file.h"
+
+#include "apcs/formats/number_text.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace apcs {
+
+std::size_t DatFile::point_count() const
+{
+    std::size_t count = 0;
+    for (const DatPart& part : parts)
+        count += part.points.size();
+    return count;
+}
+
+namespace {
+
+constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
+constexpr char dos_end_of_file = '\x1A';
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+bool equals_ignoring_case(std::string_view left, std::string_view right)
+{
+    return left.size() == right.size() && std::equal(left.begin(), left.end(), right.begin(), [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+           });
+}
+
+std::vector<std::string_view> split_fields(std::string_view line)
+{
+    std::vector<std::string_view> fields;
+    std::size_t position = 0;
+    while (position < line.size()) {
+        while (position < line.size() && is_blank(line[position]))
+            ++position;
+        const std::size_t start = position;
+        while (position < line.size() && !is_blank(line[position]))
+            ++position;
+        if (position > start)
+            fields.push_back(line.substr(start, position - start));
+    }
+    return fields;
+}
+
+// Reads a file line by line and collects parts and points; the first problem ends the reading.
+class DatParser {
+public:
+    DatParser(const std::string& file_name, std::size_t minimum_points)
+        : m_file_name(file_name)
+        , m_minimum_points(minimum_points)
+    {
+    }
+
+    Expected<DatFile> parse(std::string_view text);
+
+private:
+    std::optional<Diagnostic> parse_line(std::string_view line);
+    std::optional<Diagnostic> parse_count(std::string_view field);
+    std::optional<Diagnostic> parse_part(const std::vector<std::string_view>& fields);
+    std::optional<Diagnostic> parse_point(const std::vector<std::string_view>& fields);
+    std::optional<Diagnostic> finish();
+    Diagnostic error(std::string message, int line) const { return {m_file_name, line, std::move(message)}; }
+    Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
+
+    const std::string& m_file_name;
+    std::size_t m_minimum_points;
+    DatFile m_file;
+    int m_line = 0;
+    bool m_seen_data = false;
+    std::optional<std::size_t> m_declared_count;
+    int m_count_line = 0;
+    std::vector<int> m_part_lines;
+    std::vector<bool> m_marked_closed;
+    std::size_t m_points = 0;
+};
+
+Expected<DatFile> DatParser::parse(std::string_view text)
+{
+    if (text.starts_with(utf8_byte_order_mark))
+        text.remove_prefix(utf8_byte_order_mark.size());
+    // DOS editors ended a file with Ctrl-Z; anything but line ends after it is not a .dat file.
+    const std::size_t end_mark = text.find(dos_end_of_file);
+    if (end_mark != std::string_view::npos) {
+        const std::string_view rest = text.substr(end_mark);
+        const bool only_trailer = std::all_of(rest.begin(), rest.end(), [](char c) {
+            return c == dos_end_of_file || c == '\r' || c == '\n' || is_blank(c);
+        });
+        if (!only_trailer)
+            return error("Ctrl-Z (end of file) followed by more data; expected it only at the end",
+                         1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end_mark), '\n')));
+        text = text.substr(0, end_mark);
+    }
+    while (!text.empty()) {
+        ++m_line;
+        const std::size_t newline = text.find('\n');
+        const std::string_view line = text.substr(0, newline);
+        text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+        if (auto problem = parse_line(line))
+            return *problem;
+    }
+    if (auto problem = finish())
+        return *problem;
+    return std::move(m_file);
+}
+
+std::optional<Diagnostic> DatParser::parse_line(std::string_view line)
+{
+    std::string_view content = line;
+    if (content.ends_with('\r'))
+        content.remove_suffix(1);
+    if (content.size() > max_dat_line_bytes)
+        return error("line is " + std::to_string(content.size()) + " bytes long; expected at most " +
+                     std::to_string(max_dat_line_bytes));
+    if (content.find('\0') != std::string_view::npos)
+        return error("NUL byte; expected a text file");
+    content = content.substr(0, content.find_first_of(";#"));
+    const std::vector<std::string_view> fields = split_fields(content);
+    if (fields.empty())
+        return std::nullopt;
+    if (equals_ignoring_case(fields[0], "PART"))
+        return parse_part(fields);
+    if (!m_seen_data && fields.size() == 1)
+        return parse_count(fields[0]);
+    return parse_point(fields);
+}
+
+std::optional<Diagnostic> DatParser::parse_count(std::string_view field)
+{
+    m_seen_data = true;
+    m_count_line = m_line;
+    const std::optional<std::size_t> count = parse_count_value(field);
+    if (!count)
+        return error("expected a point count (a whole number from 0 to " + std::to_string(max_dat_points) +
+                     ") or a point of 2, 3 or 7 numbers, found " + quote_field(field));
+    if (*count > max_dat_points)
+        return error("point count " + std::to_string(*count) + " is over the limit of " +
+                     std::to_string(max_dat_points));
+    m_declared_count = *count;
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> DatParser::parse_part(const std::vector<std::string_view>& fields)
+{
+    m_seen_data = true;
+    if (fields.size() < 2 || fields.size() > 3)
+        return error("expected 'PART name' or 'PART name OPEN|CLOSED'");
+    bool closed = false;
+    if (fields.size() == 3) {
+        if (equals_ignoring_case(fields[2], "CLOSED"))
+            closed = true;
+        else if (!equals_ignoring_case(fields[2], "OPEN"))
+            return error("expected OPEN or CLOSED after the part name, found " + quote_field(fields[2]));
+    }
+    // Points before the first PART line form a part of their own; a PART line otherwise starts
+    // the next part, and the part it ends must not be empty.
+    if (!m_part_lines.empty() && m_file.parts.back().points.empty())
+        return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
+                     m_part_lines.back());
+    m_file.parts.push_back({std::string(fields[1]), Closure::open, {}});
+    m_part_lines.push_back(m_line);
+    m_marked_closed.push_back(closed);
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> DatParser::parse_point(const std::vector<std::string_view>& fields)
+{
+    m_seen_data = true;
+    if (fields.size() != 2 && fields.size() != 3 && fields.size() != 7)
+        return error("expected a point of 2, 3 or 7 numbers (x y [z] [t c b a]), found " +
+                     std::to_string(fields.size()) + " fields");
+    if (m_points == max_dat_points)
+        return error("more than " + std::to_string(max_dat_points) + " points; expected at most that many");
+    std::array<double, 7> values{};
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        const std::optional<double> value = parse_number(fields[i]);
+        if (!value)
+            return error("expected a number, found " + quote_field(fields[i]));
+        if (!std::isfinite(*value))
+            return error("expected a finite number, found " + quote_field(fields[i]));
+        if (std::abs(*value) > max_dat_magnitude)
+            return error("number " + quote_field(fields[i]) + " is out of range; expected |value| <= 1e9");
+        values[i] = *value;
+    }
+    DatPoint point{{values[0], values[1], values[2]}, std::nullopt, m_line};
+    if (fields.size() == 7) {
+        constexpr std::array<std::string_view, 4> names{"tension", "continuity", "bias", "acceleration"};
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (values[3 + i] < -1.0 || values[3 + i] > 1.0)
+                return error(std::string(names[i]) + " " + quote_field(fields[3 + i]) + " is outside [-1, 1]");
+        point.staff = StaffValues{values[3], values[4], values[5], values[6]};
+    }
+    if (m_file.parts.empty()) {
+        m_file.parts.push_back({"", Closure::open, {}});
+        m_part_lines.push_back(0);
+        m_marked_closed.push_back(false);
+    }
+    m_file.parts.back().points.push_back(point);
+    ++m_points;
+    return std::nullopt;
+}
+
+std::optional<Diagnostic> DatParser::finish()
+{
+    if (!m_file.parts.empty() && m_file.parts.back().points.empty())
+        return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
+                     m_part_lines.back());
+    if (m_declared_count && *m_declared_count != m_points)
+        return error("the count line says " + std::to_string(*m_declared_count) + " points but " +
+                         std::to_string(m_points) + " follow",
+                     m_count_line);
+    if (m_points < m_minimum_points)
+        return error("expected at least " + std::to_string(m_minimum_points) + " points, found " +
+                         std::to_string(m_points),
+                     0);
+    for (std::size_t i = 0; i < m_file.parts.size(); ++i) {
+        DatPart& part = m_file.parts[i];
+        const bool ends_meet = part.points.size() >= 3 && part.points.front().position == part.points.back().position;
+        part.closure = m_marked_closed[i] || ends_meet ? Closure::closed : Closure::open;
+    }
+    return std::nullopt;
+}
+
+std::string part_name_for_writing(const DatPart& part, std::size_t index)
+{
+    if (part.name.empty())
+        return "P" + std::to_string(index + 1);
+    std::string name = part.name;
+    std::replace_if(name.begin(), name.end(), [](char c) { return is_blank(c) || c == ';' || c == '#'; }, '_');
+    return name;
+}
+
+} // namespace
+
+Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points)
+{
+    return DatParser(file_name, minimum_points).parse(text);
+}
+
+std::string format_dat(const DatFile& file)
+{
+    std::string text;
+    const bool plain = file.parts.size() == 1 && file.parts[0].name.empty() && file.parts[0].closure == Closure::open;
+    for (std::size_t i = 0; i < file.parts.size(); ++i) {
+        const DatPart& part = file.parts[i];
+        if (!plain)
+            text += "PART " + part_name_for_writing(part, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
+        for (const DatPoint& point : part.points) {
+            text += shortest_number(point.position.x) + ' ' + shortest_number(point.position.y) + ' ' +
+                    shortest_number(point.position.z);
+            if (point.staff) {
+                text += ' ' + shortest_number(point.staff->tension) + ' ' + shortest_number(point.staff->continuity) +
+                        ' ' + shortest_number(point.staff->bias) + ' ' + shortest_number(point.staff->acceleration);
+            }
+            text += '\n';
+        }
+    }
+    return text;
+}
+
+} // namespace apcs

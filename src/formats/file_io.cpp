@@ -1,0 +1,178 @@
+#include "apcs/formats/file_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <system_error>
+#include <unistd.h>
+
+namespace apcs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Larger inputs than this cannot be valid: 10^6 points of at most 4096 bytes would be 4 GB, but
+// no real key file comes near; refusing here keeps memory bounded for any input.
+constexpr std::uintmax_t max_input_bytes = 1ull << 30;
+
+bool same_ignoring_case(const std::string& left, const std::string& right)
+{
+    return left.size() == right.size() && std::equal(left.begin(), left.end(), right.begin(), [](char a, char b) {
+               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+           });
+}
+
+std::string system_reason(int error_number) { return std::strerror(error_number); }
+
+// Closes a POSIX file descriptor when it goes out of scope.
+class FileDescriptor {
+public:
+    explicit FileDescriptor(int descriptor) : m_descriptor(descriptor) {}
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+    ~FileDescriptor() { close(); }
+    int get() const { return m_descriptor; }
+    int close()
+    {
+        const int result = m_descriptor >= 0 ? ::close(m_descriptor) : 0;
+        m_descriptor = -1;
+        return result;
+    }
+
+private:
+    int m_descriptor;
+};
+
+bool write_all(int descriptor, std::string_view content)
+{
+    while (!content.empty()) {
+        const ssize_t written = ::write(descriptor, content.data(), content.size());
+        if (written < 0) {
+            if (errno == EINTR)
+                continue;
+            return false;
+        }
+        content.remove_prefix(static_cast<std::size_t>(written));
+    }
+    return true;
+}
+
+} // namespace
+
+fs::path resolve_input_path(const fs::path& name)
+{
+    std::error_code error;
+    if (fs::exists(name, error))
+        return name;
+    const fs::path folder = name.has_parent_path() ? name.parent_path() : fs::path(".");
+    const std::string wanted = name.filename().string();
+    for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
+        if (same_ignoring_case(entry->path().filename().string(), wanted))
+            return name.has_parent_path() ? folder / entry->path().filename() : entry->path().filename();
+    return name;
+}
+
+Expected<std::string> read_text_file(const fs::path& name)
+{
+    const std::string shown = name.string();
+    const fs::path path = resolve_input_path(name);
+    std::error_code error;
+    if (fs::is_directory(path, error))
+        return Diagnostic{shown, 0, "is a directory; expected a file"};
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (file.get() < 0)
+        return Diagnostic{shown, 0, "cannot open: " + system_reason(errno)};
+    std::string content;
+    char buffer[1 << 16];
+    while (true) {
+        const ssize_t got = ::read(file.get(), buffer, sizeof buffer);
+        if (got < 0) {
+            if (errno == EINTR)
+                continue;
+            return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
+        }
+        if (got == 0)
+            break;
+        if (content.size() + static_cast<std::size_t>(got) > max_input_bytes)
+            return Diagnostic{shown, 0, "is larger than 1 GiB; expected a .dat file"};
+        content.append(buffer, static_cast<std::size_t>(got));
+    }
+    return content;
+}
+
+Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points)
+{
+    Expected<std::string> text = read_text_file(name);
+    if (!text)
+        return text.error();
+    return parse_dat(*text, name.string(), minimum_points);
+}
+
+fs::path backup_path_for(const fs::path& target)
+{
+    fs::path backup = target;
+    backup.replace_extension(".bak");
+    // A .bak file being replaced keeps its predecessor under NAME.bak.bak, never under itself.
+    if (backup == target)
+        backup += ".bak";
+    return backup;
+}
+
+Expected<WriteResult> write_file_atomically(const fs::path& target, std::string_view content)
+{
+    const std::string shown = target.string();
+    std::error_code error;
+    if (fs::is_directory(target, error))
+        return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
+    const bool exists = fs::exists(target, error);
+    if (exists) {
+        Expected<std::string> current = read_text_file(target);
+        if (current && *current == content)
+            return WriteResult{WriteOutcome::unchanged, {}};
+    }
+    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+    std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+    FileDescriptor file(::mkstemp(temporary.data()));
+    if (file.get() < 0)
+        return Diagnostic{shown, 0, "cannot create a temporary file in " + folder.string() + ": " + system_reason(errno)};
+    const auto abandon = [&](const std::string& what) {
+        const int reason = errno;
+        file.close();
+        ::unlink(temporary.c_str());
+        return Diagnostic{shown, 0, what + ": " + system_reason(reason)};
+    };
+    if (!write_all(file.get(), content))
+        return abandon("cannot write");
+    if (::fsync(file.get()) != 0)
+        return abandon("cannot flush to disk");
+    if (::fchmod(file.get(), 0644) != 0)
+        return abandon("cannot set permissions");
+    if (file.close() != 0)
+        return abandon("cannot close");
+
+    WriteResult result{exists ? WriteOutcome::replaced : WriteOutcome::created, {}};
+    if (exists) {
+        // A hard link keeps the old content as .bak while the target itself stays in place until
+        // the rename replaces it, so no moment exists without the user's file.
+        const fs::path backup = backup_path_for(target);
+        ::unlink(backup.c_str());
+        if (::link(target.c_str(), backup.c_str()) != 0) {
+            fs::copy_file(target, backup, fs::copy_options::overwrite_existing, error);
+            if (error) {
+                errno = error.value();
+                return abandon("cannot keep the old file as " + backup.string());
+            }
+        }
+        result.backup = backup;
+    }
+    if (::rename(temporary.c_str(), target.c_str()) != 0)
+        return abandon("cannot replace the file");
+    return result;
+}
+
+} // namespace apcs

@@ -1,0 +1,165 @@
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/motion_path.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace apcs;
+
+namespace {
+
+ControlPoints curved_path(double acceleration = 0.0)
+{
+    ControlPoints points;
+    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{3, 4, 0}, Vec3{7, 3, 1}, Vec3{10, 6, 0}})
+        points.push_back({position, {0, 0, 0, acceleration}});
+    return points;
+}
+
+std::vector<double> positions_along(const EvaluatedPath& path)
+{
+    std::vector<double> distances;
+    for (const Inbetween& inbetween : path.inbetweens)
+        distances.push_back(inbetween.arc_fraction * path.curve.total_length());
+    return distances;
+}
+
+double widest_sample_gap(const SampledCurve& curve)
+{
+    double widest = 0.0;
+    for (std::size_t i = 1; i < curve.chord_length.size(); ++i)
+        widest = std::max(widest, curve.chord_length[i] - curve.chord_length[i - 1]);
+    return widest;
+}
+
+} // namespace
+
+TEST_CASE("acceleration 0 spaces the in-betweens equally to within one sample", "[animation][acceleration]")
+{
+    const EvaluatedPath path = evaluate_path(curved_path(), {{}, 32, 12, Spacing::nearest});
+    REQUIRE(path.inbetweens.size() == 12);
+    REQUIRE_FALSE(path.frames_freeze);
+    const double length = path.curve.total_length();
+    const double tolerance = widest_sample_gap(path.curve) / 2.0 + 1e-12;
+    const std::vector<double> distances = positions_along(path);
+    for (std::size_t j = 0; j < distances.size(); ++j) {
+        // d_j = L·j/(M+1); the nearest sample is at most half a sample gap away.
+        CAPTURE(j);
+        REQUIRE(std::abs(distances[j] - length * static_cast<double>(j + 1) / 13.0) <= tolerance);
+    }
+}
+
+TEST_CASE("negative acceleration shrinks the gaps and positive acceleration grows them", "[animation][acceleration]")
+{
+    for (const double acceleration : {-1.0, -0.5, 0.5, 1.0}) {
+        // Enough samples that rounding to a sample cannot reverse a gap's trend.
+        const EvaluatedPath path = evaluate_path(curved_path(acceleration), {{}, 2000, 10, Spacing::nearest});
+        const std::vector<double> distances = positions_along(path);
+        for (std::size_t j = 2; j < distances.size(); ++j) {
+            const double earlier_gap = distances[j - 1] - distances[j - 2];
+            const double later_gap = distances[j] - distances[j - 1];
+            CAPTURE(acceleration, j, earlier_gap, later_gap);
+            if (acceleration < 0)
+                REQUIRE(later_gap < earlier_gap);
+            else
+                REQUIRE(later_gap > earlier_gap);
+        }
+    }
+}
+
+TEST_CASE("the acceleration targets follow d = L[(1-|a|)tau + |a|w(tau)] worked by hand", "[animation][acceleration]")
+{
+    // A straight two-point path from 0 to 12 with slopes 1: samples are evenly spaced (P(u) = 12u),
+    // 120 samples put one every 0.1. M = 1: tau = 1/2. a = −1: d = 12·sin(π/4) = 8.485 → 8.5.
+    ControlPoints points{{{0, 0, 0}, {0, 0, 0, -1}}, {{12, 0, 0}, {}}};
+    EvaluatedPath path = evaluate_path(points, {{}, 120, 1, Spacing::nearest});
+    REQUIRE(path.inbetweens.size() == 1);
+    REQUIRE(path.inbetweens[0].position.x == Approx(8.5).epsilon(1e-12));
+    // a = 0.5: d = 12·(0.5·0.5 + 0.5·(1 − cos(π/4))) = 12·0.396447 = 4.757 → 4.8.
+    points[0].staff.acceleration = 0.5;
+    path = evaluate_path(points, {{}, 120, 1, Spacing::nearest});
+    REQUIRE(path.inbetweens[0].position.x == Approx(4.8).epsilon(1e-12));
+}
+
+TEST_CASE("exact spacing hits its arc-length targets within 1e-6 of the length", "[animation][acceleration]")
+{
+    for (const double acceleration : {0.0, -0.7, 0.9}) {
+        const ControlPoints points = curved_path(acceleration);
+        const EvaluatedPath path = evaluate_path(points, {{}, 8, 9, Spacing::exact});
+        const ArcLengthTable table(path.segments);
+        const double length = table.total_length();
+        REQUIRE(path.inbetweens.size() == 9);
+        for (std::size_t j = 0; j < path.inbetweens.size(); ++j) {
+            const double tau = static_cast<double>(j + 1) / 10.0;
+            const double target = length * path.inbetweens[j].arc_fraction;
+            const double expected_fraction = acceleration == 0.0 ? tau
+                : acceleration < 0 ? (1 + acceleration) * tau - acceleration * std::sin(M_PI * tau / 2)
+                                   : (1 - acceleration) * tau + acceleration * (1 - std::cos(M_PI * tau / 2));
+            REQUIRE(path.inbetweens[j].arc_fraction == Approx(expected_fraction).margin(1e-12));
+            const CurveParameter parameter = table.parameter_at(target);
+            REQUIRE(std::abs(table.length_at(parameter) - target) <= 1e-6 * length);
+            REQUIRE(distance(table.point_at(parameter), path.inbetweens[j].position) <= 1e-12);
+        }
+    }
+}
+
+TEST_CASE("two spans with different accelerations share the in-betweens by length", "[animation][acceleration]")
+{
+    ControlPoints points = curved_path();
+    points[0].staff.acceleration = 0.8;
+    points[1].staff.acceleration = 0.8;
+    points[2].staff.acceleration = -0.8;
+    const auto spans = acceleration_spans(points);
+    REQUIRE(spans.size() == 2);
+    REQUIRE(spans[0].first_point == 0);
+    REQUIRE(spans[0].last_point == 2);
+    REQUIRE(spans[1].first_point == 2);
+    REQUIRE(spans[1].last_point == 3);
+
+    const EvaluatedPath path = evaluate_path(points, {{}, 400, 12, Spacing::nearest});
+    const double boundary = path.curve.chord_length[2 * 400];
+    const double length = path.curve.total_length();
+    const std::vector<double> distances = positions_along(path);
+    const auto in_first = static_cast<std::size_t>(std::count_if(distances.begin(), distances.end(),
+                                                                 [&](double d) { return d < boundary; }));
+    const std::vector<double> weights{boundary, length - boundary};
+    REQUIRE(in_first == static_cast<std::size_t>(share_by_largest_remainder(weights, 12)[0]));
+    // Gaps grow inside the first span (a > 0) and shrink inside the second (a < 0).
+    for (std::size_t j = 2; j < in_first; ++j)
+        REQUIRE(distances[j] - distances[j - 1] > distances[j - 1] - distances[j - 2]);
+    for (std::size_t j = in_first + 2; j < distances.size(); ++j)
+        REQUIRE(distances[j] - distances[j - 1] < distances[j - 1] - distances[j - 2]);
+}
+
+TEST_CASE("a span runs on to the next control point whose acceleration differs", "[animation][acceleration]")
+{
+    ControlPoints points = curved_path();
+    points[3].staff.acceleration = 1.0; // the last point's a is unused
+    REQUIRE(acceleration_spans(points).size() == 1);
+    points[1].staff.acceleration = 0.5;
+    const auto spans = acceleration_spans(points);
+    REQUIRE(spans.size() == 3);
+    REQUIRE(spans[1].first_point == 1);
+    REQUIRE(spans[1].last_point == 2);
+    REQUIRE(spans[1].acceleration == 0.5);
+}
+
+TEST_CASE("largest remainder shares worked by hand", "[animation][acceleration]")
+{
+    // Quotas 12·(5, 3, 2)/10 = 6, 3.6, 2.4: floors 6, 3, 2 and the one left goes to 3.6.
+    const std::vector<double> weights{5, 3, 2};
+    REQUIRE(share_by_largest_remainder(weights, 12) == std::vector<int>{6, 4, 2});
+    const std::vector<double> none{0, 0, 0};
+    REQUIRE(share_by_largest_remainder(none, 4) == std::vector<int>{2, 1, 1});
+    REQUIRE(share_by_largest_remainder(weights, 0) == std::vector<int>{0, 0, 0});
+}
+
+TEST_CASE("more in-betweens than samples freeze frames", "[animation][acceleration]")
+{
+    const EvaluatedPath path = evaluate_path(curved_path(), {{}, 2, 10, Spacing::nearest});
+    REQUIRE(path.curve.points.size() == 7);
+    REQUIRE(path.frames_freeze);
+    REQUIRE(path.inbetweens.size() == 10);
+}

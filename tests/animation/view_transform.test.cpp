@@ -1,0 +1,69 @@
+#include "apcs/animation/view_transform.h"
+#include "apcs/geometry/hercules.h"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace apcs;
+
+namespace {
+const PixelRect full_screen{0, 0, hercules::screen_width, hercules::screen_height};
+}
+
+TEST_CASE("theta 0, phi 90 looks along -x: +y is to the right and +z is up", "[animation][view]")
+{
+    const std::vector<Vec3> scene{{0, -1, -1}, {0, 1, 1}, {0, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const ViewTransform view = ViewTransform::fit({0, 90}, scene, full_screen);
+    const DevicePoint centre = view.to_device({0, 0, 0});
+    const DevicePoint right = view.to_device({0, 1, 0});
+    const DevicePoint up = view.to_device({0, 0, 1});
+    REQUIRE(right.x > centre.x);
+    REQUIRE(right.y == Approx(centre.y));
+    REQUIRE(up.y < centre.y);
+    REQUIRE(up.x == Approx(centre.x));
+}
+
+TEST_CASE("the scene centre lands on the centre of the drawing area (L, M)", "[animation][view]")
+{
+    const std::vector<Vec3> scene{{1, 2, 3}, {5, -2, 7}, {3, 4, -1}};
+    const PixelRect area{20, 10, 700, 250};
+    for (const ViewAngles angles : {ViewAngles{0, 90}, ViewAngles{30, 40}, ViewAngles{-75, 12}}) {
+        const ViewTransform view = ViewTransform::fit(angles, scene, area);
+        const DevicePoint centre = view.to_device({3, 1, 3});
+        REQUIRE(centre.x == Approx(360.0));
+        REQUIRE(centre.y == Approx(130.0));
+    }
+}
+
+TEST_CASE("a square seen face-on is drawn 1.5 times wider than tall", "[animation][view]")
+{
+    const std::vector<Vec3> square{{0, -1, -1}, {0, 1, -1}, {0, 1, 1}, {0, -1, 1}};
+    const ViewTransform view = ViewTransform::fit({0, 90}, square, full_screen);
+    const DevicePoint low_left = view.to_device(square[0]);
+    const DevicePoint high_right = view.to_device(square[2]);
+    const double width = high_right.x - low_left.x;
+    const double height = low_left.y - high_right.y;
+    REQUIRE(width / height == Approx(hercules::aspect_correction));
+}
+
+TEST_CASE("the fitted view keeps every point inside the drawing area", "[animation][view]")
+{
+    const std::vector<Vec3> scene{{-50, 3, 0}, {80, 9, 40}, {10, -60, 5}, {0, 0, 100}};
+    const PixelRect area{0, 0, 720, 280};
+    for (const ViewAngles angles : {ViewAngles{0, 90}, ViewAngles{30, 40}, ViewAngles{200, -30}}) {
+        const ViewTransform view = ViewTransform::fit(angles, scene, area);
+        REQUIRE(view.viewer_distance() == Approx(3.0 * 0.5 * std::sqrt(130.0 * 130 + 69 * 69 + 100 * 100)));
+        for (const Vec3& point : scene) {
+            const PixelPoint pixel = view.to_device(point).rounded();
+            REQUIRE(area.contains(pixel));
+        }
+    }
+}
+
+TEST_CASE("a scene of one point is drawn at the centre", "[animation][view]")
+{
+    const std::vector<Vec3> scene{{4, 4, 4}};
+    const ViewTransform view = ViewTransform::fit({30, 40}, scene, full_screen);
+    REQUIRE(view.to_device({4, 4, 4}).rounded() == PixelPoint{360, 174});
+}
