@@ -1,6 +1,8 @@
 #include "apcs/cli/command_line.h"
 
 #include "apcs/cli/exit_status.h"
+#include "apcs/cli/fit_command.h"
+#include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
 #include "apcs/version.h"
@@ -114,13 +116,26 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     add_common_options(*path, options, slopes);
 
     std::vector<std::filesystem::path> key_files;
-    CLI::App* inbetween = app.add_subcommand("inbetween", "in-betweens by interpolation law and padding");
-    inbetween->add_option("KEYS", key_files, "KEY1 KEY2")->expected(2);
+    InbetweenSettings inbetween_settings;
+    CLI::App* inbetween = app.add_subcommand("inbetween", "in-betweens by interpolation law and padding (SPEC 6)");
+    inbetween->add_option("KEYS", key_files, "KEY1 KEY2")->expected(2)->required();
+    inbetween->add_option("--frames", inbetween_settings.frame_intervals, "T: frames 0 ... T (default: --inbetweens + 1)")
+        ->check(CLI::Range(1, 100000));
+    inbetween
+        ->add_option_function<std::string>(
+            "--law", [&](const std::string& name) { inbetween_settings.law = *speed_law_from_name(name); },
+            "linear, sqrt, square, ease-in, ease-out or ease-in-out (default linear)")
+        ->check(CLI::IsMember({"linear", "sqrt", "square", "ease-in", "ease-out", "ease-in-out"}));
+    inbetween
+        ->add_option_function<std::string>(
+            "--pad", [&](const std::string& name) { inbetween_settings.padding = *padding_from_name(name); },
+            "apcs, start, end, middle or midpoint (default apcs)")
+        ->check(CLI::IsMember({"apcs", "start", "end", "middle", "midpoint"}));
     add_common_options(*inbetween, options, slopes);
 
     std::vector<std::filesystem::path> fit_files;
     CLI::App* fit = app.add_subcommand("fit", "surface fitting: all in-between frames");
-    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST")->expected(4);
+    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST")->expected(4)->required();
     add_common_options(*fit, options, slopes);
 
     CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures as PNG");
@@ -144,10 +159,13 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
 
     if (path->parsed())
         return to_int(run_path_command(path_file, options, out, err));
-    if (inbetween->parsed())
-        return to_int(not_built("inbetween", err));
+    if (inbetween->parsed()) {
+        inbetween_settings.key1 = key_files[0];
+        inbetween_settings.key2 = key_files[1];
+        return to_int(run_inbetween_command(inbetween_settings, options, out, err));
+    }
     if (fit->parsed())
-        return to_int(not_built("fit", err));
+        return to_int(run_fit_command({fit_files[0], fit_files[1], fit_files[2], fit_files[3]}, options, out, err));
     if (figures->parsed())
         return to_int(not_built("figures", err));
     if (play->parsed())

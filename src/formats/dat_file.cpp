@@ -263,4 +263,32 @@ std::string format_dat(const DatFile& file)
     return text;
 }
 
+Graphic graphic_from(const DatFile& file)
+{
+    Graphic graphic;
+    graphic.parts.reserve(file.parts.size());
+    for (const DatPart& part : file.parts) {
+        GraphicPart converted{part.name, part.closure, {}};
+        converted.points.reserve(part.points.size());
+        for (const DatPoint& point : part.points)
+            converted.points.push_back(point.position);
+        graphic.parts.push_back(std::move(converted));
+    }
+    return graphic;
+}
+
+DatFile dat_from(const Graphic& graphic)
+{
+    DatFile file;
+    file.parts.reserve(graphic.parts.size());
+    for (const GraphicPart& part : graphic.parts) {
+        DatPart converted{part.name, part.closure, {}};
+        converted.points.reserve(part.points.size());
+        for (const Vec3& point : part.points)
+            converted.points.push_back({point, std::nullopt, 0});
+        file.parts.push_back(std::move(converted));
+    }
+    return file;
+}
+
 } // namespace apcs

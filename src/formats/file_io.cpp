@@ -113,6 +113,14 @@ Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points
     return parse_dat(*text, name.string(), minimum_points);
 }
 
+Expected<Graphic> read_key_frame(const fs::path& name)
+{
+    const Expected<DatFile> file = read_dat_file(name);
+    if (!file)
+        return file.error();
+    return graphic_from(*file);
+}
+
 fs::path backup_path_for(const fs::path& target)
 {
     fs::path backup = target;

@@ -1,6 +1,8 @@
 #include "apcs/cli/command_line.h"
 #include "apcs/version.h"
 
+#include "support/run_apcs.h"
+
 #include <catch2/catch.hpp>
 
 #include <sstream>
@@ -8,38 +10,18 @@
 
 using namespace apcs;
 
-namespace {
-
-struct Run {
-    int status = 0;
-    std::string out;
-    std::string err;
-};
-
-Run run(std::vector<std::string> arguments)
-{
-    arguments.insert(arguments.begin(), "apcs");
-    std::vector<const char*> argv;
-    for (const std::string& argument : arguments)
-        argv.push_back(argument.c_str());
-    std::ostringstream out;
-    std::ostringstream err;
-    const int status = run_command_line(static_cast<int>(argv.size()), argv.data(), out, err);
-    return {status, out.str(), err.str()};
-}
-
-} // namespace
+using test::run_apcs;
 
 TEST_CASE("the --version option prints the version and exits 0", "[cli]")
 {
-    const auto result = run({"--version"});
+    const auto result = run_apcs({"--version"});
     REQUIRE(result.status == 0);
     REQUIRE(result.out == "apcs " + std::string(version) + "\n");
 }
 
 TEST_CASE("the --help option lists the subcommands and exits 0", "[cli]")
 {
-    const auto result = run({"--help"});
+    const auto result = run_apcs({"--help"});
     REQUIRE(result.status == 0);
     for (const char* command : {"path", "inbetween", "fit", "figures", "play"})
         REQUIRE(result.out.find(command) != std::string::npos);
@@ -59,7 +41,7 @@ TEST_CASE("bad usage is exit 2 with a one-line reason and the usage", "[cli]")
              {"path"},
              {"fit", "a.dat"},
          }) {
-        const auto result = run(arguments);
+        const auto result = run_apcs(arguments);
         CAPTURE(arguments);
         REQUIRE(result.status == 2);
         REQUIRE(result.out.empty());

@@ -3,6 +3,8 @@
 
 #include "support/temp_folder.h"
 
+#include "support/run_apcs.h"
+
 #include <catch2/catch.hpp>
 
 #include <sstream>
@@ -11,27 +13,7 @@
 using namespace apcs;
 using test::TempFolder;
 
-namespace {
-
-struct Run {
-    int status = 0;
-    std::string out;
-    std::string err;
-};
-
-Run run(std::vector<std::string> arguments)
-{
-    arguments.insert(arguments.begin(), "apcs");
-    std::vector<const char*> argv;
-    for (const std::string& argument : arguments)
-        argv.push_back(argument.c_str());
-    std::ostringstream out;
-    std::ostringstream err;
-    const int status = run_command_line(static_cast<int>(argv.size()), argv.data(), out, err);
-    return {status, out.str(), err.str()};
-}
-
-} // namespace
+using test::run_apcs;
 
 TEST_CASE("apcs path --print writes the curve then the in-betweens, worked by hand", "[cli][path]")
 {
@@ -39,7 +21,7 @@ TEST_CASE("apcs path --print writes the curve then the in-betweens, worked by ha
     // Two control points, slopes 1 1: P(u) = (4u, 0, 2u); 4 samples give x = 0, 1, 2, 3, 4 and
     // 3 in-betweens at a = 0 fall on L·j/4, the samples 1, 2 and 3.
     const auto file = folder.write("ani1.dat", "0 0 0\n4 0 2\n");
-    const Run result = run({"path", file.string(), "--samples", "4", "--inbetweens", "3", "--print"});
+    const auto result = run_apcs({"path", file.string(), "--samples", "4", "--inbetweens", "3", "--print"});
     REQUIRE(result.status == 0);
     REQUIRE(result.err.empty());
     REQUIRE(result.out == "# curve\n"
@@ -58,7 +40,7 @@ TEST_CASE("apcs path agrees with the Catmull-Rom midpoint to 1e-9", "[cli][path]
 {
     const TempFolder folder;
     const auto file = folder.write("ani1.dat", "0 0 0\n1 2 1\n4 3 -1\n6 0 2\n");
-    const Run result = run({"path", file.string(), "--samples", "2", "--inbetweens", "0"});
+    const auto result = run_apcs({"path", file.string(), "--samples", "2", "--inbetweens", "0"});
     REQUIRE(result.status == 0);
     std::istringstream lines(result.out);
     std::string line;
@@ -78,9 +60,9 @@ TEST_CASE("a 7-column path file uses its own t c b a and a 3-column one the glob
     const TempFolder folder;
     const auto own = folder.write("own.dat", "0 0 0 1 0 0 0\n1 2 0 1 0 0 0\n3 0 0 1 0 0 0\n");
     const auto plain = folder.write("plain.dat", "0 0 0\n1 2 0\n3 0 0\n");
-    const Run with_own = run({"path", own.string(), "--slopes", "0", "0"});
-    const Run with_global = run({"path", plain.string(), "--slopes", "0", "0", "--tension", "1"});
-    const Run with_default = run({"path", plain.string(), "--slopes", "0", "0"});
+    const auto with_own = run_apcs({"path", own.string(), "--slopes", "0", "0"});
+    const auto with_global = run_apcs({"path", plain.string(), "--slopes", "0", "0", "--tension", "1"});
+    const auto with_default = run_apcs({"path", plain.string(), "--slopes", "0", "0"});
     REQUIRE(with_own.out == with_global.out);
     REQUIRE(with_own.out != with_default.out);
 }
@@ -89,14 +71,14 @@ TEST_CASE("apcs path output is deterministic", "[cli][path]")
 {
     const TempFolder folder;
     const auto file = folder.write("ani1.dat", "0 0 0\n1 2 1\n4 3 -1\n6 0 2\n");
-    REQUIRE(run({"path", file.string(), "--accel", "0.4"}).out == run({"path", file.string(), "--accel", "0.4"}).out);
+    REQUIRE(run_apcs({"path", file.string(), "--accel", "0.4"}).out == run_apcs({"path", file.string(), "--accel", "0.4"}).out);
 }
 
 TEST_CASE("a bad path file is exit 1 with FILE:LINE on stderr and nothing on stdout", "[cli][path]")
 {
     const TempFolder folder;
     const auto file = folder.write("bad.dat", "0 0 0\n1 x 1\n");
-    const Run result = run({"path", file.string(), "--print"});
+    const auto result = run_apcs({"path", file.string(), "--print"});
     REQUIRE(result.status == 1);
     REQUIRE(result.out.empty());
     REQUIRE(result.err == file.string() + ":2: expected a number, found 'x'\n");
@@ -106,7 +88,7 @@ TEST_CASE("more in-betweens than samples warn that frames will freeze", "[cli][p
 {
     const TempFolder folder;
     const auto file = folder.write("ani1.dat", "0 0 0\n4 0 2\n");
-    const Run result = run({"path", file.string(), "--samples", "2", "--inbetweens", "5"});
+    const auto result = run_apcs({"path", file.string(), "--samples", "2", "--inbetweens", "5"});
     REQUIRE(result.status == 0);
     REQUIRE(result.err == "apcs: 5 in-betweens from 2 curve samples: frames will freeze\n");
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/animation/control_point.h"
+#include "apcs/animation/graphic.h"
 #include "apcs/formats/diagnostic.h"
 #include "apcs/geometry/vec3.h"
 
@@ -11,8 +12,6 @@
 #include <vector>
 
 namespace apcs {
-
-enum class Closure { open, closed };
 
 // One point line of a .dat file: 2 or 3 numbers, or 7 with the staff values of a path file.
 struct DatPoint {
@@ -49,5 +48,9 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 // or closed, each point with the shortest decimal form that reads back exactly. Points with staff
 // values get all seven columns.
 std::string format_dat(const DatFile& file);
+
+// Conversions between the file and the key-frame model (staff columns are dropped / absent).
+Graphic graphic_from(const DatFile& file);
+DatFile dat_from(const Graphic& graphic);
 
 } // namespace apcs

@@ -18,6 +18,9 @@ Expected<std::string> read_text_file(const std::filesystem::path& name);
 
 Expected<DatFile> read_dat_file(const std::filesystem::path& name, std::size_t minimum_points = 2);
 
+// A key frame: a .dat file of at least two points, as a graphic.
+Expected<Graphic> read_key_frame(const std::filesystem::path& name);
+
 enum class WriteOutcome { created, replaced, unchanged };
 
 struct WriteResult {

@@ -1,0 +1,66 @@
+#include "apcs/cli/frame_output.h"
+
+#include "apcs/formats/dat_file.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/print_format.h"
+
+#include <cstdio>
+
+namespace apcs {
+
+std::string format_frames_print(const FrameSequence& frames)
+{
+    std::string text;
+    // About 33 bytes a point: one allocation for the whole output.
+    text.reserve(frames.frame_count() * (frames.points_per_frame() * 33 + 16));
+    for (std::size_t k = 0; k < frames.frame_count(); ++k)
+        append_print_section(text, "frame " + std::to_string(k), frames.frame(k));
+    return text;
+}
+
+std::string inbetween_file_name(std::size_t number)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "inb%03zu.dat", number);
+    return name;
+}
+
+namespace {
+
+bool is_protected(const std::filesystem::path& target, std::span<const std::filesystem::path> protected_files)
+{
+    std::error_code error;
+    for (const std::filesystem::path& file : protected_files)
+        if (std::filesystem::equivalent(target, resolve_input_path(file), error))
+            return true;
+    return false;
+}
+
+} // namespace
+
+Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames, const Graphic& structure,
+                                                                   const std::filesystem::path& folder,
+                                                                   std::span<const std::filesystem::path> protected_files)
+{
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error))
+        return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the in-between files"};
+    std::vector<std::filesystem::path> written;
+    const std::size_t count = frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
+    for (std::size_t k = 1; k <= count; ++k) {
+        const std::filesystem::path target = folder / inbetween_file_name(k);
+        if (is_protected(target, protected_files))
+            return Diagnostic{target.string(), 0, "is a key file; key files are never written"};
+        const std::span<const Vec3> frame = frames.frame(k);
+        const Graphic graphic = structure.with_points({frame.begin(), frame.end()});
+        std::string text = "; APCS in-between " + std::to_string(k) + " of " + std::to_string(count) + "\n";
+        text += format_dat(dat_from(graphic));
+        const Expected<WriteResult> result = write_file_atomically(target, text);
+        if (!result)
+            return result.error();
+        written.push_back(target);
+    }
+    return written;
+}
+
+} // namespace apcs

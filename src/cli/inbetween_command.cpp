@@ -1,0 +1,71 @@
+#include "apcs/cli/inbetween_command.h"
+
+#include "apcs/animation/add_points.h"
+#include "apcs/cli/frame_output.h"
+#include "apcs/formats/file_io.h"
+
+#include <array>
+#include <ostream>
+
+namespace apcs {
+
+namespace {
+
+// Both key frames with the same point count, and the parts the frames are written with.
+struct PaddedKeys {
+    std::vector<Vec3> begin;
+    std::vector<Vec3> end;
+    Graphic structure;
+};
+
+PaddedKeys pad_keys(const Graphic& key1, const Graphic& key2, Padding padding)
+{
+    if (padding == Padding::apcs) {
+        const EqualisedKeys keys = equalise_key_frames(key1, key2);
+        return {keys.key1.all_points(), keys.key2.all_points(), keys.key1};
+    }
+    // The 2003 paper pads one polyline: the frames are written as a single open part.
+    std::vector<Vec3> begin = key1.all_points();
+    std::vector<Vec3> end = key2.all_points();
+    if (begin.size() < end.size())
+        begin = pad_points(begin, end.size(), padding);
+    else
+        end = pad_points(end, begin.size(), padding);
+    Graphic structure;
+    structure.parts.push_back({"", Closure::open, begin});
+    return {std::move(begin), std::move(end), std::move(structure)};
+}
+
+} // namespace
+
+ExitStatus run_inbetween_command(const InbetweenSettings& settings, const CommonOptions& options, std::ostream& out,
+                                 std::ostream& err)
+{
+    const Expected<Graphic> key1 = read_key_frame(settings.key1);
+    if (!key1) {
+        err << key1.error().to_string() << '\n';
+        return ExitStatus::bad_input;
+    }
+    const Expected<Graphic> key2 = read_key_frame(settings.key2);
+    if (!key2) {
+        err << key2.error().to_string() << '\n';
+        return ExitStatus::bad_input;
+    }
+    const PaddedKeys keys = pad_keys(*key1, *key2, settings.padding);
+    const int intervals = settings.frame_intervals.value_or(options.path.inbetween_count + 1);
+    const FrameSequence frames = interpolate_frames(keys.begin, keys.end, intervals, settings.law);
+    if (options.print) {
+        const std::string text = format_frames_print(frames);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        return ExitStatus::success;
+    }
+    const std::array<std::filesystem::path, 2> key_files{settings.key1, settings.key2};
+    const auto written = write_inbetween_files(frames, keys.structure, options.out.value_or("."), key_files);
+    if (!written) {
+        err << written.error().to_string() << '\n';
+        return ExitStatus::bad_input;
+    }
+    return ExitStatus::success;
+}
+
+} // namespace apcs

@@ -1,0 +1,134 @@
+#include "apcs/cli/command_line.h"
+#include "apcs/formats/file_io.h"
+
+#include "support/run_apcs.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+using namespace apcs;
+using test::run_apcs;
+using test::TempFolder;
+
+namespace {
+
+void write_example(const TempFolder& folder)
+{
+    folder.write("key1.dat", "0 0 0\n0 0 10\n0 6 0\n0 6 10\n");
+    folder.write("key2.dat", "0 0 10\n0 0 0\n0 5 0\n");
+    folder.write("way1.dat", "0 0 0\n3 -4 5\n0 0 10\n");
+    folder.write("way4.dat", "0 6 10\n-3 10 5\n0 5 0\n");
+}
+
+} // namespace
+
+TEST_CASE("apcs fit --print writes frames 0 to M+1: padded KEY1, the in-betweens, KEY2", "[cli][fit]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                  (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens", "2",
+                                  "--samples", "2", "--print"});
+    REQUIRE(result.status == 0);
+    CHECK(result.err.empty());
+    // KEY2 (0,0,10) (0,0,0) (0,5,0) gains (0,0,5) between its first two points (Algorithm 2).
+    // way1 with 2 samples per segment: samples at u = 1/2 are (1.875, −2.5, 2.5) and (1.875, −2.5, 7.5),
+    // and the 2 in-betweens at L/3, 2L/3 fall nearest to those.
+    const std::string expected_start = "# frame 0\n"
+                                       "0.000000 0.000000 0.000000\n"
+                                       "0.000000 0.000000 10.000000\n"
+                                       "0.000000 6.000000 0.000000\n"
+                                       "0.000000 6.000000 10.000000\n"
+                                       "# frame 1\n"
+                                       "1.875000 -2.500000 2.500000\n";
+    REQUIRE(result.out.substr(0, expected_start.size()) == expected_start);
+    const std::string expected_end = "# frame 3\n"
+                                     "0.000000 0.000000 10.000000\n"
+                                     "0.000000 0.000000 5.000000\n"
+                                     "0.000000 0.000000 0.000000\n"
+                                     "0.000000 5.000000 0.000000\n";
+    REQUIRE(result.out.ends_with(expected_end));
+}
+
+TEST_CASE("apcs fit writes inb001.dat … with the whole graphic and its parts", "[cli][fit]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                  (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens", "3",
+                                  "--out", folder.path().string()});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.empty());
+    for (const char* name : {"inb001.dat", "inb002.dat", "inb003.dat"}) {
+        const Expected<DatFile> frame = read_dat_file(folder / name);
+        REQUIRE(frame.has_value());
+        REQUIRE(frame->point_count() == 4);
+    }
+    REQUIRE_FALSE(std::filesystem::exists(folder / "inb004.dat"));
+}
+
+TEST_CASE("a path that does not start at the graphic point is refused with the expected point", "[cli][fit]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    folder.write("bad.dat", "; wrong start\n0 1 0\n0 0 10\n");
+    const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                  (folder / "bad.dat").string(), (folder / "way4.dat").string(), "--print"});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out.empty());
+    REQUIRE(result.err == (folder / "bad.dat").string() +
+                              ":2: the path starts at (0, 1, 0); expected the first graphic point's KEY1 position (0, 0, 0)\n");
+    const auto wrong_end = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                     (folder / "way1.dat").string(), (folder / "way1.dat").string(), "--print"});
+    REQUIRE(wrong_end.status == 1);
+    REQUIRE(wrong_end.err.find("expected the last graphic point's KEY1 position (0, 6, 10)") != std::string::npos);
+}
+
+TEST_CASE("apcs fit into a missing folder fails with the reason and writes nothing", "[cli][fit]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                  (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--out",
+                                  (folder / "nowhere").string()});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.err.find("is not a folder") != std::string::npos);
+}
+
+TEST_CASE("apcs inbetween prints frames 0 to T with the padded count", "[cli][inbetween]")
+{
+    const TempFolder folder;
+    folder.write("gb.dat", "0 0\n2 0\n2 4\n");
+    folder.write("ge.dat", "0 0\n4 0\n4 4\n0 4\n8 8\n");
+    const auto result = run_apcs({"inbetween", (folder / "gb.dat").string(), (folder / "ge.dat").string(), "--frames",
+                                  "2", "--law", "linear", "--pad", "end", "--print"});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out == "# frame 0\n"
+                          "0.000000 0.000000 0.000000\n2.000000 0.000000 0.000000\n2.000000 4.000000 0.000000\n"
+                          "2.000000 4.000000 0.000000\n2.000000 4.000000 0.000000\n"
+                          "# frame 1\n"
+                          "0.000000 0.000000 0.000000\n3.000000 0.000000 0.000000\n3.000000 4.000000 0.000000\n"
+                          "1.000000 4.000000 0.000000\n5.000000 6.000000 0.000000\n"
+                          "# frame 2\n"
+                          "0.000000 0.000000 0.000000\n4.000000 0.000000 0.000000\n4.000000 4.000000 0.000000\n"
+                          "0.000000 4.000000 0.000000\n8.000000 8.000000 0.000000\n");
+}
+
+TEST_CASE("apcs inbetween writes the in-between files and never a key file", "[cli][inbetween]")
+{
+    const TempFolder folder;
+    folder.write("gb.dat", "0 0\n2 0\n");
+    folder.write("inb001.dat", "1 1\n3 3\n");
+    const auto refused = run_apcs({"inbetween", (folder / "gb.dat").string(), (folder / "inb001.dat").string(),
+                                   "--frames", "3", "--out", folder.path().string()});
+    REQUIRE(refused.status == 1);
+    REQUIRE(refused.err.find("key files are never written") != std::string::npos);
+    REQUIRE(test::read_all(folder / "inb001.dat") == "1 1\n3 3\n");
+
+    folder.write("ge.dat", "1 1\n3 3\n");
+    const auto written = run_apcs({"inbetween", (folder / "gb.dat").string(), (folder / "ge.dat").string(), "--frames",
+                                   "3", "--law", "ease-in-out", "--out", folder.path().string()});
+    REQUIRE(written.status == 0);
+    REQUIRE(std::filesystem::exists(folder / "inb002.dat"));
+    REQUIRE(std::filesystem::exists(folder / "inb001.bak")); // the old inb001.dat, kept
+}
