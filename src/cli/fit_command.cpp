@@ -54,16 +54,8 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
             << " curve samples: frames will freeze\n";
     const FrameSequence frames = fit_key_frames(keys, first_path, last_path);
 
-    if (options.print) {
-        const std::string text = format_frames_print(frames);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        return ExitStatus::success;
-    }
     const std::array<std::filesystem::path, 2> key_files{files.key1, files.key2};
-    const auto written = write_inbetween_files(frames, keys.key1, options.out.value_or("."), key_files);
-    if (!written)
-        return report(written.error(), err);
-    return ExitStatus::success;
+    return deliver_frames(frames, keys.key1, options, key_files, out, err);
 }
 
 } // namespace apcs

@@ -5,6 +5,7 @@
 #include "apcs/formats/print_format.h"
 
 #include <cstdio>
+#include <ostream>
 
 namespace apcs {
 
@@ -61,6 +62,22 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
         written.push_back(target);
     }
     return written;
+}
+
+ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
+                          std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err)
+{
+    if (options.print) {
+        const std::string text = format_frames_print(frames);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        return ExitStatus::success;
+    }
+    const auto written = write_inbetween_files(frames, structure, options.out.value_or("."), key_files);
+    if (!written) {
+        err << written.error().to_string() << '\n';
+        return ExitStatus::bad_input;
+    }
+    return ExitStatus::success;
 }
 
 } // namespace apcs

@@ -54,18 +54,8 @@ ExitStatus run_inbetween_command(const InbetweenSettings& settings, const Common
     const PaddedKeys keys = pad_keys(*key1, *key2, settings.padding);
     const int intervals = settings.frame_intervals.value_or(options.path.inbetween_count + 1);
     const FrameSequence frames = interpolate_frames(keys.begin, keys.end, intervals, settings.law);
-    if (options.print) {
-        const std::string text = format_frames_print(frames);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        return ExitStatus::success;
-    }
     const std::array<std::filesystem::path, 2> key_files{settings.key1, settings.key2};
-    const auto written = write_inbetween_files(frames, keys.structure, options.out.value_or("."), key_files);
-    if (!written) {
-        err << written.error().to_string() << '\n';
-        return ExitStatus::bad_input;
-    }
-    return ExitStatus::success;
+    return deliver_frames(frames, keys.structure, options, key_files, out, err);
 }
 
 } // namespace apcs

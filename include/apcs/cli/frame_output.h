@@ -2,9 +2,12 @@
 
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/cli/exit_status.h"
+#include "apcs/cli/options.h"
 #include "apcs/formats/diagnostic.h"
 
 #include <filesystem>
+#include <iosfwd>
 #include <span>
 #include <string>
 #include <vector>
@@ -23,5 +26,10 @@ std::string inbetween_file_name(std::size_t number);
 Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames, const Graphic& structure,
                                                                    const std::filesystem::path& folder,
                                                                    std::span<const std::filesystem::path> protected_files);
+
+// The end of a batch command: frames to `out` with --print, else the in-between files into --out
+// (default: the current folder). Problems go to `err` as exit status 1.
+ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
+                          std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err);
 
 } // namespace apcs
