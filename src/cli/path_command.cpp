@@ -2,6 +2,9 @@
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/print_format.h"
+#include "apcs/raster/png_encoder.h"
+#include "apcs/session/path_screen.h"
+#include "apcs/session/screen_layout.h"
 
 #include <ostream>
 
@@ -27,6 +30,27 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
+std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen)
+{
+    const std::optional<std::string> png = encode_png(render_raster(screen));
+    if (!png)
+        return Diagnostic{target.string(), 0, "cannot encode the PNG image"};
+    const Expected<WriteResult> written = write_file_atomically(target, *png);
+    if (!written)
+        return written.error();
+    return std::nullopt;
+}
+
+GraphicsScreen draw_path_file_screen(const ControlPoints& points, const EvaluatedPath& path, ViewAngles angles)
+{
+    PathScreenContent content;
+    content.path = &path;
+    content.control_points = points;
+    content.staff = points.empty() ? StaffValues{} : points.front().staff;
+    const ViewTransform view = ViewTransform::fit(angles, path_screen_scene(content), layout::drawing_area);
+    return draw_path_screen(content, view);
+}
+
 ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,
                             std::ostream& err)
 {
@@ -40,6 +64,12 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
     if (path.frames_freeze)
         err << "apcs: " << options.path.inbetween_count << " in-betweens from " << path.curve.points.size() - 1
             << " curve samples: frames will freeze\n";
+    if (options.png) {
+        if (auto problem = write_png_file(*options.png, draw_path_file_screen(points, path, options.view))) {
+            err << problem->to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+    }
     if (options.print || !options.png) {
         const std::string text = format_path_print(path);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));

@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
+#include "apcs/raster/glyph_mapper.h"
 
 #include <filesystem>
 #include <optional>
@@ -10,8 +11,6 @@
 #include <vector>
 
 namespace apcs {
-
-enum class GlyphSet { automatic, ascii, braille, blocks };
 
 // The options every command shares (SPEC §1), validated by the command line parser.
 struct CommonOptions {

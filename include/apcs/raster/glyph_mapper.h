@@ -1,0 +1,42 @@
+#pragma once
+
+#include "apcs/raster/bitmap.h"
+#include "apcs/raster/cell_grid.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// How raster pixels become characters (SPEC §7.2).
+enum class GlyphSet {
+    automatic, // braille under a UTF-8 locale, else ascii (resolved by the caller)
+    ascii,     // per cell the printable ASCII glyph whose shape best matches the pixels
+    braille,   // 2x4 dots per cell (U+2800 …)
+    blocks,    // 2x2 quadrant blocks per cell (U+2580 …)
+};
+
+// The text-mode geometry the raster was made for: 80x25 cells of 9x14 pixels.
+inline constexpr int text_screen_columns = 80;
+inline constexpr int text_screen_rows = 25;
+
+struct CellArea {
+    int columns = 0;
+    int rows = 0;
+};
+
+// The largest area within a terminal of `columns` x `rows` that keeps the 80x25 proportions of
+// the DOS screen; nullopt when the terminal is smaller than 80x25.
+std::optional<CellArea> fit_cell_area(int columns, int rows);
+
+// Maps the whole bitmap onto `area`, each cell covering its share of the pixels. Sub-blocks of a
+// cell are lit when any of their pixels is (max pooling), so 1-pixel lines survive; a cell is a
+// space only when none of its pixels is lit.
+CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs);
+
+// The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): the glyph of
+// the font whose pooled mask is nearest. Exposed for tests.
+char32_t ascii_glyph_for(unsigned pooled_mask);
+
+} // namespace apcs

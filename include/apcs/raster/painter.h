@@ -1,0 +1,44 @@
+#pragma once
+
+#include "apcs/geometry/pixel_point.h"
+#include "apcs/raster/bitmap.h"
+
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// How a primitive changes the pixels it covers. `toggle` (XOR) draws a moving cursor that the same
+// call erases again; every pixel of one primitive is toggled once, however often its strokes cross.
+enum class DrawMode { set, clear, toggle };
+
+// Draws into a Bitmap it does not own. Everything is clipped to the bitmap.
+class Painter {
+public:
+    explicit Painter(Bitmap& target) : m_target(target) {}
+
+    void pixel(PixelPoint point, DrawMode mode = DrawMode::set);
+    // Bresenham's line from `from` to `to`, both ends included, clipped to the bitmap first so
+    // that far-away ends cost nothing.
+    void line(PixelPoint from, PixelPoint to, DrawMode mode = DrawMode::set);
+    // A control point's mark: an `x` of 5x5 pixels centred on `centre`.
+    void cross_marker(PixelPoint centre, DrawMode mode = DrawMode::set);
+    // A small filled square of 3x3 pixels, for the shown in-between positions.
+    void dot_marker(PixelPoint centre, DrawMode mode = DrawMode::set);
+    // The local-control arrow: its tip at `tip`, pointing up and left, 9 pixels long.
+    void arrow(PixelPoint tip, DrawMode mode = DrawMode::toggle);
+    void rectangle(PixelRect rect, DrawMode mode = DrawMode::set);
+    // UTF-8 text in 9x14 cells, the first cell's top-left corner at `top_left`.
+    void text(PixelPoint top_left, std::string_view utf8, DrawMode mode = DrawMode::set);
+
+private:
+    template <typename Plot>
+    void each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const;
+
+    Bitmap& m_target;
+};
+
+// Splits UTF-8 into code points; malformed bytes become U+FFFD.
+std::u32string decode_utf8(std::string_view utf8);
+
+} // namespace apcs

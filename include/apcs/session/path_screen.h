@@ -1,0 +1,48 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/graphics_screen.h"
+
+#include <array>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+enum class StaffLine { tension = 0, continuity = 1, bias = 2, acceleration = 3 };
+
+inline constexpr std::array<const char*, 4> staff_line_names{"TENSION", "CONTINUITY", "BIAS", "ACCELERATION"};
+
+// Everything the path screen shows (thesis figs. 4.2.4–4.2.6).
+struct PathScreenContent {
+    const EvaluatedPath* path = nullptr;
+    std::span<const ControlPoint> control_points;
+    StaffValues staff;
+    std::optional<StaffLine> active_line;
+    // Local control: the picked region (first, last control point) drawn with a box around its x's.
+    std::optional<std::pair<std::size_t, std::size_t>> region;
+    // Local control while picking: the arrow points at this control point.
+    std::optional<std::size_t> arrow_at;
+    // Before the first move the arrow waits at the top-left of the screen (thesis fig. 4.2.5).
+    bool arrow_home = false;
+    // Key frames drawn beside the path (thesis Ch. 6, item 2), dim: dotted.
+    std::vector<std::vector<Vec3>> key_frame_polylines;
+    std::string message;
+    std::string key_help;
+};
+
+// The world points a path screen must keep in view (control points, curve, key frames).
+std::vector<Vec3> path_screen_scene(const PathScreenContent& content);
+
+// Draws the path screen: boundary, curve, x at every control point, a dot at every shown
+// in-between, the four-line staff with its values, the message and key lines.
+GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view);
+
+// "+0.05", "-1.00": a staff value as the staff shows it.
+std::string format_staff_value(double value);
+
+} // namespace apcs

@@ -1,0 +1,52 @@
+#include "apcs/raster/bitmap.h"
+
+#include <algorithm>
+#include <bit>
+
+namespace apcs {
+
+Bitmap::Bitmap(int width, int height)
+    : m_width(std::max(width, 0))
+    , m_height(std::max(height, 0))
+    , m_bytes_per_row((static_cast<std::size_t>(m_width) + 7) / 8)
+    , m_bits(m_bytes_per_row * static_cast<std::size_t>(m_height), 0)
+{
+}
+
+namespace {
+constexpr std::uint8_t bit_of(int x) { return static_cast<std::uint8_t>(0x80u >> (x & 7)); }
+} // namespace
+
+bool Bitmap::get(int x, int y) const
+{
+    if (!contains(x, y))
+        return false;
+    return (row(y)[x >> 3] & bit_of(x)) != 0;
+}
+
+void Bitmap::set(int x, int y, bool lit)
+{
+    if (!contains(x, y))
+        return;
+    std::uint8_t& byte = m_bits[static_cast<std::size_t>(y) * m_bytes_per_row + static_cast<std::size_t>(x >> 3)];
+    byte = lit ? static_cast<std::uint8_t>(byte | bit_of(x)) : static_cast<std::uint8_t>(byte & ~bit_of(x));
+}
+
+void Bitmap::toggle(int x, int y)
+{
+    if (!contains(x, y))
+        return;
+    m_bits[static_cast<std::size_t>(y) * m_bytes_per_row + static_cast<std::size_t>(x >> 3)] ^= bit_of(x);
+}
+
+void Bitmap::clear() { std::fill(m_bits.begin(), m_bits.end(), std::uint8_t{0}); }
+
+std::size_t Bitmap::lit_count() const
+{
+    std::size_t count = 0;
+    for (const std::uint8_t byte : m_bits)
+        count += static_cast<std::size_t>(std::popcount(byte));
+    return count;
+}
+
+} // namespace apcs

@@ -1,0 +1,71 @@
+#include "apcs/raster/cell_grid.h"
+
+#include "apcs/raster/painter.h"
+
+#include <algorithm>
+
+namespace apcs {
+
+CellGrid::CellGrid(int columns, int rows)
+    : m_columns(std::max(columns, 0))
+    , m_rows(std::max(rows, 0))
+    , m_cells(static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows), U' ')
+{
+}
+
+char32_t CellGrid::at(int column, int row) const
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return U' ';
+    return m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+}
+
+void CellGrid::set(int column, int row, char32_t glyph)
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return;
+    m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = glyph;
+}
+
+void CellGrid::put_text(int column, int row, const std::string& utf8)
+{
+    for (const char32_t code_point : decode_utf8(utf8))
+        set(column++, row, code_point);
+}
+
+void append_utf8(std::string& text, char32_t code_point)
+{
+    if (code_point < 0x80) {
+        text += static_cast<char>(code_point);
+    } else if (code_point < 0x800) {
+        text += static_cast<char>(0xC0 | (code_point >> 6));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    } else if (code_point < 0x10000) {
+        text += static_cast<char>(0xE0 | (code_point >> 12));
+        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    } else {
+        text += static_cast<char>(0xF0 | (code_point >> 18));
+        text += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
+        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    }
+}
+
+std::string CellGrid::row_text(int row) const
+{
+    std::string text;
+    for (int column = 0; column < m_columns; ++column)
+        append_utf8(text, at(column, row));
+    return text;
+}
+
+std::string CellGrid::to_text() const
+{
+    std::string text;
+    for (int row = 0; row < m_rows; ++row)
+        text += row_text(row) + '\n';
+    return text;
+}
+
+} // namespace apcs

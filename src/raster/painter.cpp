@@ -1,0 +1,196 @@
+#include "apcs/raster/painter.h"
+
+#include "apcs/raster/font.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+void apply(Bitmap& target, int x, int y, DrawMode mode)
+{
+    switch (mode) {
+    case DrawMode::set:
+        target.set(x, y, true);
+        break;
+    case DrawMode::clear:
+        target.set(x, y, false);
+        break;
+    case DrawMode::toggle:
+        target.toggle(x, y);
+        break;
+    }
+}
+
+// Liang–Barsky: clips the segment to [low, high] in both axes; false when nothing is left.
+bool clip_segment(double& x0, double& y0, double& x1, double& y1, double x_high, double y_high)
+{
+    double enter = 0.0;
+    double leave = 1.0;
+    const double dx = x1 - x0;
+    const double dy = y1 - y0;
+    const double p[4] = {-dx, dx, -dy, dy};
+    const double q[4] = {x0, x_high - x0, y0, y_high - y0};
+    for (int i = 0; i < 4; ++i) {
+        if (p[i] == 0.0) {
+            if (q[i] < 0.0)
+                return false;
+            continue;
+        }
+        const double r = q[i] / p[i];
+        if (p[i] < 0.0)
+            enter = std::max(enter, r);
+        else
+            leave = std::min(leave, r);
+    }
+    if (enter > leave)
+        return false;
+    const double start_x = x0 + enter * dx;
+    const double start_y = y0 + enter * dy;
+    x1 = x0 + leave * dx;
+    y1 = y0 + leave * dy;
+    x0 = start_x;
+    y0 = start_y;
+    return true;
+}
+
+void toggle_once(Bitmap& target, std::vector<PixelPoint>& pixels)
+{
+    std::sort(pixels.begin(), pixels.end(), [](PixelPoint a, PixelPoint b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
+    pixels.erase(std::unique(pixels.begin(), pixels.end()), pixels.end());
+    for (const PixelPoint point : pixels)
+        target.toggle(point.x, point.y);
+}
+
+} // namespace
+
+template <typename Plot>
+void Painter::each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const
+{
+    double x0 = from.x;
+    double y0 = from.y;
+    double x1 = to.x;
+    double y1 = to.y;
+    if (!clip_segment(x0, y0, x1, y1, m_target.width() - 1, m_target.height() - 1))
+        return;
+    int x = static_cast<int>(std::lround(x0));
+    int y = static_cast<int>(std::lround(y0));
+    const int end_x = static_cast<int>(std::lround(x1));
+    const int end_y = static_cast<int>(std::lround(y1));
+    const int dx = std::abs(end_x - x);
+    const int dy = -std::abs(end_y - y);
+    const int step_x = x < end_x ? 1 : -1;
+    const int step_y = y < end_y ? 1 : -1;
+    int error = dx + dy;
+    while (true) {
+        plot(x, y);
+        if (x == end_x && y == end_y)
+            break;
+        const int doubled = 2 * error;
+        if (doubled >= dy) {
+            error += dy;
+            x += step_x;
+        }
+        if (doubled <= dx) {
+            error += dx;
+            y += step_y;
+        }
+    }
+}
+
+void Painter::pixel(PixelPoint point, DrawMode mode) { apply(m_target, point.x, point.y, mode); }
+
+void Painter::line(PixelPoint from, PixelPoint to, DrawMode mode)
+{
+    each_line_pixel(from, to, [&](int x, int y) { apply(m_target, x, y, mode); });
+}
+
+void Painter::cross_marker(PixelPoint centre, DrawMode mode)
+{
+    std::vector<PixelPoint> pixels;
+    for (int d = -2; d <= 2; ++d) {
+        pixels.push_back({centre.x + d, centre.y + d});
+        pixels.push_back({centre.x + d, centre.y - d});
+    }
+    if (mode == DrawMode::toggle)
+        return toggle_once(m_target, pixels);
+    for (const PixelPoint point : pixels)
+        apply(m_target, point.x, point.y, mode);
+}
+
+void Painter::dot_marker(PixelPoint centre, DrawMode mode)
+{
+    for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+            apply(m_target, centre.x + dx, centre.y + dy, mode);
+}
+
+void Painter::arrow(PixelPoint tip, DrawMode mode)
+{
+    std::vector<PixelPoint> pixels;
+    const auto collect = [&](PixelPoint from, PixelPoint to) {
+        each_line_pixel(from, to, [&](int x, int y) { pixels.push_back({x, y}); });
+    };
+    collect(tip, {tip.x + 8, tip.y + 8});
+    collect(tip, {tip.x + 4, tip.y});
+    collect(tip, {tip.x, tip.y + 4});
+    if (mode == DrawMode::toggle)
+        return toggle_once(m_target, pixels);
+    for (const PixelPoint point : pixels)
+        apply(m_target, point.x, point.y, mode);
+}
+
+void Painter::rectangle(PixelRect rect, DrawMode mode)
+{
+    const int right = rect.right - 1;
+    const int bottom = rect.bottom - 1;
+    line({rect.left, rect.top}, {right, rect.top}, mode);
+    line({rect.left, bottom}, {right, bottom}, mode);
+    if (bottom - rect.top > 1) {
+        line({rect.left, rect.top + 1}, {rect.left, bottom - 1}, mode);
+        line({right, rect.top + 1}, {right, bottom - 1}, mode);
+    }
+}
+
+void Painter::text(PixelPoint top_left, std::string_view utf8, DrawMode mode)
+{
+    int left = top_left.x;
+    for (const char32_t code_point : decode_utf8(utf8)) {
+        for (int row = 0; row < Font::cell_height; ++row)
+            for (int column = 0; column < Font::cell_width; ++column)
+                if (Font::pixel(code_point, column, row))
+                    apply(m_target, left + column, top_left.y + row, mode);
+        left += Font::cell_width;
+    }
+}
+
+std::u32string decode_utf8(std::string_view utf8)
+{
+    std::u32string decoded;
+    decoded.reserve(utf8.size());
+    for (std::size_t i = 0; i < utf8.size();) {
+        const auto lead = static_cast<unsigned char>(utf8[i]);
+        const int length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+        if (length == 0 || i + static_cast<std::size_t>(length) > utf8.size()) {
+            decoded.push_back(U'\uFFFD');
+            ++i;
+            continue;
+        }
+        char32_t value = length == 1 ? lead : lead & (0x7F >> length);
+        bool valid = true;
+        for (int k = 1; k < length; ++k) {
+            const auto next = static_cast<unsigned char>(utf8[i + static_cast<std::size_t>(k)]);
+            valid = valid && (next >> 6) == 0x2;
+            value = (value << 6) | (next & 0x3F);
+        }
+        decoded.push_back(valid ? value : U'\uFFFD');
+        i += valid ? static_cast<std::size_t>(length) : 1;
+    }
+    return decoded;
+}
+
+} // namespace apcs

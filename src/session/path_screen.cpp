@@ -1,0 +1,110 @@
+#include "apcs/session/path_screen.h"
+
+#include "apcs/raster/painter.h"
+#include "apcs/session/screen_layout.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace apcs {
+
+std::string format_staff_value(double value)
+{
+    char text[16];
+    // Values are multiples of the step; rounding to 2 decimals avoids "-0.00".
+    const double shown = std::round(value * 100.0) / 100.0;
+    std::snprintf(text, sizeof text, "%+.2f", shown == 0.0 ? 0.0 : shown);
+    return text;
+}
+
+std::vector<Vec3> path_screen_scene(const PathScreenContent& content)
+{
+    std::vector<Vec3> scene;
+    for (const ControlPoint& point : content.control_points)
+        scene.push_back(point.position);
+    if (content.path != nullptr)
+        scene.insert(scene.end(), content.path->curve.points.begin(), content.path->curve.points.end());
+    for (const auto& polyline : content.key_frame_polylines)
+        scene.insert(scene.end(), polyline.begin(), polyline.end());
+    return scene;
+}
+
+namespace {
+
+void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenContent& content)
+{
+    const double values[4] = {content.staff.tension, content.staff.continuity, content.staff.bias,
+                              content.staff.acceleration};
+    for (int line = 0; line < 4; ++line) {
+        const int y = layout::staff_line_y(line);
+        const int row = layout::first_staff_row + line;
+        const bool active = content.active_line && static_cast<int>(*content.active_line) == line;
+        screen.text.push_back({0, row, std::string(active ? ">" : " ") + staff_line_names[static_cast<std::size_t>(line)]});
+        painter.line({layout::staff_left, y}, {layout::staff_right, y});
+        for (const double tick : {-1.0, 0.0, 1.0})
+            painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},
+                         {layout::staff_x(tick), y + layout::staff_tick_half_height});
+        const int marker = layout::staff_x(values[line]);
+        painter.line({marker - 1, y - layout::staff_marker_half_height}, {marker - 1, y + layout::staff_marker_half_height});
+        painter.line({marker + 1, y - layout::staff_marker_half_height}, {marker + 1, y + layout::staff_marker_half_height});
+        screen.text.push_back({layout::staff_value_column, row, format_staff_value(values[line])});
+    }
+}
+
+void draw_dotted(Painter& painter, const std::vector<Vec3>& polyline, const ViewTransform& view)
+{
+    for (std::size_t i = 0; i < polyline.size(); ++i)
+        painter.pixel(view.to_device(polyline[i]).rounded());
+    for (std::size_t i = 1; i < polyline.size(); ++i) {
+        const DevicePoint a = view.to_device(polyline[i - 1]);
+        const DevicePoint b = view.to_device(polyline[i]);
+        const int steps = static_cast<int>(std::hypot(b.x - a.x, b.y - a.y) / 4.0);
+        for (int s = 1; s < steps; ++s) {
+            const double f = static_cast<double>(s) / steps;
+            painter.pixel(DevicePoint{a.x + f * (b.x - a.x), a.y + f * (b.y - a.y)}.rounded());
+        }
+    }
+}
+
+} // namespace
+
+GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view)
+{
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    painter.rectangle(layout::drawing_area);
+    for (const auto& polyline : content.key_frame_polylines)
+        draw_dotted(painter, polyline, view);
+    if (content.path != nullptr) {
+        const auto& curve = content.path->curve.points;
+        for (std::size_t i = 1; i < curve.size(); ++i)
+            painter.line(view.to_device(curve[i - 1]).rounded(), view.to_device(curve[i]).rounded());
+        for (const Inbetween& inbetween : content.path->inbetweens)
+            painter.dot_marker(view.to_device(inbetween.position).rounded());
+    }
+    for (const ControlPoint& point : content.control_points) {
+        const PixelPoint centre = view.to_device(point.position).rounded();
+        painter.cross_marker(centre);
+        screen.marks.push_back({centre, U'x'});
+    }
+    if (content.region && content.region->second < content.control_points.size()) {
+        for (std::size_t k = content.region->first; k <= content.region->second; ++k) {
+            const PixelPoint centre = view.to_device(content.control_points[k].position).rounded();
+            painter.rectangle({centre.x - 4, centre.y - 4, centre.x + 5, centre.y + 5});
+        }
+    }
+    if (content.arrow_at && *content.arrow_at < content.control_points.size()) {
+        const PixelPoint target = view.to_device(content.control_points[*content.arrow_at].position).rounded();
+        painter.arrow({target.x + 3, target.y + 3});
+    }
+    if (content.arrow_home)
+        painter.arrow({4, 4});
+    draw_staff(painter, screen, content);
+    if (!content.message.empty())
+        screen.text.push_back({1, layout::message_row, content.message});
+    if (!content.key_help.empty())
+        screen.text.push_back({1, layout::key_help_row, content.key_help});
+    return screen;
+}
+
+} // namespace apcs

@@ -1,0 +1,93 @@
+#include "apcs/raster/glyph_mapper.h"
+#include "apcs/raster/painter.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <string_view>
+
+using namespace apcs;
+
+namespace {
+
+// One 9x14 cell, drawn, mapped to one ASCII character.
+char32_t ascii_of(void (*draw)(Painter&))
+{
+    Bitmap cell(9, 14);
+    Painter painter(cell);
+    draw(painter);
+    return map_to_cells(cell, {1, 1}, GlyphSet::ascii).at(0, 0);
+}
+
+} // namespace
+
+TEST_CASE("ASCII glyph choices follow the shape of thin lines", "[raster][glyphs]")
+{
+    CHECK(ascii_of([](Painter& p) { p.line({0, 7}, {8, 7}); }) == U'-');
+    CHECK(ascii_of([](Painter& p) { p.line({4, 0}, {4, 13}); }) == U'|');
+    CHECK(ascii_of([](Painter& p) { p.line({0, 13}, {8, 0}); }) == U'/');
+    CHECK(ascii_of([](Painter& p) { p.line({0, 0}, {8, 13}); }) == U'\\');
+    CHECK(ascii_of([](Painter& p) { p.text({0, 0}, "x"); }) == U'x');
+    CHECK(ascii_of([](Painter&) {}) == U' ');
+}
+
+TEST_CASE("symbols drawn in the font map back to themselves", "[raster][glyphs]")
+{
+    for (const char symbol : std::string_view("-|/\\_xX+<>^v()[#*=.:o")) {
+        Bitmap cell(9, 14);
+        Painter(cell).text({0, 0}, std::string(1, symbol));
+        CAPTURE(symbol);
+        REQUIRE(map_to_cells(cell, {1, 1}, GlyphSet::ascii).at(0, 0) == static_cast<char32_t>(symbol));
+    }
+}
+
+TEST_CASE("a lit pixel anywhere in a cell never maps to a space", "[raster][glyphs]")
+{
+    for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
+        for (int y = 0; y < 14; ++y)
+            for (int x = 0; x < 9; ++x) {
+                Bitmap cell(9, 14);
+                cell.set(x, y, true);
+                REQUIRE(map_to_cells(cell, {1, 1}, glyphs).at(0, 0) != U' ');
+            }
+    }
+}
+
+TEST_CASE("braille dots and quadrant blocks map sub-blocks to the right bits", "[raster][glyphs]")
+{
+    Bitmap cell(2, 4);
+    cell.set(0, 0, true); // dot 1
+    cell.set(1, 3, true); // dot 8
+    REQUIRE(map_to_cells(cell, {1, 1}, GlyphSet::braille).at(0, 0) == U'\u2881');
+    Bitmap block(2, 2);
+    block.set(1, 0, true);
+    block.set(0, 1, true);
+    REQUIRE(map_to_cells(block, {1, 1}, GlyphSet::blocks).at(0, 0) == U'\u259E');
+}
+
+TEST_CASE("the cell area keeps the 80x25 proportions and needs at least 80x25", "[raster][glyphs]")
+{
+    REQUIRE_FALSE(fit_cell_area(79, 25).has_value());
+    REQUIRE_FALSE(fit_cell_area(80, 24).has_value());
+    REQUIRE(fit_cell_area(80, 25)->columns == 80);
+    REQUIRE(fit_cell_area(80, 25)->rows == 25);
+    REQUIRE(fit_cell_area(200, 60)->columns == 192);
+    REQUIRE(fit_cell_area(200, 60)->rows == 60);
+    REQUIRE(fit_cell_area(160, 100)->columns == 160);
+    REQUIRE(fit_cell_area(160, 100)->rows == 50);
+}
+
+TEST_CASE("a one-pixel path line survives the mapping at 80x25", "[raster][glyphs]")
+{
+    Bitmap bitmap;
+    Painter(bitmap).line({5, 20}, {700, 300});
+    const CellGrid grid = map_to_cells(bitmap, {80, 25}, GlyphSet::ascii);
+    // Every column the line crosses shows something.
+    for (int column = 1; column < 77; ++column) {
+        bool seen = false;
+        for (int row = 0; row < 25; ++row)
+            seen = seen || grid.at(column, row) != U' ';
+        CAPTURE(column);
+        REQUIRE(seen);
+    }
+}
