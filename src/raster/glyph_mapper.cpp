@@ -15,10 +15,9 @@ namespace {
 constexpr int ascii_pool_columns = 3;
 constexpr int ascii_pool_rows = 7;
 
-// ASCII candidates in order of preference on equal distance: line-like symbols first, so that
-// a thin stroke becomes a stroke, letters and digits last.
-constexpr std::u32string_view ascii_preference =
-    U".-|/\\_'`,:;=+x<>^v()[]~!\"*#oXLJT7%&@$?{}lIiOoVYAHMNWZ0123456789abcdefghjkmnpqrstuwyzBCDEFGKPQRSU";
+// ASCII candidates in order of preference on equal cost: line-like symbols first, so that a thin
+// stroke becomes a stroke. Letters other than these shape-like few read as words, not lines.
+constexpr std::u32string_view ascii_preference = U".-|/\\_'`,:;=+x<>^v()[]!\"*#oXLJTVY7{}%&@$?";
 
 // Pools the pixel block [left, right) x [top, bottom) into columns x rows sub-blocks, each lit
 // when any of its pixels is lit. Bit index: row·columns + column.
@@ -135,11 +134,11 @@ char32_t ascii_glyph_for(unsigned pooled_mask)
     if (pooled_mask == 0)
         return U' ';
     // A stroke may sit anywhere in its cell while the font draws it at one place: the cell's
-    // shape may move by one sub-block in each direction at half the cost of a wrong sub-block,
-    // so a line one band below the font's '-' is still '-' and not '='.
+    // shape may move up to three sub-blocks up or down and one sideways, each step costing half
+    // a wrong sub-block, so a line a band below the font's '-' is still '-' and not '='.
     char32_t best = U'#';
     int best_cost = 1 << 30;
-    for (int down = -1; down <= 1; ++down)
+    for (int down = -3; down <= 3; ++down)
         for (int right = -1; right <= 1; ++right) {
             const std::optional<unsigned> moved = shifted(pooled_mask, right, down);
             if (!moved)

@@ -47,6 +47,7 @@ void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenConten
         const int marker = layout::staff_x(values[line]);
         painter.line({marker - 1, y - layout::staff_marker_half_height}, {marker - 1, y + layout::staff_marker_half_height});
         painter.line({marker + 1, y - layout::staff_marker_half_height}, {marker + 1, y + layout::staff_marker_half_height});
+        screen.marks.push_back({{marker, y}, U'O'});
         screen.text.push_back({layout::staff_value_column, row, format_staff_value(values[line])});
     }
 }

@@ -19,7 +19,7 @@ inline constexpr int staff_left = 15 * hercules::cell_width;
 inline constexpr int staff_right = 66 * hercules::cell_width;
 inline constexpr int staff_value_column = 69;
 inline constexpr int staff_tick_half_height = 3;
-inline constexpr int staff_marker_half_height = 5;
+inline constexpr int staff_marker_half_height = 4;
 
 constexpr int staff_line_y(int line) { return (first_staff_row + line) * hercules::cell_height + hercules::cell_height / 2; }
 constexpr int staff_x(double value) { return staff_left + static_cast<int>((value + 1.0) / 2.0 * (staff_right - staff_left) + 0.5); }
