@@ -100,7 +100,8 @@ ExitStatus not_built(const std::string& command, std::ostream& err)
 
 } // namespace
 
-int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
+int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                     const TerminalSessionRunner& terminal)
 {
     CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths", "apcs"};
     app.set_version_flag("--version", std::string("apcs ") + std::string(version));
@@ -170,7 +171,7 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
         return to_int(not_built("figures", err));
     if (play->parsed())
         return to_int(not_built("play", err));
-    return to_int(not_built("the interactive session", err));
+    return to_int(run_session_command(options, terminal, out, err));
 }
 
 } // namespace apcs

@@ -2,6 +2,7 @@
 
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
 
 #include <cstdio>
@@ -17,13 +18,6 @@ std::string format_frames_print(const FrameSequence& frames)
     for (std::size_t k = 0; k < frames.frame_count(); ++k)
         append_print_section(text, "frame " + std::to_string(k), frames.frame(k));
     return text;
-}
-
-std::string inbetween_file_name(std::size_t number)
-{
-    char name[32];
-    std::snprintf(name, sizeof name, "inb%03zu.dat", number);
-    return name;
 }
 
 namespace {
@@ -47,16 +41,11 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
     if (!std::filesystem::is_directory(folder, error))
         return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the in-between files"};
     std::vector<std::filesystem::path> written;
-    const std::size_t count = frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
-    for (std::size_t k = 1; k <= count; ++k) {
-        const std::filesystem::path target = folder / inbetween_file_name(k);
+    for (const NamedText& file : inbetween_files(frames, structure)) {
+        const std::filesystem::path target = folder / file.name;
         if (is_protected(target, protected_files))
             return Diagnostic{target.string(), 0, "is a key file; key files are never written"};
-        const std::span<const Vec3> frame = frames.frame(k);
-        const Graphic graphic = structure.with_points({frame.begin(), frame.end()});
-        std::string text = "; APCS in-between " + std::to_string(k) + " of " + std::to_string(count) + "\n";
-        text += format_dat(dat_from(graphic));
-        const Expected<WriteResult> result = write_file_atomically(target, text);
+        const Expected<WriteResult> result = write_file_atomically(target, file.content);
         if (!result)
             return result.error();
         written.push_back(target);

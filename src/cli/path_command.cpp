@@ -1,6 +1,7 @@
 #include "apcs/cli/path_command.h"
 
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/png_encoder.h"
 #include "apcs/session/path_screen.h"
@@ -9,16 +10,6 @@
 #include <ostream>
 
 namespace apcs {
-
-ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults)
-{
-    ControlPoints points;
-    points.reserve(file.point_count());
-    for (const DatPart& part : file.parts)
-        for (const DatPoint& point : part.points)
-            points.push_back({point.position, point.staff.value_or(defaults)});
-    return points;
-}
 
 std::string format_path_print(const EvaluatedPath& path)
 {

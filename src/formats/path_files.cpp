@@ -1,33 +1,49 @@
 #include "apcs/formats/path_files.h"
 
-#include "apcs/formats/file_io.h"
 #include "apcs/formats/number_text.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace apcs {
 
 std::string path_file_name(std::size_t point_number) { return "ani" + std::to_string(point_number) + ".dat"; }
 
-Expected<std::vector<std::filesystem::path>> split_into_path_files(const Graphic& key1, const Graphic& key2,
-                                                                   const std::filesystem::path& folder)
+std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2)
 {
     const std::vector<Vec3> first = key1.all_points();
     const std::vector<Vec3> second = key2.all_points();
-    std::vector<std::filesystem::path> written;
     const std::size_t count = std::min(first.size(), second.size());
-    written.reserve(count);
+    std::vector<NamedText> files;
+    files.reserve(count);
     for (std::size_t i = 0; i < count; ++i) {
         DatFile path;
         path.parts.push_back({"", Closure::open, {{first[i], std::nullopt, 0}, {second[i], std::nullopt, 0}}});
-        const std::filesystem::path target = folder / path_file_name(i + 1);
-        const Expected<WriteResult> result = write_file_atomically(target, format_dat(path));
-        if (!result)
-            return result.error();
-        written.push_back(target);
+        files.push_back({path_file_name(i + 1), format_dat(path)});
     }
-    return written;
+    return files;
+}
+
+std::string inbetween_file_name(std::size_t number)
+{
+    char name[32];
+    std::snprintf(name, sizeof name, "inb%03zu.dat", number);
+    return name;
+}
+
+std::vector<NamedText> inbetween_files(const FrameSequence& frames, const Graphic& structure)
+{
+    const std::size_t count = frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
+    std::vector<NamedText> files;
+    files.reserve(count);
+    for (std::size_t k = 1; k <= count; ++k) {
+        const std::span<const Vec3> frame = frames.frame(k);
+        const Graphic graphic = structure.with_points({frame.begin(), frame.end()});
+        files.push_back({inbetween_file_name(k), "; APCS in-between " + std::to_string(k) + " of " +
+                                                     std::to_string(count) + "\n" + format_dat(dat_from(graphic))});
+    }
+    return files;
 }
 
 std::string describe_point(const Vec3& point)
@@ -61,6 +77,16 @@ std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string
                           "the path ends at " + describe_point(end.position) + "; expected the " + which +
                               " graphic point's KEY2 position " + describe_point(key2_position)};
     return std::nullopt;
+}
+
+ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults)
+{
+    ControlPoints points;
+    points.reserve(file.point_count());
+    for (const DatPart& part : file.parts)
+        for (const DatPoint& point : part.points)
+            points.push_back({point.position, point.staff.value_or(defaults)});
+    return points;
 }
 
 DatFile dat_from(const ControlPoints& points)

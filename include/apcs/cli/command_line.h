@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/cli/session_command.h"
+
 #include <iosfwd>
 
 namespace apcs {
@@ -7,6 +9,8 @@ namespace apcs {
 // Parses the command line (SPEC §1) and runs the chosen command. Returns the exit status:
 // 0 success, 1 bad input, 2 bad usage (an unknown option or a bad value, with a one-line reason
 // and the usage on `err`), 3 a terminal problem.
-int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+// `terminal` runs the interactive session in a terminal; without it only headless sessions run.
+int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                     const TerminalSessionRunner& terminal = {});
 
 } // namespace apcs

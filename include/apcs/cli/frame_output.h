@@ -17,9 +17,6 @@ namespace apcs {
 // "# frame 0" … "# frame K", each followed by its points (SPEC §7.4).
 std::string format_frames_print(const FrameSequence& frames);
 
-// "inb001.dat" … (three digits at least, more when there are over 999 in-betweens).
-std::string inbetween_file_name(std::size_t number);
-
 // Writes the in-betweens (every frame but the first and the last) as inb001.dat … into `folder`,
 // each a whole graphic with the parts of `structure`. Files in `protected_files` (the key files)
 // are never written. Returns the files written.

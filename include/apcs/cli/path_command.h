@@ -12,10 +12,6 @@
 
 namespace apcs {
 
-// A path file's points as KB control points, all parts in file order: 7-column points keep their
-// own t c b a, shorter ones take `defaults`.
-ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults);
-
 // `# curve` (every sample) then `# inbetweens` (SPEC §4.3, §7.4).
 std::string format_path_print(const EvaluatedPath& path);
 

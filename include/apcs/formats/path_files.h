@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/animation/control_point.h"
+#include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/diagnostic.h"
@@ -15,17 +16,32 @@ namespace apcs {
 // The name of graphic point K's path file (K from 1): "ani1.dat", "ani2.dat", …
 std::string path_file_name(std::size_t point_number);
 
+// A file to be written: its name in the session's folder and its whole content.
+struct NamedText {
+    std::string name;
+    std::string content;
+};
+
 // The thesis' split.c (SPEC §5.2): one path file per graphic point, aniK.dat holding KEY1 point K
-// and KEY2 point K, written atomically into `folder` (an existing differing file is kept as .bak).
-// The keys must have equal point counts (equalised). Returns the files written, in order.
-Expected<std::vector<std::filesystem::path>> split_into_path_files(const Graphic& key1, const Graphic& key2,
-                                                                   const std::filesystem::path& folder);
+// and KEY2 point K (the keys equalised, so their counts are equal).
+std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2);
+
+// "inb001.dat" … (three digits at least, more when there are over 999 in-betweens).
+std::string inbetween_file_name(std::size_t number);
+
+// The in-between files inb001.dat … of every frame but the first and the last, each the whole
+// graphic with the parts of `structure`, headed by "; APCS in-between k of M".
+std::vector<NamedText> inbetween_files(const FrameSequence& frames, const Graphic& structure);
 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
 // end at its KEY2 position (to 1e-6 of the scene's size). Returns the problem, if any, as
 // "FILE:LINE: …" naming the expected point.
 std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
                                           const Vec3& key1_position, const Vec3& key2_position);
+
+// A path file's points as KB control points, all parts in file order: 7-column points keep their
+// own t c b a, shorter ones take `defaults`.
+ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults);
 
 // A path file's control points with their staff values, as written back after adjusting (all
 // seven columns).

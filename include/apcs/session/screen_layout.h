@@ -8,7 +8,9 @@ namespace apcs::layout {
 // The graphics screen of the session, in raster pixels and 80x25 text cells. The drawing area and
 // its boundary (thesis Make_Boundary) fill text rows 0–17; row 18 holds the prompt or message,
 // rows 19–22 the four-line staff (fig. 3.1.5), row 23 the keys.
-inline constexpr PixelRect drawing_area{0, 0, hercules::screen_width, 18 * hercules::cell_height};
+// The boundary's bottom line stays two pixels above row 18 so that, mapped to 25 character rows,
+// it lands in row 17 and not under the message.
+inline constexpr PixelRect drawing_area{0, 0, hercules::screen_width, 18 * hercules::cell_height - 2};
 inline constexpr int message_row = 18;
 inline constexpr int first_staff_row = 19;
 inline constexpr int key_help_row = 23;

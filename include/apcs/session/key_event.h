@@ -1,0 +1,38 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace apcs {
+
+// A key as the session sees it: the terminal maps digits, arrows and the keypad to these
+// (SPEC §7.3); `character` carries any other printable key.
+enum class Key { character, enter, escape, space, left, right, up, down, backspace };
+
+struct KeyEvent {
+    Key key = Key::character;
+    char32_t character = 0;
+
+    static KeyEvent of(Key key) { return {key, 0}; }
+    static KeyEvent typed(char32_t character) { return {Key::character, character}; }
+    bool operator==(const KeyEvent&) const = default;
+};
+
+// A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
+// literally; any other line holds tokens — a printable character, or ENTER, ESC, SPACE, LEFT,
+// RIGHT, UP, DOWN (BACKSPACE too); ';' starts a comment. Returns the events, or the first problem
+// as "line N: …".
+struct KeyScriptResult {
+    std::vector<KeyEvent> events;
+    std::optional<std::string> problem;
+    int problem_line = 0;
+};
+KeyScriptResult parse_key_script(std::string_view text);
+
+// Writes events as a script that parse_key_script reads back to the same events: runs of
+// printable characters typed in a line become TEXT lines.
+std::string format_key_script(const std::vector<KeyEvent>& events);
+
+} // namespace apcs

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string_view>
+
+// The session's words, byte for byte those of the thesis' figures 4.2.1–4.2.7 (SPEC §3), and the
+// few of our own (marked).
+namespace apcs::session_text {
+
+inline constexpr std::string_view ask_key1 = "Please keyin the KEY1 filename!";
+inline constexpr std::string_view ask_key2 = "Please keyin the KEY2 filename!";
+inline constexpr std::string_view adding_points_done = "Adding_Points work is done.";
+inline constexpr std::string_view must_input_two_files = "You must Input 2 Files to adjust animation path:";
+// "ani1.dat and aniN.dat." / "ani1.dat contained the first graphic point to adjust its path." …
+inline constexpr std::string_view contained_first = " contained the first graphic point to adjust its path.";
+inline constexpr std::string_view contained_last = " contained the last graphic point to adjust its path.";
+inline constexpr std::string_view ask_view = "Please input the VIEWER'S direction and delay time:";
+inline constexpr std::string_view ask_view_values = "THETA ,PHI & delay-time value.";
+inline constexpr std::string_view ask_path_file = "Please keyin the anix.dat filename";
+inline constexpr std::string_view ask_path_file_purpose = "to adjust the point's animating path!";
+inline constexpr std::string_view slope_range = "The Starting and Ending Points' slope ranged from 0 to 1.";
+inline constexpr std::string_view ask_slopes = "Please input the slope : DS[0] ,DD[N]";
+inline constexpr std::string_view choose_control = "8 : Global Control    2 : Local Control";
+inline constexpr std::string_view ask_again = "Adjust the path again ? (Y/N)";
+inline constexpr std::string_view ask_next_path = "Press 'Y' to adjust the next path !";
+inline constexpr std::string_view ask_stop = "Press <ENTER> to Stop the work !";
+inline constexpr std::string_view fitting = "Please wait a moment! Surface Fitting is working now .....";
+inline constexpr std::string_view fitting_done = "Surface-Fitting work is done.";
+inline constexpr std::string_view ask_draw = "Press any key to draw the animation effect!";
+
+// Ours: graphics-mode key help and messages.
+inline constexpr std::string_view pick_first = "Local: 4/6 move the arrow, Enter picks the FIRST control point";
+inline constexpr std::string_view pick_last = "Local: 4/6 move the arrow, Enter picks the LAST control point";
+inline constexpr std::string_view staff_keys = "4/6 step  J/L 3 steps  Enter accept  Esc keep";
+inline constexpr std::string_view animation_keys = "Esc stop  Space pause  R replay";
+inline constexpr std::string_view animation_done = "Press any key to see all frames";
+inline constexpr std::string_view overlay_done = "Press any key to end APCS";
+inline constexpr std::string_view frames_freeze = "frames will freeze";
+
+} // namespace apcs::session_text

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "apcs/raster/cell_grid.h"
+#include "apcs/session/key_event.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace apcs {
+
+struct TerminalSize {
+    int columns = 0;
+    int rows = 0;
+};
+
+// What read_key saw: a key, nothing within the time-out, a resize, or a request to stop
+// (SIGINT, SIGTERM, SIGHUP, or the terminal gone).
+enum class TerminalInput { key, timeout, resize, stop };
+
+// The one door to the terminal (ncurses). Construction takes over the terminal; destruction, a
+// signal or an exception in the program gives it back as it was (echo and line mode on).
+class Terminal {
+public:
+    // nullopt, with the reason in `problem`, when there is no usable terminal (TERM unset or
+    // unknown, stdin or stdout not a terminal).
+    static std::unique_ptr<Terminal> open(std::string& problem);
+    ~Terminal();
+    Terminal(const Terminal&) = delete;
+    Terminal& operator=(const Terminal&) = delete;
+
+    TerminalSize size() const;
+    // Waits up to timeout_ms (negative: for ever, but still wakes for signals).
+    TerminalInput read_key(int timeout_ms, KeyEvent& key);
+    // Shows the grid at the top-left, sending only the cells that changed since the last call.
+    void show(const CellGrid& grid);
+    // Forgets what is on the screen, so that the next show() repaints everything.
+    void invalidate();
+    // The number of bytes sent to the terminal so far (for the byte-count benchmark).
+    std::size_t bytes_sent() const;
+
+private:
+    Terminal();
+    struct State;
+    std::unique_ptr<State> m_state;
+};
+
+} // namespace apcs

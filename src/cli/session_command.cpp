@@ -1,0 +1,115 @@
+#include "apcs/cli/session_command.h"
+
+#include "apcs/formats/file_io.h"
+
+#include <ostream>
+#include <unistd.h>
+
+namespace apcs {
+
+namespace {
+
+std::string screen_text(const Session& session, GlyphSet glyphs)
+{
+    const SessionScreen screen = session.screen();
+    const CellGrid grid = screen.graphics ? render_cells(screen.picture, {80, 25}, glyphs) : screen.text;
+    std::string text;
+    for (int row = 0; row < grid.rows(); ++row) {
+        std::string line = grid.row_text(row);
+        line.erase(line.find_last_not_of(' ') + 1);
+        text += line + '\n';
+    }
+    return text;
+}
+
+void print_step(const Session& session, GlyphSet glyphs, std::ostream& out)
+{
+    out << "--- " << phase_name(session.phase()) << '\n' << screen_text(session, glyphs);
+}
+
+} // namespace
+
+std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
+                                           std::ostream& out)
+{
+    std::vector<KeyEvent> handled;
+    print_step(session, glyphs, out);
+    for (const KeyEvent& key : keys) {
+        if (session.finished())
+            break;
+        const SessionPhase before = session.phase();
+        handled.push_back(key);
+        session.handle(key);
+        if (session.phase() == SessionPhase::animating && session.phase() != before)
+            print_step(session, glyphs, out);
+        while (session.animating())
+            session.tick();
+        if (session.phase() != before)
+            print_step(session, glyphs, out);
+    }
+    return handled;
+}
+
+ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
+                               std::ostream& err)
+{
+    const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error)) {
+        err << folder.string() << ": is not a folder; expected the folder to work in (--workdir)\n";
+        return ExitStatus::bad_input;
+    }
+    std::vector<KeyEvent> scripted;
+    if (options.keys) {
+        const Expected<std::string> text = read_text_file(*options.keys);
+        if (!text) {
+            err << text.error().to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+        const KeyScriptResult script = parse_key_script(*text);
+        if (script.problem) {
+            err << options.keys->string() << ":" << script.problem_line << ": " << *script.problem << '\n';
+            return ExitStatus::bad_input;
+        }
+        scripted = script.events;
+    }
+    FolderFiles files(folder);
+    files.log("session started");
+    SessionSettings settings{options.path.samples_per_segment, options.path.inbetween_count, options.path.spacing,
+                             options.step};
+    Session session(settings, files);
+    std::vector<KeyEvent> recorded;
+    int status = 0;
+    if (!::isatty(STDIN_FILENO) || !terminal) {
+        if (!options.keys) {
+            err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
+            return ExitStatus::terminal_problem;
+        }
+        const GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
+        recorded = run_headless_session(session, scripted, glyphs, out);
+        if (!session.finished())
+            err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+    } else {
+        std::string problem;
+        status = terminal(session, scripted, options.glyphs, recorded, problem);
+        if (status == 3) {
+            err << "apcs: " << problem << '\n';
+            return ExitStatus::terminal_problem;
+        }
+        if (status == 130)
+            err << "apcs: stopped; every file written so far is whole\n";
+        else
+            for (const std::string& name : session.written_files())
+                out << name << '\n';
+    }
+    if (options.record) {
+        const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
+        if (!written) {
+            err << written.error().to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+    }
+    return static_cast<ExitStatus>(status);
+}
+
+} // namespace apcs

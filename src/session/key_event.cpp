@@ -1,0 +1,120 @@
+#include "apcs/session/key_event.h"
+
+#include "apcs/raster/cell_grid.h"
+#include "apcs/raster/painter.h"
+
+#include <array>
+#include <utility>
+
+namespace apcs {
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, Key>, 8> key_names{{
+    {"ENTER", Key::enter},
+    {"ESC", Key::escape},
+    {"SPACE", Key::space},
+    {"LEFT", Key::left},
+    {"RIGHT", Key::right},
+    {"UP", Key::up},
+    {"DOWN", Key::down},
+    {"BACKSPACE", Key::backspace},
+}};
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+} // namespace
+
+KeyScriptResult parse_key_script(std::string_view text)
+{
+    KeyScriptResult result;
+    int line_number = 0;
+    while (!text.empty()) {
+        ++line_number;
+        const std::size_t newline = text.find('\n');
+        std::string_view line = text.substr(0, newline);
+        text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+        if (line.ends_with('\r'))
+            line.remove_suffix(1);
+        if (line.starts_with("TEXT ")) {
+            for (const char32_t character : decode_utf8(line.substr(5)))
+                result.events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
+            continue;
+        }
+        line = line.substr(0, line.find(';'));
+        std::size_t position = 0;
+        while (position < line.size()) {
+            while (position < line.size() && is_blank(line[position]))
+                ++position;
+            const std::size_t start = position;
+            while (position < line.size() && !is_blank(line[position]))
+                ++position;
+            if (position == start)
+                break;
+            const std::string_view token = line.substr(start, position - start);
+            bool named = false;
+            for (const auto& [name, key] : key_names)
+                if (token == name) {
+                    result.events.push_back(KeyEvent::of(key));
+                    named = true;
+                }
+            if (named)
+                continue;
+            const std::u32string characters = decode_utf8(token);
+            if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD) {
+                result.problem = "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, DOWN, "
+                                 "BACKSPACE; found '" + std::string(token) + "'";
+                result.problem_line = line_number;
+                return result;
+            }
+            result.events.push_back(KeyEvent::typed(characters[0]));
+        }
+    }
+    return result;
+}
+
+std::string format_key_script(const std::vector<KeyEvent>& events)
+{
+    std::string script;
+    std::string pending_text;
+    const auto flush_text = [&] {
+        if (!pending_text.empty())
+            script += "TEXT " + pending_text + "\n";
+        pending_text.clear();
+    };
+    for (const KeyEvent& event : events) {
+        // Text keeps its spaces inside a TEXT line; a TEXT line may not end in a space that an
+        // editor could strip, so a trailing space is written as its own token.
+        if (event.key == Key::character && event.character != U';') {
+            append_utf8(pending_text, event.character);
+            continue;
+        }
+        if (event.key == Key::space && !pending_text.empty()) {
+            pending_text += ' ';
+            continue;
+        }
+        std::string trailing_spaces;
+        while (pending_text.ends_with(' ')) {
+            pending_text.pop_back();
+            trailing_spaces += "SPACE\n";
+        }
+        flush_text();
+        script += trailing_spaces;
+        if (event.key == Key::character) {
+            script += "TEXT ;\n";
+            continue;
+        }
+        for (const auto& [name, key] : key_names)
+            if (key == event.key)
+                script += std::string(name) + "\n";
+    }
+    std::string trailing_spaces;
+    while (pending_text.ends_with(' ')) {
+        pending_text.pop_back();
+        trailing_spaces += "SPACE\n";
+    }
+    flush_text();
+    return script + trailing_spaces;
+}
+
+} // namespace apcs

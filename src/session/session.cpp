@@ -1,0 +1,560 @@
+#include "apcs/session/session.h"
+
+#include "apcs/animation/surface_fit.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/path_files.h"
+#include "apcs/raster/painter.h"
+#include "apcs/session/path_screen.h"
+#include "apcs/session/screen_layout.h"
+#include "apcs/session/session_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace apcs {
+
+namespace text = session_text;
+
+const char* phase_name(SessionPhase phase)
+{
+    switch (phase) {
+    case SessionPhase::ask_key1: return "step 1: KEY1 file";
+    case SessionPhase::ask_key2: return "step 1: KEY2 file";
+    case SessionPhase::ask_view: return "step 2: view and delay";
+    case SessionPhase::ask_path_file: return "step 3: path file";
+    case SessionPhase::ask_slopes: return "step 3: end slopes";
+    case SessionPhase::choose_control: return "step 3: global or local control";
+    case SessionPhase::pick_region_first: return "step 3: first control point of the region";
+    case SessionPhase::pick_region_last: return "step 3: last control point of the region";
+    case SessionPhase::staff: return "step 4: four-line staff";
+    case SessionPhase::ask_again: return "step 5: adjust again";
+    case SessionPhase::ask_next_path: return "step 5: next path";
+    case SessionPhase::ask_stop: return "step 6: stop the work";
+    case SessionPhase::ask_draw: return "step 6: surface fitting done";
+    case SessionPhase::animating: return "step 6: animation";
+    case SessionPhase::animation_done: return "step 6: animation done";
+    case SessionPhase::overlay: return "step 6: all frames";
+    case SessionPhase::finished: return "end";
+    }
+    return "";
+}
+
+namespace {
+
+std::string trimmed(const std::string& line)
+{
+    const auto first = line.find_first_not_of(" \t");
+    if (first == std::string::npos)
+        return {};
+    const auto last = line.find_last_not_of(" \t");
+    return line.substr(first, last - first + 1);
+}
+
+// Numbers separated by blanks or commas (the thesis writes "THETA ,PHI"); nullopt if any field
+// is not a finite number.
+std::optional<std::vector<double>> numbers_in(const std::string& line)
+{
+    std::string spaced = line;
+    std::replace(spaced.begin(), spaced.end(), ',', ' ');
+    std::istringstream fields(spaced);
+    std::vector<double> numbers;
+    std::string field;
+    while (fields >> field) {
+        const std::optional<double> value = parse_number(field);
+        if (!value || !std::isfinite(*value))
+            return std::nullopt;
+        numbers.push_back(*value);
+    }
+    return numbers;
+}
+
+bool is_yes(const KeyEvent& event)
+{
+    return event.key == Key::character && (event.character == U'Y' || event.character == U'y');
+}
+
+bool is_character(const KeyEvent& event, char32_t a, char32_t b = 0)
+{
+    return event.key == Key::character && (event.character == a || (b != 0 && event.character == b));
+}
+
+double snapped(double value)
+{
+    // Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
+    return std::clamp(std::round(value * 1e9) / 1e9, -1.0, 1.0);
+}
+
+double& staff_value(StaffValues& staff, int line)
+{
+    switch (line) {
+    case 0: return staff.tension;
+    case 1: return staff.continuity;
+    case 2: return staff.bias;
+    default: return staff.acceleration;
+    }
+}
+
+} // namespace
+
+Session::Session(SessionSettings settings, SessionFiles& files)
+    : m_settings(settings)
+    , m_files(files)
+{
+    m_console.print_line(std::string(text::ask_key1));
+}
+
+void Session::say(const std::string& line) { m_console.print_line(line); }
+
+void Session::record_written(const std::string& name)
+{
+    if (std::find(m_written.begin(), m_written.end(), name) == m_written.end())
+        m_written.push_back(name);
+}
+
+void Session::handle(const KeyEvent& event)
+{
+    switch (m_phase) {
+    case SessionPhase::ask_key1:
+    case SessionPhase::ask_key2:
+    case SessionPhase::ask_view:
+    case SessionPhase::ask_path_file:
+    case SessionPhase::ask_slopes: {
+        std::string input = m_console.input();
+        if (event.key == Key::enter) {
+            // An empty answer takes the thesis' example, and the console shows it as typed.
+            const std::string answer = trimmed(input).empty() ? default_answer() : trimmed(input);
+            m_console.set_input(answer);
+            m_console.commit_input();
+            submit_line(answer);
+            return;
+        }
+        if (event.key == Key::backspace) {
+            const std::u32string decoded = decode_utf8(input);
+            std::string shorter;
+            for (std::size_t i = 0; i + 1 < decoded.size(); ++i)
+                append_utf8(shorter, decoded[i]);
+            m_console.set_input(shorter);
+        } else if (event.key == Key::escape) {
+            m_console.set_input("");
+        } else if (event.key == Key::space) {
+            m_console.set_input(input + " ");
+        } else if (event.key == Key::character && event.character >= 0x20 && input.size() < 200) {
+            append_utf8(input, event.character);
+            m_console.set_input(input);
+        }
+        return;
+    }
+    case SessionPhase::ask_next_path:
+        if (is_yes(event)) {
+            say("Y");
+            m_path = 1;
+            start_path_prompt();
+        }
+        return;
+    case SessionPhase::ask_stop:
+        if (event.key == Key::enter)
+            run_surface_fitting();
+        return;
+    case SessionPhase::ask_draw:
+        start_animation();
+        return;
+    case SessionPhase::animating:
+        if (event.key == Key::escape) {
+            m_phase = SessionPhase::animation_done;
+            m_paused = false;
+        } else if (event.key == Key::space) {
+            m_paused = !m_paused;
+        } else if (is_character(event, U'R', U'r')) {
+            m_frame = 0;
+            m_paused = false;
+        }
+        return;
+    case SessionPhase::animation_done:
+        m_phase = SessionPhase::overlay;
+        m_files.log("showed all " + std::to_string(m_frames.frame_count()) + " frames overlaid");
+        return;
+    case SessionPhase::overlay: {
+        m_phase = SessionPhase::finished;
+        say("");
+        say("APCS is done. Files written:");
+        for (const std::string& name : m_written)
+            say("  " + name);
+        m_files.log("end of session");
+        return;
+    }
+    case SessionPhase::finished:
+        return;
+    default:
+        handle_graphics_key(event);
+        return;
+    }
+}
+
+void Session::tick()
+{
+    if (!animating())
+        return;
+    if (m_frame + 1 < m_frames.frame_count())
+        ++m_frame;
+    else
+        m_phase = SessionPhase::animation_done;
+}
+
+std::string Session::default_answer() const
+{
+    switch (m_phase) {
+    case SessionPhase::ask_key1:
+        return "key1.dat";
+    case SessionPhase::ask_key2:
+        return "key2.dat";
+    case SessionPhase::ask_view:
+        return "30 40 200";
+    case SessionPhase::ask_path_file:
+        return path_file_name(m_path == 0 ? 1 : m_point_count);
+    case SessionPhase::ask_slopes:
+        return m_first_slope ? "1" : "1 1";
+    default:
+        return {};
+    }
+}
+
+void Session::submit_line(const std::string& line)
+{
+    switch (m_phase) {
+    case SessionPhase::ask_key1:
+        return submit_key_file(line, 0);
+    case SessionPhase::ask_key2:
+        return submit_key_file(line, 1);
+    case SessionPhase::ask_view:
+        return submit_view(line);
+    case SessionPhase::ask_path_file:
+        return submit_path_file(line);
+    case SessionPhase::ask_slopes:
+        return submit_slopes(line);
+    default:
+        return;
+    }
+}
+
+void Session::submit_key_file(const std::string& name, int which)
+{
+    const Expected<DatFile> file = m_files.read_dat(name, 2);
+    if (!file) {
+        say(file.error().to_string());
+        say(std::string(which == 0 ? text::ask_key1 : text::ask_key2));
+        return;
+    }
+    m_key_names[static_cast<std::size_t>(which)] = name;
+    m_key_frames[static_cast<std::size_t>(which)] = graphic_from(*file);
+    m_files.log("KEY" + std::to_string(which + 1) + " " + name + ": " + std::to_string(file->point_count()) +
+                " points in " + std::to_string(file->parts.size()) + " parts");
+    if (which == 0) {
+        m_phase = SessionPhase::ask_key2;
+        say(std::string(text::ask_key2));
+        return;
+    }
+    finish_keys();
+}
+
+void Session::finish_keys()
+{
+    m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
+    m_point_count = m_keys.key1.point_count();
+    for (const NamedText& file : split_path_files(m_keys.key1, m_keys.key2)) {
+        if (auto problem = m_files.write(file.name, file.content)) {
+            say(problem->to_string());
+            say(std::string(text::ask_key2));
+            return;
+        }
+        record_written(file.name);
+    }
+    m_files.log("added points: both keys have " + std::to_string(m_point_count) + " points in " +
+                std::to_string(m_keys.key1.parts.size()) + " parts; wrote ani1.dat … " + path_file_name(m_point_count));
+    const std::string last = path_file_name(m_point_count);
+    say(std::string(text::adding_points_done));
+    say(std::string(text::must_input_two_files));
+    say("ani1.dat and " + last + ".");
+    say("ani1.dat" + std::string(text::contained_first));
+    say(last + std::string(text::contained_last));
+    say(std::string(text::ask_view));
+    say(std::string(text::ask_view_values));
+    m_phase = SessionPhase::ask_view;
+}
+
+void Session::submit_view(const std::string& line)
+{
+    const std::optional<std::vector<double>> numbers = numbers_in(line);
+    if (!numbers || numbers->size() != 3 || (*numbers)[2] < 0 || (*numbers)[2] > 60000 ||
+        std::abs((*numbers)[0]) > 1e6 || std::abs((*numbers)[1]) > 1e6) {
+        say("Expected three numbers: THETA PHI (degrees) and the delay (0 to 60000 ms), e.g. 30 40 200");
+        say(std::string(text::ask_view_values));
+        return;
+    }
+    m_view_angles = {(*numbers)[0], (*numbers)[1]};
+    m_delay_ms = static_cast<int>(std::lround((*numbers)[2]));
+    m_files.log("view: theta " + shortest_number(m_view_angles.theta_degrees) + ", phi " +
+                shortest_number(m_view_angles.phi_degrees) + ", delay " + std::to_string(m_delay_ms) + " ms");
+    m_path = 0;
+    start_path_prompt();
+}
+
+void Session::start_path_prompt()
+{
+    say(std::string(text::ask_path_file));
+    say(std::string(text::ask_path_file_purpose));
+    m_phase = SessionPhase::ask_path_file;
+}
+
+void Session::submit_path_file(const std::string& name)
+{
+    const Expected<DatFile> file = m_files.read_dat(name, 2);
+    const std::vector<Vec3> first = m_keys.key1.all_points();
+    const std::vector<Vec3> second = m_keys.key2.all_points();
+    const std::size_t point = m_path == 0 ? 0 : m_point_count - 1;
+    std::optional<Diagnostic> problem;
+    if (!file)
+        problem = file.error();
+    else
+        problem = check_path_ends(*file, name, m_path == 0 ? "first" : "last", first[point], second[point]);
+    if (problem) {
+        say(problem->to_string());
+        start_path_prompt();
+        return;
+    }
+    // A closed graphic's second path starts from the first path's values, as the thesis says.
+    const bool closed_second = m_path == 1 && m_keys.key1.is_closed() && !m_points[0].empty();
+    const StaffValues defaults = closed_second ? m_points[0].front().staff : StaffValues{};
+    m_path_names[static_cast<std::size_t>(m_path)] = name;
+    m_points[static_cast<std::size_t>(m_path)] = control_points_from(*file, defaults);
+    m_files.log("path " + name + ": " + std::to_string(file->point_count()) + " control points");
+    say("");
+    say(std::string(text::slope_range));
+    say(std::string(text::ask_slopes));
+    m_first_slope.reset();
+    m_phase = SessionPhase::ask_slopes;
+}
+
+void Session::submit_slopes(const std::string& line)
+{
+    const std::optional<std::vector<double>> numbers = numbers_in(line);
+    const bool fits = numbers && !numbers->empty() && numbers->size() <= (m_first_slope ? 1u : 2u) &&
+                      std::all_of(numbers->begin(), numbers->end(), [](double s) { return s >= 0.0 && s <= 1.0; });
+    if (!fits) {
+        say("Expected two slopes from 0 to 1, e.g. 1 1");
+        say(std::string(text::ask_slopes));
+        m_first_slope.reset();
+        return;
+    }
+    if (!m_first_slope && numbers->size() == 1) {
+        m_first_slope = numbers->front();
+        return;
+    }
+    const double start = m_first_slope ? *m_first_slope : (*numbers)[0];
+    const double end = numbers->back();
+    m_slopes[static_cast<std::size_t>(m_path)] = {start, end};
+    m_files.log("slopes DS[0] " + shortest_number(start) + ", DD[N] " + shortest_number(end));
+    enter_graphics();
+}
+
+void Session::reevaluate()
+{
+    PathSettings settings{m_slopes[static_cast<std::size_t>(m_path)], m_settings.samples_per_segment,
+                          m_settings.inbetween_count, m_settings.spacing};
+    m_evaluated = evaluate_path(m_points[static_cast<std::size_t>(m_path)], settings);
+}
+
+void Session::enter_graphics()
+{
+    reevaluate();
+    // The view is fixed for the whole adjusting of a path so that each key's effect is seen
+    // against a still picture; it is fitted to the path and both key frames.
+    std::vector<Vec3> scene;
+    for (const ControlPoint& point : m_points[static_cast<std::size_t>(m_path)])
+        scene.push_back(point.position);
+    scene.insert(scene.end(), m_evaluated.curve.points.begin(), m_evaluated.curve.points.end());
+    for (const Graphic* key : {&m_keys.key1, &m_keys.key2}) {
+        const std::vector<Vec3> points = key->all_points();
+        scene.insert(scene.end(), points.begin(), points.end());
+    }
+    m_view = ViewTransform::fit(m_view_angles, scene, layout::drawing_area);
+    m_phase = SessionPhase::choose_control;
+    m_graphics_message.clear();
+}
+
+void Session::handle_graphics_key(const KeyEvent& event)
+{
+    if (is_character(event, U'K', U'k') && m_phase != SessionPhase::staff) {
+        m_show_key_frames = !m_show_key_frames;
+        return;
+    }
+    switch (m_phase) {
+    case SessionPhase::choose_control:
+        if (is_character(event, U'8') || event.key == Key::up) {
+            m_region = {0, m_points[static_cast<std::size_t>(m_path)].size() - 1};
+            m_files.log("global control");
+            start_staff();
+        } else if (is_character(event, U'2') || event.key == Key::down) {
+            m_arrow.reset();
+            m_phase = SessionPhase::pick_region_first;
+        }
+        return;
+    case SessionPhase::pick_region_first:
+        return handle_pick(event, false);
+    case SessionPhase::pick_region_last:
+        return handle_pick(event, true);
+    case SessionPhase::staff:
+        return handle_staff(event);
+    case SessionPhase::ask_again:
+        if (is_yes(event)) {
+            m_phase = SessionPhase::choose_control;
+            return;
+        }
+        accept_path();
+        return;
+    default:
+        return;
+    }
+}
+
+void Session::handle_pick(const KeyEvent& event, bool picking_last)
+{
+    const std::size_t last_index = m_points[static_cast<std::size_t>(m_path)].size() - 1;
+    if (is_character(event, U'4') || event.key == Key::left) {
+        m_arrow = m_arrow ? (*m_arrow > 0 ? *m_arrow - 1 : 0) : 0;
+    } else if (is_character(event, U'6') || event.key == Key::right) {
+        m_arrow = m_arrow ? std::min(*m_arrow + 1, last_index) : 0;
+    } else if (event.key == Key::escape) {
+        m_graphics_message.clear();
+        m_phase = picking_last ? SessionPhase::pick_region_first : SessionPhase::choose_control;
+    } else if (event.key == Key::enter && m_arrow) {
+        if (!picking_last) {
+            m_region_first = *m_arrow;
+            m_graphics_message.clear();
+            m_phase = SessionPhase::pick_region_last;
+        } else if (*m_arrow <= m_region_first) {
+            m_graphics_message = "The last control point must come after the first (point " +
+                                 std::to_string(m_region_first + 1) + ")";
+        } else {
+            m_region = {m_region_first, *m_arrow};
+            m_graphics_message.clear();
+            m_files.log("local control: control points " + std::to_string(m_region.first + 1) + " to " +
+                        std::to_string(m_region.second + 1));
+            start_staff();
+        }
+    }
+}
+
+void Session::start_staff()
+{
+    m_staff = m_points[static_cast<std::size_t>(m_path)][m_region.first].staff;
+    m_staff_line = 0;
+    m_line_start_value = m_staff.tension;
+    m_phase = SessionPhase::staff;
+}
+
+void Session::set_staff_value(double value)
+{
+    staff_value(m_staff, m_staff_line) = snapped(value);
+    apply_staff_to_region();
+}
+
+void Session::apply_staff_to_region()
+{
+    ControlPoints& points = m_points[static_cast<std::size_t>(m_path)];
+    for (std::size_t k = m_region.first; k <= m_region.second && k < points.size(); ++k) {
+        points[k].staff.tension = m_staff.tension;
+        points[k].staff.continuity = m_staff.continuity;
+        points[k].staff.bias = m_staff.bias;
+        // The span's acceleration belongs to the points it starts from: all but the region's
+        // last, unless the region is the whole path.
+        if (k < m_region.second || m_region.second + 1 == points.size())
+            points[k].staff.acceleration = m_staff.acceleration;
+    }
+    reevaluate();
+}
+
+void Session::handle_staff(const KeyEvent& event)
+{
+    const double value = staff_value(m_staff, m_staff_line);
+    const double step = m_settings.step;
+    if (is_character(event, U'4') || event.key == Key::left)
+        return set_staff_value(value - step);
+    if (is_character(event, U'6') || event.key == Key::right)
+        return set_staff_value(value + step);
+    if (is_character(event, U'J', U'j'))
+        return set_staff_value(value - 3 * step);
+    if (is_character(event, U'L', U'l'))
+        return set_staff_value(value + 3 * step);
+    if (event.key != Key::enter && event.key != Key::escape)
+        return;
+    if (event.key == Key::escape)
+        set_staff_value(m_line_start_value);
+    m_files.log(std::string(staff_line_names[static_cast<std::size_t>(m_staff_line)]) + " " +
+                format_staff_value(staff_value(m_staff, m_staff_line)) + (event.key == Key::escape ? " (kept)" : ""));
+    if (m_staff_line == 3) {
+        m_phase = SessionPhase::ask_again;
+        return;
+    }
+    ++m_staff_line;
+    m_line_start_value = staff_value(m_staff, m_staff_line);
+}
+
+void Session::accept_path()
+{
+    const std::string& name = m_path_names[static_cast<std::size_t>(m_path)];
+    if (auto problem = m_files.write(name, format_dat(dat_from(m_points[static_cast<std::size_t>(m_path)])))) {
+        m_graphics_message = problem->to_string();
+        m_phase = SessionPhase::ask_again;
+        return;
+    }
+    record_written(name);
+    m_files.log("accepted path " + name + " (rewritten with t c b a)");
+    if (m_path == 0) {
+        say(std::string(text::ask_next_path));
+        m_phase = SessionPhase::ask_next_path;
+    } else {
+        say(std::string(text::ask_stop));
+        m_phase = SessionPhase::ask_stop;
+    }
+}
+
+void Session::run_surface_fitting()
+{
+    say(std::string(text::fitting));
+    PathSettings first{m_slopes[0], m_settings.samples_per_segment, m_settings.inbetween_count, m_settings.spacing};
+    PathSettings last{m_slopes[1], m_settings.samples_per_segment, m_settings.inbetween_count, m_settings.spacing};
+    const EvaluatedPath first_path = evaluate_path(m_points[0], first);
+    const EvaluatedPath last_path = evaluate_path(m_points[1], last);
+    m_frames = fit_key_frames(m_keys, first_path, last_path);
+    const std::vector<NamedText> files = inbetween_files(m_frames, m_keys.key1);
+    for (const NamedText& file : files) {
+        if (auto problem = m_files.write(file.name, file.content)) {
+            say(problem->to_string());
+            say(std::string(text::ask_stop));
+            return;
+        }
+        record_written(file.name);
+    }
+    const std::size_t count = files.size();
+    m_files.log("surface fitting: " + std::to_string(count) + " in-betweens of " + std::to_string(m_point_count) +
+                " points written");
+    say(std::string(text::fitting_done));
+    say(std::string(text::ask_draw));
+    m_phase = SessionPhase::ask_draw;
+}
+
+void Session::start_animation()
+{
+    std::vector<Vec3> scene;
+    for (std::size_t k = 0; k < m_frames.frame_count(); ++k)
+        scene.insert(scene.end(), m_frames.frame(k).begin(), m_frames.frame(k).end());
+    m_animation_view = ViewTransform::fit(m_view_angles, scene, layout::drawing_area);
+    m_frame = 0;
+    m_paused = false;
+    m_phase = m_frames.frame_count() == 0 ? SessionPhase::animation_done : SessionPhase::animating;
+    m_files.log("animation: " + std::to_string(m_frames.frame_count()) + " frames, " + std::to_string(m_delay_ms) +
+                " ms each");
+}
+
+} // namespace apcs

@@ -1,0 +1,242 @@
+#include "apcs/terminal/terminal.h"
+
+#include <curses.h>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace apcs {
+
+namespace {
+
+volatile std::sig_atomic_t stop_requested = 0;
+
+extern "C" void request_stop(int) { stop_requested = 1; }
+
+// Counts what ncurses writes, by putting a counting stream between it and the real stdout.
+struct CountingOutput {
+    FILE* stream = nullptr;
+    std::size_t bytes = 0;
+};
+
+ssize_t count_write(void* cookie, const char* data, std::size_t size)
+{
+    auto* output = static_cast<CountingOutput*>(cookie);
+    std::size_t written = 0;
+    while (written < size) {
+        const ssize_t result = ::write(STDOUT_FILENO, data + written, size - written);
+        if (result < 0) {
+            if (errno == EINTR)
+                continue;
+            return written > 0 ? static_cast<ssize_t>(written) : -1;
+        }
+        written += static_cast<std::size_t>(result);
+    }
+    output->bytes += written;
+    return static_cast<ssize_t>(written);
+}
+
+} // namespace
+
+struct Terminal::State {
+    SCREEN* screen = nullptr;
+    CountingOutput output;
+    CellGrid shown;
+    bool valid = false;
+    struct sigaction old_int {};
+    struct sigaction old_term {};
+    struct sigaction old_hup {};
+};
+
+Terminal::Terminal() : m_state(std::make_unique<State>()) {}
+
+std::unique_ptr<Terminal> Terminal::open(std::string& problem)
+{
+    if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) {
+        problem = "standard input and output must be a terminal";
+        return nullptr;
+    }
+    const char* term = std::getenv("TERM");
+    if (term == nullptr || *term == '\0') {
+        problem = "TERM is not set; set it to your terminal's type, e.g. TERM=xterm";
+        return nullptr;
+    }
+    std::unique_ptr<Terminal> terminal(new Terminal());
+    State& state = *terminal->m_state;
+    cookie_io_functions_t functions{nullptr, count_write, nullptr, nullptr};
+    state.output.stream = fopencookie(&state.output, "w", functions);
+    if (state.output.stream == nullptr) {
+        problem = "cannot set up terminal output";
+        return nullptr;
+    }
+    state.screen = newterm(term, state.output.stream, stdin);
+    if (state.screen == nullptr) {
+        std::fclose(state.output.stream);
+        problem = std::string("the terminal type '") + term + "' is unknown (no terminfo entry); try TERM=xterm";
+        return nullptr;
+    }
+    set_term(state.screen);
+    cbreak();
+    noecho();
+    nonl();
+    keypad(stdscr, TRUE);
+    set_escdelay(25);
+    curs_set(0);
+    struct sigaction action {};
+    action.sa_handler = request_stop;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &state.old_int);
+    sigaction(SIGTERM, &action, &state.old_term);
+    sigaction(SIGHUP, &action, &state.old_hup);
+    stop_requested = 0;
+    return terminal;
+}
+
+Terminal::~Terminal()
+{
+    if (m_state->screen != nullptr) {
+        curs_set(1);
+        endwin();
+        delscreen(m_state->screen);
+        std::fflush(m_state->output.stream);
+        std::fclose(m_state->output.stream);
+    }
+    sigaction(SIGINT, &m_state->old_int, nullptr);
+    sigaction(SIGTERM, &m_state->old_term, nullptr);
+    sigaction(SIGHUP, &m_state->old_hup, nullptr);
+}
+
+TerminalSize Terminal::size() const
+{
+    int rows = 0;
+    int columns = 0;
+    getmaxyx(stdscr, rows, columns);
+    return {columns, rows};
+}
+
+namespace {
+
+// Keypad keys in application mode with NumLock off arrive as ESC O x when terminfo does not
+// name them: t = 4, v = 6, x = 8, r = 2, M = Enter.
+std::optional<KeyEvent> keypad_sequence(wint_t final)
+{
+    switch (final) {
+    case 't': return KeyEvent::typed(U'4');
+    case 'v': return KeyEvent::typed(U'6');
+    case 'x': return KeyEvent::typed(U'8');
+    case 'r': return KeyEvent::typed(U'2');
+    case 'M': return KeyEvent::of(Key::enter);
+    default: return std::nullopt;
+    }
+}
+
+} // namespace
+
+TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
+{
+    const auto start = std::chrono::steady_clock::now();
+    while (true) {
+        if (stop_requested)
+            return TerminalInput::stop;
+        int wait = 100;
+        if (timeout_ms >= 0) {
+            const auto elapsed = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count();
+            if (elapsed >= timeout_ms)
+                return TerminalInput::timeout;
+            wait = static_cast<int>(std::min<long long>(100, timeout_ms - elapsed));
+        }
+        timeout(wait);
+        wint_t code = 0;
+        const int kind = get_wch(&code);
+        if (kind == ERR) {
+            // A closed terminal reads as end of file at once, again and again.
+            if (!::isatty(STDIN_FILENO))
+                return TerminalInput::stop;
+            continue;
+        }
+        if (kind == KEY_CODE_YES) {
+            switch (code) {
+            case KEY_RESIZE: return TerminalInput::resize;
+            case KEY_LEFT: key = KeyEvent::of(Key::left); return TerminalInput::key;
+            case KEY_RIGHT: key = KeyEvent::of(Key::right); return TerminalInput::key;
+            case KEY_UP: key = KeyEvent::of(Key::up); return TerminalInput::key;
+            case KEY_DOWN: key = KeyEvent::of(Key::down); return TerminalInput::key;
+            case KEY_ENTER: key = KeyEvent::of(Key::enter); return TerminalInput::key;
+            case KEY_BACKSPACE: key = KeyEvent::of(Key::backspace); return TerminalInput::key;
+            default: continue;
+            }
+        }
+        switch (code) {
+        case '\r':
+        case '\n': key = KeyEvent::of(Key::enter); return TerminalInput::key;
+        case ' ': key = KeyEvent::of(Key::space); return TerminalInput::key;
+        case 8:
+        case 127: key = KeyEvent::of(Key::backspace); return TerminalInput::key;
+        case 27: {
+            timeout(25);
+            wint_t next = 0;
+            if (get_wch(&next) == OK && next == 'O') {
+                wint_t final = 0;
+                if (get_wch(&final) == OK)
+                    if (const auto mapped = keypad_sequence(final)) {
+                        key = *mapped;
+                        return TerminalInput::key;
+                    }
+                continue;
+            }
+            if (next != 0)
+                unget_wch(static_cast<wchar_t>(next));
+            key = KeyEvent::of(Key::escape);
+            return TerminalInput::key;
+        }
+        default:
+            if (code >= 0x20) {
+                key = KeyEvent::typed(static_cast<char32_t>(code));
+                return TerminalInput::key;
+            }
+            continue;
+        }
+    }
+}
+
+void Terminal::invalidate() { m_state->valid = false; }
+
+void Terminal::show(const CellGrid& grid)
+{
+    State& state = *m_state;
+    const bool full = !state.valid || state.shown.columns() != grid.columns() || state.shown.rows() != grid.rows();
+    if (full)
+        erase();
+    for (int row = 0; row < grid.rows(); ++row) {
+        int column = 0;
+        while (column < grid.columns()) {
+            if (!full && grid.at(column, row) == state.shown.at(column, row)) {
+                ++column;
+                continue;
+            }
+            // A run of changed cells goes out as one string.
+            std::string run;
+            const int start = column;
+            while (column < grid.columns() && (full || grid.at(column, row) != state.shown.at(column, row))) {
+                append_utf8(run, grid.at(column, row));
+                ++column;
+            }
+            mvaddstr(row, start, run.c_str());
+        }
+    }
+    refresh();
+    state.shown = grid;
+    state.valid = true;
+}
+
+std::size_t Terminal::bytes_sent() const
+{
+    std::fflush(m_state->output.stream);
+    return m_state->output.bytes;
+}
+
+} // namespace apcs

@@ -1,0 +1,67 @@
+#include "apcs/terminal/terminal_session.h"
+
+#include "apcs/terminal/terminal.h"
+
+#include <cstddef>
+
+namespace apcs {
+
+namespace {
+
+CellGrid too_small_grid(TerminalSize size)
+{
+    CellGrid grid(size.columns, size.rows);
+    const std::string message = "The terminal must be at least 80x25 (it is " + std::to_string(size.columns) + "x" +
+                                std::to_string(size.rows) + ")";
+    const int column = std::max(0, (size.columns - static_cast<int>(message.size())) / 2);
+    grid.put_text(column, size.rows / 2, message);
+    return grid;
+}
+
+CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs)
+{
+    const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
+    if (!area)
+        return too_small_grid(size);
+    const SessionScreen screen = session.screen();
+    if (screen.graphics)
+        return render_cells(screen.picture, *area, glyphs);
+    return screen.text;
+}
+
+} // namespace
+
+int run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+                         std::vector<KeyEvent>& recorded, std::string& problem)
+{
+    std::unique_ptr<Terminal> terminal = Terminal::open(problem);
+    if (!terminal)
+        return 3;
+    std::size_t next_scripted = 0;
+    while (!session.finished()) {
+        terminal->show(grid_for(session, terminal->size(), glyphs));
+        KeyEvent key;
+        TerminalInput input = TerminalInput::key;
+        if (next_scripted < scripted.size() && !session.animating())
+            key = scripted[next_scripted++];
+        else
+            input = terminal->read_key(session.animating() ? session.delay_ms() : -1, key);
+        switch (input) {
+        case TerminalInput::stop:
+            return 130;
+        case TerminalInput::resize:
+            terminal->invalidate();
+            break;
+        case TerminalInput::timeout:
+            session.tick();
+            break;
+        case TerminalInput::key:
+            recorded.push_back(key);
+            session.handle(key);
+            break;
+        }
+    }
+    return 0;
+}
+
+} // namespace apcs
