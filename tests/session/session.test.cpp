@@ -1,0 +1,285 @@
+#include "apcs/formats/path_files.h"
+#include "apcs/session/session.h"
+#include "apcs/session/session_text.h"
+
+#include "support/memory_files.h"
+
+#include <catch2/catch.hpp>
+
+using namespace apcs;
+using test::MemoryFiles;
+
+namespace {
+
+void type(Session& session, const std::string& line)
+{
+    for (const char c : line)
+        session.handle(c == ' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(static_cast<char32_t>(c)));
+    session.handle(KeyEvent::of(Key::enter));
+}
+
+void press(Session& session, std::initializer_list<KeyEvent> keys)
+{
+    for (const KeyEvent& key : keys)
+        session.handle(key);
+}
+
+KeyEvent ch(char c) { return KeyEvent::typed(static_cast<char32_t>(c)); }
+const KeyEvent enter = KeyEvent::of(Key::enter);
+const KeyEvent escape = KeyEvent::of(Key::escape);
+
+// The text screen, each row without its trailing blanks.
+std::string screen_text(const Session& session)
+{
+    const CellGrid grid = session.screen().text;
+    std::string shown;
+    for (int row = 0; row < grid.rows(); ++row) {
+        std::string line = grid.row_text(row);
+        shown += line.erase(line.find_last_not_of(' ') + 1) + "\n";
+    }
+    return shown;
+}
+
+std::string graphics_message(const Session& session)
+{
+    for (const TextLine& line : session.screen().picture.text)
+        if (line.row == 18)
+            return line.text;
+    return {};
+}
+
+MemoryFiles example_files()
+{
+    MemoryFiles files;
+    files.files["key1.dat"] = "0 0 0\n0 0 10\n0 6 0\n0 6 10\n";
+    files.files["key2.dat"] = "0 0 10\n0 0 0\n0 5 0\n";
+    files.files["way1.dat"] = "0 0 0\n3 -4 5\n1 1 7\n0 0 10\n";
+    return files;
+}
+
+// Through steps 1–3 with the thesis' default answers and way1.dat as the first path.
+void reach_control_choice(Session& session)
+{
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    type(session, "way1.dat");
+    type(session, "");
+}
+
+} // namespace
+
+TEST_CASE("step 1 and 2 print the thesis' words with the real file names", "[session]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    REQUIRE(screen_text(session).starts_with("Please keyin the KEY1 filename!\n_"));
+    type(session, "");
+    type(session, "KEY2.DAT"); // a missing name: asked again
+    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(screen_text(session).find("KEY2.DAT: cannot open: No such file or directory\n"
+                                      "Please keyin the KEY2 filename!") != std::string::npos);
+    type(session, "key2.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+    const std::string expected = "Please keyin the KEY1 filename!\n"
+                                 "key1.dat\n"
+                                 "Please keyin the KEY2 filename!\n"
+                                 "KEY2.DAT\n"
+                                 "KEY2.DAT: cannot open: No such file or directory\n"
+                                 "Please keyin the KEY2 filename!\n"
+                                 "key2.dat\n"
+                                 "Adding_Points work is done.\n"
+                                 "You must Input 2 Files to adjust animation path:\n"
+                                 "ani1.dat and ani4.dat.\n"
+                                 "ani1.dat contained the first graphic point to adjust its path.\n"
+                                 "ani4.dat contained the last graphic point to adjust its path.\n"
+                                 "Please input the VIEWER'S direction and delay time:\n"
+                                 "THETA ,PHI & delay-time value.\n";
+    REQUIRE(screen_text(session).starts_with(expected));
+    // The split wrote one path file per graphic point: KEY2 gained (0,0,5) by Algorithm 2.
+    REQUIRE(files.files["ani2.dat"] == "0 0 10\n0 0 5\n");
+    REQUIRE(files.files["ani4.dat"] == "0 6 10\n0 5 0\n");
+}
+
+TEST_CASE("a wrong answer at each prompt says why and asks again", "[session]")
+{
+    MemoryFiles files = example_files();
+    files.files["bad.dat"] = "0 0 0\nx 1 1\n";
+    files.files["off.dat"] = "0 1 0\n0 0 10\n";
+    Session session({}, files);
+    type(session, "nothing.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    type(session, "bad.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    REQUIRE(screen_text(session).find("bad.dat:2: expected a number, found 'x'") != std::string::npos);
+    type(session, "");
+    type(session, "");
+    type(session, "30 forty 200");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+    type(session, "30 40");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+    type(session, "30 40 -5");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+    type(session, "30, 40, 200");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    type(session, "off.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(screen_text(session).find("off.dat:1: the path starts at (0, 1, 0); expected the first graphic point's "
+                                      "KEY1\n position (0, 0, 0)") != std::string::npos);
+    type(session, "ani4.dat"); // the last point's path offered for the first point
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    type(session, "");
+    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    type(session, "1.5 1");
+    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    type(session, "0.5"); // one slope per line, as in fig. 4.2.3
+    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    type(session, "0");
+    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.screen().graphics);
+}
+
+TEST_CASE("global control applies every staff key to all control points", "[session][staff]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_control_choice(session);
+    REQUIRE(session.phase() == SessionPhase::choose_control);
+    press(session, {ch('8')});
+    REQUIRE(session.phase() == SessionPhase::staff);
+    // TENSION: 6 6 6 (+0.15), 4 (−0.05), L (+0.15), J (−0.15), right arrow (+0.05) = +0.15.
+    press(session, {ch('6'), ch('6'), ch('6'), ch('4'), ch('L'), ch('J'), KeyEvent::of(Key::right), enter});
+    // CONTINUITY: 4 4, then Esc puts it back to 0.
+    press(session, {ch('4'), ch('4'), escape});
+    // BIAS: left arrow −0.05; ACCELERATION: L L +0.30.
+    press(session, {KeyEvent::of(Key::left), enter, ch('L'), ch('L'), enter});
+    REQUIRE(session.phase() == SessionPhase::ask_again);
+    press(session, {ch('N')});
+    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    REQUIRE(files.files["way1.dat"] == "0 0 0 0.15 0 -0.05 0.3\n3 -4 5 0.15 0 -0.05 0.3\n1 1 7 0.15 0 -0.05 0.3\n"
+                                       "0 0 10 0.15 0 -0.05 0.3\n");
+}
+
+TEST_CASE("staff values clamp at -1 and +1", "[session][staff]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('8')});
+    for (int i = 0; i < 20; ++i)
+        press(session, {ch('L')});
+    press(session, {enter});
+    for (int i = 0; i < 30; ++i)
+        press(session, {ch('J')});
+    press(session, {enter, enter, enter, ch('n')});
+    REQUIRE(files.files["way1.dat"].starts_with("0 0 0 1 -1 0 0\n"));
+}
+
+TEST_CASE("local control changes the picked middle region only", "[session][staff]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('2')});
+    REQUIRE(session.phase() == SessionPhase::pick_region_first);
+    // The arrow starts at the top-left; the first 6 moves it to control point 1, the next to 2.
+    press(session, {ch('6'), ch('6'), enter});
+    REQUIRE(session.phase() == SessionPhase::pick_region_last);
+    press(session, {ch('4'), enter}); // point 1 is before the first: refused
+    REQUIRE(session.phase() == SessionPhase::pick_region_last);
+    REQUIRE(graphics_message(session) == "The last control point must come after the first (point 2)");
+    press(session, {KeyEvent::of(Key::right), KeyEvent::of(Key::right), enter});
+    REQUIRE(session.phase() == SessionPhase::staff);
+    press(session, {ch('6'), ch('6'), enter, enter, enter, ch('6'), enter, ch('N')});
+    // Points 2 and 3 (indices 1, 2) get t = 0.1; a = 0.05 starts at point 2 and ends at point 3.
+    REQUIRE(files.files["way1.dat"] == "0 0 0 0 0 0 0\n3 -4 5 0.1 0 0 0.05\n1 1 7 0.1 0 0 0\n0 0 10 0 0 0 0\n");
+}
+
+TEST_CASE("Y adjusts the path again from the control choice", "[session]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('y')});
+    REQUIRE(session.phase() == SessionPhase::choose_control);
+}
+
+TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[session]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n-3 10 5\n0 5 0\n";
+    SessionSettings settings;
+    settings.inbetween_count = 5;
+    Session session(settings, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N')});
+    press(session, {ch('x')}); // only Y goes on
+    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    press(session, {ch('Y')});
+    type(session, "way4.dat");
+    type(session, "1 1");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N')});
+    REQUIRE(session.phase() == SessionPhase::ask_stop);
+    press(session, {ch('q')});
+    REQUIRE(session.phase() == SessionPhase::ask_stop);
+    press(session, {enter});
+    REQUIRE(session.phase() == SessionPhase::ask_draw);
+    REQUIRE(screen_text(session).find("Press <ENTER> to Stop the work !\n"
+                                      "Please wait a moment! Surface Fitting is working now .....\n"
+                                      "Surface-Fitting work is done.\n"
+                                      "Press any key to draw the animation effect!\n") != std::string::npos);
+    REQUIRE(files.files.count("inb005.dat") == 1);
+    REQUIRE(files.files.count("inb006.dat") == 0);
+    press(session, {KeyEvent::of(Key::space)});
+    REQUIRE(session.animating());
+    REQUIRE(session.delay_ms() == 200);
+    press(session, {KeyEvent::of(Key::space)}); // pause
+    REQUIRE_FALSE(session.animating());
+    press(session, {KeyEvent::of(Key::space)});
+    for (int i = 0; i < 10; ++i)
+        session.tick();
+    REQUIRE(session.phase() == SessionPhase::animation_done);
+    press(session, {enter});
+    REQUIRE(session.phase() == SessionPhase::overlay);
+    press(session, {enter});
+    REQUIRE(session.finished());
+    REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n") != std::string::npos);
+    REQUIRE(files.log_lines.back() == "end of session");
+    REQUIRE(session.written_files().size() == 4 + 2 + 5);
+}
+
+TEST_CASE("a closed graphic's second path starts from the first path's values", "[session]")
+{
+    MemoryFiles files;
+    files.files["key1.dat"] = "PART ring CLOSED\n0 0 0\n0 2 0\n0 2 2\n0 0 0\n";
+    files.files["key2.dat"] = "PART ring CLOSED\n4 0 0\n4 3 0\n4 3 3\n4 0 0\n";
+    Session session({}, files);
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    press(session, {ch('8'), ch('6'), ch('6'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, ""); // ani4.dat, which holds the same point as ani1.dat
+    type(session, "");
+    press(session, {ch('8')});
+    REQUIRE(session.screen().picture.text.size() > 1);
+    bool shows_tension = false;
+    for (const TextLine& line : session.screen().picture.text)
+        shows_tension = shows_tension || (line.row == 19 && line.text == "+0.10");
+    REQUIRE(shows_tension);
+}
+
+TEST_CASE("key scripts parse and format back to the same keys", "[session][keys]")
+{
+    const KeyScriptResult script = parse_key_script("; comment\nENTER\nTEXT 30 40 200\nENTER\n6 6 J L ESC ; steps\n"
+                                                    "LEFT RIGHT UP DOWN SPACE BACKSPACE\nTEXT ;\n");
+    REQUIRE_FALSE(script.problem.has_value());
+    REQUIRE(script.events.size() == 1 + 9 + 1 + 5 + 6 + 1);
+    REQUIRE(script.events[3] == KeyEvent::of(Key::space));
+    REQUIRE(script.events.back() == KeyEvent::typed(U';'));
+    REQUIRE(parse_key_script(format_key_script(script.events)).events == script.events);
+    const KeyScriptResult bad = parse_key_script("ENTER\nPAGEUP\n");
+    REQUIRE(bad.problem.has_value());
+    REQUIRE(bad.problem_line == 2);
+}
