@@ -17,34 +17,10 @@ volatile std::sig_atomic_t stop_requested = 0;
 
 extern "C" void request_stop(int) { stop_requested = 1; }
 
-// Counts what ncurses writes, by putting a counting stream between it and the real stdout.
-struct CountingOutput {
-    FILE* stream = nullptr;
-    std::size_t bytes = 0;
-};
-
-ssize_t count_write(void* cookie, const char* data, std::size_t size)
-{
-    auto* output = static_cast<CountingOutput*>(cookie);
-    std::size_t written = 0;
-    while (written < size) {
-        const ssize_t result = ::write(STDOUT_FILENO, data + written, size - written);
-        if (result < 0) {
-            if (errno == EINTR)
-                continue;
-            return written > 0 ? static_cast<ssize_t>(written) : -1;
-        }
-        written += static_cast<std::size_t>(result);
-    }
-    output->bytes += written;
-    return static_cast<ssize_t>(written);
-}
-
 } // namespace
 
 struct Terminal::State {
     SCREEN* screen = nullptr;
-    CountingOutput output;
     CellGrid shown;
     bool valid = false;
     struct sigaction old_int {};
@@ -67,15 +43,8 @@ std::unique_ptr<Terminal> Terminal::open(std::string& problem)
     }
     std::unique_ptr<Terminal> terminal(new Terminal());
     State& state = *terminal->m_state;
-    cookie_io_functions_t functions{nullptr, count_write, nullptr, nullptr};
-    state.output.stream = fopencookie(&state.output, "w", functions);
-    if (state.output.stream == nullptr) {
-        problem = "cannot set up terminal output";
-        return nullptr;
-    }
-    state.screen = newterm(term, state.output.stream, stdin);
+    state.screen = newterm(term, stdout, stdin);
     if (state.screen == nullptr) {
-        std::fclose(state.output.stream);
         problem = std::string("the terminal type '") + term + "' is unknown (no terminfo entry); try TERM=xterm";
         return nullptr;
     }
@@ -102,8 +71,6 @@ Terminal::~Terminal()
         curs_set(1);
         endwin();
         delscreen(m_state->screen);
-        std::fflush(m_state->output.stream);
-        std::fclose(m_state->output.stream);
     }
     sigaction(SIGINT, &m_state->old_int, nullptr);
     sigaction(SIGTERM, &m_state->old_term, nullptr);
@@ -231,12 +198,6 @@ void Terminal::show(const CellGrid& grid)
     refresh();
     state.shown = grid;
     state.valid = true;
-}
-
-std::size_t Terminal::bytes_sent() const
-{
-    std::fflush(m_state->output.stream);
-    return m_state->output.bytes;
 }
 
 } // namespace apcs

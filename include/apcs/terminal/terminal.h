@@ -36,8 +36,6 @@ public:
     void show(const CellGrid& grid);
     // Forgets what is on the screen, so that the next show() repaints everything.
     void invalidate();
-    // The number of bytes sent to the terminal so far (for the byte-count benchmark).
-    std::size_t bytes_sent() const;
 
 private:
     Terminal();

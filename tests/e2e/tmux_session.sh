@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# End-to-end: the real apcs in a real terminal (tmux, 80x25), a whole session typed key by key.
+# Usage: tmux_session.sh APCS DATA_FOLDER
+set -euo pipefail
+apcs=$1
+data=$2
+command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
+
+work=$(mktemp -d)
+socket="apcs-e2e-$$"
+cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
+trap cleanup EXIT
+cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$data"/way4.dat "$work"/
+
+screen() { tmux -L "$socket" capture-pane -p -t apcs; }
+wait_for() {
+  for _ in $(seq 1 150); do
+    screen | grep -qF -- "$1" && return 0
+    sleep 0.1
+  done
+  echo "timed out waiting for: $1"; echo "--- screen:"; screen; exit 1
+}
+keys() { tmux -L "$socket" send-keys -t apcs "$@"; sleep 0.15; }
+
+tmux -L "$socket" new-session -d -s apcs -x 80 -y 25 -c "$work" \
+  "LANG=C.UTF-8 '$apcs' --glyphs ascii; echo EXITED=\$?; sleep 60"
+
+wait_for "Please keyin the KEY1 filename!"
+keys Enter
+wait_for "Please keyin the KEY2 filename!"
+keys Enter
+wait_for "THETA ,PHI & delay-time value."
+keys "0 90 40" Enter
+wait_for "to adjust the point's animating path!"
+keys way1.dat Enter
+wait_for "Please input the slope : DS[0] ,DD[N]"
+keys Enter
+wait_for "8 : Global Control"
+keys 8
+wait_for ">TENSION"
+keys 6 6 6
+wait_for "+0.15"
+keys Enter
+wait_for ">CONTINUITY"
+keys 4 Escape
+wait_for ">BIAS"
+keys Right Enter L Enter
+wait_for "Adjust the path again ? (Y/N)"
+keys N
+wait_for "Press 'Y' to adjust the next path !"
+keys Y
+wait_for "to adjust the point's animating path!"
+keys way4.dat Enter
+wait_for "Please input the slope"
+keys "0.5 1" Enter
+wait_for "8 : Global Control"
+keys 2
+wait_for "Enter picks the FIRST"
+keys 6 6 Enter
+wait_for "Enter picks the LAST"
+keys 6 Enter
+wait_for ">TENSION"
+keys J Enter Enter Enter Enter
+wait_for "Adjust the path again ? (Y/N)"
+keys N
+wait_for "Press <ENTER> to Stop the work !"
+keys Enter
+wait_for "Press any key to draw the animation effect!"
+keys Space
+wait_for "Press any key to see all frames"
+keys Space
+wait_for "Press any key to end APCS"
+keys Space
+wait_for "EXITED=0"
+
+for file in ani1.dat ani4.dat inb001.dat inb012.dat way1.bak way4.bak apcs.log; do
+  [ -s "$work/$file" ] || { echo "missing $file"; ls -l "$work"; exit 1; }
+done
+grep -q "^0 0 0 0.15 0 0.05 0.15$" "$work/way1.dat" || { echo "way1.dat not adjusted:"; cat "$work/way1.dat"; exit 1; }
+grep -q "^-3 10 5 -0.15 0 0 0$" "$work/way4.dat" || { echo "way4.dat not adjusted:"; cat "$work/way4.dat"; exit 1; }
+echo "1 passed, 0 failed"
