@@ -180,7 +180,7 @@ std::u32string decode_utf8(std::string_view utf8)
             ++i;
             continue;
         }
-        char32_t value = length == 1 ? lead : lead & (0x7F >> length);
+        char32_t value = length == 1 ? lead : static_cast<char32_t>(lead & (0x7F >> length));
         bool valid = true;
         for (int k = 1; k < length; ++k) {
             const auto next = static_cast<unsigned char>(utf8[i + static_cast<std::size_t>(k)]);
