@@ -1,6 +1,7 @@
 #include "apcs/cli/command_line.h"
 
 #include "apcs/cli/exit_status.h"
+#include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
@@ -168,7 +169,7 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     if (fit->parsed())
         return to_int(run_fit_command({fit_files[0], fit_files[1], fit_files[2], fit_files[3]}, options, out, err));
     if (figures->parsed())
-        return to_int(not_built("figures", err));
+        return to_int(run_figures_command(options, APCS_DATA_DIR, out, err));
     if (play->parsed())
         return to_int(not_built("play", err));
     return to_int(run_session_command(options, terminal, out, err));

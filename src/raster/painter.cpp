@@ -109,6 +109,23 @@ void Painter::line(PixelPoint from, PixelPoint to, DrawMode mode)
     each_line_pixel(from, to, [&](int x, int y) { apply(m_target, x, y, mode); });
 }
 
+void Painter::styled_line(PixelPoint from, PixelPoint to, LineStyle style, int& phase)
+{
+    bool first = true;
+    each_line_pixel(from, to, [&](int x, int y) {
+        // A segment's first pixel is the previous segment's last: counted once.
+        if (first && phase > 0) {
+            first = false;
+            return;
+        }
+        first = false;
+        const bool on = style == LineStyle::solid || (style == LineStyle::dashed ? phase % 10 < 6 : phase % 3 == 0);
+        if (on)
+            m_target.set(x, y, true);
+        ++phase;
+    });
+}
+
 void Painter::cross_marker(PixelPoint centre, DrawMode mode)
 {
     std::vector<PixelPoint> pixels;

@@ -12,6 +12,10 @@ namespace apcs {
 // call erases again; every pixel of one primitive is toggled once, however often its strokes cross.
 enum class DrawMode { set, clear, toggle };
 
+// How a line is stroked, so that curves overlaid in one colour stay apart: solid, dashed
+// (6 on, 4 off) or dotted (1 on, 2 off).
+enum class LineStyle { solid, dashed, dotted };
+
 // Draws into a Bitmap it does not own. Everything is clipped to the bitmap.
 class Painter {
 public:
@@ -21,6 +25,9 @@ public:
     // Bresenham's line from `from` to `to`, both ends included, clipped to the bitmap first so
     // that far-away ends cost nothing.
     void line(PixelPoint from, PixelPoint to, DrawMode mode = DrawMode::set);
+    // A styled line; `phase` counts pixels along a polyline so the pattern runs on across its
+    // segments (start it at 0).
+    void styled_line(PixelPoint from, PixelPoint to, LineStyle style, int& phase);
     // A control point's mark: an `x` of 5x5 pixels centred on `centre`.
     void cross_marker(PixelPoint centre, DrawMode mode = DrawMode::set);
     // A small filled square of 3x3 pixels, for the shown in-between positions.

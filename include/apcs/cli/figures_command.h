@@ -1,0 +1,30 @@
+#pragma once
+
+#include "apcs/cli/exit_status.h"
+#include "apcs/cli/options.h"
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// One view of a bundled example of thesis Ch. 5, drawn with all its frames overlaid.
+struct ExampleFigure {
+    std::string folder;     // under the data folder
+    std::string path_first; // path files, as shipped
+    std::string path_last;
+    ViewAngles view;
+    std::string file_name;
+    std::string title;
+};
+
+const std::vector<ExampleFigure>& example_figures();
+
+// `apcs figures --out DIR`: fig-3-1-1.png … fig-3-1-4.png and one PNG per example view, read
+// from --workdir (default: the project's data folder).
+ExitStatus run_figures_command(const CommonOptions& options, const std::filesystem::path& data_folder,
+                               std::ostream& out, std::ostream& err);
+
+} // namespace apcs

@@ -1,0 +1,40 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/raster/painter.h"
+
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// One curve of a figure: its control points with their t, c, b, its stroke and its label.
+struct FigureCurve {
+    std::string label;
+    ControlPoints points;
+    LineStyle style = LineStyle::solid;
+};
+
+struct CurveFigure {
+    std::string file_name; // e.g. "fig-3-1-1.png"
+    std::string title;
+    std::vector<FigureCurve> curves;
+};
+
+// The thesis' figures 3.1.1–3.1.4: t = −1, 0, 1; c = −1, 0, 1; b = −1, 0, 1 (each overlaid on the
+// same control points) and a mix of t, c and b.
+std::vector<CurveFigure> thesis_curve_figures();
+
+// A curve figure at 720x348: the curves seen face-on (θ = 0, Φ = 90), x at the control points,
+// the title at the top and a legend naming each curve's stroke at the bottom.
+GraphicsScreen draw_curve_figure(const CurveFigure& figure);
+
+// All frames of an example overlaid, as in the thesis' figures 5.1–5.2, with a title.
+GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
+                                  ViewAngles angles);
+
+} // namespace apcs

@@ -1,0 +1,89 @@
+#include "apcs/cli/figures_command.h"
+
+#include "apcs/animation/surface_fit.h"
+#include "apcs/cli/path_command.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/path_files.h"
+#include "apcs/session/figures.h"
+
+#include <ostream>
+
+namespace apcs {
+
+const std::vector<ExampleFigure>& example_figures()
+{
+    static const std::vector<ExampleFigure> figures{
+        {"n-to-l", "way1.dat", "way4.dat", {0, 90}, "example-1-n-to-l-a.png", "Fig. 5.1.a  N becomes L, THETA 0 PHI 90"},
+        {"n-to-l", "way1.dat", "way4.dat", {30, 40}, "example-1-n-to-l-b.png", "Fig. 5.1.b  N becomes L, THETA 30 PHI 40"},
+        {"stick", "way1.dat", "way5.dat", {0, 90}, "example-2-stick-a.png", "Fig. 5.2.a  A stick falls, THETA 0 PHI 90"},
+        {"stick", "way1.dat", "way5.dat", {40, 50}, "example-2-stick-b.png", "Fig. 5.2.b  A stick falls, THETA 40 PHI 50"},
+        {"snake-apple", "key1.dat", "way15.dat", {0, 90}, "example-3-snake-apple.png",
+         "Example 3  A snake moves toward an apple, THETA 0 PHI 90"},
+    };
+    return figures;
+}
+
+namespace {
+
+// The example's frames: keys equalised, shipped paths (3 columns: staff values 0).
+Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::filesystem::path& data_folder,
+                                      const CommonOptions& options)
+{
+    const std::filesystem::path folder = data_folder / example.folder;
+    const Expected<Graphic> key1 = read_key_frame(folder / "key1.dat");
+    if (!key1)
+        return key1.error();
+    const Expected<Graphic> key2 = read_key_frame(folder / "key2.dat");
+    if (!key2)
+        return key2.error();
+    const EqualisedKeys keys = equalise_key_frames(*key1, *key2);
+    std::vector<ControlPoints> paths;
+    for (const std::string& name : {example.path_first, example.path_last}) {
+        Expected<DatFile> file = read_dat_file(folder / name);
+        if (!file)
+            return file.error();
+        paths.push_back(control_points_from(*file, options.staff));
+    }
+    // The apple of example 3 stands still: its first point's path is the point itself.
+    if (example.path_first == "key1.dat")
+        paths[0] = {{keys.key1.all_points().front(), {}}, {keys.key2.all_points().front(), {}}};
+    const FrameSequence frames =
+        fit_key_frames(keys, evaluate_path(paths[0], options.path), evaluate_path(paths[1], options.path));
+    return draw_frames_figure(example.title, frames, keys.key1, example.view);
+}
+
+} // namespace
+
+ExitStatus run_figures_command(const CommonOptions& options, const std::filesystem::path& data_folder, std::ostream& out,
+                               std::ostream& err)
+{
+    const std::filesystem::path target = options.out.value_or(".");
+    std::error_code error;
+    if (!std::filesystem::is_directory(target, error)) {
+        err << target.string() << ": is not a folder; expected an existing folder for the figures (mkdir it first)\n";
+        return ExitStatus::bad_input;
+    }
+    for (const CurveFigure& figure : thesis_curve_figures()) {
+        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure))) {
+            err << problem->to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+        out << (target / figure.file_name).string() << '\n';
+    }
+    const std::filesystem::path examples = options.workdir.empty() ? data_folder : options.workdir;
+    for (const ExampleFigure& example : example_figures()) {
+        const Expected<GraphicsScreen> screen = draw_example(example, examples, options);
+        if (!screen) {
+            err << screen.error().to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+        if (auto problem = write_png_file(target / example.file_name, *screen)) {
+            err << problem->to_string() << '\n';
+            return ExitStatus::bad_input;
+        }
+        out << (target / example.file_name).string() << '\n';
+    }
+    return ExitStatus::success;
+}
+
+} // namespace apcs

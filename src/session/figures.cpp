@@ -1,0 +1,121 @@
+#include "apcs/session/figures.h"
+
+#include "apcs/animation/motion_path.h"
+
+namespace apcs {
+
+namespace {
+
+// The control points all curve figures share: a zigzag in the y-z plane, seen face-on.
+ControlPoints zigzag(StaffValues staff)
+{
+    ControlPoints points;
+    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{0, 3, 5}, Vec3{0, 7, 1}, Vec3{0, 10, 6}, Vec3{0, 14, 2}})
+        points.push_back({position, staff});
+    return points;
+}
+
+FigureCurve curve(const std::string& label, StaffValues staff, LineStyle style)
+{
+    return {label, zigzag(staff), style};
+}
+
+constexpr PixelRect figure_area{0, 2 * 14, 720, 21 * 14};
+constexpr int legend_row = 22;
+
+const char* style_name(LineStyle style)
+{
+    switch (style) {
+    case LineStyle::solid: return "solid";
+    case LineStyle::dashed: return "dashed";
+    case LineStyle::dotted: return "dotted";
+    }
+    return "";
+}
+
+} // namespace
+
+std::vector<CurveFigure> thesis_curve_figures()
+{
+    return {
+        {"fig-3-1-1.png",
+         "Fig. 3.1.1  Tension",
+         {curve("t = -1", {-1, 0, 0, 0}, LineStyle::solid), curve("t = 0", {0, 0, 0, 0}, LineStyle::dashed),
+          curve("t = 1", {1, 0, 0, 0}, LineStyle::dotted)}},
+        {"fig-3-1-2.png",
+         "Fig. 3.1.2  Continuity",
+         {curve("c = -1", {0, -1, 0, 0}, LineStyle::solid), curve("c = 0", {0, 0, 0, 0}, LineStyle::dashed),
+          curve("c = 1", {0, 1, 0, 0}, LineStyle::dotted)}},
+        {"fig-3-1-3.png",
+         "Fig. 3.1.3  Bias",
+         {curve("b = -1", {0, 0, -1, 0}, LineStyle::solid), curve("b = 0", {0, 0, 0, 0}, LineStyle::dashed),
+          curve("b = 1", {0, 0, 1, 0}, LineStyle::dotted)}},
+        {"fig-3-1-4.png",
+         "Fig. 3.1.4  Tension, continuity and bias together",
+         {curve("t=0.5 c=-0.5 b=0", {0.5, -0.5, 0, 0}, LineStyle::solid),
+          curve("t=-0.5 c=0 b=0.8", {-0.5, 0, 0.8, 0}, LineStyle::dashed),
+          curve("t=0 c=0.7 b=-0.6", {0, 0.7, -0.6, 0}, LineStyle::dotted)}},
+    };
+}
+
+GraphicsScreen draw_curve_figure(const CurveFigure& figure)
+{
+    std::vector<EvaluatedPath> paths;
+    std::vector<Vec3> scene;
+    for (const FigureCurve& shown : figure.curves) {
+        paths.push_back(evaluate_path(shown.points, {{}, 48, 0, Spacing::nearest}));
+        scene.insert(scene.end(), paths.back().curve.points.begin(), paths.back().curve.points.end());
+    }
+    const ViewTransform view = ViewTransform::fit({0, 90}, scene, figure_area);
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    std::string legend;
+    for (std::size_t i = 0; i < figure.curves.size(); ++i) {
+        int phase = 0;
+        const auto& samples = paths[i].curve.points;
+        for (std::size_t s = 1; s < samples.size(); ++s)
+            painter.styled_line(view.to_device(samples[s - 1]).rounded(), view.to_device(samples[s]).rounded(),
+                                figure.curves[i].style, phase);
+        legend += std::string(legend.empty() ? "" : "   ") + style_name(figure.curves[i].style) + ": " +
+                  figure.curves[i].label;
+    }
+    if (!figure.curves.empty())
+        for (const ControlPoint& point : figure.curves.front().points)
+            painter.cross_marker(view.to_device(point.position).rounded());
+    screen.text.push_back({1, 0, figure.title});
+    screen.text.push_back({1, legend_row, legend});
+    return screen;
+}
+
+GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
+                                  ViewAngles angles)
+{
+    std::vector<Vec3> scene;
+    for (std::size_t k = 0; k < frames.frame_count(); ++k)
+        scene.insert(scene.end(), frames.frame(k).begin(), frames.frame(k).end());
+    const ViewTransform view = ViewTransform::fit(angles, scene, figure_area);
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    for (std::size_t k = 0; k < frames.frame_count(); ++k) {
+        const auto frame = frames.frame(k);
+        std::size_t next = 0;
+        // KEY1 and KEY2 solid, the in-betweens dotted, so the keys stand out as in fig. 5.1.
+        const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
+        for (const GraphicPart& part : structure.parts) {
+            int phase = 0;
+            const std::size_t first = next;
+            for (std::size_t i = 1; i < part.points.size() && next + i < frame.size(); ++i)
+                painter.styled_line(view.to_device(frame[next + i - 1]).rounded(), view.to_device(frame[next + i]).rounded(),
+                                    style, phase);
+            next += part.points.size();
+            if (part.closure == Closure::closed && next - 1 < frame.size() && part.points.size() > 2)
+                painter.styled_line(view.to_device(frame[next - 1]).rounded(), view.to_device(frame[first]).rounded(),
+                                    style, phase);
+        }
+    }
+    screen.text.push_back({1, 0, title});
+    screen.text.push_back({1, legend_row, "solid: KEY1 and KEY2   dotted: the in-betweens"});
+    return screen;
+}
+
+} // namespace apcs
