@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 namespace apcs {
@@ -308,6 +309,15 @@ void Session::start_path_prompt()
 
 void Session::submit_path_file(const std::string& name)
 {
+    // The path file is rewritten after adjusting: it must lie in the session's folder.
+    const std::filesystem::path typed(name);
+    const bool escapes = typed.is_absolute() ||
+                         std::any_of(typed.begin(), typed.end(), [](const std::filesystem::path& part) { return part == ".."; });
+    if (escapes) {
+        say(name + ": expected a file in the session's folder (no leading '/', no '..'), since APCS rewrites it");
+        start_path_prompt();
+        return;
+    }
     const Expected<DatFile> file = m_files.read_dat(name, 2);
     const std::vector<Vec3> first = m_keys.key1.all_points();
     const std::vector<Vec3> second = m_keys.key2.all_points();

@@ -122,6 +122,11 @@ TEST_CASE("a wrong answer at each prompt says why and asks again", "[session]")
     REQUIRE(session.phase() == SessionPhase::ask_view);
     type(session, "30, 40, 200");
     REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    type(session, "../way1.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(screen_text(session).find("../way1.dat: expected a file in the session's folder") != std::string::npos);
+    type(session, "/tmp/way1.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
     type(session, "off.dat");
     REQUIRE(session.phase() == SessionPhase::ask_path_file);
     REQUIRE(screen_text(session).find("off.dat:1: the path starts at (0, 1, 0); expected the first graphic point's "
