@@ -5,7 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
-#include <sstream>
+#include <algorithm>
 
 using namespace apcs;
 
@@ -23,10 +23,12 @@ struct ReferenceTable {
 ReferenceTable load_reference(const std::string& text)
 {
     ReferenceTable table;
-    std::istringstream lines(text);
-    std::string line;
     std::vector<Vec3>* section = nullptr;
-    while (std::getline(lines, line)) {
+    std::size_t start = 0;
+    while (start < text.size()) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::string line = text.substr(start, end - start);
+        start = end + 1;
         double v[7];
         if (std::sscanf(line.c_str(), "; KB reference: slopes %lf %lf, %d samples per segment, %d in-betweens",
                         &table.settings.slopes.start, &table.settings.slopes.end,

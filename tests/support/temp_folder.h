@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -39,10 +40,18 @@ private:
     std::filesystem::path m_path;
 };
 
+// The whole file, or "" when it cannot be read.
 inline std::string read_all(const std::filesystem::path& file)
 {
-    std::ifstream stream(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+    std::string content;
+    if (std::FILE* stream = std::fopen(file.c_str(), "rb")) {
+        char buffer[65536];
+        std::size_t got = 0;
+        while ((got = std::fread(buffer, 1, sizeof buffer, stream)) > 0)
+            content.append(buffer, got);
+        std::fclose(stream);
+    }
+    return content;
 }
 
 } // namespace apcs::test
