@@ -40,7 +40,8 @@ void staff_keystroke(benchmark::State& state)
     content.path = &path;
     content.control_points = points;
     const ViewTransform view = ViewTransform::fit({30, 40}, path_screen_scene(content), layout::drawing_area);
-    CellGrid previous = render_cells(draw_path_screen(content, view), area, glyphs);
+    AsciiGlyphCache cache;
+    CellGrid previous = render_cells(draw_path_screen(content, view), area, glyphs, cache);
     int step = 0;
     for (auto _ : state) {
         const double tension = std::fmod(0.05 * ++step, 2.0) - 1.0;
@@ -49,7 +50,7 @@ void staff_keystroke(benchmark::State& state)
         path = evaluate_path(points, settings);
         content.staff.tension = tension;
         content.active_line = StaffLine::tension;
-        const CellGrid grid = render_cells(draw_path_screen(content, view), area, glyphs);
+        const CellGrid grid = render_cells(draw_path_screen(content, view), area, glyphs, cache);
         benchmark::DoNotOptimize(changed_cells(previous, grid));
         previous = grid;
     }

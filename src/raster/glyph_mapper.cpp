@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
@@ -19,25 +20,42 @@ constexpr int ascii_pool_rows = 7;
 // stroke becomes a stroke. Letters other than these shape-like few read as words, not lines.
 constexpr std::u32string_view ascii_preference = U".-|/\\_'`,:;=+x<>^v()[]!\"*#oXLJTVY7{}%&@$?";
 
+// Whether any pixel of row y in [x0, x1) is lit, testing whole bytes at a time.
+bool any_lit(const Bitmap& bitmap, int y, int x0, int x1)
+{
+    const std::uint8_t* row = bitmap.row(y);
+    const int first_byte = x0 >> 3;
+    const int last_byte = (x1 - 1) >> 3;
+    for (int byte = first_byte; byte <= last_byte; ++byte) {
+        unsigned mask = 0xFFu;
+        if (byte == first_byte)
+            mask &= 0xFFu >> (x0 & 7);
+        if (byte == last_byte)
+            mask &= 0xFFu << (7 - ((x1 - 1) & 7));
+        if (row[byte] & mask)
+            return true;
+    }
+    return false;
+}
+
 // Pools the pixel block [left, right) x [top, bottom) into columns x rows sub-blocks, each lit
-// when any of its pixels is lit. Bit index: row·columns + column.
+// when any of its pixels is lit. Bit index: row·columns + column. The block lies in the bitmap.
 unsigned pool_block(const Bitmap& bitmap, int left, int top, int right, int bottom, int columns, int rows)
 {
     unsigned mask = 0;
     const int width = std::max(right - left, 1);
     const int height = std::max(bottom - top, 1);
     for (int sub_row = 0; sub_row < rows; ++sub_row) {
-        const int y0 = top + sub_row * height / rows;
-        const int y1 = std::max(top + (sub_row + 1) * height / rows, y0 + 1);
+        const int y0 = std::min(top + sub_row * height / rows, bitmap.height() - 1);
+        const int y1 = std::min(std::max(top + (sub_row + 1) * height / rows, y0 + 1), bitmap.height());
         for (int sub_column = 0; sub_column < columns; ++sub_column) {
-            const int x0 = left + sub_column * width / columns;
-            const int x1 = std::max(left + (sub_column + 1) * width / columns, x0 + 1);
-            bool lit = false;
-            for (int y = y0; y < y1 && !lit; ++y)
-                for (int x = x0; x < x1 && !lit; ++x)
-                    lit = bitmap.get(x, y);
-            if (lit)
-                mask |= 1u << (sub_row * columns + sub_column);
+            const int x0 = std::min(left + sub_column * width / columns, bitmap.width() - 1);
+            const int x1 = std::min(std::max(left + (sub_column + 1) * width / columns, x0 + 1), bitmap.width());
+            for (int y = y0; y < y1; ++y)
+                if (any_lit(bitmap, y, x0, x1)) {
+                    mask |= 1u << (sub_row * columns + sub_column);
+                    break;
+                }
         }
     }
     return mask;
@@ -156,36 +174,107 @@ char32_t ascii_glyph_for(unsigned pooled_mask)
     return best;
 }
 
+char32_t AsciiGlyphCache::glyph_for(unsigned pooled_mask)
+{
+    const auto found = m_glyphs.find(pooled_mask);
+    if (found != m_glyphs.end())
+        return found->second;
+    const char32_t glyph = ascii_glyph_for(pooled_mask);
+    m_glyphs.emplace(pooled_mask, glyph);
+    return glyph;
+}
+
 CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs)
 {
-    CellGrid grid(area.columns, area.rows);
-    if (area.columns <= 0 || area.rows <= 0)
-        return grid;
-    const int pool_columns = glyphs == GlyphSet::ascii ? ascii_pool_columns : 2;
-    const int pool_rows = glyphs == GlyphSet::ascii ? ascii_pool_rows : glyphs == GlyphSet::blocks ? 2 : 4;
-    for (int row = 0; row < area.rows; ++row) {
-        const int top = row * bitmap.height() / area.rows;
-        const int bottom = (row + 1) * bitmap.height() / area.rows;
-        for (int column = 0; column < area.columns; ++column) {
-            const int left = column * bitmap.width() / area.columns;
-            const int right = (column + 1) * bitmap.width() / area.columns;
-            const unsigned mask = pool_block(bitmap, left, top, right, bottom, pool_columns, pool_rows);
-            char32_t glyph = U' ';
-            switch (glyphs) {
-            case GlyphSet::braille:
-                glyph = braille_glyph(mask);
-                break;
-            case GlyphSet::blocks:
-                glyph = quadrant_glyph(mask);
-                break;
-            case GlyphSet::ascii:
-            case GlyphSet::automatic:
-                glyph = ascii_glyph_for(mask);
-                break;
-            }
-            grid.set(column, row, glyph);
+    AsciiGlyphCache cache;
+    return map_to_cells(bitmap, area, glyphs, cache);
+}
+
+namespace {
+
+// For each pixel along one axis: the cell it falls in and the bits of the sub-blocks of that cell
+// that contain it (the same partition as pool_block, where a sub-block is at least one pixel
+// wide, so a pixel can belong to more than one when cells are smaller than the sub-grid).
+struct AxisMap {
+    std::vector<int> cell;
+    std::vector<unsigned> sub_blocks;
+};
+
+AxisMap map_axis(int pixels, int cells, int subdivisions)
+{
+    AxisMap axis{std::vector<int>(static_cast<std::size_t>(pixels)), std::vector<unsigned>(static_cast<std::size_t>(pixels), 0)};
+    for (int c = 0; c < cells; ++c) {
+        const int start = c * pixels / cells;
+        const int end = (c + 1) * pixels / cells;
+        const int size = std::max(end - start, 1);
+        for (int p = start; p < end; ++p)
+            axis.cell[static_cast<std::size_t>(p)] = c;
+        for (int sub = 0; sub < subdivisions; ++sub) {
+            const int from = std::min(start + sub * size / subdivisions, pixels - 1);
+            const int to = std::min(std::max(start + (sub + 1) * size / subdivisions, from + 1), pixels);
+            for (int p = from; p < to; ++p)
+                if (axis.cell[static_cast<std::size_t>(p)] == c)
+                    axis.sub_blocks[static_cast<std::size_t>(p)] |= 1u << sub;
         }
     }
+    return axis;
+}
+
+char32_t glyph_of(unsigned mask, GlyphSet glyphs, AsciiGlyphCache& cache)
+{
+    switch (glyphs) {
+    case GlyphSet::braille:
+        return braille_glyph(mask);
+    case GlyphSet::blocks:
+        return quadrant_glyph(mask);
+    case GlyphSet::ascii:
+    case GlyphSet::automatic:
+        break;
+    }
+    return mask == 0 ? U' ' : cache.glyph_for(mask);
+}
+
+} // namespace
+
+CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
+{
+    CellGrid grid(area.columns, area.rows);
+    if (area.columns <= 0 || area.rows <= 0 || bitmap.width() <= 0 || bitmap.height() <= 0)
+        return grid;
+    const int pool_columns = glyphs == GlyphSet::ascii || glyphs == GlyphSet::automatic ? ascii_pool_columns : 2;
+    const int pool_rows = glyphs == GlyphSet::ascii || glyphs == GlyphSet::automatic ? ascii_pool_rows
+                          : glyphs == GlyphSet::blocks                              ? 2
+                                                                                    : 4;
+    const AxisMap across = map_axis(bitmap.width(), area.columns, pool_columns);
+    const AxisMap down = map_axis(bitmap.height(), area.rows, pool_rows);
+    std::vector<unsigned> masks(static_cast<std::size_t>(area.columns) * static_cast<std::size_t>(area.rows), 0);
+    // Only lit pixels cost more than a byte test: a path screen has a few thousand of them.
+    for (int y = 0; y < bitmap.height(); ++y) {
+        const std::uint8_t* row = bitmap.row(y);
+        const auto cell_row = static_cast<std::size_t>(down.cell[static_cast<std::size_t>(y)]);
+        const unsigned sub_rows = down.sub_blocks[static_cast<std::size_t>(y)];
+        for (int byte = 0; byte < (bitmap.width() + 7) / 8; ++byte) {
+            if (row[byte] == 0)
+                continue;
+            for (int bit = 0; bit < 8; ++bit) {
+                const int x = byte * 8 + bit;
+                if (x >= bitmap.width() || !(row[byte] & (0x80u >> bit)))
+                    continue;
+                const unsigned sub_columns = across.sub_blocks[static_cast<std::size_t>(x)];
+                unsigned& mask = masks[cell_row * static_cast<std::size_t>(area.columns) +
+                                       static_cast<std::size_t>(across.cell[static_cast<std::size_t>(x)])];
+                for (int sub_row = 0; sub_row < pool_rows; ++sub_row)
+                    if (sub_rows & (1u << sub_row))
+                        mask |= sub_columns << (sub_row * pool_columns);
+            }
+        }
+    }
+    for (int row = 0; row < area.rows; ++row)
+        for (int column = 0; column < area.columns; ++column)
+            grid.set(column, row,
+                     glyph_of(masks[static_cast<std::size_t>(row) * static_cast<std::size_t>(area.columns) +
+                                    static_cast<std::size_t>(column)],
+                              glyphs, cache));
     return grid;
 }
 

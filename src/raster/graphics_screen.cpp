@@ -16,7 +16,13 @@ Bitmap render_raster(const GraphicsScreen& screen)
 
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs)
 {
-    CellGrid grid = map_to_cells(screen.bitmap, area, glyphs);
+    AsciiGlyphCache cache;
+    return render_cells(screen, area, glyphs, cache);
+}
+
+CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
+{
+    CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
     for (const PixelMark& mark : screen.marks)
         if (screen.bitmap.contains(mark.at.x, mark.at.y))
             grid.set(mark.at.x * area.columns / screen.bitmap.width(), mark.at.y * area.rows / screen.bitmap.height(),

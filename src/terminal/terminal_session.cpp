@@ -18,14 +18,14 @@ CellGrid too_small_grid(TerminalSize size)
     return grid;
 }
 
-CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs)
+CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
     if (!area)
         return too_small_grid(size);
     const SessionScreen screen = session.screen();
     if (screen.graphics)
-        return render_cells(screen.picture, *area, glyphs);
+        return render_cells(screen.picture, *area, glyphs, cache);
     return screen.text;
 }
 
@@ -38,8 +38,9 @@ int run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted
     if (!terminal)
         return 3;
     std::size_t next_scripted = 0;
+    AsciiGlyphCache cache;
     while (!session.finished()) {
-        terminal->show(grid_for(session, terminal->size(), glyphs));
+        terminal->show(grid_for(session, terminal->size(), glyphs, cache));
         KeyEvent key;
         TerminalInput input = TerminalInput::key;
         if (next_scripted < scripted.size() && !session.animating())

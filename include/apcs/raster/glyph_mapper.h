@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace apcs {
@@ -30,10 +31,22 @@ struct CellArea {
 // the DOS screen; nullopt when the terminal is smaller than 80x25.
 std::optional<CellArea> fit_cell_area(int columns, int rows);
 
+// Remembers the ASCII choice for each pooled mask seen, since a screen repeats few shapes and
+// matching one against the font costs far more than a look-up. Owned by whoever maps screens
+// again and again (the terminal shell).
+class AsciiGlyphCache {
+public:
+    char32_t glyph_for(unsigned pooled_mask);
+
+private:
+    std::unordered_map<unsigned, char32_t> m_glyphs;
+};
+
 // Maps the whole bitmap onto `area`, each cell covering its share of the pixels. Sub-blocks of a
 // cell are lit when any of their pixels is (max pooling), so 1-pixel lines survive; a cell is a
 // space only when none of its pixels is lit.
 CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs);
+CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
 
 // The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): the glyph of
 // the font whose pooled mask is nearest. Exposed for tests.

@@ -36,5 +36,6 @@ Bitmap render_raster(const GraphicsScreen& screen);
 // The raster mapped to characters, with the text laid over it as real characters, each text cell
 // at its share of the area (80x25 text cells scale with the area).
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
+CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
 
 } // namespace apcs
