@@ -1,1 +1,73 @@
+// Surface fitting at 10^3 … 10^6 points x 12 in-betweens: compute only, and with the
+// in-between files written (to a temporary folder).
+#include "apcs/animation/surface_fit.h"
+#include "apcs/cli/frame_output.h"
+
 #include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <filesystem>
+#include <unistd.h>
+
+using namespace apcs;
+
+namespace {
+
+Graphic wave(std::size_t points, double phase, double shift)
+{
+    Graphic graphic;
+    graphic.parts.push_back({"wave", Closure::open, {}});
+    graphic.parts[0].points.reserve(points);
+    for (std::size_t i = 0; i < points; ++i) {
+        const double t = static_cast<double>(i) / static_cast<double>(points);
+        graphic.parts[0].points.push_back({shift, 10.0 * t, std::sin(20.0 * t + phase)});
+    }
+    return graphic;
+}
+
+ControlPoints path_between(const Vec3& from, const Vec3& to)
+{
+    return {{from, {}}, {(from + to) * 0.5 + Vec3{2, 1, 3}, {0.2, 0, 0, 0.3}}, {to, {}}};
+}
+
+struct FitInputs {
+    EqualisedKeys keys;
+    EvaluatedPath first;
+    EvaluatedPath last;
+};
+
+FitInputs inputs(std::size_t points)
+{
+    FitInputs in{{wave(points, 0.0, 0.0), wave(points, 1.5, 8.0)}, {}, {}};
+    const PathSettings settings{{}, 32, 12, Spacing::nearest};
+    in.first = evaluate_path(path_between(in.keys.key1.parts[0].points.front(), in.keys.key2.parts[0].points.front()), settings);
+    in.last = evaluate_path(path_between(in.keys.key1.parts[0].points.back(), in.keys.key2.parts[0].points.back()), settings);
+    return in;
+}
+
+void fit_compute(benchmark::State& state)
+{
+    const FitInputs in = inputs(static_cast<std::size_t>(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(fit_key_frames(in.keys, in.first, in.last));
+    state.SetItemsProcessed(state.iterations() * state.range(0) * 14);
+    state.counters["points_x_frames"] = static_cast<double>(state.range(0) * 14);
+}
+
+void fit_and_write(benchmark::State& state)
+{
+    const FitInputs in = inputs(static_cast<std::size_t>(state.range(0)));
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("apcs-bench-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    for (auto _ : state) {
+        const FrameSequence frames = fit_key_frames(in.keys, in.first, in.last);
+        benchmark::DoNotOptimize(write_inbetween_files(frames, in.keys.key1, folder, {}));
+    }
+    std::filesystem::remove_all(folder);
+    state.SetItemsProcessed(state.iterations() * state.range(0) * 14);
+}
+
+} // namespace
+
+BENCHMARK(fit_compute)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(fit_and_write)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
