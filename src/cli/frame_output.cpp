@@ -5,7 +5,11 @@
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <optional>
+#include <thread>
 #include <ostream>
 
 namespace apcs {
@@ -40,17 +44,35 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
     std::error_code error;
     if (!std::filesystem::is_directory(folder, error))
         return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the in-between files"};
-    std::vector<std::filesystem::path> written;
-    for (const NamedText& file : inbetween_files(frames, structure)) {
-        const std::filesystem::path target = folder / file.name;
-        if (is_protected(target, protected_files))
-            return Diagnostic{target.string(), 0, "is a key file; key files are never written"};
-        const Expected<WriteResult> result = write_file_atomically(target, file.content);
-        if (!result)
-            return result.error();
-        written.push_back(target);
+    const std::size_t count = inbetween_count(frames);
+    std::vector<std::filesystem::path> targets;
+    for (std::size_t number = 1; number <= count; ++number) {
+        targets.push_back(folder / inbetween_file_name(number));
+        if (is_protected(targets.back(), protected_files))
+            return Diagnostic{targets.back().string(), 0, "is a key file; key files are never written"};
     }
-    return written;
+    // The files are independent: formatting and flushing them to disk is shared among the cores.
+    std::vector<std::optional<Diagnostic>> problems(count);
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t index = next++; index < count; index = next++) {
+            const NamedText file = inbetween_file(frames, structure, index + 1);
+            const Expected<WriteResult> result = write_file_atomically(targets[index], file.content);
+            if (!result)
+                problems[index] = result.error();
+        }
+    };
+    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+    {
+        std::vector<std::jthread> helpers;
+        for (std::size_t i = 1; i < std::min(workers, count); ++i)
+            helpers.emplace_back(work);
+        work();
+    }
+    for (const std::optional<Diagnostic>& problem : problems)
+        if (problem)
+            return *problem;
+    return targets;
 }
 
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -32,9 +33,20 @@ bool equals_ignoring_case(std::string_view left, std::string_view right)
            });
 }
 
-std::vector<std::string_view> split_fields(std::string_view line)
+// The blank-separated fields of a line: the first eight, and how many there are in all (a
+// point has at most seven, so no line needs more to be judged; nothing is allocated per line).
+struct Fields {
+    std::array<std::string_view, 8> items;
+    std::size_t count = 0;
+
+    std::size_t size() const { return count; }
+    bool empty() const { return count == 0; }
+    std::string_view operator[](std::size_t i) const { return items[i]; }
+};
+
+Fields split_fields(std::string_view line)
 {
-    std::vector<std::string_view> fields;
+    Fields fields;
     std::size_t position = 0;
     while (position < line.size()) {
         while (position < line.size() && is_blank(line[position]))
@@ -42,8 +54,11 @@ std::vector<std::string_view> split_fields(std::string_view line)
         const std::size_t start = position;
         while (position < line.size() && !is_blank(line[position]))
             ++position;
-        if (position > start)
-            fields.push_back(line.substr(start, position - start));
+        if (position > start) {
+            if (fields.count < fields.items.size())
+                fields.items[fields.count] = line.substr(start, position - start);
+            ++fields.count;
+        }
     }
     return fields;
 }
@@ -62,8 +77,8 @@ public:
 private:
     std::optional<Diagnostic> parse_line(std::string_view line);
     std::optional<Diagnostic> parse_count(std::string_view field);
-    std::optional<Diagnostic> parse_part(const std::vector<std::string_view>& fields);
-    std::optional<Diagnostic> parse_point(const std::vector<std::string_view>& fields);
+    std::optional<Diagnostic> parse_part(const Fields& fields);
+    std::optional<Diagnostic> parse_point(const Fields& fields);
     std::optional<Diagnostic> finish();
     Diagnostic error(std::string message, int line) const { return {m_file_name, line, std::move(message)}; }
     Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
@@ -120,7 +135,7 @@ std::optional<Diagnostic> DatParser::parse_line(std::string_view line)
     if (content.find('\0') != std::string_view::npos)
         return error("NUL byte; expected a text file");
     content = content.substr(0, content.find_first_of(";#"));
-    const std::vector<std::string_view> fields = split_fields(content);
+    const Fields fields = split_fields(content);
     if (fields.empty())
         return std::nullopt;
     if (equals_ignoring_case(fields[0], "PART"))
@@ -145,7 +160,7 @@ std::optional<Diagnostic> DatParser::parse_count(std::string_view field)
     return std::nullopt;
 }
 
-std::optional<Diagnostic> DatParser::parse_part(const std::vector<std::string_view>& fields)
+std::optional<Diagnostic> DatParser::parse_part(const Fields& fields)
 {
     m_seen_data = true;
     if (fields.size() < 2 || fields.size() > 3)
@@ -168,7 +183,7 @@ std::optional<Diagnostic> DatParser::parse_part(const std::vector<std::string_vi
     return std::nullopt;
 }
 
-std::optional<Diagnostic> DatParser::parse_point(const std::vector<std::string_view>& fields)
+std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
 {
     m_seen_data = true;
     if (fields.size() != 2 && fields.size() != 3 && fields.size() != 7)
@@ -245,18 +260,51 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 std::string format_dat(const DatFile& file)
 {
     std::string text;
+    // About 40 bytes a point: one allocation for the whole file.
+    text.reserve(file.point_count() * 40 + file.parts.size() * 24);
     const bool plain = file.parts.size() == 1 && file.parts[0].name.empty() && file.parts[0].closure == Closure::open;
     for (std::size_t i = 0; i < file.parts.size(); ++i) {
         const DatPart& part = file.parts[i];
         if (!plain)
             text += "PART " + part_name_for_writing(part, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
         for (const DatPoint& point : part.points) {
-            text += shortest_number(point.position.x) + ' ' + shortest_number(point.position.y) + ' ' +
-                    shortest_number(point.position.z);
+            append_shortest(text, point.position.x);
+            text += ' ';
+            append_shortest(text, point.position.y);
+            text += ' ';
+            append_shortest(text, point.position.z);
             if (point.staff) {
-                text += ' ' + shortest_number(point.staff->tension) + ' ' + shortest_number(point.staff->continuity) +
-                        ' ' + shortest_number(point.staff->bias) + ' ' + shortest_number(point.staff->acceleration);
+                for (const double value : {point.staff->tension, point.staff->continuity, point.staff->bias,
+                                           point.staff->acceleration}) {
+                    text += ' ';
+                    append_shortest(text, value);
+                }
             }
+            text += '\n';
+        }
+    }
+    return text;
+}
+
+std::string format_graphic(const Graphic& structure, std::span<const Vec3> points)
+{
+    std::string text;
+    text.reserve(points.size() * 40 + structure.parts.size() * 24);
+    const bool plain = structure.parts.size() == 1 && structure.parts[0].name.empty() &&
+                       structure.parts[0].closure == Closure::open;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < structure.parts.size(); ++i) {
+        const GraphicPart& part = structure.parts[i];
+        if (!plain) {
+            const DatPart named{part.name, part.closure, {}};
+            text += "PART " + part_name_for_writing(named, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
+        }
+        for (std::size_t k = 0; k < part.points.size() && next < points.size(); ++k, ++next) {
+            append_shortest(text, points[next].x);
+            text += ' ';
+            append_shortest(text, points[next].y);
+            text += ' ';
+            append_shortest(text, points[next].z);
             text += '\n';
         }
     }

@@ -54,6 +54,17 @@ std::string shortest_number(double value)
     return std::string(buffer.data(), result.ptr);
 }
 
+void append_shortest(std::string& text, double value)
+{
+    if (value == 0.0) {
+        text += '0';
+        return;
+    }
+    std::array<char, 32> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    text.append(buffer.data(), result.ptr);
+}
+
 std::string fixed_six(double value)
 {
     std::array<char, 64> buffer{};

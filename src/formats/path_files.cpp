@@ -32,18 +32,16 @@ std::string inbetween_file_name(std::size_t number)
     return name;
 }
 
-std::vector<NamedText> inbetween_files(const FrameSequence& frames, const Graphic& structure)
+std::size_t inbetween_count(const FrameSequence& frames)
 {
-    const std::size_t count = frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
-    std::vector<NamedText> files;
-    files.reserve(count);
-    for (std::size_t k = 1; k <= count; ++k) {
-        const std::span<const Vec3> frame = frames.frame(k);
-        const Graphic graphic = structure.with_points({frame.begin(), frame.end()});
-        files.push_back({inbetween_file_name(k), "; APCS in-between " + std::to_string(k) + " of " +
-                                                     std::to_string(count) + "\n" + format_dat(dat_from(graphic))});
-    }
-    return files;
+    return frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
+}
+
+NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number)
+{
+    return {inbetween_file_name(number), "; APCS in-between " + std::to_string(number) + " of " +
+                                             std::to_string(inbetween_count(frames)) + "\n" +
+                                             format_graphic(structure, frames.frame(number))};
 }
 
 std::string describe_point(const Vec3& point)

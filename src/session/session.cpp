@@ -537,8 +537,9 @@ void Session::run_surface_fitting()
     const EvaluatedPath first_path = evaluate_path(m_points[0], first);
     const EvaluatedPath last_path = evaluate_path(m_points[1], last);
     m_frames = fit_key_frames(m_keys, first_path, last_path);
-    const std::vector<NamedText> files = inbetween_files(m_frames, m_keys.key1);
-    for (const NamedText& file : files) {
+    const std::size_t count = inbetween_count(m_frames);
+    for (std::size_t number = 1; number <= count; ++number) {
+        const NamedText file = inbetween_file(m_frames, m_keys.key1, number);
         if (auto problem = m_files.write(file.name, file.content)) {
             say(problem->to_string());
             say(std::string(text::ask_stop));
@@ -546,7 +547,6 @@ void Session::run_surface_fitting()
         }
         record_written(file.name);
     }
-    const std::size_t count = files.size();
     m_files.log("surface fitting: " + std::to_string(count) + " in-betweens of " + std::to_string(m_point_count) +
                 " points written");
     say(std::string(text::fitting_done));

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +49,10 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 // or closed, each point with the shortest decimal form that reads back exactly. Points with staff
 // values get all seven columns.
 std::string format_dat(const DatFile& file);
+
+// A graphic with the parts of `structure` and the point sequence `points` (as many as the parts
+// hold), formatted like format_dat; no copy of the points is made.
+std::string format_graphic(const Graphic& structure, std::span<const Vec3> points);
 
 // Conversions between the file and the key-frame model (staff columns are dropped / absent).
 Graphic graphic_from(const DatFile& file);

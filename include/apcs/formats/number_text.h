@@ -18,6 +18,9 @@ std::optional<std::size_t> parse_count_value(std::string_view field);
 // The shortest decimal text that reads back as exactly `value`; −0 is written as 0.
 std::string shortest_number(double value);
 
+// Appends shortest_number(value) to `text` without a temporary string.
+void append_shortest(std::string& text, double value);
+
 // `value` with exactly six decimals (SPEC §7.4); −0.000000 is written as 0.000000.
 std::string fixed_six(double value);
 

@@ -29,9 +29,13 @@ std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2
 // "inb001.dat" … (three digits at least, more when there are over 999 in-betweens).
 std::string inbetween_file_name(std::size_t number);
 
-// The in-between files inb001.dat … of every frame but the first and the last, each the whole
-// graphic with the parts of `structure`, headed by "; APCS in-between k of M".
-std::vector<NamedText> inbetween_files(const FrameSequence& frames, const Graphic& structure);
+// How many in-between files a frame sequence gives: every frame but the first and the last.
+std::size_t inbetween_count(const FrameSequence& frames);
+
+// In-between file `number` (1 … inbetween_count): frame `number`, the whole graphic with the
+// parts of `structure`, headed by "; APCS in-between k of M". Made one at a time, so that only
+// one file's text is ever in memory.
+NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number);
 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
 // end at its KEY2 position (to 1e-6 of the scene's size). Returns the problem, if any, as
