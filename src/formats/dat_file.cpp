@@ -1,6 +1,7 @@
 #include "apcs/formats/dat_file.h"
 
 #include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
 
 #include <algorithm>
 #include <array>
@@ -24,7 +25,16 @@ namespace {
 constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 constexpr char dos_end_of_file = '\x1A';
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+bool is_blank(char c) { return is_field_blank(c); }
+
+void append_xyz(std::string& text, const Vec3& point)
+{
+    append_shortest(text, point.x);
+    text += ' ';
+    append_shortest(text, point.y);
+    text += ' ';
+    append_shortest(text, point.z);
+}
 
 bool equals_ignoring_case(std::string_view left, std::string_view right)
 {
@@ -47,19 +57,11 @@ struct Fields {
 Fields split_fields(std::string_view line)
 {
     Fields fields;
-    std::size_t position = 0;
-    while (position < line.size()) {
-        while (position < line.size() && is_blank(line[position]))
-            ++position;
-        const std::size_t start = position;
-        while (position < line.size() && !is_blank(line[position]))
-            ++position;
-        if (position > start) {
-            if (fields.count < fields.items.size())
-                fields.items[fields.count] = line.substr(start, position - start);
-            ++fields.count;
-        }
-    }
+    for_each_field(line, [&](std::string_view field) {
+        if (fields.count < fields.items.size())
+            fields.items[fields.count] = field;
+        ++fields.count;
+    });
     return fields;
 }
 
@@ -268,11 +270,7 @@ std::string format_dat(const DatFile& file)
         if (!plain)
             text += "PART " + part_name_for_writing(part, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
         for (const DatPoint& point : part.points) {
-            append_shortest(text, point.position.x);
-            text += ' ';
-            append_shortest(text, point.position.y);
-            text += ' ';
-            append_shortest(text, point.position.z);
+            append_xyz(text, point.position);
             if (point.staff) {
                 for (const double value : {point.staff->tension, point.staff->continuity, point.staff->bias,
                                            point.staff->acceleration}) {
@@ -300,11 +298,7 @@ std::string format_graphic(const Graphic& structure, std::span<const Vec3> point
             text += "PART " + part_name_for_writing(named, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
         }
         for (std::size_t k = 0; k < part.points.size() && next < points.size(); ++k, ++next) {
-            append_shortest(text, points[next].x);
-            text += ' ';
-            append_shortest(text, points[next].y);
-            text += ' ';
-            append_shortest(text, points[next].z);
+            append_xyz(text, points[next]);
             text += '\n';
         }
     }
@@ -323,20 +317,6 @@ Graphic graphic_from(const DatFile& file)
         graphic.parts.push_back(std::move(converted));
     }
     return graphic;
-}
-
-DatFile dat_from(const Graphic& graphic)
-{
-    DatFile file;
-    file.parts.reserve(graphic.parts.size());
-    for (const GraphicPart& part : graphic.parts) {
-        DatPart converted{part.name, part.closure, {}};
-        converted.points.reserve(part.points.size());
-        for (const Vec3& point : part.points)
-            converted.points.push_back({point, std::nullopt, 0});
-        file.parts.push_back(std::move(converted));
-    }
-    return file;
 }
 
 } // namespace apcs

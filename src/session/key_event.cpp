@@ -1,5 +1,6 @@
 #include "apcs/session/key_event.h"
 
+#include "apcs/formats/text_fields.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/painter.h"
 
@@ -21,8 +22,6 @@ constexpr std::array<std::pair<std::string_view, Key>, 8> key_names{{
     {"BACKSPACE", Key::backspace},
 }};
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
-
 } // namespace
 
 KeyScriptResult parse_key_script(std::string_view text)
@@ -42,33 +41,27 @@ KeyScriptResult parse_key_script(std::string_view text)
             continue;
         }
         line = line.substr(0, line.find(';'));
-        std::size_t position = 0;
-        while (position < line.size()) {
-            while (position < line.size() && is_blank(line[position]))
-                ++position;
-            const std::size_t start = position;
-            while (position < line.size() && !is_blank(line[position]))
-                ++position;
-            if (position == start)
-                break;
-            const std::string_view token = line.substr(start, position - start);
-            bool named = false;
+        bool stop = false;
+        for_each_field(line, [&](std::string_view token) {
+            if (stop)
+                return;
             for (const auto& [name, key] : key_names)
                 if (token == name) {
                     result.events.push_back(KeyEvent::of(key));
-                    named = true;
+                    return;
                 }
-            if (named)
-                continue;
             const std::u32string characters = decode_utf8(token);
             if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD) {
                 result.problem = "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, DOWN, "
                                  "BACKSPACE; found '" + std::string(token) + "'";
                 result.problem_line = line_number;
-                return result;
+                stop = true;
+                return;
             }
             result.events.push_back(KeyEvent::typed(characters[0]));
-        }
+        });
+        if (stop)
+            return result;
     }
     return result;
 }

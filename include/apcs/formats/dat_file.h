@@ -54,8 +54,7 @@ std::string format_dat(const DatFile& file);
 // hold), formatted like format_dat; no copy of the points is made.
 std::string format_graphic(const Graphic& structure, std::span<const Vec3> points);
 
-// Conversions between the file and the key-frame model (staff columns are dropped / absent).
+// The key-frame model of a file (staff columns are dropped).
 Graphic graphic_from(const DatFile& file);
-DatFile dat_from(const Graphic& graphic);
 
 } // namespace apcs
