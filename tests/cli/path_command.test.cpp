@@ -92,3 +92,24 @@ TEST_CASE("more in-betweens than samples warn that frames will freeze", "[cli][p
     REQUIRE(result.status == 0);
     REQUIRE(result.err == "apcs: 5 in-betweens from 2 curve samples: frames will freeze\n");
 }
+
+TEST_CASE("apcs path --png draws the path screen as a 720x348 PNG", "[cli][path][png]")
+{
+    const TempFolder folder;
+    const auto file = folder.write("ani1.dat", "0 0 0\n3 -4 5\n0 0 10\n");
+    const auto png = folder / "path.png";
+    const auto result = run_apcs({"path", file.string(), "--png", png.string(), "--theta", "0", "--phi", "90"});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.empty()); // --png alone prints nothing
+    const std::string bytes = test::read_all(png);
+    REQUIRE(bytes.substr(1, 3) == "PNG");
+    // IHDR: width and height, big-endian, at bytes 16 and 20.
+    const auto be32 = [&](std::size_t at) {
+        return (static_cast<unsigned char>(bytes[at]) << 24) | (static_cast<unsigned char>(bytes[at + 1]) << 16) |
+               (static_cast<unsigned char>(bytes[at + 2]) << 8) | static_cast<unsigned char>(bytes[at + 3]);
+    };
+    REQUIRE(be32(16) == 720);
+    REQUIRE(be32(20) == 348);
+    const auto both = run_apcs({"path", file.string(), "--png", png.string(), "--print"});
+    REQUIRE(both.out.starts_with("# curve\n"));
+}

@@ -48,4 +48,8 @@ tmux -L "$socket" new-session -d -s noterm -x 80 -y 25 -c "$work" "TERM=no-such-
 wait_for noterm "is unknown (no terminfo entry)"
 wait_for noterm "EXITED=3"
 passed=$((passed + 1))
+tmux -L "$socket" new-session -d -s unset -x 80 -y 25 -c "$work" "env -u TERM '$apcs'; echo EXITED=\$?; sleep 60"
+wait_for unset "TERM is not set"
+wait_for unset "EXITED=3"
+passed=$((passed + 1))
 echo "$passed passed, 0 failed"
