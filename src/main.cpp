@@ -5,6 +5,7 @@
 #include <cstring>
 #include <iostream>
 #include <langinfo.h>
+#include <malloc.h>
 
 namespace {
 
@@ -21,6 +22,10 @@ apcs::GlyphSet resolve_glyphs(apcs::GlyphSet chosen)
 int main(int argc, char** argv)
 {
     std::setlocale(LC_ALL, "");
+    // Large buffers (key files, frames, file texts) come and go in a batch run; a fixed mmap
+    // threshold hands each back to the system when freed instead of letting glibc keep it in the
+    // heap, so peak memory is what is in use at once.
+    mallopt(M_MMAP_THRESHOLD, 256 * 1024);
     const apcs::TerminalSessionRunner terminal = [](apcs::Session& session, const std::vector<apcs::KeyEvent>& scripted,
                                                     apcs::GlyphSet glyphs, std::vector<apcs::KeyEvent>& recorded,
                                                     std::string& problem) {

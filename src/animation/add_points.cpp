@@ -1,6 +1,7 @@
 #include "apcs/animation/add_points.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace apcs {
 
@@ -73,15 +74,15 @@ Graphic split_to_part_count(const Graphic& graphic, std::size_t part_count)
 
 } // namespace
 
-EqualisedKeys equalise_key_frames(const Graphic& key1, const Graphic& key2)
+EqualisedKeys equalise_key_frames(Graphic key1, Graphic key2)
 {
-    EqualisedKeys keys{key1, key2};
-    if (key1.parts.empty() || key2.parts.empty())
+    EqualisedKeys keys{std::move(key1), std::move(key2)};
+    if (keys.key1.parts.empty() || keys.key2.parts.empty())
         return keys;
-    if (key1.parts.size() > key2.parts.size())
-        keys.key2 = split_to_part_count(key2, key1.parts.size());
-    else if (key2.parts.size() > key1.parts.size())
-        keys.key1 = split_to_part_count(key1, key2.parts.size());
+    if (keys.key1.parts.size() > keys.key2.parts.size())
+        keys.key2 = split_to_part_count(keys.key2, keys.key1.parts.size());
+    else if (keys.key2.parts.size() > keys.key1.parts.size())
+        keys.key1 = split_to_part_count(keys.key1, keys.key2.parts.size());
     for (std::size_t i = 0; i < keys.key1.parts.size(); ++i) {
         std::vector<Vec3>& first = keys.key1.parts[i].points;
         std::vector<Vec3>& second = keys.key2.parts[i].points;

@@ -24,13 +24,13 @@ ExitStatus report(const Diagnostic& problem, std::ostream& err)
 
 ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
 {
-    const Expected<Graphic> key1 = read_key_frame(files.key1);
+    Expected<Graphic> key1 = read_key_frame(files.key1);
     if (!key1)
         return report(key1.error(), err);
-    const Expected<Graphic> key2 = read_key_frame(files.key2);
+    Expected<Graphic> key2 = read_key_frame(files.key2);
     if (!key2)
         return report(key2.error(), err);
-    const EqualisedKeys keys = equalise_key_frames(*key1, *key2);
+    const EqualisedKeys keys = equalise_key_frames(std::move(*key1), std::move(*key2));
     const std::vector<Vec3> points1 = keys.key1.all_points();
     const std::vector<Vec3> points2 = keys.key2.all_points();
 

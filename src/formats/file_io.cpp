@@ -62,6 +62,30 @@ bool write_all(int descriptor, std::string_view content)
     return true;
 }
 
+// Whether the file's bytes are `content`, compared chunk by chunk so that no copy of a large file
+// is held in memory.
+bool holds_exactly(const fs::path& file, std::string_view content)
+{
+    std::error_code error;
+    if (fs::file_size(file, error) != content.size() || error)
+        return false;
+    FileDescriptor input(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
+    if (input.get() < 0)
+        return false;
+    char buffer[1 << 16];
+    std::size_t compared = 0;
+    while (compared < content.size()) {
+        const ssize_t got = ::read(input.get(), buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got <= 0 || static_cast<std::size_t>(got) > content.size() - compared ||
+            content.compare(compared, static_cast<std::size_t>(got), buffer, static_cast<std::size_t>(got)) != 0)
+            return false;
+        compared += static_cast<std::size_t>(got);
+    }
+    return true;
+}
+
 } // namespace
 
 fs::path resolve_input_path(const fs::path& name)
@@ -138,11 +162,8 @@ Expected<WriteResult> write_file_atomically(const fs::path& target, std::string_
     if (fs::is_directory(target, error))
         return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
     const bool exists = fs::exists(target, error);
-    if (exists) {
-        Expected<std::string> current = read_text_file(target);
-        if (current && *current == content)
-            return WriteResult{WriteOutcome::unchanged, {}};
-    }
+    if (exists && holds_exactly(target, content))
+        return WriteResult{WriteOutcome::unchanged, {}};
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
     std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
     FileDescriptor file(::mkstemp(temporary.data()));

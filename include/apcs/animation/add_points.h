@@ -37,6 +37,7 @@ struct EqualisedKeys {
 // Gives both key frames the same parts and, part by part, the same point counts: Algorithm 1
 // on the parts of whichever key has fewer, then Algorithm 2 on each pair of parts. The part names
 // and closure of each key are kept where parts are not split.
-EqualisedKeys equalise_key_frames(const Graphic& key1, const Graphic& key2);
+// The keys are taken by value: callers that no longer need them move them in.
+EqualisedKeys equalise_key_frames(Graphic key1, Graphic key2);
 
 } // namespace apcs
