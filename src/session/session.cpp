@@ -9,6 +9,7 @@
 #include "apcs/session/session_text.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -106,6 +107,21 @@ Session::Session(SessionSettings settings, SessionFiles& files)
 }
 
 void Session::say(const std::string& line) { m_console.print_line(line); }
+
+std::optional<Diagnostic> Session::write_file(const std::string& name, const std::string& content)
+{
+    // Key files are never written: compared the way DOS names compare, ignoring case.
+    const auto same = [](const std::string& a, const std::string& b) {
+        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+                   return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+               });
+    };
+    const std::string plain = std::filesystem::path(name).lexically_normal().string();
+    for (const std::string& key : m_key_names)
+        if (!key.empty() && same(plain, std::filesystem::path(key).lexically_normal().string()))
+            return Diagnostic{name, 0, "is a key file; key files are never written"};
+    return m_files.write(name, content);
+}
 
 void Session::record_written(const std::string& name)
 {
@@ -263,7 +279,7 @@ void Session::finish_keys()
     m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
     m_point_count = m_keys.key1.point_count();
     for (const NamedText& file : split_path_files(m_keys.key1, m_keys.key2)) {
-        if (auto problem = m_files.write(file.name, file.content)) {
+        if (auto problem = write_file(file.name, file.content)) {
             say(problem->to_string());
             say(std::string(text::ask_key2));
             return;
@@ -513,7 +529,7 @@ void Session::handle_staff(const KeyEvent& event)
 void Session::accept_path()
 {
     const std::string& name = m_path_names[static_cast<std::size_t>(m_path)];
-    if (auto problem = m_files.write(name, format_dat(dat_from(m_points[static_cast<std::size_t>(m_path)])))) {
+    if (auto problem = write_file(name, format_dat(dat_from(m_points[static_cast<std::size_t>(m_path)])))) {
         m_graphics_message = problem->to_string();
         m_phase = SessionPhase::ask_again;
         return;
@@ -540,7 +556,7 @@ void Session::run_surface_fitting()
     const std::size_t count = inbetween_count(m_frames);
     for (std::size_t number = 1; number <= count; ++number) {
         const NamedText file = inbetween_file(m_frames, m_keys.key1, number);
-        if (auto problem = m_files.write(file.name, file.content)) {
+        if (auto problem = write_file(file.name, file.content)) {
             say(problem->to_string());
             say(std::string(text::ask_stop));
             return;

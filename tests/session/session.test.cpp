@@ -288,3 +288,17 @@ TEST_CASE("key scripts parse and format back to the same keys", "[session][keys]
     REQUIRE(bad.problem.has_value());
     REQUIRE(bad.problem_line == 2);
 }
+
+TEST_CASE("a key file is never written, even when it shares a name the session writes", "[session]")
+{
+    MemoryFiles files = example_files();
+    files.files["ANI1.DAT"] = files.files["key1.dat"];
+    Session session({}, files);
+    type(session, "ANI1.DAT");
+    type(session, "");
+    // The split would write ani1.dat: refused, KEY2 asked again, the key untouched.
+    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(screen_text(session).find("ani1.dat: is a key file; key files are never written") != std::string::npos);
+    REQUIRE(files.files.count("ani1.dat") == 0);
+    REQUIRE(files.files["ANI1.DAT"] == files.files["key1.dat"]);
+}

@@ -93,6 +93,7 @@ private:
     void start_animation();
     void reevaluate();
     void say(const std::string& text);
+    std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
     void record_written(const std::string& name);
 
     GraphicsScreen path_picture() const;
