@@ -73,6 +73,11 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         }
         scripted = script.events;
     }
+    const bool headless = !::isatty(STDIN_FILENO) || !terminal;
+    if (headless && !options.keys) {
+        err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
+        return ExitStatus::terminal_problem;
+    }
     FolderFiles files(folder);
     files.log("session started");
     SessionSettings settings{options.path.samples_per_segment, options.path.inbetween_count, options.path.spacing,
@@ -80,11 +85,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     Session session(settings, files);
     std::vector<KeyEvent> recorded;
     int status = 0;
-    if (!::isatty(STDIN_FILENO) || !terminal) {
-        if (!options.keys) {
-            err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
-            return ExitStatus::terminal_problem;
-        }
+    if (headless) {
         const GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
         recorded = run_headless_session(session, scripted, glyphs, out);
         if (!session.finished())

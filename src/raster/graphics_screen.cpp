@@ -3,6 +3,8 @@
 #include "apcs/raster/font.h"
 #include "apcs/raster/painter.h"
 
+#include <algorithm>
+
 namespace apcs {
 
 Bitmap render_raster(const GraphicsScreen& screen)
@@ -28,8 +30,12 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
             grid.set(mark.at.x * area.columns / screen.bitmap.width(), mark.at.y * area.rows / screen.bitmap.height(),
                      mark.glyph);
     for (const TextLine& line : screen.text) {
-        const int column = line.column * area.columns / text_screen_columns;
-        const int row = line.row * area.rows / text_screen_rows;
+        // A text cell goes where the centre of its 9x14 pixels falls, so that text lines up with
+        // what the raster draws beside it (a staff line and its label) at any area size.
+        const int centre_x = line.column * Font::cell_width + Font::cell_width / 2;
+        const int centre_y = line.row * Font::cell_height + Font::cell_height / 2;
+        const int column = centre_x * area.columns / std::max(screen.bitmap.width(), 1);
+        const int row = std::min(centre_y * area.rows / std::max(screen.bitmap.height(), 1), area.rows - 1);
         // Text replaces the raster glyphs of the cells it covers.
         grid.put_text(column, row, line.text);
     }

@@ -410,7 +410,7 @@ void Session::enter_graphics()
 
 void Session::handle_graphics_key(const KeyEvent& event)
 {
-    if (is_character(event, U'K', U'k') && m_phase != SessionPhase::staff) {
+    if (is_character(event, U'K', U'k')) {
         m_show_key_frames = !m_show_key_frames;
         return;
     }

@@ -83,7 +83,7 @@ GraphicsScreen Session::path_picture() const
     }
     content.message = current_message();
     content.key_help = m_phase == SessionPhase::staff ? std::string(text::staff_keys) + "  K key frames"
-                                                      : std::string("K key frames");
+                                                      : std::string("K key frames on/off");
     return draw_path_screen(content, *m_view);
 }
 

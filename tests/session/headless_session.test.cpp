@@ -52,8 +52,10 @@ TEST_CASE("a recorded session replays to the same files", "[session][headless]")
 
 TEST_CASE("without a terminal and without --keys the session refuses with exit 3", "[session][headless]")
 {
-    const auto result = test::run_apcs({});
+    const test::TempFolder folder;
+    const auto result = test::run_apcs({"--workdir", folder.path().string()});
     REQUIRE(result.status == 3);
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log")); // nothing written when nothing runs
     REQUIRE(result.err == "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n");
 }
 
