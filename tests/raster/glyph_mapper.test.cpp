@@ -91,3 +91,20 @@ TEST_CASE("a one-pixel path line survives the mapping at 80x25", "[raster][glyph
         REQUIRE(seen);
     }
 }
+
+TEST_CASE("the cell of a pixel follows the mapping's partition", "[raster][glyphs]")
+{
+    // 348 rows on 30 cells: cell 25 covers 290 … 300, cell 26 starts at 301.
+    REQUIRE(cell_of_pixel(289, 348, 30) == 24);
+    REQUIRE(cell_of_pixel(290, 348, 30) == 25);
+    REQUIRE(cell_of_pixel(300, 348, 30) == 25);
+    REQUIRE(cell_of_pixel(301, 348, 30) == 26);
+    for (int x = 0; x < 720; ++x)
+        REQUIRE(cell_of_pixel(x, 720, 80) == x / 9);
+    for (int y = 0; y < 348; ++y) {
+        Bitmap bitmap(720, 348);
+        bitmap.set(5, y, true);
+        const CellGrid grid = map_to_cells(bitmap, {96, 30}, GlyphSet::blocks);
+        REQUIRE(grid.at(0, cell_of_pixel(y, 348, 30)) != U' ');
+    }
+}

@@ -42,6 +42,13 @@ private:
     std::unordered_map<unsigned, char32_t> m_glyphs;
 };
 
+// The cell (of `cells` across `pixels`) that holds pixel `pixel`: cell c covers the pixels from
+// c·pixels/cells (rounded down) up to the next cell's start, the partition map_to_cells uses.
+constexpr int cell_of_pixel(int pixel, int pixels, int cells)
+{
+    return pixels <= 0 ? 0 : ((pixel + 1) * cells + pixels - 1) / pixels - 1;
+}
+
 // Maps the whole bitmap onto `area`, each cell covering its share of the pixels. Sub-blocks of a
 // cell are lit when any of their pixels is (max pooling), so 1-pixel lines survive; a cell is a
 // space only when none of its pixels is lit.
