@@ -15,7 +15,18 @@ namespace {
 
 volatile std::sig_atomic_t stop_requested = 0;
 
-extern "C" void request_stop(int) { stop_requested = 1; }
+// One stop is enough: from the first signal on the others are ignored (sigaction is
+// async-signal-safe), so that a hang-up's second SIGHUP cannot cut short the writing of files.
+extern "C" void request_stop(int)
+{
+    stop_requested = 1;
+    struct sigaction ignore {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    sigaction(SIGINT, &ignore, nullptr);
+    sigaction(SIGTERM, &ignore, nullptr);
+    sigaction(SIGHUP, &ignore, nullptr);
+}
 
 } // namespace
 
@@ -72,6 +83,16 @@ Terminal::~Terminal()
         endwin();
         delscreen(m_state->screen);
     }
+    if (stop_requested) {
+        // After a stop the program only finishes its files; a second hang-up (the kernel sends one
+        // when the terminal's session leader goes) must not cut that short.
+        sigset_t finishing;
+        sigemptyset(&finishing);
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE})
+            sigaddset(&finishing, signal);
+        sigprocmask(SIG_BLOCK, &finishing, nullptr);
+        return;
+    }
     sigaction(SIGINT, &m_state->old_int, nullptr);
     sigaction(SIGTERM, &m_state->old_term, nullptr);
     sigaction(SIGHUP, &m_state->old_hup, nullptr);
@@ -120,9 +141,12 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
         wint_t code = 0;
         const int kind = get_wch(&code);
         if (kind == ERR) {
-            // A closed terminal reads as end of file at once, again and again.
-            if (!::isatty(STDIN_FILENO))
+            // A closed terminal reads as end of file at once, again and again. It is a hang-up
+            // whose SIGHUP may still be on its way: count it as one.
+            if (!::isatty(STDIN_FILENO)) {
+                stop_requested = 1;
                 return TerminalInput::stop;
+            }
             continue;
         }
         if (kind == KEY_CODE_YES) {

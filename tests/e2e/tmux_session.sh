@@ -38,7 +38,10 @@ keys Enter
 wait_for "8 : Global Control"
 keys 8
 wait_for ">TENSION"
-keys 6 6 6
+keys 6 6
+# The keypad's 6 with NumLock off, as terminals without a terminfo name for it send it: ESC O v.
+tmux -L "$socket" send-keys -t apcs -l $'\eOv'
+sleep 0.15
 wait_for "+0.15"
 keys Enter
 wait_for ">CONTINUITY"
@@ -78,4 +81,24 @@ for file in ani1.dat ani4.dat inb001.dat inb012.dat way1.bak way4.bak apcs.log; 
 done
 grep -q "^0 0 0 0.15 0 0.05 0.15$" "$work/way1.dat" || { echo "way1.dat not adjusted:"; cat "$work/way1.dat"; exit 1; }
 grep -q "^-3 10 5 -0.15 0 0 0$" "$work/way4.dat" || { echo "way4.dat not adjusted:"; cat "$work/way4.dat"; exit 1; }
-echo "1 passed, 0 failed"
+passed=1
+
+# --keys with a terminal: the script's keys are typed first, then the keyboard takes over.
+rm -f "$work"/ani* "$work"/inb* "$work"/*.bak "$work"/apcs.log
+cp "$data"/way1.dat "$work"/way1.dat
+printf 'ENTER\nENTER\nTEXT 0 90 40\nENTER\nTEXT way1.dat\nENTER\nENTER\n8\n' > "$work/start.keys"
+tmux -L "$socket" new-session -d -s scripted -x 80 -y 25 -c "$work" \
+  "'$apcs' --glyphs ascii --keys start.keys --record again.keys; echo EXITED=\$?; sleep 60"
+screen_scripted() { tmux -L "$socket" capture-pane -p -t scripted; }
+for _ in $(seq 1 150); do screen_scripted | grep -qF ">TENSION" && break; sleep 0.1; done
+screen_scripted | grep -qF ">TENSION" || { echo "the script did not reach the staff"; screen_scripted; exit 1; }
+tmux -L "$socket" send-keys -t scripted L Enter Enter Enter Enter N
+sleep 0.5
+grep -q "^0 0 0 0.15 0 0 0$" "$work/way1.dat" || { echo "typed keys after the script were lost:"; cat "$work/way1.dat"; exit 1; }
+# A hang-up ends the session; the keys so far are still recorded, script and typed alike.
+tmux -L "$socket" kill-session -t scripted
+for _ in $(seq 1 50); do [ -s "$work/again.keys" ] && break; sleep 0.1; done
+grep -q "^TEXT way1.dat$" "$work/again.keys" || { echo "no record written"; pgrep -af "keys start.keys"; for p in $(pgrep -f "keys start.keys"); do cat /proc/$p/wchan; echo; cat /proc/$p/stack 2>/dev/null; done; exit 1; }
+grep -q "L" "$work/again.keys" || { echo "typed keys not recorded"; cat "$work/again.keys"; exit 1; }
+passed=$((passed + 1))
+echo "$passed passed, 0 failed"

@@ -302,3 +302,24 @@ TEST_CASE("a key file is never written, even when it shares a name the session w
     REQUIRE(files.files.count("ani1.dat") == 0);
     REQUIRE(files.files["ANI1.DAT"] == files.files["key1.dat"]);
 }
+
+TEST_CASE("the animation stops on Esc and replays from the start on R", "[session]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n0 5 0\n";
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, "way4.dat");
+    type(session, "");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter, enter});
+    REQUIRE(session.animating());
+    session.tick();
+    session.tick();
+    REQUIRE(graphics_message(session) == "Frame 2 of 13");
+    press(session, {ch('R')});
+    REQUIRE(graphics_message(session) == "Frame 0 of 13");
+    press(session, {escape});
+    REQUIRE(session.phase() == SessionPhase::animation_done);
+    REQUIRE_FALSE(session.animating());
+}
