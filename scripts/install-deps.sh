@@ -3,7 +3,7 @@
 # Usage: scripts/install-deps.sh [extra-package ...]
 set -euo pipefail
 
-packages=(g++ cmake make catch2 libcli11-dev libpng-dev libncurses-dev console-setup-linux tmux locales "$@")
+packages=(g++ cmake make catch2 libcli11-dev libpng-dev libncurses-dev console-setup-linux tmux procps "$@")
 
 missing=()
 for package in "${packages[@]}"; do
