@@ -335,14 +335,16 @@ void Session::submit_path_file(const std::string& name)
         return;
     }
     const Expected<DatFile> file = m_files.read_dat(name, 2);
-    const std::vector<Vec3> first = m_keys.key1.all_points();
-    const std::vector<Vec3> second = m_keys.key2.all_points();
-    const std::size_t point = m_path == 0 ? 0 : m_point_count - 1;
+    // The graphic point this path belongs to: the very first or the very last of each key.
+    const auto end_point = [&](const Graphic& key) {
+        return m_path == 0 ? key.parts.front().points.front() : key.parts.back().points.back();
+    };
     std::optional<Diagnostic> problem;
     if (!file)
         problem = file.error();
     else
-        problem = check_path_ends(*file, name, m_path == 0 ? "first" : "last", first[point], second[point]);
+        problem = check_path_ends(*file, name, m_path == 0 ? "first" : "last", end_point(m_keys.key1),
+                                  end_point(m_keys.key2));
     if (problem) {
         say(problem->to_string());
         start_path_prompt();
