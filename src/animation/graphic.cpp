@@ -19,14 +19,21 @@ std::vector<Vec3> Graphic::all_points() const
     return points;
 }
 
-Graphic Graphic::with_points(const std::vector<Vec3>& points) const
+std::vector<std::vector<Vec3>> Graphic::polylines(std::span<const Vec3> points) const
 {
-    Graphic copy = *this;
+    std::vector<std::vector<Vec3>> drawn;
+    drawn.reserve(parts.size());
     std::size_t next = 0;
-    for (GraphicPart& part : copy.parts)
-        for (Vec3& point : part.points)
-            point = next < points.size() ? points[next++] : point;
-    return copy;
+    for (const GraphicPart& part : parts) {
+        std::vector<Vec3> polyline;
+        polyline.reserve(part.points.size() + 1);
+        for (std::size_t i = 0; i < part.points.size() && next < points.size(); ++i)
+            polyline.push_back(points[next++]);
+        if (part.closure == Closure::closed && !polyline.empty() && !(polyline.front() == polyline.back()))
+            polyline.push_back(polyline.front());
+        drawn.push_back(std::move(polyline));
+    }
+    return drawn;
 }
 
 } // namespace apcs

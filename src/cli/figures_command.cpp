@@ -2,6 +2,7 @@
 
 #include "apcs/animation/surface_fit.h"
 #include "apcs/cli/path_command.h"
+#include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/figures.h"
@@ -46,7 +47,7 @@ Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::f
     }
     // The apple of example 3 stands still: its first point's path is the point itself.
     if (example.path_first == "key1.dat")
-        paths[0] = {{keys.key1.all_points().front(), {}}, {keys.key2.all_points().front(), {}}};
+        paths[0] = {{keys.key1.first_point(), {}}, {keys.key2.first_point(), {}}};
     const FrameSequence frames =
         fit_key_frames(keys, evaluate_path(paths[0], options.path), evaluate_path(paths[1], options.path));
     return draw_frames_figure(example.title, frames, keys.key1, example.view);
@@ -64,23 +65,17 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         return ExitStatus::bad_input;
     }
     for (const CurveFigure& figure : thesis_curve_figures()) {
-        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure))) {
-            err << problem->to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
+        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure)))
+            return report_bad_input(*problem, err);
         out << (target / figure.file_name).string() << '\n';
     }
     const std::filesystem::path examples = options.workdir.empty() ? data_folder : options.workdir;
     for (const ExampleFigure& example : example_figures()) {
         const Expected<GraphicsScreen> screen = draw_example(example, examples, options);
-        if (!screen) {
-            err << screen.error().to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
-        if (auto problem = write_png_file(target / example.file_name, *screen)) {
-            err << problem->to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
+        if (!screen)
+            return report_bad_input(screen.error(), err);
+        if (auto problem = write_png_file(target / example.file_name, *screen))
+            return report_bad_input(*problem, err);
         out << (target / example.file_name).string() << '\n';
     }
     return ExitStatus::success;

@@ -1,5 +1,7 @@
 #include "apcs/cli/frame_output.h"
 
+#include "apcs/cli/report.h"
+
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
@@ -84,10 +86,8 @@ ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure,
         return ExitStatus::success;
     }
     const auto written = write_inbetween_files(frames, structure, options.out.value_or("."), key_files);
-    if (!written) {
-        err << written.error().to_string() << '\n';
-        return ExitStatus::bad_input;
-    }
+    if (!written)
+        return report_bad_input(written.error(), err);
     return ExitStatus::success;
 }
 

@@ -2,6 +2,7 @@
 
 #include "apcs/animation/add_points.h"
 #include "apcs/cli/frame_output.h"
+#include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 
 #include <array>
@@ -42,15 +43,11 @@ ExitStatus run_inbetween_command(const InbetweenSettings& settings, const Common
                                  std::ostream& err)
 {
     const Expected<Graphic> key1 = read_key_frame(settings.key1);
-    if (!key1) {
-        err << key1.error().to_string() << '\n';
-        return ExitStatus::bad_input;
-    }
+    if (!key1)
+        return report_bad_input(key1.error(), err);
     const Expected<Graphic> key2 = read_key_frame(settings.key2);
-    if (!key2) {
-        err << key2.error().to_string() << '\n';
-        return ExitStatus::bad_input;
-    }
+    if (!key2)
+        return report_bad_input(key2.error(), err);
     const PaddedKeys keys = pad_keys(*key1, *key2, settings.padding);
     const int intervals = settings.frame_intervals.value_or(options.path.inbetween_count + 1);
     const FrameSequence frames = interpolate_frames(keys.begin, keys.end, intervals, settings.law);

@@ -1,5 +1,6 @@
 #include "apcs/cli/path_command.h"
 
+#include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
@@ -46,20 +47,14 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
                             std::ostream& err)
 {
     const Expected<DatFile> dat = read_dat_file(file);
-    if (!dat) {
-        err << dat.error().to_string() << '\n';
-        return ExitStatus::bad_input;
-    }
+    if (!dat)
+        return report_bad_input(dat.error(), err);
     const ControlPoints points = control_points_from(*dat, options.staff);
     const EvaluatedPath path = evaluate_path(points, options.path);
-    if (path.frames_freeze)
-        err << "apcs: " << options.path.inbetween_count << " in-betweens from " << path.curve.points.size() - 1
-            << " curve samples: frames will freeze\n";
+    warn_if_frames_freeze(path, options.path.inbetween_count, err);
     if (options.png) {
-        if (auto problem = write_png_file(*options.png, draw_path_file_screen(points, path, options.view))) {
-            err << problem->to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
+        if (auto problem = write_png_file(*options.png, draw_path_file_screen(points, path, options.view)))
+            return report_bad_input(*problem, err);
     }
     if (options.print || !options.png) {
         const std::string text = format_path_print(path);

@@ -1,5 +1,6 @@
 #include "apcs/cli/session_command.h"
 
+#include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 
 #include <ostream>
@@ -62,10 +63,8 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     std::vector<KeyEvent> scripted;
     if (options.keys) {
         const Expected<std::string> text = read_text_file(*options.keys);
-        if (!text) {
-            err << text.error().to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
+        if (!text)
+            return report_bad_input(text.error(), err);
         const KeyScriptResult script = parse_key_script(*text);
         if (script.problem) {
             err << options.keys->string() << ":" << script.problem_line << ": " << *script.problem << '\n';
@@ -105,10 +104,8 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     }
     if (options.record) {
         const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
-        if (!written) {
-            err << written.error().to_string() << '\n';
-            return ExitStatus::bad_input;
-        }
+        if (!written)
+            return report_bad_input(written.error(), err);
     }
     return static_cast<ExitStatus>(status);
 }

@@ -25,8 +25,6 @@ namespace {
 constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 constexpr char dos_end_of_file = '\x1A';
 
-bool is_blank(char c) { return is_field_blank(c); }
-
 void append_xyz(std::string& text, const Vec3& point)
 {
     append_shortest(text, point.x);
@@ -34,13 +32,6 @@ void append_xyz(std::string& text, const Vec3& point)
     append_shortest(text, point.y);
     text += ' ';
     append_shortest(text, point.z);
-}
-
-bool equals_ignoring_case(std::string_view left, std::string_view right)
-{
-    return left.size() == right.size() && std::equal(left.begin(), left.end(), right.begin(), [](char a, char b) {
-               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
-           });
 }
 
 // The blank-separated fields of a line: the first eight, and how many there are in all (a
@@ -106,7 +97,7 @@ Expected<DatFile> DatParser::parse(std::string_view text)
     if (end_mark != std::string_view::npos) {
         const std::string_view rest = text.substr(end_mark);
         const bool only_trailer = std::all_of(rest.begin(), rest.end(), [](char c) {
-            return c == dos_end_of_file || c == '\r' || c == '\n' || is_blank(c);
+            return c == dos_end_of_file || c == '\r' || c == '\n' || is_field_blank(c);
         });
         if (!only_trailer)
             return error("Ctrl-Z (end of file) followed by more data; expected it only at the end",
@@ -243,13 +234,19 @@ std::optional<Diagnostic> DatParser::finish()
     return std::nullopt;
 }
 
-std::string part_name_for_writing(const DatPart& part, std::size_t index)
+// "PART name OPEN|CLOSED" for part `index`: an unnamed part is called P1, P2, …; blanks and
+// comment characters in a name become '_' so that it reads back as one field.
+void append_part_line(std::string& text, const std::string& part_name, Closure closure, std::size_t index)
 {
-    if (part.name.empty())
-        return "P" + std::to_string(index + 1);
-    std::string name = part.name;
-    std::replace_if(name.begin(), name.end(), [](char c) { return is_blank(c) || c == ';' || c == '#'; }, '_');
-    return name;
+    std::string name = part_name.empty() ? "P" + std::to_string(index + 1) : part_name;
+    std::replace_if(name.begin(), name.end(), [](char c) { return is_field_blank(c) || c == ';' || c == '#'; }, '_');
+    text += "PART " + name + (closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
+}
+
+// A file of one open unnamed part is written without PART lines.
+bool needs_part_lines(std::size_t part_count, const std::string& first_name, Closure first_closure)
+{
+    return part_count != 1 || !first_name.empty() || first_closure != Closure::open;
 }
 
 } // namespace
@@ -264,11 +261,12 @@ std::string format_dat(const DatFile& file)
     std::string text;
     // About 40 bytes a point: one allocation for the whole file.
     text.reserve(file.point_count() * 40 + file.parts.size() * 24);
-    const bool plain = file.parts.size() == 1 && file.parts[0].name.empty() && file.parts[0].closure == Closure::open;
+    const bool part_lines =
+        !file.parts.empty() && needs_part_lines(file.parts.size(), file.parts[0].name, file.parts[0].closure);
     for (std::size_t i = 0; i < file.parts.size(); ++i) {
         const DatPart& part = file.parts[i];
-        if (!plain)
-            text += "PART " + part_name_for_writing(part, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
+        if (part_lines)
+            append_part_line(text, part.name, part.closure, i);
         for (const DatPoint& point : part.points) {
             append_xyz(text, point.position);
             if (point.staff) {
@@ -289,15 +287,13 @@ std::string format_graphic(const Graphic& structure, std::span<const Vec3> point
     std::string text;
     // Three shortest numbers are at most 72 bytes; typical ones about 55: one allocation.
     text.reserve(points.size() * 64 + structure.parts.size() * 24);
-    const bool plain = structure.parts.size() == 1 && structure.parts[0].name.empty() &&
-                       structure.parts[0].closure == Closure::open;
+    const bool part_lines = !structure.parts.empty() &&
+                            needs_part_lines(structure.parts.size(), structure.parts[0].name, structure.parts[0].closure);
     std::size_t next = 0;
     for (std::size_t i = 0; i < structure.parts.size(); ++i) {
         const GraphicPart& part = structure.parts[i];
-        if (!plain) {
-            const DatPart named{part.name, part.closure, {}};
-            text += "PART " + part_name_for_writing(named, i) + (part.closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
-        }
+        if (part_lines)
+            append_part_line(text, part.name, part.closure, i);
         for (std::size_t k = 0; k < part.points.size() && next < points.size(); ++k, ++next) {
             append_xyz(text, points[next]);
             text += '\n';

@@ -1,5 +1,7 @@
 #include "apcs/formats/file_io.h"
 
+#include "apcs/formats/text_fields.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -19,13 +21,6 @@ namespace {
 // Larger inputs than this cannot be valid: 10^6 points of at most 4096 bytes would be 4 GB, but
 // no real key file comes near; refusing here keeps memory bounded for any input.
 constexpr std::uintmax_t max_input_bytes = 1ull << 30;
-
-bool same_ignoring_case(const std::string& left, const std::string& right)
-{
-    return left.size() == right.size() && std::equal(left.begin(), left.end(), right.begin(), [](char a, char b) {
-               return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
-           });
-}
 
 std::string system_reason(int error_number) { return std::strerror(error_number); }
 
@@ -96,7 +91,7 @@ fs::path resolve_input_path(const fs::path& name)
     const fs::path folder = name.has_parent_path() ? name.parent_path() : fs::path(".");
     const std::string wanted = name.filename().string();
     for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
-        if (same_ignoring_case(entry->path().filename().string(), wanted))
+        if (equals_ignoring_case(entry->path().filename().string(), wanted))
             return name.has_parent_path() ? folder / entry->path().filename() : entry->path().filename();
     return name;
 }

@@ -145,8 +145,8 @@ std::optional<unsigned> shifted(unsigned mask, int right, int down)
     return moved;
 }
 
-} // namespace
-
+// The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): the glyph of
+// the font whose pooled mask is nearest.
 char32_t ascii_glyph_for(unsigned pooled_mask)
 {
     if (pooled_mask == 0)
@@ -173,6 +173,8 @@ char32_t ascii_glyph_for(unsigned pooled_mask)
         }
     return best;
 }
+
+} // namespace
 
 char32_t AsciiGlyphCache::glyph_for(unsigned pooled_mask)
 {

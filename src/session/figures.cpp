@@ -97,19 +97,12 @@ GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence&
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
-        const auto frame = frames.frame(k);
-        std::size_t next = 0;
         // KEY1 and KEY2 solid, the in-betweens dotted, so the keys stand out as in fig. 5.1.
         const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
-        for (const GraphicPart& part : structure.parts) {
+        for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k))) {
             int phase = 0;
-            const std::size_t first = next;
-            for (std::size_t i = 1; i < part.points.size() && next + i < frame.size(); ++i)
-                painter.styled_line(view.to_device(frame[next + i - 1]).rounded(), view.to_device(frame[next + i]).rounded(),
-                                    style, phase);
-            next += part.points.size();
-            if (part.closure == Closure::closed && next - 1 < frame.size() && part.points.size() > 2)
-                painter.styled_line(view.to_device(frame[next - 1]).rounded(), view.to_device(frame[first]).rounded(),
+            for (std::size_t i = 1; i < polyline.size(); ++i)
+                painter.styled_line(view.to_device(polyline[i - 1]).rounded(), view.to_device(polyline[i]).rounded(),
                                     style, phase);
         }
     }

@@ -3,6 +3,7 @@
 #include "apcs/animation/surface_fit.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/formats/text_fields.h"
 #include "apcs/raster/painter.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/screen_layout.h"
@@ -12,7 +13,6 @@
 using namespace apcs::session_keys;
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -88,14 +88,9 @@ void Session::say(const std::string& line) { m_console.print_line(line); }
 std::optional<Diagnostic> Session::write_file(const std::string& name, const std::string& content)
 {
     // Key files are never written: compared the way DOS names compare, ignoring case.
-    const auto same = [](const std::string& a, const std::string& b) {
-        return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-                   return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
-               });
-    };
     const std::string plain = std::filesystem::path(name).lexically_normal().string();
     for (const std::string& key : m_key_names)
-        if (!key.empty() && same(plain, std::filesystem::path(key).lexically_normal().string()))
+        if (!key.empty() && equals_ignoring_case(plain, std::filesystem::path(key).lexically_normal().string()))
             return Diagnostic{name, 0, "is a key file; key files are never written"};
     return m_files.write(name, content);
 }
@@ -313,9 +308,7 @@ void Session::submit_path_file(const std::string& name)
     }
     const Expected<DatFile> file = m_files.read_dat(name, 2);
     // The graphic point this path belongs to: the very first or the very last of each key.
-    const auto end_point = [&](const Graphic& key) {
-        return m_path == 0 ? key.parts.front().points.front() : key.parts.back().points.back();
-    };
+    const auto end_point = [&](const Graphic& key) { return m_path == 0 ? key.first_point() : key.last_point(); };
     std::optional<Diagnostic> problem;
     if (!file)
         problem = file.error();
@@ -362,12 +355,14 @@ void Session::submit_slopes(const std::string& line)
     enter_graphics();
 }
 
-void Session::reevaluate()
+EvaluatedPath Session::evaluated(int path) const
 {
-    PathSettings settings{m_slopes[static_cast<std::size_t>(m_path)], m_settings.samples_per_segment,
-                          m_settings.inbetween_count, m_settings.spacing};
-    m_evaluated = evaluate_path(m_points[static_cast<std::size_t>(m_path)], settings);
+    const auto index = static_cast<std::size_t>(path);
+    return evaluate_path(m_points[index], {m_slopes[index], m_settings.samples_per_segment, m_settings.inbetween_count,
+                                           m_settings.spacing});
 }
+
+void Session::reevaluate() { m_evaluated = evaluated(m_path); }
 
 void Session::enter_graphics()
 {
@@ -390,11 +385,7 @@ void Session::enter_graphics()
 void Session::run_surface_fitting()
 {
     say(std::string(text::fitting));
-    PathSettings first{m_slopes[0], m_settings.samples_per_segment, m_settings.inbetween_count, m_settings.spacing};
-    PathSettings last{m_slopes[1], m_settings.samples_per_segment, m_settings.inbetween_count, m_settings.spacing};
-    const EvaluatedPath first_path = evaluate_path(m_points[0], first);
-    const EvaluatedPath last_path = evaluate_path(m_points[1], last);
-    m_frames = fit_key_frames(m_keys, first_path, last_path);
+    m_frames = fit_key_frames(m_keys, evaluated(0), evaluated(1));
     const std::size_t count = inbetween_count(m_frames);
     for (std::size_t number = 1; number <= count; ++number) {
         const NamedText file = inbetween_file(m_frames, m_keys.key1, number);

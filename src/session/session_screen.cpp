@@ -10,21 +10,6 @@ namespace text = session_text;
 
 namespace {
 
-std::vector<std::vector<Vec3>> part_polylines(const Graphic& graphic, std::span<const Vec3> points)
-{
-    std::vector<std::vector<Vec3>> polylines;
-    std::size_t next = 0;
-    for (const GraphicPart& part : graphic.parts) {
-        std::vector<Vec3> polyline;
-        for (std::size_t i = 0; i < part.points.size() && next < points.size(); ++i)
-            polyline.push_back(points[next++]);
-        if (part.closure == Closure::closed && !polyline.empty() && !(polyline.front() == polyline.back()))
-            polyline.push_back(polyline.front());
-        polylines.push_back(std::move(polyline));
-    }
-    return polylines;
-}
-
 void draw_polyline(Painter& painter, const std::vector<Vec3>& polyline, const ViewTransform& view)
 {
     if (polyline.size() == 1)
@@ -77,7 +62,7 @@ GraphicsScreen Session::path_picture() const
     if (m_show_key_frames) {
         for (const Graphic* key : {&m_keys.key1, &m_keys.key2}) {
             const std::vector<Vec3> points = key->all_points();
-            for (auto& polyline : part_polylines(*key, points))
+            for (auto& polyline : key->polylines(points))
                 content.key_frame_polylines.push_back(std::move(polyline));
         }
     }
@@ -95,7 +80,7 @@ GraphicsScreen Session::animation_picture(bool all_frames) const
     const std::size_t first = all_frames ? 0 : m_frame;
     const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
     for (std::size_t k = first; k < last && m_animation_view; ++k)
-        for (const auto& polyline : part_polylines(m_keys.key1, m_frames.frame(k)))
+        for (const auto& polyline : m_keys.key1.polylines(m_frames.frame(k)))
             draw_polyline(painter, polyline, *m_animation_view);
     std::string message;
     if (m_phase == SessionPhase::animating)

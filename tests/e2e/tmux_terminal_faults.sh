@@ -10,14 +10,7 @@ socket="apcs-faults-$$"
 cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
 trap cleanup EXIT
 
-screen() { tmux -L "$socket" capture-pane -p -t "$1"; }
-wait_for() {
-  for _ in $(seq 1 150); do
-    screen "$1" | grep -qF -- "$2" && return 0
-    sleep 0.1
-  done
-  echo "timed out waiting for: $2"; echo "--- screen:"; screen "$1"; exit 1
-}
+source "$(dirname "$0")/tmux_lib.sh"
 report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
 
 passed=0

@@ -2,6 +2,7 @@
 
 #include "apcs/geometry/vec3.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -26,8 +27,13 @@ struct Graphic {
     std::vector<Vec3> all_points() const;
     // A closed graphic is a single closed part (thesis "closed curve"); it needs one path only.
     bool is_closed() const { return parts.size() == 1 && parts[0].closure == Closure::closed; }
-    // The same parts with the point sequence replaced (sizes must match point_count()).
-    Graphic with_points(const std::vector<Vec3>& points) const;
+    // The first point of the first part and the last of the last: the graphic points whose paths
+    // the animator shapes. The graphic must have a point.
+    const Vec3& first_point() const { return parts.front().points.front(); }
+    const Vec3& last_point() const { return parts.back().points.back(); }
+    // The polylines that draw `points` (a sequence laid out like this graphic's points, e.g. one
+    // frame) part by part; a closed part ends back at its first point.
+    std::vector<std::vector<Vec3>> polylines(std::span<const Vec3> points) const;
 };
 
 } // namespace apcs

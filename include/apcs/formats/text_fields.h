@@ -7,6 +7,18 @@ namespace apcs {
 // Blanks that separate fields in APCS's text files: space, tab, CR, VT, FF.
 constexpr bool is_field_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+// Whether two names or keywords are equal ignoring ASCII case, as DOS compared them.
+constexpr bool equals_ignoring_case(std::string_view left, std::string_view right)
+{
+    if (left.size() != right.size())
+        return false;
+    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
+    for (std::size_t i = 0; i < left.size(); ++i)
+        if (lower(left[i]) != lower(right[i]))
+            return false;
+    return true;
+}
+
 // Calls visit(field) for every blank-separated field of `line`, in order; nothing is allocated.
 template <typename Visit>
 void for_each_field(std::string_view line, Visit visit)

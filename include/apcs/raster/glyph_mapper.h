@@ -55,8 +55,4 @@ constexpr int cell_of_pixel(int pixel, int pixels, int cells)
 CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs);
 CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
 
-// The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): the glyph of
-// the font whose pooled mask is nearest. Exposed for tests.
-char32_t ascii_glyph_for(unsigned pooled_mask);
-
 } // namespace apcs

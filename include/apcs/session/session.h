@@ -91,6 +91,8 @@ private:
     void accept_path();
     void run_surface_fitting();
     void start_animation();
+    // Path 0 (the first graphic point's) or 1 (the last's) with its slopes and the settings.
+    EvaluatedPath evaluated(int path) const;
     void reevaluate();
     void say(const std::string& text);
     std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
