@@ -1,6 +1,6 @@
 #include "apcs/cli/command_line.h"
 
-#include "apcs/cli/exit_status.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
 #include "apcs/cli/inbetween_command.h"

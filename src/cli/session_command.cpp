@@ -65,12 +65,10 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         const Expected<std::string> text = read_text_file(*options.keys);
         if (!text)
             return report_bad_input(text.error(), err);
-        const KeyScriptResult script = parse_key_script(*text);
-        if (script.problem) {
-            err << options.keys->string() << ":" << script.problem_line << ": " << *script.problem << '\n';
-            return ExitStatus::bad_input;
-        }
-        scripted = script.events;
+        Expected<std::vector<KeyEvent>> script = parse_key_script(*text, options.keys->string());
+        if (!script)
+            return report_bad_input(script.error(), err);
+        scripted = std::move(*script);
     }
     const bool headless = !::isatty(STDIN_FILENO) || !terminal;
     if (headless && !options.keys) {

@@ -24,9 +24,10 @@ constexpr std::array<std::pair<std::string_view, Key>, 8> key_names{{
 
 } // namespace
 
-KeyScriptResult parse_key_script(std::string_view text)
+Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
 {
-    KeyScriptResult result;
+    std::vector<KeyEvent> events;
+    std::optional<Diagnostic> problem;
     int line_number = 0;
     while (!text.empty()) {
         ++line_number;
@@ -37,7 +38,7 @@ KeyScriptResult parse_key_script(std::string_view text)
             line.remove_suffix(1);
         if (line.starts_with("TEXT ")) {
             for (const char32_t character : decode_utf8(line.substr(5)))
-                result.events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
+                events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
             continue;
         }
         line = line.substr(0, line.find(';'));
@@ -47,23 +48,23 @@ KeyScriptResult parse_key_script(std::string_view text)
                 return;
             for (const auto& [name, key] : key_names)
                 if (token == name) {
-                    result.events.push_back(KeyEvent::of(key));
+                    events.push_back(KeyEvent::of(key));
                     return;
                 }
             const std::u32string characters = decode_utf8(token);
             if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD) {
-                result.problem = "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, DOWN, "
-                                 "BACKSPACE; found '" + std::string(token) + "'";
-                result.problem_line = line_number;
+                problem = Diagnostic{file_name, line_number,
+                                     "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
+                                     "DOWN, BACKSPACE; found '" + std::string(token) + "'"};
                 stop = true;
                 return;
             }
-            result.events.push_back(KeyEvent::typed(characters[0]));
+            events.push_back(KeyEvent::typed(characters[0]));
         });
         if (stop)
-            return result;
+            return *problem;
     }
-    return result;
+    return events;
 }
 
 std::string format_key_script(const std::vector<KeyEvent>& events)

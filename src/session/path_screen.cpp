@@ -39,7 +39,7 @@ void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenConten
         const int y = layout::staff_line_y(line);
         const int row = layout::first_staff_row + line;
         const bool active = content.active_line && static_cast<int>(*content.active_line) == line;
-        screen.text.push_back({0, row, std::string(active ? ">" : " ") + staff_line_names[static_cast<std::size_t>(line)]});
+        screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(static_cast<StaffLine>(line)))});
         painter.line({layout::staff_left, y}, {layout::staff_right, y});
         for (const double tick : {-1.0, 0.0, 1.0})
             painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},

@@ -33,7 +33,7 @@ std::string Session::current_message() const
         return std::string(text::pick_last);
     case SessionPhase::staff:
         return m_path_names[static_cast<std::size_t>(m_path)] + ": " +
-               staff_line_names[static_cast<std::size_t>(m_staff_line)] +
+               std::string(staff_line_name(static_cast<StaffLine>(m_staff_line))) +
                (m_evaluated.frames_freeze ? std::string("  (") + std::string(text::frames_freeze) + ")" : "");
     case SessionPhase::ask_again:
         return std::string(text::ask_again);

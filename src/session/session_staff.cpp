@@ -1,6 +1,7 @@
 // The graphics steps of the session: global or local control, picking the region, the four-line
 // staff, accepting the path (thesis Check_GorL_Control, Scan_Control_Point, Scan_Parameters,
 // tnextpixel, Ask_Adjusting).
+#include "apcs/animation/control_region.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/session.h"
@@ -91,16 +92,7 @@ void Session::set_staff_value(double value)
 
 void Session::apply_staff_to_region()
 {
-    ControlPoints& points = m_points[static_cast<std::size_t>(m_path)];
-    for (std::size_t k = m_region.first; k <= m_region.second && k < points.size(); ++k) {
-        points[k].staff.tension = m_staff.tension;
-        points[k].staff.continuity = m_staff.continuity;
-        points[k].staff.bias = m_staff.bias;
-        // The span's acceleration belongs to the points it starts from: all but the region's
-        // last, unless the region is the whole path.
-        if (k < m_region.second || m_region.second + 1 == points.size())
-            points[k].staff.acceleration = m_staff.acceleration;
-    }
+    apcs::apply_staff_to_region(m_points[static_cast<std::size_t>(m_path)], {m_region.first, m_region.second}, m_staff);
     reevaluate();
 }
 
@@ -120,7 +112,7 @@ void Session::handle_staff(const KeyEvent& event)
         return;
     if (event.key == Key::escape)
         set_staff_value(m_line_start_value);
-    m_files.log(std::string(staff_line_names[static_cast<std::size_t>(m_staff_line)]) + " " +
+    m_files.log(std::string(staff_line_name(static_cast<StaffLine>(m_staff_line))) + " " +
                 format_staff_value(staff_value(m_staff, m_staff_line)) + (event.key == Key::escape ? " (kept)" : ""));
     if (m_staff_line == 3) {
         m_phase = SessionPhase::ask_again;

@@ -277,16 +277,18 @@ TEST_CASE("a closed graphic's second path starts from the first path's values", 
 
 TEST_CASE("key scripts parse and format back to the same keys", "[session][keys]")
 {
-    const KeyScriptResult script = parse_key_script("; comment\nENTER\nTEXT 30 40 200\nENTER\n6 6 J L ESC ; steps\n"
-                                                    "LEFT RIGHT UP DOWN SPACE BACKSPACE\nTEXT ;\n");
-    REQUIRE_FALSE(script.problem.has_value());
-    REQUIRE(script.events.size() == 1 + 9 + 1 + 5 + 6 + 1);
-    REQUIRE(script.events[3] == KeyEvent::of(Key::space));
-    REQUIRE(script.events.back() == KeyEvent::typed(U';'));
-    REQUIRE(parse_key_script(format_key_script(script.events)).events == script.events);
-    const KeyScriptResult bad = parse_key_script("ENTER\nPAGEUP\n");
-    REQUIRE(bad.problem.has_value());
-    REQUIRE(bad.problem_line == 2);
+    const Expected<std::vector<KeyEvent>> script =
+        parse_key_script("; comment\nENTER\nTEXT 30 40 200\nENTER\n6 6 J L ESC ; steps\n"
+                         "LEFT RIGHT UP DOWN SPACE BACKSPACE\nTEXT ;\n",
+                         "s.keys");
+    REQUIRE(script.has_value());
+    REQUIRE(script->size() == 1 + 9 + 1 + 5 + 6 + 1);
+    REQUIRE((*script)[3] == KeyEvent::of(Key::space));
+    REQUIRE(script->back() == KeyEvent::typed(U';'));
+    REQUIRE(*parse_key_script(format_key_script(*script), "again.keys") == *script);
+    const Expected<std::vector<KeyEvent>> bad = parse_key_script("ENTER\nPAGEUP\n", "bad.keys");
+    REQUIRE_FALSE(bad.has_value());
+    REQUIRE(bad.error().to_string().starts_with("bad.keys:2: expected a single printable character"));
 }
 
 TEST_CASE("a key file is never written, even when it shares a name the session writes", "[session]")

@@ -2,7 +2,7 @@
 
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
-#include "apcs/cli/exit_status.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/cli/options.h"
 #include "apcs/formats/diagnostic.h"
 

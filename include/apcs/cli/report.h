@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apcs/animation/motion_path.h"
-#include "apcs/cli/exit_status.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/formats/diagnostic.h"
 
 #include <iosfwd>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/cli/exit_status.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/cli/options.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/session.h"

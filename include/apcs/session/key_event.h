@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/formats/diagnostic.h"
+
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,13 +25,8 @@ struct KeyEvent {
 // A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
 // literally; any other line holds tokens — a printable character, or ENTER, ESC, SPACE, LEFT,
 // RIGHT, UP, DOWN (BACKSPACE too); ';' starts a comment. Returns the events, or the first problem
-// as "line N: …".
-struct KeyScriptResult {
-    std::vector<KeyEvent> events;
-    std::optional<std::string> problem;
-    int problem_line = 0;
-};
-KeyScriptResult parse_key_script(std::string_view text);
+// with its line, named as `file_name`.
+[[nodiscard]] Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name);
 
 // Writes events as a script that parse_key_script reads back to the same events: runs of
 // printable characters typed in a line become TEXT lines.

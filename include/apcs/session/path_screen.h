@@ -13,10 +13,6 @@
 
 namespace apcs {
 
-enum class StaffLine { tension = 0, continuity = 1, bias = 2, acceleration = 3 };
-
-inline constexpr std::array<const char*, 4> staff_line_names{"TENSION", "CONTINUITY", "BIAS", "ACCELERATION"};
-
 // Everything the path screen shows (thesis figs. 4.2.4–4.2.6).
 struct PathScreenContent {
     const EvaluatedPath* path = nullptr;

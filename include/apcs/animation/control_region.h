@@ -1,0 +1,27 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+
+#include <cstddef>
+
+namespace apcs {
+
+// The control points one staff adjusts (thesis Scan_Control_Point): under global control the whole
+// path, under local control the run the animator picked, first < last. Indices from 0.
+struct ControlRegion {
+    std::size_t first = 0;
+    std::size_t last = 0;
+
+    static ControlRegion whole(const ControlPoints& points) { return {0, points.empty() ? 0 : points.size() - 1}; }
+    bool is_whole(const ControlPoints& points) const { return first == 0 && last + 1 == points.size(); }
+    bool contains(std::size_t point) const { return point >= first && point <= last; }
+};
+
+// Gives every control point of the region the staff's tension, continuity and bias, and the
+// staff's acceleration to the spans the region covers (thesis Accer(is, ie)). A span's
+// acceleration is carried by the control point it starts from (SPEC §2.1), so the region's last
+// point keeps its own: it starts the span after the region, unless the region is the whole path.
+// Values are clamped to [-1, 1]; a region outside the path changes only the points inside it.
+void apply_staff_to_region(ControlPoints& points, ControlRegion region, const StaffValues& staff);
+
+} // namespace apcs
