@@ -1,7 +1,7 @@
 // Surface fitting at 10^3 … 10^6 points x 12 in-betweens: compute only, and with the
 // in-between files written (to a temporary folder).
 #include "apcs/animation/surface_fit.h"
-#include "apcs/cli/frame_output.h"
+#include "apcs/formats/inbetween_files.h"
 
 #include <benchmark/benchmark.h>
 
@@ -61,7 +61,7 @@ void fit_and_write(benchmark::State& state)
     std::filesystem::create_directories(folder);
     for (auto _ : state) {
         const FrameSequence frames = fit_key_frames(in.keys, in.first, in.last);
-        benchmark::DoNotOptimize(write_inbetween_files(frames, in.keys.key1, folder, {}));
+        benchmark::DoNotOptimize(write_inbetween_files(frames, in.keys.key1, folder, KeyFileGuard{}));
     }
     std::filesystem::remove_all(folder);
     state.SetItemsProcessed(state.iterations() * state.range(0) * 14);

@@ -1,9 +1,12 @@
 #include "apcs/cli/command_line.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/terminal/terminal_session.h"
 
 #include <clocale>
 #include <cstring>
+#include <exception>
 #include <iostream>
+#include <new>
 #include <langinfo.h>
 #include <malloc.h>
 
@@ -21,15 +24,27 @@ apcs::GlyphSet resolve_glyphs(apcs::GlyphSet chosen)
 
 int main(int argc, char** argv)
 {
-    std::setlocale(LC_ALL, "");
-    // Large buffers (key files, frames, file texts) come and go in a batch run; a fixed mmap
-    // threshold hands each back to the system when freed instead of letting glibc keep it in the
-    // heap, so peak memory is what is in use at once.
-    mallopt(M_MMAP_THRESHOLD, 256 * 1024);
-    const apcs::TerminalSessionRunner terminal = [](apcs::Session& session, const std::vector<apcs::KeyEvent>& scripted,
-                                                    apcs::GlyphSet glyphs, std::vector<apcs::KeyEvent>& recorded,
-                                                    std::string& problem) {
-        return apcs::run_terminal_session(session, scripted, resolve_glyphs(glyphs), recorded, problem);
-    };
-    return apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal);
+    // Any exception ends the program here, after unwinding has given the terminal back (the
+    // Terminal is owned inside run_terminal_session). Exit status 1, as for bad input or a failed
+    // write (SPEC §1 has no status of its own for it): the command did not do what it was asked.
+    try {
+        std::setlocale(LC_ALL, "");
+        // Large buffers (key files, frames, file texts) come and go in a batch run; a fixed mmap
+        // threshold hands each back to the system when freed instead of letting glibc keep it in
+        // the heap, so peak memory is what is in use at once.
+        mallopt(M_MMAP_THRESHOLD, 256 * 1024);
+        const apcs::TerminalSessionRunner terminal =
+            [](apcs::Session& session, const std::vector<apcs::KeyEvent>& scripted, apcs::GlyphSet glyphs,
+               std::vector<apcs::KeyEvent>& recorded, apcs::Diagnostic& problem) {
+                return apcs::run_terminal_session(session, scripted, resolve_glyphs(glyphs), recorded, problem);
+            };
+        return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal));
+    } catch (const std::bad_alloc&) {
+        std::cerr << "apcs: out of memory\n";
+    } catch (const std::exception& error) {
+        std::cerr << "apcs: internal error: " << error.what() << '\n';
+    } catch (...) {
+        std::cerr << "apcs: internal error: unknown exception\n";
+    }
+    return apcs::to_int(apcs::ExitStatus::bad_input);
 }

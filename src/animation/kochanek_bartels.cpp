@@ -1,20 +1,35 @@
 #include "apcs/animation/kochanek_bartels.h"
 
+#include "apcs/animation/input_limits.h"
+
 namespace apcs {
+
+namespace {
+
+// Tension t, continuity c and bias b of Eq. 3.1.4, each clamped to [-1, 1].
+struct Shape {
+    double t;
+    double c;
+    double b;
+};
+
+Shape clamped_shape(const StaffValues& staff)
+{
+    return {limits::staff_value.clamp(staff.tension), limits::staff_value.clamp(staff.continuity),
+            limits::staff_value.clamp(staff.bias)};
+}
+
+} // namespace
 
 Vec3 incoming_tangent(const Vec3& previous, const Vec3& current, const Vec3& next, const StaffValues& staff)
 {
-    const double t = staff.tension;
-    const double c = staff.continuity;
-    const double b = staff.bias;
+    const auto [t, c, b] = clamped_shape(staff);
     return ((1 - t) * (1 - c) * (1 + b) * (current - previous) + (1 - t) * (1 + c) * (1 - b) * (next - current)) * 0.5;
 }
 
 Vec3 outgoing_tangent(const Vec3& previous, const Vec3& current, const Vec3& next, const StaffValues& staff)
 {
-    const double t = staff.tension;
-    const double c = staff.continuity;
-    const double b = staff.bias;
+    const auto [t, c, b] = clamped_shape(staff);
     return ((1 - t) * (1 + c) * (1 + b) * (current - previous) + (1 - t) * (1 - c) * (1 - b) * (next - current)) * 0.5;
 }
 
@@ -24,15 +39,17 @@ std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, En
     if (points.size() < 2)
         return segments;
     const std::size_t last = points.size() - 1;
+    const double start_slope = limits::end_slope.clamp(slopes.start);
+    const double end_slope = limits::end_slope.clamp(slopes.end);
     segments.reserve(last);
     for (std::size_t k = 0; k < last; ++k) {
         const Vec3& start = points[k].position;
         const Vec3& end = points[k + 1].position;
         const Vec3 start_tangent = k == 0
-            ? slopes.start * (end - start)
+            ? start_slope * (end - start)
             : outgoing_tangent(points[k - 1].position, start, end, points[k].staff);
         const Vec3 end_tangent = k + 1 == last
-            ? slopes.end * (end - start)
+            ? end_slope * (end - start)
             : incoming_tangent(start, end, points[k + 2].position, points[k + 1].staff);
         segments.push_back({start, end, start_tangent, end_tangent});
     }

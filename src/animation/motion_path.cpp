@@ -1,6 +1,7 @@
 #include "apcs/animation/motion_path.h"
 
 #include "apcs/animation/arc_length.h"
+#include "apcs/animation/input_limits.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
 
@@ -16,12 +17,13 @@ std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> p
     if (points.size() < 2)
         return spans;
     const std::size_t last = points.size() - 1;
-    AccelerationSpan current{0, last, points[0].staff.acceleration};
+    const auto acceleration = [&](std::size_t k) { return limits::staff_value.clamp(points[k].staff.acceleration); };
+    AccelerationSpan current{0, last, acceleration(0)};
     for (std::size_t k = 1; k < last; ++k) {
-        if (points[k].staff.acceleration != current.acceleration) {
+        if (acceleration(k) != current.acceleration) {
             current.last_point = k;
             spans.push_back(current);
-            current = {k, last, points[k].staff.acceleration};
+            current = {k, last, acceleration(k)};
         }
     }
     spans.push_back(current);

@@ -6,6 +6,7 @@
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
+#include "apcs/formats/number_text.h"
 #include "apcs/version.h"
 
 #include <CLI/CLI.hpp>
@@ -30,26 +31,37 @@ const CLI::Validator finite_number(
     },
     "NUMBER");
 
+// CLI11's check of a range of apcs::limits, for options that take any number. (CLI11 names the
+// range's type in --help and writes its bounds the type's way: whole_range keeps "INT in [1 - 100]".)
+CLI::Range real_range(const limits::Range& range) { return CLI::Range(range.min, range.max); }
+
+// The same for options that take whole numbers.
+CLI::Range whole_range(const limits::Range& range)
+{
+    return CLI::Range(static_cast<int>(range.min), static_cast<int>(range.max));
+}
+
 void add_staff_options(CLI::App& command, CommonOptions& options)
 {
-    const CLI::Range unit(-1.0, 1.0);
-    command.add_option("--tension", options.staff.tension, "tension t in [-1, 1] (default 0)")->check(finite_number & unit);
-    command.add_option("--continuity", options.staff.continuity, "continuity c in [-1, 1] (default 0)")
-        ->check(finite_number & unit);
-    command.add_option("--bias", options.staff.bias, "bias b in [-1, 1] (default 0)")->check(finite_number & unit);
-    command.add_option("--accel", options.staff.acceleration, "acceleration a in [-1, 1] (default 0)")
-        ->check(finite_number & unit);
+    const CLI::Range staff_range = real_range(limits::staff_value);
+    const std::string range = " in " + range_text(limits::staff_value) + " (default 0)";
+    command.add_option("--tension", options.staff.tension, "tension t" + range)->check(finite_number & staff_range);
+    command.add_option("--continuity", options.staff.continuity, "continuity c" + range)
+        ->check(finite_number & staff_range);
+    command.add_option("--bias", options.staff.bias, "bias b" + range)->check(finite_number & staff_range);
+    command.add_option("--accel", options.staff.acceleration, "acceleration a" + range)
+        ->check(finite_number & staff_range);
 }
 
 void add_path_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
 {
-    command.add_option("--slopes", slopes, "end slopes S0 S1, each in [0, 1] (default 1 1)")
+    command.add_option("--slopes", slopes, "end slopes S0 S1, each in " + range_text(limits::end_slope) + " (default 1 1)")
         ->expected(2)
-        ->check(finite_number & CLI::Range(0.0, 1.0));
+        ->check(finite_number & real_range(limits::end_slope));
     command.add_option("--samples", options.path.samples_per_segment, "curve samples per segment (default 32)")
-        ->check(CLI::Range(1, 100000));
+        ->check(whole_range(limits::samples_per_segment));
     command.add_option("--inbetweens", options.path.inbetween_count, "in-between frames M (default 12)")
-        ->check(CLI::Range(0, 100000));
+        ->check(whole_range(limits::inbetween_count));
     command
         .add_option_function<std::string>(
             "--spacing",
@@ -63,11 +75,11 @@ void add_path_options(CLI::App& command, CommonOptions& options, std::vector<dou
 void add_screen_options(CLI::App& command, CommonOptions& options)
 {
     command.add_option("--theta", options.view.theta_degrees, "viewer direction theta in degrees (default 30)")
-        ->check(finite_number & CLI::Range(-1e6, 1e6));
+        ->check(finite_number & real_range(limits::view_degrees));
     command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees (default 40)")
-        ->check(finite_number & CLI::Range(-1e6, 1e6));
+        ->check(finite_number & real_range(limits::view_degrees));
     command.add_option("--delay", options.delay_ms, "milliseconds per animation frame (default 200)")
-        ->check(CLI::Range(0, 60000));
+        ->check(whole_range(limits::delay_ms));
     command
         .add_option_function<std::string>(
             "--glyphs",
@@ -77,7 +89,7 @@ void add_screen_options(CLI::App& command, CommonOptions& options)
             "ascii, braille or blocks (default: braille under UTF-8, else ascii)")
         ->check(CLI::IsMember({"ascii", "braille", "blocks"}));
     command.add_option("--step", options.step, "staff step per key (default 0.05)")
-        ->check(finite_number & CLI::Range(0.001, 2.0));
+        ->check(finite_number & real_range(limits::staff_step));
     command.add_option("--png", options.png, "write the 720x348 screen as a PNG");
 }
 
@@ -122,7 +134,7 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     CLI::App* inbetween = app.add_subcommand("inbetween", "in-betweens by interpolation law and padding (SPEC 6)");
     inbetween->add_option("KEYS", key_files, "KEY1 KEY2")->expected(2)->required();
     inbetween->add_option("--frames", inbetween_settings.frame_intervals, "T: frames 0 ... T (default: --inbetweens + 1)")
-        ->check(CLI::Range(1, 100000));
+        ->check(whole_range(limits::frame_intervals));
     inbetween
         ->add_option_function<std::string>(
             "--law", [&](const std::string& name) { inbetween_settings.law = *speed_law_from_name(name); },

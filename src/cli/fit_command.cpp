@@ -22,23 +22,26 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
         return report_bad_input(key2.error(), err);
     const EqualisedKeys keys = equalise_key_frames(std::move(*key1), std::move(*key2));
 
-    const Expected<DatFile> first = read_dat_file(files.path_first);
+    const Expected<DatFile> first_file = read_dat_file(files.path_first);
+    if (!first_file)
+        return report_bad_input(first_file.error(), err);
+    const Expected<ControlPoints> first =
+        point_path_from(*first_file, files.path_first.string(), PathEnd::first, keys, options.staff);
     if (!first)
         return report_bad_input(first.error(), err);
-    if (auto problem = check_path_ends(*first, files.path_first.string(), "first", keys.key1.first_point(),
-                                        keys.key2.first_point()))
-        return report_bad_input(*problem, err);
-    const Expected<DatFile> last = read_dat_file(files.path_last);
+    const Expected<DatFile> last_file = read_dat_file(files.path_last);
+    if (!last_file)
+        return report_bad_input(last_file.error(), err);
+    // A closed graphic needs one path only: the second is read but not used.
+    const Expected<ControlPoints> last =
+        keys.key1.is_closed()
+            ? Expected<ControlPoints>(control_points_from(*last_file, options.staff))
+            : point_path_from(*last_file, files.path_last.string(), PathEnd::last, keys, options.staff);
     if (!last)
         return report_bad_input(last.error(), err);
-    // A closed graphic needs one path only: the second is read but not used.
-    if (!keys.key1.is_closed())
-        if (auto problem = check_path_ends(*last, files.path_last.string(), "last", keys.key1.last_point(),
-                                            keys.key2.last_point()))
-            return report_bad_input(*problem, err);
 
-    const EvaluatedPath first_path = evaluate_path(control_points_from(*first, options.staff), options.path);
-    const EvaluatedPath last_path = evaluate_path(control_points_from(*last, options.staff), options.path);
+    const EvaluatedPath first_path = evaluate_path(*first, options.path);
+    const EvaluatedPath last_path = evaluate_path(*last, options.path);
     warn_if_frames_freeze(first_path.frames_freeze ? first_path : last_path, options.path.inbetween_count, err);
     const FrameSequence frames = fit_key_frames(keys, first_path, last_path);
 

@@ -81,20 +81,20 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
                              options.step};
     Session session(settings, files);
     std::vector<KeyEvent> recorded;
-    int status = 0;
+    ExitStatus status = ExitStatus::success;
     if (headless) {
         const GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
         recorded = run_headless_session(session, scripted, glyphs, out);
         if (!session.finished())
             err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     } else {
-        std::string problem;
+        Diagnostic problem;
         status = terminal(session, scripted, options.glyphs, recorded, problem);
-        if (status == 3) {
-            err << "apcs: " << problem << '\n';
+        if (status == ExitStatus::terminal_problem) {
+            err << problem.to_string() << '\n';
             return ExitStatus::terminal_problem;
         }
-        if (status == 130)
+        if (status == ExitStatus::stopped)
             err << "apcs: stopped; every file written so far is whole\n";
         else
             for (const std::string& name : session.written_files())
@@ -105,7 +105,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         if (!written)
             return report_bad_input(written.error(), err);
     }
-    return static_cast<ExitStatus>(status);
+    return status;
 }
 
 } // namespace apcs

@@ -1,5 +1,6 @@
 #include "apcs/formats/dat_file.h"
 
+#include "apcs/animation/input_limits.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/text_fields.h"
 
@@ -68,13 +69,16 @@ public:
     Expected<DatFile> parse(std::string_view text);
 
 private:
-    std::optional<Diagnostic> parse_line(std::string_view line);
-    std::optional<Diagnostic> parse_count(std::string_view field);
-    std::optional<Diagnostic> parse_part(const Fields& fields);
-    std::optional<Diagnostic> parse_point(const Fields& fields);
-    std::optional<Diagnostic> finish();
-    Diagnostic error(std::string message, int line) const { return {m_file_name, line, std::move(message)}; }
-    Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
+    [[nodiscard]] std::optional<Diagnostic> parse_line(std::string_view line);
+    [[nodiscard]] std::optional<Diagnostic> parse_count(std::string_view field);
+    [[nodiscard]] std::optional<Diagnostic> parse_part(const Fields& fields);
+    [[nodiscard]] std::optional<Diagnostic> parse_point(const Fields& fields);
+    [[nodiscard]] std::optional<Diagnostic> finish();
+    [[nodiscard]] Diagnostic error(std::string message, int line) const
+    {
+        return {m_file_name, line, std::move(message)};
+    }
+    [[nodiscard]] Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
 
     const std::string& m_file_name;
     std::size_t m_minimum_points;
@@ -197,11 +201,15 @@ std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
     }
     DatPoint point{{values[0], values[1], values[2]}, std::nullopt, m_line};
     if (fields.size() == 7) {
-        constexpr std::array<std::string_view, 4> names{"tension", "continuity", "bias", "acceleration"};
-        for (std::size_t i = 0; i < names.size(); ++i)
-            if (values[3 + i] < -1.0 || values[3 + i] > 1.0)
-                return error(std::string(names[i]) + " " + quote_field(fields[3 + i]) + " is outside [-1, 1]");
-        point.staff = StaffValues{values[3], values[4], values[5], values[6]};
+        // t c b a follow x y z in the staff's order.
+        StaffValues staff;
+        for (std::size_t i = 0; i < staff_lines.size(); ++i) {
+            if (!limits::staff_value.contains(values[3 + i]))
+                return error(ascii_lower_case(staff_line_name(staff_lines[i])) + " " + quote_field(fields[3 + i]) +
+                             " is outside " + range_text(limits::staff_value));
+            staff[staff_lines[i]] = values[3 + i];
+        }
+        point.staff = staff;
     }
     if (m_file.parts.empty()) {
         m_file.parts.push_back({"", Closure::open, {}});

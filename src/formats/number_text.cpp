@@ -65,6 +65,11 @@ void append_shortest(std::string& text, double value)
     text.append(buffer.data(), result.ptr);
 }
 
+std::string range_text(const limits::Range& range)
+{
+    return "[" + shortest_number(range.min) + ", " + shortest_number(range.max) + "]";
+}
+
 std::string fixed_six(double value)
 {
     std::array<char, 64> buffer{};

@@ -87,6 +87,18 @@ ControlPoints control_points_from(const DatFile& file, const StaffValues& defaul
     return points;
 }
 
+Expected<ControlPoints> point_path_from(const DatFile& file, const std::string& file_name, PathEnd end,
+                                        const EqualisedKeys& keys, const StaffValues& defaults)
+{
+    const bool first = end == PathEnd::first;
+    const Vec3& key1_position = first ? keys.key1.first_point() : keys.key1.last_point();
+    const Vec3& key2_position = first ? keys.key2.first_point() : keys.key2.last_point();
+    if (std::optional<Diagnostic> problem =
+            check_path_ends(file, file_name, first ? "first" : "last", key1_position, key2_position))
+        return *std::move(problem);
+    return control_points_from(file, defaults);
+}
+
 DatFile dat_from(const ControlPoints& points)
 {
     DatFile file;

@@ -17,6 +17,15 @@ std::string format_staff_value(double value)
     return text;
 }
 
+PathScreenContent path_screen_content(std::span<const ControlPoint> points, const EvaluatedPath& path)
+{
+    PathScreenContent content;
+    content.path = &path;
+    content.control_points = points;
+    content.staff = points.empty() ? StaffValues{} : points.front().staff;
+    return content;
+}
+
 std::vector<Vec3> path_screen_scene(const PathScreenContent& content)
 {
     std::vector<Vec3> scene;

@@ -1,32 +1,25 @@
 #include "apcs/terminal/terminal.h"
 
+#include "apcs/terminal/curses_keys.h"
+#include "stop_signals.h"
+
 #include <curses.h>
 
-#include <cerrno>
+#include <algorithm>
 #include <chrono>
-#include <csignal>
-#include <cstdio>
 #include <cstdlib>
+#include <optional>
+#include <string>
 #include <unistd.h>
 
 namespace apcs {
 
 namespace {
 
-volatile std::sig_atomic_t stop_requested = 0;
+// Esc alone counts after this many milliseconds unless the environment's ESCDELAY says otherwise.
+constexpr int default_escape_delay_ms = 100;
 
-// One stop is enough: from the first signal on the others are ignored (sigaction is
-// async-signal-safe), so that a hang-up's second SIGHUP cannot cut short the writing of files.
-extern "C" void request_stop(int)
-{
-    stop_requested = 1;
-    struct sigaction ignore {};
-    ignore.sa_handler = SIG_IGN;
-    sigemptyset(&ignore.sa_mask);
-    sigaction(SIGINT, &ignore, nullptr);
-    sigaction(SIGTERM, &ignore, nullptr);
-    sigaction(SIGHUP, &ignore, nullptr);
-}
+Diagnostic terminal_problem(const std::string& message) { return Diagnostic{"apcs", 0, message}; }
 
 } // namespace
 
@@ -34,45 +27,39 @@ struct Terminal::State {
     SCREEN* screen = nullptr;
     CellGrid shown;
     bool valid = false;
-    struct sigaction old_int {};
-    struct sigaction old_term {};
-    struct sigaction old_hup {};
+    // Installed once the terminal is taken over; destroyed after it is given back.
+    std::optional<StopSignals> stop;
 };
 
 Terminal::Terminal() : m_state(std::make_unique<State>()) {}
 
-std::unique_ptr<Terminal> Terminal::open(std::string& problem)
+Expected<std::unique_ptr<Terminal>> Terminal::open()
 {
-    if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO)) {
-        problem = "standard input and output must be a terminal";
-        return nullptr;
-    }
+    if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO))
+        return terminal_problem("standard input and output must be a terminal");
     const char* term = std::getenv("TERM");
-    if (term == nullptr || *term == '\0') {
-        problem = "TERM is not set; set it to your terminal's type, e.g. TERM=xterm";
-        return nullptr;
-    }
+    if (term == nullptr || *term == '\0')
+        return terminal_problem("TERM is not set; set it to your terminal's type, e.g. TERM=xterm");
     std::unique_ptr<Terminal> terminal(new Terminal());
     State& state = *terminal->m_state;
     state.screen = newterm(term, stdout, stdin);
-    if (state.screen == nullptr) {
-        problem = std::string("the terminal type '") + term + "' is unknown (no terminfo entry); try TERM=xterm";
-        return nullptr;
-    }
+    if (state.screen == nullptr)
+        return terminal_problem(std::string("the terminal type '") + term +
+                                "' is unknown (no terminfo entry); try TERM=xterm");
     set_term(state.screen);
     cbreak();
     noecho();
     nonl();
     keypad(stdscr, TRUE);
-    set_escdelay(25);
+    // Where terminfo names a sequence already, its meaning stands.
+    for (const KeypadSequence& keypad_key : keypad_sequences())
+        if (key_defined(keypad_key.sequence) == 0)
+            define_key(keypad_key.sequence, keypad_key.code);
+    // newterm has read the environment's ESCDELAY, if any.
+    if (std::getenv("ESCDELAY") == nullptr)
+        set_escdelay(default_escape_delay_ms);
     curs_set(0);
-    struct sigaction action {};
-    action.sa_handler = request_stop;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &state.old_int);
-    sigaction(SIGTERM, &action, &state.old_term);
-    sigaction(SIGHUP, &action, &state.old_hup);
-    stop_requested = 0;
+    state.stop.emplace();
     return terminal;
 }
 
@@ -83,19 +70,6 @@ Terminal::~Terminal()
         endwin();
         delscreen(m_state->screen);
     }
-    if (stop_requested) {
-        // After a stop the program only finishes its files; a second hang-up (the kernel sends one
-        // when the terminal's session leader goes) must not cut that short.
-        sigset_t finishing;
-        sigemptyset(&finishing);
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE})
-            sigaddset(&finishing, signal);
-        sigprocmask(SIG_BLOCK, &finishing, nullptr);
-        return;
-    }
-    sigaction(SIGINT, &m_state->old_int, nullptr);
-    sigaction(SIGTERM, &m_state->old_term, nullptr);
-    sigaction(SIGHUP, &m_state->old_hup, nullptr);
 }
 
 TerminalSize Terminal::size() const
@@ -106,29 +80,12 @@ TerminalSize Terminal::size() const
     return {columns, rows};
 }
 
-namespace {
-
-// Keypad keys in application mode with NumLock off arrive as ESC O x when terminfo does not
-// name them: t = 4, v = 6, x = 8, r = 2, M = Enter.
-std::optional<KeyEvent> keypad_sequence(wint_t final)
-{
-    switch (final) {
-    case 't': return KeyEvent::typed(U'4');
-    case 'v': return KeyEvent::typed(U'6');
-    case 'x': return KeyEvent::typed(U'8');
-    case 'r': return KeyEvent::typed(U'2');
-    case 'M': return KeyEvent::of(Key::enter);
-    default: return std::nullopt;
-    }
-}
-
-} // namespace
-
 TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
 {
+    StopSignals& stop = *m_state->stop;
     const auto start = std::chrono::steady_clock::now();
     while (true) {
-        if (stop_requested)
+        if (stop.requested())
             return TerminalInput::stop;
         int wait = 100;
         if (timeout_ms >= 0) {
@@ -144,52 +101,16 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
             // A closed terminal reads as end of file at once, again and again. It is a hang-up
             // whose SIGHUP may still be on its way: count it as one.
             if (!::isatty(STDIN_FILENO)) {
-                stop_requested = 1;
+                stop.request();
                 return TerminalInput::stop;
             }
             continue;
         }
-        if (kind == KEY_CODE_YES) {
-            switch (code) {
-            case KEY_RESIZE: return TerminalInput::resize;
-            case KEY_LEFT: key = KeyEvent::of(Key::left); return TerminalInput::key;
-            case KEY_RIGHT: key = KeyEvent::of(Key::right); return TerminalInput::key;
-            case KEY_UP: key = KeyEvent::of(Key::up); return TerminalInput::key;
-            case KEY_DOWN: key = KeyEvent::of(Key::down); return TerminalInput::key;
-            case KEY_ENTER: key = KeyEvent::of(Key::enter); return TerminalInput::key;
-            case KEY_BACKSPACE: key = KeyEvent::of(Key::backspace); return TerminalInput::key;
-            default: continue;
-            }
-        }
-        switch (code) {
-        case '\r':
-        case '\n': key = KeyEvent::of(Key::enter); return TerminalInput::key;
-        case ' ': key = KeyEvent::of(Key::space); return TerminalInput::key;
-        case 8:
-        case 127: key = KeyEvent::of(Key::backspace); return TerminalInput::key;
-        case 27: {
-            timeout(25);
-            wint_t next = 0;
-            if (get_wch(&next) == OK && next == 'O') {
-                wint_t final = 0;
-                if (get_wch(&final) == OK)
-                    if (const auto mapped = keypad_sequence(final)) {
-                        key = *mapped;
-                        return TerminalInput::key;
-                    }
-                continue;
-            }
-            if (next != 0)
-                unget_wch(static_cast<wchar_t>(next));
-            key = KeyEvent::of(Key::escape);
+        if (kind == KEY_CODE_YES && code == KEY_RESIZE)
+            return TerminalInput::resize;
+        if (const std::optional<KeyEvent> event = key_event_from_curses(kind, code)) {
+            key = *event;
             return TerminalInput::key;
-        }
-        default:
-            if (code >= 0x20) {
-                key = KeyEvent::typed(static_cast<char32_t>(code));
-                return TerminalInput::key;
-            }
-            continue;
         }
     }
 }

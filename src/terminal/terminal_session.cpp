@@ -2,7 +2,11 @@
 
 #include "apcs/terminal/terminal.h"
 
+#include <algorithm>
 #include <cstddef>
+#include <memory>
+#include <string>
+#include <utility>
 
 namespace apcs {
 
@@ -31,12 +35,15 @@ CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, As
 
 } // namespace
 
-int run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
-                         std::vector<KeyEvent>& recorded, std::string& problem)
+ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+                                std::vector<KeyEvent>& recorded, Diagnostic& problem)
 {
-    std::unique_ptr<Terminal> terminal = Terminal::open(problem);
-    if (!terminal)
-        return 3;
+    Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
+    if (!opened) {
+        problem = opened.error();
+        return ExitStatus::terminal_problem;
+    }
+    const std::unique_ptr<Terminal> terminal = std::move(*opened);
     std::size_t next_scripted = 0;
     AsciiGlyphCache cache;
     while (!session.finished()) {
@@ -49,7 +56,7 @@ int run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted
             input = terminal->read_key(session.animating() ? session.delay_ms() : -1, key);
         switch (input) {
         case TerminalInput::stop:
-            return 130;
+            return ExitStatus::stopped;
         case TerminalInput::resize:
             terminal->invalidate();
             break;
@@ -62,7 +69,7 @@ int run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted
             break;
         }
     }
-    return 0;
+    return ExitStatus::success;
 }
 
 } // namespace apcs

@@ -170,3 +170,28 @@ TEST_CASE("fewer than two control points give no segments", "[animation][kb]")
     REQUIRE(kb_segments({}, {}).empty());
     REQUIRE(sample_curve({}, 32).points.empty());
 }
+
+TEST_CASE("tension, continuity and bias beyond [-1, 1] are clamped: 3 shapes the curve as 1 does", "[animation][kb]")
+{
+    const std::array<Vec3, 3> p{{{0, 0, 0}, {2, 3, 1}, {5, 1, -1}}};
+    for (const StaffLine line : {StaffLine::tension, StaffLine::continuity, StaffLine::bias}) {
+        for (const double sign : {1.0, -1.0}) {
+            StaffValues beyond{0.2, -0.3, 0.4, 0};
+            StaffValues bound = beyond;
+            beyond[line] = 3.0 * sign;
+            bound[line] = sign;
+            CAPTURE(staff_line_name(line), sign);
+            REQUIRE(incoming_tangent(p[0], p[1], p[2], beyond) == incoming_tangent(p[0], p[1], p[2], bound));
+            REQUIRE(outgoing_tangent(p[0], p[1], p[2], beyond) == outgoing_tangent(p[0], p[1], p[2], bound));
+        }
+    }
+}
+
+TEST_CASE("end slopes beyond [0, 1] are clamped: 3 gives the tangent of 1, -2 that of 0", "[animation][kb]")
+{
+    const ControlPoints points = points_with(zigzag);
+    const auto beyond = kb_segments(points, {3.0, -2.0});
+    const auto bound = kb_segments(points, {1.0, 0.0});
+    REQUIRE(beyond.front().start_tangent == bound.front().start_tangent);
+    REQUIRE(beyond.back().end_tangent == bound.back().end_tangent);
+}

@@ -163,3 +163,33 @@ TEST_CASE("more in-betweens than samples freeze frames", "[animation][accelerati
     REQUIRE(path.frames_freeze);
     REQUIRE(path.inbetweens.size() == 10);
 }
+
+TEST_CASE("an evaluated path clamps what it is given: staff values of 3 and slopes of 3 act as 1",
+          "[animation][acceleration]")
+{
+    const auto inbetweens = [](const ControlPoints& points, EndSlopes slopes) {
+        std::vector<Vec3> positions;
+        for (const Inbetween& inbetween : evaluate_path(points, {slopes, 32, 12, Spacing::nearest}).inbetweens)
+            positions.push_back(inbetween.position);
+        return positions;
+    };
+    const auto with_staff = [](const StaffValues& staff) {
+        ControlPoints points = curved_path();
+        for (ControlPoint& point : points)
+            point.staff = staff;
+        return points;
+    };
+    REQUIRE(inbetweens(curved_path(), {3.0, 3.0}) == inbetweens(curved_path(), {1.0, 1.0}));
+    REQUIRE(inbetweens(with_staff({0.5, -3, 3, 3}), {}) == inbetweens(with_staff({0.5, -1, 1, 1}), {}));
+    REQUIRE(inbetweens(with_staff({-3, 0, 0, -3}), {}) == inbetweens(with_staff({-1, 0, 0, -1}), {}));
+}
+
+TEST_CASE("accelerations of 3 and 1 are one span, as 1 and 1 are", "[animation][acceleration]")
+{
+    ControlPoints points = curved_path(1.0);
+    points[1].staff.acceleration = 3.0;
+    const std::vector<AccelerationSpan> spans = acceleration_spans(points);
+    REQUIRE(spans.size() == 1);
+    REQUIRE(spans[0].acceleration == 1.0);
+    REQUIRE(spans[0].last_point == points.size() - 1);
+}

@@ -30,7 +30,7 @@ constexpr StaffLine next_staff_line(StaffLine line)
     return is_last_staff_line(line) ? line : static_cast<StaffLine>(static_cast<int>(line) + 1);
 }
 
-// The four-line staff of thesis fig. 3.1.5. Every value lies in [-1, 1] (staff_value_range): the
+// The four-line staff of thesis fig. 3.1.5. Every value lies in [-1, 1] (limits::staff_value): the
 // readers of files and options refuse others; the core clamps what reaches it.
 struct StaffValues {
     double tension = 0.0;

@@ -26,6 +26,8 @@ inline constexpr Range delay_ms{0, 60000};
 inline constexpr Range samples_per_segment{1, 100000};
 // In-between frames M.
 inline constexpr Range inbetween_count{0, 100000};
+// Frame intervals T of `apcs inbetween --frames` (frames 0 … T).
+inline constexpr Range frame_intervals{1, 100000};
 // The staff's step per key.
 inline constexpr Range staff_step{0.001, 2.0};
 

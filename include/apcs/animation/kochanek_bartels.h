@@ -10,14 +10,17 @@ namespace apcs {
 
 // DS_k, the incoming ("source") tangent at an interior control point (thesis Eq. 3.1.4):
 // [(1−t)(1−c)(1+b)(P_k−P_{k−1}) + (1−t)(1+c)(1−b)(P_{k+1}−P_k)] / 2.
+// The staff's tension t, continuity c and bias b are clamped to [-1, 1] (limits::staff_value);
+// its acceleration plays no part here.
 Vec3 incoming_tangent(const Vec3& previous, const Vec3& current, const Vec3& next, const StaffValues& staff);
 
-// DD_k, the outgoing ("destination") tangent (Eq. 3.1.4):
+// DD_k, the outgoing ("destination") tangent (Eq. 3.1.4), t, c and b clamped to [-1, 1]:
 // [(1−t)(1+c)(1+b)(P_k−P_{k−1}) + (1−t)(1−c)(1−b)(P_{k+1}−P_k)] / 2.
 Vec3 outgoing_tangent(const Vec3& previous, const Vec3& current, const Vec3& next, const StaffValues& staff);
 
 // The Hermite segments k → k+1 of a KB spline (T0 = DD_k, T1 = DS_{k+1}). The first point's
-// outgoing tangent is slopes.start·(P_1−P_0), the last point's incoming one slopes.end·(P_n−P_{n−1}).
+// outgoing tangent is slopes.start·(P_1−P_0), the last point's incoming one slopes.end·(P_n−P_{n−1}),
+// each slope clamped to [0, 1] (limits::end_slope); interior tangents clamp t, c, b as above.
 // Fewer than two control points give no segments.
 std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, EndSlopes slopes);
 

@@ -21,7 +21,8 @@ struct PathSettings {
 };
 
 // A run of control points sharing one acceleration (SPEC §2.1): it starts at first_point and
-// runs on to the next control point whose acceleration differs (last_point).
+// runs on to the next control point whose acceleration differs (last_point). Accelerations are
+// clamped to [-1, 1] (limits::staff_value) before they are compared, so 3 and 1 share a span.
 struct AccelerationSpan {
     std::size_t first_point = 0;
     std::size_t last_point = 0;
@@ -53,8 +54,10 @@ struct EvaluatedPath {
     bool frames_freeze = false;
 };
 
-// Fewer than two control points give an empty path. Settings are clamped: at least one sample per
-// segment, no negative in-between count.
+// Fewer than two control points give an empty path. Every input is clamped, never refused: the
+// end slopes to [0, 1] (limits::end_slope), each control point's tension, continuity, bias and
+// acceleration to [-1, 1] (limits::staff_value; see kb_segments and acceleration_spans), at least
+// one sample per segment, no negative in-between count.
 EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings);
 
 } // namespace apcs

@@ -16,7 +16,7 @@ namespace apcs {
 std::string format_path_print(const EvaluatedPath& path);
 
 // Writes the screen's raster (text drawn in the font) as a PNG, atomically.
-std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen);
+[[nodiscard]] std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the
 // first control point's values.

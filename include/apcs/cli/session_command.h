@@ -2,6 +2,7 @@
 
 #include "apcs/session/exit_status.h"
 #include "apcs/cli/options.h"
+#include "apcs/formats/diagnostic.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/session.h"
 
@@ -13,9 +14,11 @@
 namespace apcs {
 
 // The terminal shell of the session, supplied by the executable (the only part linked with
-// ncurses); see run_terminal_session.
-using TerminalSessionRunner = std::function<int(Session&, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
-                                                std::vector<KeyEvent>& recorded, std::string& problem)>;
+// ncurses); see run_terminal_session. Returns success, stopped, or terminal_problem with
+// `problem` set.
+using TerminalSessionRunner =
+    std::function<ExitStatus(Session&, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+                             std::vector<KeyEvent>& recorded, Diagnostic& problem)>;
 
 // Runs the session headless: every key of the script, the animation untimed, and the screen after
 // each change of step to `out` (a line "--- STEP", then the 80x25 screen, trailing blanks

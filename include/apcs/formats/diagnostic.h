@@ -23,8 +23,9 @@ struct Diagnostic {
 };
 
 // A value or the diagnostic that explains why there is none (g++ 12 has no std::expected).
+// [[nodiscard]]: a function that returns one must not have its problem dropped unread.
 template <typename T>
-class Expected {
+class [[nodiscard]] Expected {
 public:
     Expected(T value) : m_content(std::move(value)) {}
     Expected(Diagnostic error) : m_content(std::move(error)) {}

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/animation/input_limits.h"
+
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -20,6 +22,9 @@ std::string shortest_number(double value);
 
 // Appends shortest_number(value) to `text` without a temporary string.
 void append_shortest(std::string& text, double value);
+
+// "[MIN, MAX]" with the shortest numbers, as messages and help texts write a range: "[-1, 1]".
+std::string range_text(const limits::Range& range);
 
 // `value` with exactly six decimals (SPEC §7.4); −0.000000 is written as 0.000000.
 std::string fixed_six(double value);

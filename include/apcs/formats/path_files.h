@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/animation/add_points.h"
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
@@ -40,12 +41,21 @@ NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
 // end at its KEY2 position (to 1e-6 of the scene's size). Returns the problem, if any, as
 // "FILE:LINE: …" naming the expected point.
-std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
-                                          const Vec3& key1_position, const Vec3& key2_position);
+[[nodiscard]] std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
+                                                        const Vec3& key1_position, const Vec3& key2_position);
 
 // A path file's points as KB control points, all parts in file order: 7-column points keep their
 // own t c b a, shorter ones take `defaults`.
 ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults);
+
+// The two graphic points that carry a path file: the very first and the very last of each key.
+enum class PathEnd { first, last };
+
+// The path-file step of key → path → fit: checks that `file` (named `file_name` in messages) runs
+// from the KEY1 to the KEY2 position of graphic point `end` (check_path_ends, "first" or "last"),
+// then gives its control points (control_points_from with `defaults`).
+[[nodiscard]] Expected<ControlPoints> point_path_from(const DatFile& file, const std::string& file_name, PathEnd end,
+                                                      const EqualisedKeys& keys, const StaffValues& defaults);
 
 // A path file's control points with their staff values, as written back after adjusting (all
 // seven columns).

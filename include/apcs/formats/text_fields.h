@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <string_view>
 
 namespace apcs {
@@ -7,14 +8,25 @@ namespace apcs {
 // Blanks that separate fields in APCS's text files: space, tab, CR, VT, FF.
 constexpr bool is_field_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
+// `c` in ASCII lower case; every other byte stays as it is.
+constexpr char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+
+// `text` in ASCII lower case ("TENSION" → "tension").
+inline std::string ascii_lower_case(std::string_view text)
+{
+    std::string lower(text);
+    for (char& c : lower)
+        c = ascii_lower(c);
+    return lower;
+}
+
 // Whether two names or keywords are equal ignoring ASCII case, as DOS compared them.
 constexpr bool equals_ignoring_case(std::string_view left, std::string_view right)
 {
     if (left.size() != right.size())
         return false;
-    const auto lower = [](char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; };
     for (std::size_t i = 0; i < left.size(); ++i)
-        if (lower(left[i]) != lower(right[i]))
+        if (ascii_lower(left[i]) != ascii_lower(right[i]))
             return false;
     return true;
 }

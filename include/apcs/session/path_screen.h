@@ -31,6 +31,10 @@ struct PathScreenContent {
     std::string key_help;
 };
 
+// What a path screen shows of a path before any editing: its curve and shown in-betweens, its
+// control points, and the first point's staff values.
+PathScreenContent path_screen_content(std::span<const ControlPoint> points, const EvaluatedPath& path);
+
 // The world points a path screen must keep in view (control points, curve, key frames).
 std::vector<Vec3> path_screen_scene(const PathScreenContent& content);
 

@@ -2,18 +2,21 @@
 
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/control_point.h"
-#include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/session/animation_player.h"
 #include "apcs/session/key_event.h"
+#include "apcs/session/key_map.h"
+#include "apcs/session/path_editor.h"
 #include "apcs/session/session_files.h"
+#include "apcs/session/session_phase.h"
 #include "apcs/session/text_console.h"
 
 #include <array>
 #include <optional>
 #include <string>
-#include <utility>
+#include <variant>
 #include <vector>
 
 namespace apcs {
@@ -25,29 +28,6 @@ struct SessionSettings {
     double step = 0.05; // staff step per key
 };
 
-// The steps of thesis Ch. 4.2, one phase per prompt or screen.
-enum class SessionPhase {
-    ask_key1,
-    ask_key2,
-    ask_view,
-    ask_path_file,
-    ask_slopes,
-    choose_control,
-    pick_region_first,
-    pick_region_last,
-    staff,
-    ask_again,
-    ask_next_path,
-    ask_stop,
-    ask_draw,
-    animating,
-    animation_done,
-    overlay,
-    finished,
-};
-
-const char* phase_name(SessionPhase phase);
-
 // What the terminal shows now: the DOS text console or the graphics screen.
 struct SessionScreen {
     bool graphics = false;
@@ -55,9 +35,14 @@ struct SessionScreen {
     GraphicsScreen picture; // when graphics
 };
 
-// The 1989 session as a pure state machine (SPEC §3): key events in; screens, and file actions
-// through SessionFiles, out. No terminal, no clock: the shell calls tick() every delay_ms()
-// while animating().
+// The 1989 session (thesis Ch. 4.2, the program animate.c; SPEC §3) as a pure state machine: key
+// events in; screens, and file actions through SessionFiles, out. No terminal, no clock: the shell
+// calls tick() every delay_ms() while animating().
+//
+// The session routes between three kinds of step, each owning its state: the text prompts (a
+// table in session_steps.cpp: phase → prompt lines, default answer, what the answer does), the
+// PathEditor of graphics mode and the AnimationPlayer. Keys become commands through the key map
+// (key_map.h) in the context of the step on the screen.
 class Session {
 public:
     Session(SessionSettings settings, SessionFiles& files);
@@ -65,47 +50,66 @@ public:
     void handle(const KeyEvent& event);
     void tick();
 
-    SessionPhase phase() const { return m_phase; }
-    bool finished() const { return m_phase == SessionPhase::finished; }
-    bool animating() const { return m_phase == SessionPhase::animating && !m_paused; }
+    SessionPhase phase() const;
+    bool finished() const { return phase() == SessionPhase::finished; }
+    bool animating() const;
     int delay_ms() const { return m_delay_ms; }
     SessionScreen screen() const;
     const std::vector<std::string>& written_files() const { return m_written; }
 
 private:
-    std::string default_answer() const;
-    void start_path_prompt();
-    void submit_line(const std::string& line);
-    void submit_key_file(const std::string& name, int which);
-    void finish_keys();
-    void submit_view(const std::string& line);
-    void submit_path_file(const std::string& name);
-    void submit_slopes(const std::string& line);
-    void enter_graphics();
-    void handle_graphics_key(const KeyEvent& event);
-    void handle_pick(const KeyEvent& event, bool picking_last);
-    void handle_staff(const KeyEvent& event);
-    void start_staff();
-    void set_staff_value(double value);
-    void apply_staff_to_region();
-    void accept_path();
-    void run_surface_fitting();
-    void start_animation();
-    // Path 0 (the first graphic point's) or 1 (the last's) with its slopes and the settings.
-    EvaluatedPath evaluated(int path) const;
-    void reevaluate();
-    void say(const std::string& text);
-    std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
-    void record_written(const std::string& name);
+    // A step of the text console: a prompt, its answer and what follows.
+    struct TextStep {
+        SessionPhase current = SessionPhase::ask_key1;
+        SessionPhase phase() const { return current; }
+    };
+    using Step = std::variant<TextStep, PathEditor, AnimationPlayer>;
+    // One row of the prompt table: what the console prints when the step begins and again after
+    // a wrong answer, the answer an empty line takes, and what the answer does.
+    struct Prompt {
+        SessionPhase phase;
+        KeyContext keys;
+        std::vector<std::string> (*lines)(const Session&);
+        std::vector<std::string> (*again)(const Session&);
+        std::string (*default_answer)(const Session&);
+        void (Session::*submit)(const std::string& answer);
+    };
+    static const Prompt& prompt_for(SessionPhase phase);
 
-    GraphicsScreen path_picture() const;
-    GraphicsScreen animation_picture(bool all_frames) const;
-    std::string current_message() const;
+    KeyContext key_context() const;
+    void update_text_step(SessionPhase phase, const Command& command);
+    void go_to(SessionPhase phase);
+    void ask_again(SessionPhase phase, const std::string& problem);
+
+    // The text steps in the order of Ch. 4.2 (session_steps.cpp), named after animate.c.
+    std::vector<std::string> key2_prompt() const;
+    std::vector<std::string> view_prompt() const;
+    std::vector<std::string> done_lines() const;
+    std::string path_file_default() const;
+    std::string slopes_default() const;
+    void read_key1(const std::string& name);
+    void read_key2(const std::string& name);
+    bool read_key_file(const std::string& name, int which);
+    void add_points_and_split();
+    void define_view_parameters(const std::string& line);
+    void read_data_file(const std::string& name);
+    void predefine_ends_slope(const std::string& line);
+    void initial_graphics();
+    void accept_path(PathEditor& editor);
+    void adjust_next_path(const std::string&);
+    void surface_fitting(const std::string&);
+    void showing_animation(const std::string&);
+    void finish();
+
+    PathSettings path_settings(int path) const;
+    void say(const std::string& line) { m_console.print_line(line); }
+    [[nodiscard]] std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
+    void record_written(const std::string& name);
 
     SessionSettings m_settings;
     SessionFiles& m_files;
-    SessionPhase m_phase = SessionPhase::ask_key1;
     TextConsole m_console;
+    Step m_step;
 
     std::array<std::string, 2> m_key_names;
     std::array<Graphic, 2> m_key_frames;
@@ -115,27 +119,16 @@ private:
     ViewAngles m_view_angles;
     int m_delay_ms = 200;
 
-    int m_path = 0; // 0: the first graphic point's path, 1: the last's
+    // The path being asked for or shaped: 0, the first graphic point's; 1, the last's.
+    int m_path = 0;
     std::array<std::string, 2> m_path_names;
     std::array<ControlPoints, 2> m_points;
     std::array<EndSlopes, 2> m_slopes;
+    // DS[0] typed alone on its line, waiting for DD[N] (fig. 4.2.3).
     std::optional<double> m_first_slope;
-    EvaluatedPath m_evaluated;
-    std::optional<ViewTransform> m_view;
-    bool m_show_key_frames = false;
 
-    std::pair<std::size_t, std::size_t> m_region{0, 0};
-    std::optional<std::size_t> m_arrow;
-    std::size_t m_region_first = 0;
-    int m_staff_line = 0;
-    StaffValues m_staff;
-    double m_line_start_value = 0.0;
-    std::string m_graphics_message;
-
-    FrameSequence m_frames;
-    std::size_t m_frame = 0;
-    bool m_paused = false;
-    std::optional<ViewTransform> m_animation_view;
+    // The frames of surface fitting, kept until the animation shows them.
+    FrameSequence m_fitted_frames;
 
     std::vector<std::string> m_written;
 };

@@ -2,6 +2,7 @@
 
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/diagnostic.h"
+#include "apcs/session/session_log.h"
 
 #include <filesystem>
 #include <optional>
@@ -11,14 +12,11 @@ namespace apcs {
 
 // The session's only door to files, so that its state machine stays free of I/O and can be
 // driven in tests with any store.
-class SessionFiles {
+class SessionFiles : public SessionLog {
 public:
-    virtual ~SessionFiles() = default;
     virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
     // Atomic, keeping a differing old file as .bak; the problem, if any.
     virtual std::optional<Diagnostic> write(const std::string& name, const std::string& content) = 0;
-    // One line of apcs.log.
-    virtual void log(const std::string& line) = 0;
 };
 
 // Files in a folder: names are relative to it (an absolute name is used as it is); apcs.log is

@@ -1,11 +1,10 @@
 #pragma once
 
+#include "apcs/formats/diagnostic.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/session/key_event.h"
 
 #include <memory>
-#include <optional>
-#include <string>
 
 namespace apcs {
 
@@ -22,9 +21,11 @@ enum class TerminalInput { key, timeout, resize, stop };
 // signal or an exception in the program gives it back as it was (echo and line mode on).
 class Terminal {
 public:
-    // nullopt, with the reason in `problem`, when there is no usable terminal (TERM unset or
-    // unknown, stdin or stdout not a terminal).
-    static std::unique_ptr<Terminal> open(std::string& problem);
+    // The terminal, or why there is no usable one (TERM unset or unknown, stdin or stdout not a
+    // terminal) as "apcs: PROBLEM". Keys are decoded by ncurses (keypad, with the keypad's
+    // application-mode sequences bound by define_key); Esc counts after ESCDELAY ms, the
+    // environment's, else 100 (SPEC §7.3).
+    [[nodiscard]] static Expected<std::unique_ptr<Terminal>> open();
     ~Terminal();
     Terminal(const Terminal&) = delete;
     Terminal& operator=(const Terminal&) = delete;

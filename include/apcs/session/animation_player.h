@@ -1,0 +1,45 @@
+#pragma once
+
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/session/command.h"
+#include "apcs/session/key_map.h"
+#include "apcs/session/session_log.h"
+#include "apcs/session/session_phase.h"
+
+#include <cstddef>
+
+namespace apcs {
+
+// Graphics mode after surface fitting (thesis Showing_Animation, SPEC §3 step 6): KEY1, each
+// in-between and KEY2, one frame per tick, each erased before the next; Esc stops, Space pauses,
+// R replays. After the last frame a key shows all frames overlaid (figs. 5.1–5.2), and another
+// ends the session. No clock: the shell calls tick() every delay while playing().
+class AnimationPlayer {
+public:
+    enum class Outcome { showing, finished };
+
+    // `structure` gives the parts that draw each frame (the equalised KEY1).
+    AnimationPlayer(FrameSequence frames, Graphic structure, ViewAngles angles, int delay_ms, SessionLog& log);
+
+    Outcome update(const Command& command);
+    void tick();
+    GraphicsScreen view() const;
+
+    SessionPhase phase() const { return m_phase; }
+    bool playing() const { return m_phase == SessionPhase::animating && !m_paused; }
+    KeyContext key_context() const;
+
+private:
+    FrameSequence m_frames;
+    Graphic m_structure;
+    ViewTransform m_view;
+    SessionLog& m_log;
+    SessionPhase m_phase = SessionPhase::animating;
+    std::size_t m_frame = 0;
+    bool m_paused = false;
+};
+
+} // namespace apcs

@@ -1,0 +1,66 @@
+#pragma once
+
+#include "apcs/session/command.h"
+#include "apcs/session/key_event.h"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// Where the keys are read: each step of the session listens in one of these contexts.
+enum class KeyContext {
+    text_line,      // a text prompt: every printable key is typed text
+    yes_to_go_on,   // "Press 'Y' to adjust the next path !"
+    enter_to_go_on, // "Press <ENTER> to Stop the work !"
+    any_key,        // "Press any key …"
+    control_choice, // Check_GorL_Control
+    region_pick,    // Scan_Control_Point
+    staff,          // Scan_Parameters
+    adjust_again,   // Ask_Adjusting: Y again, anything else accepts
+    animation,      // Showing_Animation
+    finished,       // nothing is read
+};
+
+// Which keys a binding matches.
+struct KeyPattern {
+    enum class Kind { key, character, letter, printable, any };
+    Kind kind = Kind::any;
+    Key key = Key::character;
+    char32_t character = 0;
+
+    static constexpr KeyPattern of(Key key) { return {Kind::key, key, 0}; }
+    // Exactly this character (digits).
+    static constexpr KeyPattern exactly(char32_t character) { return {Kind::character, Key::character, character}; }
+    // This letter in either case (J is Shift-J on the PC keyboard; j works too).
+    static constexpr KeyPattern letter(char32_t upper) { return {Kind::letter, Key::character, upper}; }
+    // Any printable character (typed text).
+    static constexpr KeyPattern printable() { return {Kind::printable, Key::character, 0}; }
+    static constexpr KeyPattern any_key() { return {Kind::any, Key::character, 0}; }
+
+    bool matches(const KeyEvent& event) const;
+};
+
+// One row of the key map: in `context`, a key matching `pattern` means `command`. `help` is the
+// row's words on the key line of graphics mode (rows that share words are shown once; empty: not
+// shown).
+struct KeyBinding {
+    KeyContext context;
+    KeyPattern pattern;
+    Command command;
+    std::string_view help;
+};
+
+// The whole key map (SPEC §3, §7.3), in the order it is searched: the first matching row wins.
+std::span<const KeyBinding> key_bindings();
+
+// What `event` means in `context`, or nullopt when the key means nothing there. A typed character's
+// command carries the character.
+std::optional<Command> command_for(KeyContext context, const KeyEvent& event);
+
+// The key line of a context: its rows' help words, each once, in table order, two spaces apart.
+std::string key_help(KeyContext context);
+
+} // namespace apcs

@@ -1,0 +1,33 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/painter.h"
+
+#include <span>
+#include <vector>
+
+namespace apcs {
+
+// The world points a view must keep in sight (thesis VIEW_Transform is fitted to them), gathered
+// from everything a screen will show.
+class ViewScene {
+public:
+    ViewScene& add(std::span<const Vec3> points);
+    ViewScene& add(std::span<const ControlPoint> points);
+    ViewScene& add(const FrameSequence& frames);
+    ViewScene& add(const std::vector<std::vector<Vec3>>& polylines);
+
+    ViewTransform fit(ViewAngles angles, PixelRect drawing_area) const;
+    std::span<const Vec3> points() const { return m_points; }
+
+private:
+    std::vector<Vec3> m_points;
+};
+
+// Projects a world polyline through `view` and strokes it; a polyline of one point is one pixel.
+void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view,
+                         LineStyle style = LineStyle::solid);
+
+} // namespace apcs

@@ -1,0 +1,48 @@
+#include "apcs/formats/key_file_guard.h"
+
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/text_fields.h"
+
+#include <algorithm>
+
+namespace apcs {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The name compared ignoring case: absolute when the current folder is known, so that "x.dat"
+// and "/here/x.dat" compare equal even before either exists; lexically normal, so that "./x.dat"
+// and "a/../x.dat" do too.
+std::string comparable_name(const fs::path& file)
+{
+    std::error_code error;
+    const fs::path absolute = fs::absolute(file, error);
+    return (error ? file : absolute).lexically_normal().string();
+}
+
+} // namespace
+
+void KeyFileGuard::protect(const fs::path& key_file)
+{
+    const fs::path resolved = resolve_input_path(key_file);
+    m_key_files.push_back({resolved, comparable_name(resolved)});
+}
+
+bool KeyFileGuard::guards(const fs::path& target) const
+{
+    const std::string target_name = comparable_name(target);
+    return std::any_of(m_key_files.begin(), m_key_files.end(), [&](const KeyFile& key) {
+        std::error_code missing;
+        return fs::equivalent(target, key.path, missing) || equals_ignoring_case(target_name, key.comparable_name);
+    });
+}
+
+std::optional<Diagnostic> KeyFileGuard::refuse(const fs::path& target) const
+{
+    if (guards(target))
+        return Diagnostic{target.string(), 0, "is a key file; key files are never written"};
+    return std::nullopt;
+}
+
+} // namespace apcs

@@ -1,0 +1,90 @@
+#include "apcs/session/animation_player.h"
+
+#include "apcs/raster/painter.h"
+#include "apcs/session/screen_layout.h"
+#include "apcs/session/session_text.h"
+#include "apcs/session/world_drawing.h"
+
+#include <algorithm>
+#include <string>
+
+namespace apcs {
+
+namespace text = session_text;
+
+AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, ViewAngles angles, int delay_ms,
+                                 SessionLog& log)
+    : m_frames(std::move(frames))
+    , m_structure(std::move(structure))
+    , m_view(ViewScene{}.add(m_frames).fit(angles, layout::drawing_area))
+    , m_log(log)
+    , m_phase(m_frames.frame_count() == 0 ? SessionPhase::animation_done : SessionPhase::animating)
+{
+    m_log.log("animation: " + std::to_string(m_frames.frame_count()) + " frames, " + std::to_string(delay_ms) +
+              " ms each");
+}
+
+KeyContext AnimationPlayer::key_context() const
+{
+    return m_phase == SessionPhase::animating ? KeyContext::animation : KeyContext::any_key;
+}
+
+AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
+{
+    switch (m_phase) {
+    case SessionPhase::animating:
+        if (std::holds_alternative<command::StopAnimation>(command)) {
+            m_phase = SessionPhase::animation_done;
+            m_paused = false;
+        } else if (std::holds_alternative<command::Pause>(command)) {
+            m_paused = !m_paused;
+        } else if (std::holds_alternative<command::Replay>(command)) {
+            m_frame = 0;
+            m_paused = false;
+        }
+        return Outcome::showing;
+    case SessionPhase::animation_done:
+        m_phase = SessionPhase::overlay;
+        m_log.log("showed all " + std::to_string(m_frames.frame_count()) + " frames overlaid");
+        return Outcome::showing;
+    default:
+        return Outcome::finished;
+    }
+}
+
+void AnimationPlayer::tick()
+{
+    if (!playing())
+        return;
+    if (m_frame + 1 < m_frames.frame_count())
+        ++m_frame;
+    else
+        m_phase = SessionPhase::animation_done;
+}
+
+GraphicsScreen AnimationPlayer::view() const
+{
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    painter.rectangle(layout::drawing_area);
+    const bool all_frames = m_phase == SessionPhase::overlay;
+    const std::size_t first = all_frames ? 0 : m_frame;
+    const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
+    for (std::size_t k = first; k < last; ++k)
+        for (const auto& polyline : m_structure.polylines(m_frames.frame(k)))
+            draw_world_polyline(painter, polyline, m_view);
+    std::string message;
+    if (m_phase == SessionPhase::animating)
+        message = "Frame " + std::to_string(m_frame) + " of " + std::to_string(m_frames.frame_count() - 1) +
+                  (m_paused ? "  (paused)" : "");
+    else if (m_phase == SessionPhase::animation_done)
+        message = std::string(text::animation_done);
+    else
+        message = std::string(text::overlay_done);
+    screen.text.push_back({1, layout::message_row, message});
+    if (m_phase == SessionPhase::animating)
+        screen.text.push_back({1, layout::key_help_row, key_help(KeyContext::animation)});
+    return screen;
+}
+
+} // namespace apcs

@@ -1,0 +1,63 @@
+#include "apcs/formats/inbetween_files.h"
+
+#include "apcs/animation/vector_inbetween.h"
+
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+
+using namespace apcs;
+using test::read_all;
+using test::TempFolder;
+
+namespace {
+
+// Frames 0 … 4 of one point moving from (0, 0, 0) to (4, 0, 0): in-betweens at x = 1, 2, 3.
+FrameSequence four_steps()
+{
+    const std::array<Vec3, 1> begin{{{0, 0, 0}}};
+    const std::array<Vec3, 1> end{{{4, 0, 0}}};
+    return interpolate_frames(begin, end, 4, SpeedLaw::linear);
+}
+
+Graphic one_point()
+{
+    Graphic structure;
+    structure.parts.push_back({"", Closure::open, {{0, 0, 0}}});
+    return structure;
+}
+
+} // namespace
+
+TEST_CASE("the in-betweens are written as inb001.dat … and returned in order", "[formats][inbetween-files]")
+{
+    const TempFolder folder;
+    const auto written = write_inbetween_files(four_steps(), one_point(), folder.path(), KeyFileGuard{});
+    REQUIRE(written.has_value());
+    REQUIRE(*written == std::vector<std::filesystem::path>{folder / "inb001.dat", folder / "inb002.dat", folder / "inb003.dat"});
+    REQUIRE(read_all(folder / "inb002.dat") == "; APCS in-between 2 of 3\n2 0 0\n");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "inb004.dat"));
+}
+
+TEST_CASE("a key file among the targets stops the writing before any file is written", "[formats][inbetween-files]")
+{
+    const TempFolder folder;
+    const std::filesystem::path key = folder.write("INB003.DAT", "9 9\n8 8\n");
+    KeyFileGuard guard;
+    guard.protect(key);
+    const auto written = write_inbetween_files(four_steps(), one_point(), folder.path(), guard);
+    REQUIRE_FALSE(written.has_value());
+    REQUIRE(written.error().to_string() == (folder / "inb003.dat").string() + ": is a key file; key files are never written");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "inb001.dat"));
+    REQUIRE(read_all(key) == "9 9\n8 8\n");
+}
+
+TEST_CASE("in-betweens into a missing folder are refused", "[formats][inbetween-files]")
+{
+    const TempFolder folder;
+    const auto written = write_inbetween_files(four_steps(), one_point(), folder / "nowhere", KeyFileGuard{});
+    REQUIRE_FALSE(written.has_value());
+    REQUIRE(written.error().message == "is not a folder; expected an existing folder for the in-between files");
+}

@@ -1,0 +1,50 @@
+#include "apcs/formats/path_files.h"
+
+#include <catch2/catch.hpp>
+
+using namespace apcs;
+
+namespace {
+
+// Open keys of two points each: the first graphic point goes (0,0,0) → (0,0,10), the last one
+// (0,6,0) → (0,5,0).
+EqualisedKeys two_point_keys()
+{
+    Graphic key1;
+    key1.parts.push_back({"", Closure::open, {{0, 0, 0}, {0, 6, 0}}});
+    Graphic key2;
+    key2.parts.push_back({"", Closure::open, {{0, 0, 10}, {0, 5, 0}}});
+    return {key1, key2};
+}
+
+DatFile path_file(const std::string& text) { return *parse_dat(text, "way.dat"); }
+
+} // namespace
+
+TEST_CASE("a path from the first point's KEY1 to its KEY2 position gives its control points", "[formats][path-files]")
+{
+    const StaffValues defaults{0.5, 0, 0, -0.25};
+    const Expected<ControlPoints> points =
+        point_path_from(path_file("0 0 0\n3 -4 5 0.1 0.2 0.3 0.4\n0 0 10\n"), "way1.dat", PathEnd::first,
+                        two_point_keys(), defaults);
+    REQUIRE(points.has_value());
+    REQUIRE(points->size() == 3);
+    REQUIRE(points->front().staff == defaults);
+    REQUIRE((*points)[1].position == Vec3{3, -4, 5});
+    REQUIRE((*points)[1].staff == StaffValues{0.1, 0.2, 0.3, 0.4});
+}
+
+TEST_CASE("a path is checked against the ends of its own graphic point", "[formats][path-files]")
+{
+    const DatFile last_path = path_file("0 6 0\n-3 10 5\n0 5 0\n");
+    REQUIRE(point_path_from(last_path, "way4.dat", PathEnd::last, two_point_keys(), {}).has_value());
+    const Expected<ControlPoints> as_first = point_path_from(last_path, "way4.dat", PathEnd::first, two_point_keys(), {});
+    REQUIRE_FALSE(as_first.has_value());
+    REQUIRE(as_first.error().to_string() ==
+            "way4.dat:1: the path starts at (0, 6, 0); expected the first graphic point's KEY1 position (0, 0, 0)");
+    const Expected<ControlPoints> wrong_end =
+        point_path_from(path_file("0 6 0\n0 5 1\n"), "way4.dat", PathEnd::last, two_point_keys(), {});
+    REQUIRE_FALSE(wrong_end.has_value());
+    REQUIRE(wrong_end.error().to_string() ==
+            "way4.dat:2: the path ends at (0, 5, 1); expected the last graphic point's KEY2 position (0, 5, 0)");
+}

@@ -1,0 +1,106 @@
+#include "apcs/session/key_event.h"
+#include "apcs/terminal/curses_keys.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <iterator>
+#include <optional>
+#include <span>
+#include <string>
+
+// The constants only: this test binary does not link ncurses.
+#include <curses.h>
+
+using namespace apcs;
+
+namespace {
+
+std::string shown(const std::optional<KeyEvent>& event)
+{
+    if (!event)
+        return "nothing";
+    if (event->key == Key::character)
+        return "typed U+" + std::to_string(static_cast<unsigned long>(event->character));
+    std::string token = format_key_script({*event});
+    if (token.ends_with('\n'))
+        token.pop_back();
+    return token;
+}
+
+struct Row {
+    const char* what;
+    int get_wch_result;
+    wint_t code;
+    std::optional<KeyEvent> expected;
+};
+
+KeyEvent of(Key key) { return KeyEvent::of(key); }
+KeyEvent typed(char32_t character) { return KeyEvent::typed(character); }
+
+} // namespace
+
+TEST_CASE("Curses key codes and characters become the session's keys", "[terminal]")
+{
+    const Row rows[] = {
+        {"left arrow", KEY_CODE_YES, KEY_LEFT, of(Key::left)},
+        {"right arrow", KEY_CODE_YES, KEY_RIGHT, of(Key::right)},
+        {"up arrow", KEY_CODE_YES, KEY_UP, of(Key::up)},
+        {"down arrow", KEY_CODE_YES, KEY_DOWN, of(Key::down)},
+        {"keypad Enter", KEY_CODE_YES, KEY_ENTER, of(Key::enter)},
+        {"Backspace key", KEY_CODE_YES, KEY_BACKSPACE, of(Key::backspace)},
+        {"keypad 4 (ESC O t)", KEY_CODE_YES, keypad_key_4, typed(U'4')},
+        {"keypad 6 (ESC O v)", KEY_CODE_YES, keypad_key_6, typed(U'6')},
+        {"keypad 8 (ESC O x)", KEY_CODE_YES, keypad_key_8, typed(U'8')},
+        {"keypad 2 (ESC O r)", KEY_CODE_YES, keypad_key_2, typed(U'2')},
+        {"CR", OK, '\r', of(Key::enter)},
+        {"LF", OK, '\n', of(Key::enter)},
+        {"space", OK, ' ', of(Key::space)},
+        {"^H", OK, 8, of(Key::backspace)},
+        {"DEL", OK, 127, of(Key::backspace)},
+        {"Esc", OK, 27, of(Key::escape)},
+        {"a digit", OK, '8', typed(U'8')},
+        {"a letter", OK, 'J', typed(U'J')},
+        {"a question mark", OK, '?', typed(U'?')},
+        {"a tilde", OK, '~', typed(U'~')},
+        {"a character beyond ASCII", OK, 0xE9, typed(U'\u00E9')},
+        {"a character with a key code's number", OK, KEY_LEFT, typed(static_cast<char32_t>(KEY_LEFT))},
+        {"a wide character", OK, 0x2800, typed(U'\u2800')},
+        {"Tab", OK, '\t', std::nullopt},
+        {"^A", OK, 1, std::nullopt},
+        {"NUL", OK, 0, std::nullopt},
+        {"F1", KEY_CODE_YES, KEY_F(1), std::nullopt},
+        {"Home", KEY_CODE_YES, KEY_HOME, std::nullopt},
+        {"a key code with a character's number", KEY_CODE_YES, 'a', std::nullopt},
+        {"a key code of ours unbound", KEY_CODE_YES, keypad_key_base, std::nullopt},
+        {"nothing read", ERR, 0, std::nullopt},
+        {"nothing read, a stale character", ERR, 'a', std::nullopt},
+    };
+    for (const Row& row : rows) {
+        const std::optional<KeyEvent> actual = key_event_from_curses(row.get_wch_result, row.code);
+        INFO(row.what << ": got " << shown(actual) << ", expected " << shown(row.expected));
+        CHECK(actual == row.expected);
+    }
+}
+
+TEST_CASE("The keypad's application-mode sequences are bound to the keys 4, 6, 8, 2 and Enter", "[terminal]")
+{
+    struct SequenceRow {
+        std::string sequence;
+        KeyEvent expected;
+    };
+    const SequenceRow rows[] = {
+        {"\033Ot", typed(U'4')}, {"\033Ov", typed(U'6')}, {"\033Ox", typed(U'8')},
+        {"\033Or", typed(U'2')}, {"\033OM", of(Key::enter)},
+    };
+    const std::span<const KeypadSequence> sequences = keypad_sequences();
+    REQUIRE(sequences.size() == std::size(rows));
+    for (const SequenceRow& row : rows) {
+        INFO("sequence ESC " << row.sequence.substr(1));
+        const auto bound = std::ranges::find_if(
+            sequences, [&](const KeypadSequence& entry) { return entry.sequence == row.sequence; });
+        REQUIRE(bound != sequences.end());
+        CHECK((bound->code > KEY_MAX || bound->code == KEY_ENTER));
+        CHECK(key_event_from_curses(KEY_CODE_YES, static_cast<wint_t>(bound->code)) == row.expected);
+    }
+}
