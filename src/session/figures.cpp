@@ -1,6 +1,7 @@
 #include "apcs/session/figures.h"
 
 #include "apcs/animation/motion_path.h"
+#include "apcs/session/world_drawing.h"
 
 namespace apcs {
 
@@ -61,21 +62,17 @@ std::vector<CurveFigure> thesis_curve_figures()
 GraphicsScreen draw_curve_figure(const CurveFigure& figure)
 {
     std::vector<EvaluatedPath> paths;
-    std::vector<Vec3> scene;
+    ViewScene scene;
     for (const FigureCurve& shown : figure.curves) {
         paths.push_back(evaluate_path(shown.points, {{}, 48, 0, Spacing::nearest}));
-        scene.insert(scene.end(), paths.back().curve.points.begin(), paths.back().curve.points.end());
+        scene.add(paths.back().curve.points);
     }
-    const ViewTransform view = ViewTransform::fit({0, 90}, scene, figure_area);
+    const ViewTransform view = scene.fit({0, 90}, figure_area);
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     std::string legend;
     for (std::size_t i = 0; i < figure.curves.size(); ++i) {
-        int phase = 0;
-        const auto& samples = paths[i].curve.points;
-        for (std::size_t s = 1; s < samples.size(); ++s)
-            painter.styled_line(view.to_device(samples[s - 1]).rounded(), view.to_device(samples[s]).rounded(),
-                                figure.curves[i].style, phase);
+        draw_world_polyline(painter, paths[i].curve.points, view, figure.curves[i].style);
         legend += std::string(legend.empty() ? "" : "   ") + style_name(figure.curves[i].style) + ": " +
                   figure.curves[i].label;
     }
@@ -90,21 +87,14 @@ GraphicsScreen draw_curve_figure(const CurveFigure& figure)
 GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
                                   ViewAngles angles)
 {
-    std::vector<Vec3> scene;
-    for (std::size_t k = 0; k < frames.frame_count(); ++k)
-        scene.insert(scene.end(), frames.frame(k).begin(), frames.frame(k).end());
-    const ViewTransform view = ViewTransform::fit(angles, scene, figure_area);
+    const ViewTransform view = ViewScene{}.add(frames).fit(angles, figure_area);
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
         // KEY1 and KEY2 solid, the in-betweens dotted, so the keys stand out as in fig. 5.1.
         const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
-        for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k))) {
-            int phase = 0;
-            for (std::size_t i = 1; i < polyline.size(); ++i)
-                painter.styled_line(view.to_device(polyline[i - 1]).rounded(), view.to_device(polyline[i]).rounded(),
-                                    style, phase);
-        }
+        for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k)))
+            draw_world_polyline(painter, polyline, view, style);
     }
     screen.text.push_back({1, 0, title});
     screen.text.push_back({1, legend_row, "solid: KEY1 and KEY2   dotted: the in-betweens"});

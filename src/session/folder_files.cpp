@@ -1,10 +1,20 @@
 #include "apcs/session/session_files.h"
 
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 
 #include <fstream>
 
 namespace apcs {
+
+Diagnostic FolderFiles::as_typed(Diagnostic problem) const
+{
+    const std::filesystem::path named(problem.file);
+    const std::filesystem::path relative = named.lexically_relative(m_folder);
+    if (!relative.empty() && *relative.begin() != "..")
+        problem.file = relative.string();
+    return problem;
+}
 
 Expected<DatFile> FolderFiles::read_dat(const std::string& name, std::size_t minimum_points)
 {
@@ -14,12 +24,28 @@ Expected<DatFile> FolderFiles::read_dat(const std::string& name, std::size_t min
     return parse_dat(*text, name, minimum_points);
 }
 
+void FolderFiles::protect_key_file(const std::string& name) { m_key_files.protect(m_folder / name); }
+
 std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std::string& content)
 {
+    if (m_key_files.guards(m_folder / name))
+        return Diagnostic{name, 0, "is a key file; key files are never written"};
     const Expected<WriteResult> result = write_file_atomically(m_folder / name, content);
     if (!result)
         return Diagnostic{name, 0, result.error().message};
     return std::nullopt;
+}
+
+Expected<std::vector<std::string>> FolderFiles::write_inbetweens(const FrameSequence& frames, const Graphic& structure)
+{
+    const Expected<std::vector<std::filesystem::path>> written =
+        write_inbetween_files(frames, structure, m_folder, m_key_files);
+    if (!written)
+        return as_typed(written.error());
+    std::vector<std::string> names;
+    for (const std::filesystem::path& path : *written)
+        names.push_back(path.filename().string());
+    return names;
 }
 
 void FolderFiles::log(const std::string& line)

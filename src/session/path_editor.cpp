@@ -21,11 +21,9 @@ double snapped(double value) { return limits::staff_value.clamp(std::round(value
 
 ViewTransform initial_view(const PathEditor::Setup& setup, const EvaluatedPath& path)
 {
-    return ViewScene{}
-        .add(setup.points)
-        .add(path.curve.points)
-        .add(setup.key_frame_polylines)
-        .fit(setup.view_angles, layout::drawing_area);
+    PathScreenContent shown = path_screen_content(setup.points, path);
+    shown.key_frame_polylines = setup.key_frame_polylines;
+    return path_screen_scene(shown).fit(setup.view_angles, layout::drawing_area);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 
 #include "apcs/raster/painter.h"
 #include "apcs/session/screen_layout.h"
+#include "apcs/session/world_drawing.h"
 
 #include <cmath>
 #include <cstdio>
@@ -26,16 +27,13 @@ PathScreenContent path_screen_content(std::span<const ControlPoint> points, cons
     return content;
 }
 
-std::vector<Vec3> path_screen_scene(const PathScreenContent& content)
+ViewScene path_screen_scene(const PathScreenContent& content)
 {
-    std::vector<Vec3> scene;
-    for (const ControlPoint& point : content.control_points)
-        scene.push_back(point.position);
+    ViewScene scene;
+    scene.add(content.control_points);
     if (content.path != nullptr)
-        scene.insert(scene.end(), content.path->curve.points.begin(), content.path->curve.points.end());
-    for (const auto& polyline : content.key_frame_polylines)
-        scene.insert(scene.end(), polyline.begin(), polyline.end());
-    return scene;
+        scene.add(content.path->curve.points);
+    return scene.add(content.key_frame_polylines);
 }
 
 namespace {
@@ -86,9 +84,7 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
     for (const auto& polyline : content.key_frame_polylines)
         draw_dotted(painter, polyline, view);
     if (content.path != nullptr) {
-        const auto& curve = content.path->curve.points;
-        for (std::size_t i = 1; i < curve.size(); ++i)
-            painter.line(view.to_device(curve[i - 1]).rounded(), view.to_device(curve[i]).rounded());
+        draw_world_polyline(painter, content.path->curve.points, view);
         for (const Inbetween& inbetween : content.path->inbetweens)
             painter.dot_marker(view.to_device(inbetween.position).rounded());
     }

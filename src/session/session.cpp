@@ -1,12 +1,10 @@
 #include "apcs/session/session.h"
 
-#include "apcs/formats/text_fields.h"
 #include "apcs/raster/painter.h"
 #include "apcs/session/session_text.h"
 
 #include <algorithm>
 #include <cassert>
-#include <filesystem>
 
 namespace apcs {
 
@@ -164,16 +162,6 @@ SessionScreen Session::screen() const
         shown.text = m_console.render(!finished());
     }
     return shown;
-}
-
-std::optional<Diagnostic> Session::write_file(const std::string& name, const std::string& content)
-{
-    // Key files are never written: compared the way DOS names compare, ignoring case.
-    const std::string plain = std::filesystem::path(name).lexically_normal().string();
-    for (const std::string& key : m_key_names)
-        if (!key.empty() && equals_ignoring_case(plain, std::filesystem::path(key).lexically_normal().string()))
-            return Diagnostic{name, 0, "is a key file; key files are never written"};
-    return m_files.write(name, content);
 }
 
 void Session::record_written(const std::string& name)

@@ -104,7 +104,7 @@ bool Session::read_key_file(const std::string& name, int which)
         ask_again(phase, file.error().to_string());
         return false;
     }
-    m_key_names[static_cast<std::size_t>(which)] = name;
+    m_files.protect_key_file(name);
     m_key_frames[static_cast<std::size_t>(which)] = graphic_from(*file);
     m_files.log("KEY" + std::to_string(which + 1) + " " + name + ": " + std::to_string(file->point_count()) +
                 " points in " + std::to_string(file->parts.size()) + " parts");
@@ -117,7 +117,7 @@ void Session::add_points_and_split()
     m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
     m_point_count = m_keys.key1.point_count();
     for (const NamedText& file : split_path_files(m_keys.key1, m_keys.key2)) {
-        if (auto problem = write_file(file.name, file.content))
+        if (auto problem = m_files.write(file.name, file.content))
             return ask_again(SessionPhase::ask_key2, problem->to_string());
         record_written(file.name);
     }
@@ -237,7 +237,7 @@ void Session::initial_graphics()
 void Session::accept_path(PathEditor& editor)
 {
     const auto index = static_cast<std::size_t>(m_path);
-    if (auto problem = write_file(editor.path_name(), format_dat(dat_from(editor.points()))))
+    if (auto problem = m_files.write(editor.path_name(), format_dat(dat_from(editor.points()))))
         return editor.show_problem(problem->to_string());
     record_written(editor.path_name());
     m_points[index] = editor.points();
@@ -258,14 +258,12 @@ void Session::surface_fitting(const std::string&)
     say(std::string(text::fitting));
     FrameSequence frames = fit_key_frames(m_keys, evaluate_path(m_points[0], path_settings(0)),
                                                 evaluate_path(m_points[1], path_settings(1)));
-    const std::size_t count = inbetween_count(frames);
-    for (std::size_t number = 1; number <= count; ++number) {
-        const NamedText file = inbetween_file(frames, m_keys.key1, number);
-        if (auto problem = write_file(file.name, file.content))
-            return ask_again(SessionPhase::ask_stop, problem->to_string());
-        record_written(file.name);
-    }
-    m_files.log("surface fitting: " + std::to_string(count) + " in-betweens of " + std::to_string(m_point_count) +
+    const Expected<std::vector<std::string>> written = m_files.write_inbetweens(frames, m_keys.key1);
+    if (!written)
+        return ask_again(SessionPhase::ask_stop, written.error().to_string());
+    for (const std::string& name : *written)
+        record_written(name);
+    m_files.log("surface fitting: " + std::to_string(written->size()) + " in-betweens of " + std::to_string(m_point_count) +
                 " points written");
     m_fitted_frames = std::move(frames);
     go_to(SessionPhase::ask_draw);

@@ -21,13 +21,10 @@ Example example_screen()
     for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{3, -4, 5}, Vec3{0, 0, 10}})
         example.points.push_back({position, {0.25, 0, -0.5, 0}});
     example.path = evaluate_path(example.points, {{}, 32, 12, Spacing::nearest});
-    PathScreenContent content;
-    content.path = &example.path;
-    content.control_points = example.points;
-    content.staff = example.points.front().staff;
+    PathScreenContent content = path_screen_content(example.points, example.path);
     content.active_line = StaffLine::continuity;
     content.message = "4/6 step  J/L 3 steps  Enter accept  Esc keep";
-    const ViewTransform view = ViewTransform::fit({30, 40}, path_screen_scene(content), layout::drawing_area);
+    const ViewTransform view = path_screen_scene(content).fit({30, 40}, layout::drawing_area);
     example.screen = draw_path_screen(content, view);
     return example;
 }

@@ -2,12 +2,11 @@
 #include "apcs/session/session.h"
 #include "apcs/session/session_text.h"
 
-#include "support/memory_files.h"
+#include "apcs/session/session_files.h"
 
 #include <catch2/catch.hpp>
 
 using namespace apcs;
-using test::MemoryFiles;
 
 namespace {
 

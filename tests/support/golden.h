@@ -29,21 +29,22 @@ inline void check_golden(const std::string& name, const std::string& actual)
 {
     const std::filesystem::path file = std::filesystem::path(APCS_SOURCE_DIR) / "tests" / "golden" / name;
     const std::filesystem::path received = received_path(file);
+    std::error_code ignored;
     if (std::getenv("APCS_APPROVE") != nullptr) {
         std::filesystem::create_directories(file.parent_path());
         std::ofstream(file, std::ios::binary) << actual;
+        std::filesystem::remove(received, ignored);
         WARN("approved " << file.string());
         return;
     }
     const bool exists = std::filesystem::exists(file);
     const bool matches = exists && read_all(file) == actual;
-    std::error_code ignored;
     if (matches) {
         std::filesystem::remove(received, ignored);
-        return;
+    } else {
+        std::filesystem::create_directories(received.parent_path(), ignored);
+        std::ofstream(received, std::ios::binary) << actual;
     }
-    std::filesystem::create_directories(received.parent_path(), ignored);
-    std::ofstream(received, std::ios::binary) << actual;
     INFO("golden file " << file.string() << (exists ? " differs" : " is missing") << "; the output is in "
                         << received.string() << " (diff them; APCS_APPROVE=1 rewrites the golden file)");
     REQUIRE(matches);

@@ -4,6 +4,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/session/world_drawing.h"
 
 #include <array>
 #include <optional>
@@ -36,7 +37,7 @@ struct PathScreenContent {
 PathScreenContent path_screen_content(std::span<const ControlPoint> points, const EvaluatedPath& path);
 
 // The world points a path screen must keep in view (control points, curve, key frames).
-std::vector<Vec3> path_screen_scene(const PathScreenContent& content);
+ViewScene path_screen_scene(const PathScreenContent& content);
 
 // Draws the path screen: boundary, curve, x at every control point, a dot at every shown
 // in-between, the four-line staff with its values, the message and key lines.

@@ -103,7 +103,6 @@ private:
 
     PathSettings path_settings(int path) const;
     void say(const std::string& line) { m_console.print_line(line); }
-    [[nodiscard]] std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
     void record_written(const std::string& name);
 
     SessionSettings m_settings;
@@ -111,7 +110,6 @@ private:
     TextConsole m_console;
     Step m_step;
 
-    std::array<std::string, 2> m_key_names;
     std::array<Graphic, 2> m_key_frames;
     EqualisedKeys m_keys;
     std::size_t m_point_count = 0;

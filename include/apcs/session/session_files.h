@@ -1,22 +1,34 @@
 #pragma once
 
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/diagnostic.h"
+#include "apcs/formats/key_file_guard.h"
 #include "apcs/session/session_log.h"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace apcs {
 
-// The session's only door to files, so that its state machine stays free of I/O and can be
-// driven in tests with any store.
+// The session's only door to files, so that its steps stay free of I/O and can be driven in tests
+// with any store. Names are as typed at the prompts; diagnostics name them the same way.
 class SessionFiles : public SessionLog {
 public:
-    virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
-    // Atomic, keeping a differing old file as .bak; the problem, if any.
-    virtual std::optional<Diagnostic> write(const std::string& name, const std::string& content) = 0;
+    [[nodiscard]] virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
+    // From now on `name` is a key file, which no write may replace (SPEC §2.1).
+    virtual void protect_key_file(const std::string& name) = 0;
+    // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
+    [[nodiscard]] virtual std::optional<Diagnostic> write(const std::string& name, const std::string& content) = 0;
+    // The in-betweens inb001.dat … (every frame but the first and the last), each a whole graphic
+    // with the parts of `structure`; nothing is written if any of them is a key file. Returns the
+    // names written.
+    [[nodiscard]] virtual Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames,
+                                                                             const Graphic& structure) = 0;
 };
 
 // Files in a folder: names are relative to it (an absolute name is used as it is); apcs.log is
@@ -26,11 +38,36 @@ public:
     explicit FolderFiles(std::filesystem::path folder) : m_folder(std::move(folder)) {}
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
     void log(const std::string& line) override;
 
 private:
+    // A diagnostic about a file of the folder, named as the user typed it.
+    Diagnostic as_typed(Diagnostic problem) const;
+
     std::filesystem::path m_folder;
+    KeyFileGuard m_key_files;
+};
+
+// Files kept in memory: what a session reads, writes and logs, with no disk (tests, the fuzzer,
+// and anyone driving the session from code).
+class MemoryFiles final : public SessionFiles {
+public:
+    std::map<std::string, std::string> files;
+    std::vector<std::string> log_lines;
+    // Every write, in order, with repeats.
+    std::vector<std::string> writes;
+
+    Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    void protect_key_file(const std::string& name) override;
+    std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
+    void log(const std::string& line) override { log_lines.push_back(line); }
+
+private:
+    KeyFileGuard m_key_files;
 };
 
 } // namespace apcs

@@ -1,0 +1,41 @@
+#include "apcs/formats/path_files.h"
+#include "apcs/session/session_files.h"
+
+namespace apcs {
+
+Expected<DatFile> MemoryFiles::read_dat(const std::string& name, std::size_t minimum_points)
+{
+    const auto found = files.find(name);
+    if (found == files.end())
+        return Diagnostic{name, 0, "cannot open: No such file or directory"};
+    return parse_dat(found->second, name, minimum_points);
+}
+
+void MemoryFiles::protect_key_file(const std::string& name) { m_key_files.protect(name); }
+
+std::optional<Diagnostic> MemoryFiles::write(const std::string& name, const std::string& content)
+{
+    if (m_key_files.guards(name))
+        return Diagnostic{name, 0, "is a key file; key files are never written"};
+    files[name] = content;
+    writes.push_back(name);
+    return std::nullopt;
+}
+
+Expected<std::vector<std::string>> MemoryFiles::write_inbetweens(const FrameSequence& frames, const Graphic& structure)
+{
+    const std::size_t count = inbetween_count(frames);
+    for (std::size_t number = 1; number <= count; ++number)
+        if (m_key_files.guards(inbetween_file_name(number)))
+            return Diagnostic{inbetween_file_name(number), 0, "is a key file; key files are never written"};
+    std::vector<std::string> names;
+    for (std::size_t number = 1; number <= count; ++number) {
+        NamedText file = inbetween_file(frames, structure, number);
+        files[file.name] = std::move(file.content);
+        writes.push_back(file.name);
+        names.push_back(file.name);
+    }
+    return names;
+}
+
+} // namespace apcs
