@@ -1,0 +1,127 @@
+#include "apcs/session/animation_player.h"
+#include "apcs/session/path_editor.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+using namespace apcs;
+namespace cmd = apcs::command;
+
+namespace {
+
+struct LogLines final : SessionLog {
+    std::vector<std::string> lines;
+    void log(const std::string& line) override { lines.push_back(line); }
+};
+
+PathEditor::Setup four_point_path()
+{
+    PathEditor::Setup setup;
+    setup.path_name = "way1.dat";
+    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{3, -4, 5}, Vec3{1, 1, 7}, Vec3{0, 0, 10}})
+        setup.points.push_back({position, {}});
+    setup.settings = {{1, 1}, 8, 5, Spacing::nearest};
+    return setup;
+}
+
+std::string message_of(const GraphicsScreen& screen)
+{
+    for (const TextLine& line : screen.text)
+        if (line.row == 18)
+            return line.text;
+    return {};
+}
+
+void apply(PathEditor& editor, std::initializer_list<Command> commands)
+{
+    for (const Command& command : commands)
+        REQUIRE(editor.update(command) == PathEditor::Outcome::editing);
+}
+
+} // namespace
+
+TEST_CASE("the path editor takes the staff line by line and is accepted when not adjusted again", "[session][editor]")
+{
+    LogLines log;
+    PathEditor editor(four_point_path(), log);
+    REQUIRE(editor.phase() == SessionPhase::choose_control);
+    REQUIRE(editor.key_context() == KeyContext::control_choice);
+    apply(editor, {cmd::ChooseGlobal{}});
+    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(message_of(editor.view()) == "way1.dat: TENSION");
+    apply(editor, {cmd::StaffStep{+3}, cmd::StaffStep{-1}, cmd::Accept{}});
+    REQUIRE(message_of(editor.view()) == "way1.dat: CONTINUITY");
+    apply(editor, {cmd::StaffStep{+1}, cmd::Keep{}, cmd::StaffStep{-1}, cmd::Accept{}, cmd::Accept{}});
+    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.update(cmd::No{}) == PathEditor::Outcome::accepted);
+    for (const ControlPoint& point : editor.points())
+        REQUIRE(point.staff == StaffValues{0.1, 0.0, -0.05, 0.0});
+    REQUIRE(log.lines == std::vector<std::string>{"global control", "TENSION +0.10", "CONTINUITY +0.00 (kept)",
+                                                  "BIAS -0.05", "ACCELERATION +0.00"});
+}
+
+TEST_CASE("the region's arrow starts at the first control point and cannot leave the path", "[session][editor]")
+{
+    LogLines log;
+    PathEditor editor(four_point_path(), log);
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{-1}, cmd::ArrowMove{-1}, cmd::Accept{}});
+    REQUIRE(editor.phase() == SessionPhase::pick_region_last);
+    apply(editor, {cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::Accept{}});
+    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(log.lines.back() == "local control: control points 1 to 4");
+}
+
+TEST_CASE("Esc while picking goes one step back, Y after the staff to the control choice", "[session][editor]")
+{
+    LogLines log;
+    PathEditor editor(four_point_path(), log);
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{+1}, cmd::Accept{}, cmd::Back{}});
+    REQUIRE(editor.phase() == SessionPhase::pick_region_first);
+    apply(editor, {cmd::Back{}});
+    REQUIRE(editor.phase() == SessionPhase::choose_control);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Yes{}});
+    REQUIRE(editor.phase() == SessionPhase::choose_control);
+}
+
+TEST_CASE("a path that could not be written is asked about again with the reason shown", "[session][editor]")
+{
+    LogLines log;
+    PathEditor editor(four_point_path(), log);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}});
+    REQUIRE(editor.update(cmd::No{}) == PathEditor::Outcome::accepted);
+    editor.show_problem("way1.dat: cannot write: Read-only file system");
+    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(message_of(editor.view()) == "way1.dat: cannot write: Read-only file system");
+}
+
+TEST_CASE("the animation player shows one frame per tick, then all frames, then finishes", "[session][animation]")
+{
+    LogLines log;
+    FrameSequence frames(3, 2);
+    for (std::size_t k = 0; k < 3; ++k) {
+        frames.frame(k)[0] = {0, static_cast<double>(k), 0};
+        frames.frame(k)[1] = {0, static_cast<double>(k), 1};
+    }
+    Graphic structure;
+    structure.parts.push_back({"stick", Closure::open, {{0, 0, 0}, {0, 0, 1}}});
+    AnimationPlayer player(frames, structure, {0, 90}, 50, log);
+    REQUIRE(player.playing());
+    REQUIRE(message_of(player.view()) == "Frame 0 of 2");
+    player.tick();
+    REQUIRE(player.update(cmd::Pause{}) == AnimationPlayer::Outcome::showing);
+    player.tick();
+    REQUIRE(message_of(player.view()) == "Frame 1 of 2  (paused)");
+    player.update(cmd::Replay{});
+    REQUIRE(message_of(player.view()) == "Frame 0 of 2");
+    player.tick();
+    player.tick();
+    player.tick();
+    REQUIRE(player.phase() == SessionPhase::animation_done);
+    REQUIRE(player.key_context() == KeyContext::any_key);
+    REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::showing);
+    REQUIRE(player.phase() == SessionPhase::overlay);
+    REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::finished);
+    REQUIRE(log.lines == std::vector<std::string>{"animation: 3 frames, 50 ms each", "showed all 3 frames overlaid"});
+}
