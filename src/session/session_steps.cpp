@@ -171,21 +171,17 @@ void Session::read_data_file(const std::string& name)
                          name + ": expected a file in the session's folder (no leading '/', no '..'), since APCS "
                                 "rewrites it");
     const Expected<DatFile> file = m_files.read_dat(name, 2);
-    // The graphic point this path belongs to: the very first or the very last of each key.
-    const auto end_point = [&](const Graphic& key) { return m_path == 0 ? key.first_point() : key.last_point(); };
-    std::optional<Diagnostic> problem;
     if (!file)
-        problem = file.error();
-    else
-        problem = check_path_ends(*file, name, m_path == 0 ? "first" : "last", end_point(m_keys.key1),
-                                  end_point(m_keys.key2));
-    if (problem)
-        return ask_again(SessionPhase::ask_path_file, problem->to_string());
+        return ask_again(SessionPhase::ask_path_file, file.error().to_string());
     // A closed graphic's second path starts from the first path's values, as the thesis says.
     const bool closed_second = m_path == 1 && m_keys.key1.is_closed() && !m_points[0].empty();
     const StaffValues defaults = closed_second ? m_points[0].front().staff : StaffValues{};
+    Expected<ControlPoints> points =
+        point_path_from(*file, name, m_path == 0 ? PathEnd::first : PathEnd::last, m_keys, defaults);
+    if (!points)
+        return ask_again(SessionPhase::ask_path_file, points.error().to_string());
     m_path_names[static_cast<std::size_t>(m_path)] = name;
-    m_points[static_cast<std::size_t>(m_path)] = control_points_from(*file, defaults);
+    m_points[static_cast<std::size_t>(m_path)] = std::move(*points);
     m_files.log("path " + name + ": " + std::to_string(file->point_count()) + " control points");
     m_first_slope.reset();
     go_to(SessionPhase::ask_slopes);

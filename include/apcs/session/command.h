@@ -7,28 +7,24 @@
 // map.
 namespace apcs::command {
 
+// A command that carries nothing but itself: any two are equal.
+template <typename Self>
+struct Signal {
+    friend constexpr bool operator==(const Self&, const Self&) { return true; }
+};
+
 // Text prompts (thesis figs. 4.2.1–4.2.3).
 struct TypeCharacter {
     char32_t character = 0;
     friend bool operator==(const TypeCharacter&, const TypeCharacter&) = default;
 };
-struct EraseCharacter {
-    friend bool operator==(const EraseCharacter&, const EraseCharacter&) = default;
-};
-struct ClearLine {
-    friend bool operator==(const ClearLine&, const ClearLine&) = default;
-};
-struct SubmitLine {
-    friend bool operator==(const SubmitLine&, const SubmitLine&) = default;
-};
+struct EraseCharacter : Signal<EraseCharacter> {};
+struct ClearLine : Signal<ClearLine> {};
+struct SubmitLine : Signal<SubmitLine> {};
 
 // Check_GorL_Control: 8 Global, 2 Local.
-struct ChooseGlobal {
-    friend bool operator==(const ChooseGlobal&, const ChooseGlobal&) = default;
-};
-struct ChooseLocal {
-    friend bool operator==(const ChooseLocal&, const ChooseLocal&) = default;
-};
+struct ChooseGlobal : Signal<ChooseGlobal> {};
+struct ChooseLocal : Signal<ChooseLocal> {};
 // Scan_Control_Point: the arrow moves by `points` control points.
 struct ArrowMove {
     int points = 0;
@@ -40,42 +36,22 @@ struct StaffStep {
     friend bool operator==(const StaffStep&, const StaffStep&) = default;
 };
 // Enter: take what is shown (the arrow's point, the staff line's value).
-struct Accept {
-    friend bool operator==(const Accept&, const Accept&) = default;
-};
+struct Accept : Signal<Accept> {};
 // Esc on a staff line: leave the value as it was and go on.
-struct Keep {
-    friend bool operator==(const Keep&, const Keep&) = default;
-};
+struct Keep : Signal<Keep> {};
 // Esc while picking: one step back.
-struct Back {
-    friend bool operator==(const Back&, const Back&) = default;
-};
-struct ToggleKeyFrames {
-    friend bool operator==(const ToggleKeyFrames&, const ToggleKeyFrames&) = default;
-};
+struct Back : Signal<Back> {};
+struct ToggleKeyFrames : Signal<ToggleKeyFrames> {};
 
 // Questions: Y/N, Enter, any key.
-struct Yes {
-    friend bool operator==(const Yes&, const Yes&) = default;
-};
-struct No {
-    friend bool operator==(const No&, const No&) = default;
-};
-struct Continue {
-    friend bool operator==(const Continue&, const Continue&) = default;
-};
+struct Yes : Signal<Yes> {};
+struct No : Signal<No> {};
+struct Continue : Signal<Continue> {};
 
 // Showing_Animation.
-struct StopAnimation {
-    friend bool operator==(const StopAnimation&, const StopAnimation&) = default;
-};
-struct Pause {
-    friend bool operator==(const Pause&, const Pause&) = default;
-};
-struct Replay {
-    friend bool operator==(const Replay&, const Replay&) = default;
-};
+struct StopAnimation : Signal<StopAnimation> {};
+struct Pause : Signal<Pause> {};
+struct Replay : Signal<Replay> {};
 
 } // namespace apcs::command
 
