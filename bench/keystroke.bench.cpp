@@ -39,7 +39,7 @@ void staff_keystroke(benchmark::State& state)
     PathScreenContent content;
     content.path = &path;
     content.control_points = points;
-    const ViewTransform view = ViewTransform::fit({30, 40}, path_screen_scene(content), layout::drawing_area);
+    const ViewTransform view = path_screen_scene(content).fit({30, 40}, layout::drawing_area);
     AsciiGlyphCache cache;
     CellGrid previous = render_cells(draw_path_screen(content, view), area, glyphs, cache);
     int step = 0;

@@ -55,7 +55,8 @@ void add_staff_options(CLI::App& command, CommonOptions& options)
 
 void add_path_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
 {
-    command.add_option("--slopes", slopes, "end slopes S0 S1, each in " + range_text(limits::end_slope) + " (default 1 1)")
+    command
+        .add_option("--slopes", slopes, "end slopes S0 S1, each in " + range_text(limits::end_slope) + " (default 1 1)")
         ->expected(2)
         ->check(finite_number & real_range(limits::end_slope));
     command.add_option("--samples", options.path.samples_per_segment, "curve samples per segment (default 32)")

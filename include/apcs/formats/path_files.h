@@ -41,8 +41,9 @@ NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
 // end at its KEY2 position (to 1e-6 of the scene's size). Returns the problem, if any, as
 // "FILE:LINE: …" naming the expected point.
-[[nodiscard]] std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
-                                                        const Vec3& key1_position, const Vec3& key2_position);
+[[nodiscard]] std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name,
+                                                        const std::string& which, const Vec3& key1_position,
+                                                        const Vec3& key2_position);
 
 // A path file's points as KB control points, all parts in file order: 7-column points keep their
 // own t c b a, shorter ones take `defaults`.
