@@ -2,13 +2,7 @@
 
 namespace apcs {
 
-std::size_t Graphic::point_count() const
-{
-    std::size_t count = 0;
-    for (const GraphicPart& part : parts)
-        count += part.points.size();
-    return count;
-}
+std::size_t Graphic::point_count() const { return total_point_count(parts); }
 
 std::vector<Vec3> Graphic::all_points() const
 {

@@ -13,13 +13,7 @@
 
 namespace apcs {
 
-std::size_t DatFile::point_count() const
-{
-    std::size_t count = 0;
-    for (const DatPart& part : parts)
-        count += part.points.size();
-    return count;
-}
+std::size_t DatFile::point_count() const { return total_point_count(parts); }
 
 namespace {
 
@@ -278,10 +272,9 @@ std::string format_dat(const DatFile& file)
         for (const DatPoint& point : part.points) {
             append_xyz(text, point.position);
             if (point.staff) {
-                for (const double value : {point.staff->tension, point.staff->continuity, point.staff->bias,
-                                           point.staff->acceleration}) {
+                for (const StaffLine line : staff_lines) {
                     text += ' ';
-                    append_shortest(text, value);
+                    append_shortest(text, (*point.staff)[line]);
                 }
             }
             text += '\n';

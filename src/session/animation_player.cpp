@@ -6,6 +6,7 @@
 #include "apcs/session/world_drawing.h"
 
 #include <algorithm>
+#include <cassert>
 #include <string>
 
 namespace apcs {
@@ -64,6 +65,7 @@ void AnimationPlayer::tick()
 
 GraphicsScreen AnimationPlayer::view() const
 {
+    assert(m_frames.frame_count() == 0 || m_frame < m_frames.frame_count());
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     painter.rectangle(layout::drawing_area);

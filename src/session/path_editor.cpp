@@ -111,6 +111,7 @@ void PathEditor::scan_control_point(const Command& command)
 
 void PathEditor::start_staff(ControlRegion region)
 {
+    assert(region.first < region.last && region.last < m_setup.points.size());
     m_region = region;
     m_staff = m_setup.points[region.first].staff;
     m_line = StaffLine::tension;

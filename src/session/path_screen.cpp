@@ -40,22 +40,21 @@ namespace {
 
 void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenContent& content)
 {
-    const double values[4] = {content.staff.tension, content.staff.continuity, content.staff.bias,
-                              content.staff.acceleration};
-    for (int line = 0; line < 4; ++line) {
-        const int y = layout::staff_line_y(line);
-        const int row = layout::first_staff_row + line;
-        const bool active = content.active_line && static_cast<int>(*content.active_line) == line;
-        screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(static_cast<StaffLine>(line)))});
+    for (const StaffLine line : staff_lines) {
+        const int index = static_cast<int>(line);
+        const int y = layout::staff_line_y(index);
+        const int row = layout::first_staff_row + index;
+        const bool active = content.active_line == line;
+        screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(line))});
         painter.line({layout::staff_left, y}, {layout::staff_right, y});
         for (const double tick : {-1.0, 0.0, 1.0})
             painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},
                          {layout::staff_x(tick), y + layout::staff_tick_half_height});
-        const int marker = layout::staff_x(values[line]);
+        const int marker = layout::staff_x(content.staff[line]);
         painter.line({marker - 1, y - layout::staff_marker_half_height}, {marker - 1, y + layout::staff_marker_half_height});
         painter.line({marker + 1, y - layout::staff_marker_half_height}, {marker + 1, y + layout::staff_marker_half_height});
         screen.marks.push_back({{marker, y}, U'O'});
-        screen.text.push_back({layout::staff_value_column, row, format_staff_value(values[line])});
+        screen.text.push_back({layout::staff_value_column, row, format_staff_value(content.staff[line])});
     }
 }
 

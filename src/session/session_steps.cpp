@@ -212,6 +212,7 @@ void Session::predefine_ends_slope(const std::string& line)
 
 PathSettings Session::path_settings(int path) const
 {
+    assert(path == 0 || path == 1);
     return {m_slopes[static_cast<std::size_t>(path)], m_settings.samples_per_segment, m_settings.inbetween_count,
             m_settings.spacing};
 }
@@ -219,6 +220,7 @@ PathSettings Session::path_settings(int path) const
 // Initial_Graphics: steps 3–5 go on in graphics mode, in the PathEditor.
 void Session::initial_graphics()
 {
+    assert(m_points[static_cast<std::size_t>(m_path)].size() >= 2);
     std::vector<std::vector<Vec3>> key_frames;
     for (const Graphic* key : {&m_keys.key1, &m_keys.key2})
         for (auto& polyline : key->polylines(key->all_points()))

@@ -10,6 +10,16 @@ namespace apcs {
 
 enum class Closure { open, closed };
 
+// The points of all parts together (a graphic's, or a .dat file's whose parts hold `points`).
+template <typename Part>
+std::size_t total_point_count(const std::vector<Part>& parts)
+{
+    std::size_t count = 0;
+    for (const Part& part : parts)
+        count += part.points.size();
+    return count;
+}
+
 // A polyline of a key frame; drawing lifts the pen between parts. A closed part is drawn back to
 // its first point.
 struct GraphicPart {
