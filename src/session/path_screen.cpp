@@ -73,25 +73,39 @@ void draw_dotted(Painter& painter, const std::vector<Vec3>& polyline, const View
     }
 }
 
+// Draw_Ani_Path: the in-betweens the path will show, each a small square on the curve.
+void draw_ani_path(Painter& painter, const EvaluatedPath& path, const ViewTransform& view)
+{
+    for (const Inbetween& inbetween : path.inbetweens)
+        painter.dot_marker(view.to_device(inbetween.position).rounded());
+}
+
+// Pre_Draw: every control point marked with an x.
+void pre_draw(Painter& painter, GraphicsScreen& screen, std::span<const ControlPoint> points, const ViewTransform& view)
+{
+    for (const ControlPoint& point : points) {
+        const PixelPoint centre = view.to_device(point.position).rounded();
+        painter.cross_marker(centre);
+        screen.marks.push_back({centre, U'x'});
+    }
+}
+
 } // namespace
 
 GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view)
 {
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
+    // Make_Boundary.
     painter.rectangle(layout::drawing_area);
     for (const auto& polyline : content.key_frame_polylines)
         draw_dotted(painter, polyline, view);
     if (content.path != nullptr) {
+        // DRAW: the KB curve, sampled.
         draw_world_polyline(painter, content.path->curve.points, view);
-        for (const Inbetween& inbetween : content.path->inbetweens)
-            painter.dot_marker(view.to_device(inbetween.position).rounded());
+        draw_ani_path(painter, *content.path, view);
     }
-    for (const ControlPoint& point : content.control_points) {
-        const PixelPoint centre = view.to_device(point.position).rounded();
-        painter.cross_marker(centre);
-        screen.marks.push_back({centre, U'x'});
-    }
+    pre_draw(painter, screen, content.control_points, view);
     if (content.region && content.region->second < content.control_points.size()) {
         for (std::size_t k = content.region->first; k <= content.region->second; ++k) {
             const PixelPoint centre = view.to_device(content.control_points[k].position).rounded();

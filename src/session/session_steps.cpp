@@ -140,6 +140,7 @@ std::vector<std::string> Session::view_prompt() const
             std::string(text::ask_view_values)};
 }
 
+// Define_View_Parameters: THETA, PHI and the delay; the view itself is fitted when graphics begin.
 void Session::define_view_parameters(const std::string& line)
 {
     const std::optional<std::vector<double>> numbers = numbers_in(line);
@@ -159,6 +160,7 @@ void Session::define_view_parameters(const std::string& line)
 
 std::string Session::path_file_default() const { return path_file_name(m_path == 0 ? 1 : m_point_count); }
 
+// Read_data_file: the path file of the graphic point being adjusted.
 void Session::read_data_file(const std::string& name)
 {
     // The path file is rewritten after adjusting: it must lie in the session's folder.
