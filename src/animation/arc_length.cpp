@@ -64,7 +64,8 @@ CurveParameter ArcLengthTable::parameter_at(double arc_length) const
     const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(end - m_cumulative.begin()) - 1,
                                                       m_segments.size() - 1);
     const double within = target - m_cumulative[segment];
-    const double tolerance = 1e-9 * total;
+    // Far below what a test or a picture can see, so that even steps come out even to 1e-9.
+    const double tolerance = 1e-12 * total;
     double low = 0.0;
     double high = 1.0;
     // 200 halvings reach the resolution of a double long before; the bound only guarantees an end.

@@ -104,25 +104,37 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
     };
     const double total = exact ? arc_table.total_length() : path.curve.total_length();
 
+    path.inbetweens.reserve(static_cast<std::size_t>(inbetween_count));
+    if (!(total > 0.0)) {
+        // A path of zero length (a point that stays) still has a pace: its in-betweens progress by
+        // the first control point's law over one span, so that surface fitting never sees a
+        // neighbour stand still and then jump (SPEC §5.3).
+        for (int j = 1; j <= inbetween_count; ++j) {
+            const double tau = static_cast<double>(j) / (inbetween_count + 1);
+            path.inbetweens.push_back(
+                {path.curve.points.front(), acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
+        }
+        return path;
+    }
+
     std::vector<double> span_lengths;
     for (const AccelerationSpan& span : spans)
         span_lengths.push_back(boundary(span.last_point) - boundary(span.first_point));
     const std::vector<int> shares = share_by_largest_remainder(span_lengths, inbetween_count);
 
-    path.inbetweens.reserve(static_cast<std::size_t>(inbetween_count));
     for (std::size_t s = 0; s < spans.size(); ++s) {
         const double start = boundary(spans[s].first_point);
         for (const double target : span_targets(start, span_lengths[s], shares[s], spans[s].acceleration)) {
             Inbetween shown;
             if (exact) {
                 shown.position = arc_table.point_at(arc_table.parameter_at(target));
-                shown.arc_fraction = total > 0.0 ? target / total : 0.0;
-                const double chord_target = total > 0.0 ? shown.arc_fraction * path.curve.total_length() : 0.0;
+                shown.arc_fraction = target / total;
+                const double chord_target = shown.arc_fraction * path.curve.total_length();
                 shown.sample_index = nearest_sample(path.curve.chord_length, chord_target);
             } else {
                 shown.sample_index = nearest_sample(path.curve.chord_length, target);
                 shown.position = path.curve.points[shown.sample_index];
-                shown.arc_fraction = total > 0.0 ? path.curve.chord_length[shown.sample_index] / total : 0.0;
+                shown.arc_fraction = path.curve.chord_length[shown.sample_index] / total;
             }
             path.inbetweens.push_back(shown);
         }

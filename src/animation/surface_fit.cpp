@@ -55,27 +55,23 @@ FrameSequence fit_surface(std::span<const Vec3> key1, std::span<const Vec3> key2
                           const EdgePath& first_edge, const EdgePath& last_edge)
 {
     const std::size_t point_count = std::min(key1.size(), key2.size());
-    const EdgePath& second_edge = closure == Closure::closed ? first_edge : last_edge;
+    const bool closed = closure == Closure::closed;
+    const EdgePath& second_edge = closed ? first_edge : last_edge;
     const std::size_t frame_count = std::min(first_edge.positions.size(), second_edge.positions.size());
     FrameSequence frames(frame_count, point_count);
     if (point_count == 0 || frame_count == 0)
         return frames;
 
-    // Per point: the blend weights along v and the corrections that carry each key's shape.
+    // The blend across the graphic, F1(v_i) and F2(v_i), per point.
     const std::vector<double> v = graphic_parameters(key1.first(point_count), key2.first(point_count), closure);
-    std::vector<HermiteBasis> along_graphic(point_count);
-    std::vector<Vec3> key1_shape(point_count);
-    std::vector<Vec3> key2_shape(point_count);
+    std::vector<HermiteBasis> across(point_count);
+    for (std::size_t i = 0; i < point_count; ++i)
+        across[i] = hermite_basis(v[i]);
+    // A closed graphic's last point is its first (SPEC §5.3): both edges are the first path.
     const Vec3 key1_first = key1.front();
-    const Vec3 key1_last = key1[point_count - 1];
     const Vec3 key2_first = key2.front();
-    const Vec3 key2_last = key2[point_count - 1];
-    for (std::size_t i = 0; i < point_count; ++i) {
-        const HermiteBasis basis = hermite_basis(v[i]);
-        along_graphic[i] = basis;
-        key1_shape[i] = key1[i] - basis.f1 * key1_first - basis.f2 * key1_last;
-        key2_shape[i] = key2[i] - basis.f1 * key2_first - basis.f2 * key2_last;
-    }
+    const Vec3 key1_last = closed ? key1_first : key1[point_count - 1];
+    const Vec3 key2_last = closed ? key2_first : key2[point_count - 1];
 
     const std::size_t last_frame = frame_count - 1;
     for (std::size_t k = 0; k < frame_count; ++k) {
@@ -88,16 +84,20 @@ FrameSequence fit_surface(std::span<const Vec3> key1, std::span<const Vec3> key2
         }
         const Vec3 edge0 = first_edge.positions[k];
         const Vec3 edge1 = second_edge.positions[k];
-        const HermiteBasis along_path = hermite_basis((first_edge.progress[k] + second_edge.progress[k]) / 2.0);
+        const double progress0 = first_edge.progress[k];
+        const double progress1 = second_edge.progress[k];
+        // How far each edge path bends off its chord at this frame.
+        const Vec3 bend0 = edge0 - lerp(key1_first, key2_first, progress0);
+        const Vec3 bend1 = edge1 - lerp(key1_last, key2_last, progress1);
         for (std::size_t i = 0; i < point_count; ++i) {
-            const HermiteBasis& weights = along_graphic[i];
-            frame[i] = weights.f1 * edge0 + weights.f2 * edge1 + along_path.f1 * key1_shape[i] +
-                       along_path.f2 * key2_shape[i];
+            const HermiteBasis& weights = across[i];
+            const double progress = weights.f1 * progress0 + weights.f2 * progress1;
+            frame[i] = lerp(key1[i], key2[i], progress) + weights.f1 * bend0 + weights.f2 * bend1;
         }
         // The edge points follow their paths exactly (for v = 0 and v = 1 the blend already does,
         // up to rounding).
         frame[0] = edge0;
-        if (closure == Closure::open || (key1_first == key1_last && key2_first == key2_last))
+        if (!closed || (key1[point_count - 1] == key1_first && key2[point_count - 1] == key2_first))
             frame[point_count - 1] = edge1;
     }
     return frames;

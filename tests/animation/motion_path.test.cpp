@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 using namespace apcs;
 
@@ -192,4 +193,20 @@ TEST_CASE("accelerations of 3 and 1 are one span, as 1 and 1 are", "[animation][
     REQUIRE(spans.size() == 1);
     REQUIRE(spans[0].acceleration == 1.0);
     REQUIRE(spans[0].last_point == points.size() - 1);
+}
+
+TEST_CASE("a path of zero length progresses by its first control point's acceleration law", "[animation][path]")
+{
+    ControlPoints points{{{1, 2, 3}, {0, 0, 0, 0.5}}, {{1, 2, 3}, {0, 0, 0, -1}}, {{1, 2, 3}, {}}};
+    const EvaluatedPath path = evaluate_path(points, {{}, 8, 3, Spacing::exact});
+    REQUIRE(path.inbetweens.size() == 3);
+    for (std::size_t j = 0; j < 3; ++j) {
+        const double tau = static_cast<double>(j + 1) / 4.0;
+        // (1 − a)·τ + a·(1 − cos(πτ/2)) with a = 0.5, worked out: τ = 1/4 gives 0.125 + 0.5·0.0761205.
+        const double expected = 0.5 * tau + 0.5 * (1.0 - std::cos(std::numbers::pi * tau / 2.0));
+        CAPTURE(j);
+        REQUIRE(path.inbetweens[j].arc_fraction == Approx(expected).epsilon(1e-12));
+        REQUIRE(path.inbetweens[j].position == Vec3{1, 2, 3});
+    }
+    REQUIRE(path.inbetweens[0].arc_fraction == Approx(0.125 + 0.5 * 0.07612046748871326).epsilon(1e-12));
 }

@@ -2,6 +2,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using namespace apcs;
 
 namespace {
@@ -45,22 +47,76 @@ TEST_CASE("frame 0 is KEY1, frame M+1 is KEY2 and the end points follow their pa
     }
 }
 
-TEST_CASE("an interior point worked by hand from the Coons formula", "[animation][fit]")
+TEST_CASE("an interior point worked by hand from the blend of SPEC 5.3", "[animation][fit]")
 {
-    // Three points; v by chord length: KEY1 (0,0,0) (1,0,0) (3,0,0) → 0, 1/3, 1; KEY2 the same
-    // shape moved by (0,10,0) → v = 1/3 for the middle point. Edge positions at frame 1 given
-    // directly with progress 0.5 for both.
-    const std::vector<Vec3> key1{{0, 0, 0}, {1, 0, 0}, {3, 0, 0}};
-    const std::vector<Vec3> key2{{0, 10, 0}, {1, 10, 0}, {3, 10, 0}};
-    const EdgePath first{{{0, 0, 0}, {0, 4, 2}, {0, 10, 0}}, {0.0, 0.5, 1.0}};
-    const EdgePath last{{{3, 0, 0}, {3, 6, 0}, {3, 10, 0}}, {0.0, 0.5, 1.0}};
+    // KEY1 (0,0,0) (1,0,0) (4,0,0): chord places 0, 1/4, 1; KEY2 (0,10,0) (1,10,0) (2,10,0): 0, 1/2, 1.
+    // The middle point's v = (1/4 + 1/2) / 2 = 3/8; F1(3/8) = 2·27/512 − 3·9/64 + 1 = 350/512,
+    // F2(3/8) = 162/512. Edges at frame 1 given directly: E0 = (0,4,2) at progress 1/4,
+    // E1 = (3,6,0) at progress 3/4.
+    const std::vector<Vec3> key1{{0, 0, 0}, {1, 0, 0}, {4, 0, 0}};
+    const std::vector<Vec3> key2{{0, 10, 0}, {1, 10, 0}, {2, 10, 0}};
+    const EdgePath first{{{0, 0, 0}, {0, 4, 2}, {0, 10, 0}}, {0.0, 0.25, 1.0}};
+    const EdgePath last{{{4, 0, 0}, {3, 6, 0}, {2, 10, 0}}, {0.0, 0.75, 1.0}};
     const FrameSequence frames = fit_surface(key1, key2, Closure::open, first, last);
-    // F1(1/3) = 2/27 − 3/9 + 1 = 20/27, F2(1/3) = 7/27; F1(0.5) = F2(0.5) = 0.5.
-    // Key shape terms: K1_1 − 20/27·(0,0,0) − 7/27·(3,0,0) = (1 − 21/27, 0, 0) = (6/27, 0, 0);
-    // K2_1 − 20/27·(0,10,0) − 7/27·(3,10,0) = (6/27, 0, 0).
-    // P = 20/27·(0,4,2) + 7/27·(3,6,0) + 0.5·(6/27,0,0) + 0.5·(6/27,0,0) = (27/27, 122/27, 40/27).
-    const Vec3 expected{1.0, 122.0 / 27.0, 40.0 / 27.0};
+    // w = 350/512 · 1/4 + 162/512 · 3/4 = 209/512; lerp((1,0,0), (1,10,0), w) = (1, 2090/512, 0).
+    // D0 = (0,4,2) − lerp((0,0,0), (0,10,0), 1/4) = (0, 1.5, 2);
+    // D1 = (3,6,0) − lerp((4,0,0), (2,10,0), 3/4) = (3,6,0) − (2.5, 7.5, 0) = (0.5, −1.5, 0).
+    // P = (1 + 162/512·0.5, 2090/512 + (350 − 162)/512·1.5, 350/512·2)
+    //   = (593/512, 2372/512, 700/512).
+    const Vec3 expected{593.0 / 512.0, 2372.0 / 512.0, 700.0 / 512.0};
     REQUIRE(distance(frames.frame(1)[1], expected) < 1e-12);
+}
+
+TEST_CASE("straight edge paths at even steps move every point along its own line at even steps",
+          "[animation][fit]")
+{
+    // The N to L example of the session with the split's straight ani1 and ani4 paths, all values 0.
+    EqualisedKeys keys = equalise_key_frames(open_graphic({{0, 0, 0}, {0, 0, 10}, {0, 6, 0}, {0, 6, 10}}),
+                                             open_graphic({{0, 0, 10}, {0, 0, 0}, {0, 5, 0}}));
+    const std::vector<Vec3> key1 = keys.key1.all_points();
+    const std::vector<Vec3> key2 = keys.key2.all_points();
+    const PathSettings exact{{}, 32, 12, Spacing::exact};
+    const EvaluatedPath first = evaluate_path(path_through({key1.front(), key2.front()}), exact);
+    const EvaluatedPath last = evaluate_path(path_through({key1.back(), key2.back()}), exact);
+    const FrameSequence frames = fit_key_frames(keys, first, last);
+    REQUIRE(frames.frame_count() == 14);
+    for (std::size_t i = 0; i < key1.size(); ++i) {
+        const Vec3 whole_way = key2[i] - key1[i];
+        for (std::size_t k = 1; k < frames.frame_count(); ++k) {
+            CAPTURE(i, k);
+            // Every step is 1/13 of the way from KEY1 to KEY2: on the line, monotonic, even.
+            const Vec3 step = frames.frame(k)[i] - frames.frame(k - 1)[i];
+            REQUIRE(distance(step, whole_way * (1.0 / 13.0)) < 1e-9);
+        }
+    }
+}
+
+TEST_CASE("a still edge point makes no neighbour jump: no step exceeds 1.5 times the median step",
+          "[animation][fit]")
+{
+    // Example 3 as one graphic: an apple that stays (its first point's path has zero length) and a
+    // snake that moves five units on.
+    Graphic key1;
+    key1.parts = {{"apple", Closure::closed, {{0, 14, 3.2}, {0, 15.2, 2}, {0, 14, 0.8}, {0, 12.8, 2}}},
+                  {"snake", Closure::open, {{0, 0, 0}, {0, 2, 0}, {0, 4, 0}, {0, 6, 0}}}};
+    Graphic key2;
+    key2.parts = {{"apple", Closure::closed, {{0, 14, 3.2}, {0, 15.2, 2}, {0, 14, 0.8}, {0, 12.8, 2}}},
+                  {"snake", Closure::open, {{0, 5, 0}, {0, 7, 0.5}, {0, 9, 0}, {0, 11.6, 0.9}}}};
+    const EqualisedKeys keys{key1, key2};
+    const PathSettings exact{{}, 32, 12, Spacing::exact};
+    const EvaluatedPath still = evaluate_path(path_through({{0, 14, 3.2}, {0, 14, 3.2}}), exact);
+    const EvaluatedPath head = evaluate_path(path_through({{0, 6, 0}, {0, 8.5, 2}, {0, 11.6, 0.9}}), exact);
+    const FrameSequence frames = fit_key_frames(keys, still, head);
+    for (std::size_t i = 0; i < frames.points_per_frame(); ++i) {
+        std::vector<double> steps;
+        for (std::size_t k = 1; k < frames.frame_count(); ++k)
+            steps.push_back(distance(frames.frame(k)[i], frames.frame(k - 1)[i]));
+        std::vector<double> sorted = steps;
+        std::sort(sorted.begin(), sorted.end());
+        const double median = sorted[sorted.size() / 2];
+        CAPTURE(i, median, sorted.back());
+        REQUIRE(sorted.back() <= 1.5 * median + 1e-12);
+    }
 }
 
 TEST_CASE("v is the chord-length place along the graphic, averaged over both keys", "[animation][fit]")

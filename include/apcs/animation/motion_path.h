@@ -38,7 +38,8 @@ std::vector<int> share_by_largest_remainder(std::span<const double> weights, int
 struct Inbetween {
     Vec3 position;
     // Fraction of the whole path length reached here, in [0, 1] (chord length for `nearest`,
-    // arc length for `exact`).
+    // arc length for `exact`). A path of zero length progresses by its first control point's
+    // acceleration law instead: law(j / (M + 1)) for in-between j.
     double arc_fraction = 0.0;
     // The curve sample shown (nearest spacing); for exact spacing the sample nearest to it.
     std::size_t sample_index = 0;

@@ -26,14 +26,18 @@ EdgePath edge_path_from(const EvaluatedPath& path, const Vec3& key1_position, co
 // point's index instead.
 std::vector<double> graphic_parameters(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure);
 
-// Surface fitting (thesis s_fiting.c, SPEC §5.3), the bicubically blended Coons form of the
-// Ferguson surface with u along the paths and v along the graphic:
-//   P_i,k = F1(v_i)·E0_k + F2(v_i)·E1_k + F1(w_k)·(K1_i − F1(v_i)·K1_first − F2(v_i)·K1_last)
-//                                      + F2(w_k)·(K2_i − F1(v_i)·K2_first − F2(v_i)·K2_last)
-// with E0, E1 the first and last point's edge paths and w_k their mean progress. A closed
-// graphic uses the first edge for both (E1 = E0). key1 and key2 hold the same number of points
-// (equalised); the edges hold the same number of frames. Frame 0 is KEY1 and frame M+1 KEY2,
-// exactly. Cost: O(points × frames).
+// Surface fitting (thesis s_fiting.c, Ch. 3.2, SPEC §5.3): each interior point's path taken from
+// the two edge paths so that the in-betweens change monotonically. A transfinite blend, linear
+// along each point's progress and cubic (F1, F2) across the graphic: with v_i the point's place
+// along the graphic, E0_k, E1_k the edge positions and w0_k, w1_k their progress in frame k,
+//   w_i,k = F1(v_i)·w0_k + F2(v_i)·w1_k
+//   D0_k  = E0_k − lerp(K1_first, K2_first, w0_k)      D1_k = E1_k − lerp(K1_last, K2_last, w1_k)
+//   P_i,k = lerp(K1_i, K2_i, w_i,k) + F1(v_i)·D0_k + F2(v_i)·D1_k
+// When both edges run straight at even steps every point moves along its own straight line at
+// even steps. A closed graphic's last point is its first: K_last = K_first, E1 = E0 (the first
+// path) and w1 = w0. key1 and key2 hold the same number of points (equalised); the edges hold the
+// same number of frames. Frame 0 is KEY1 and frame M+1 KEY2, exactly, and the first and last point
+// follow their edge paths exactly. Cost: O(points × frames).
 FrameSequence fit_surface(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure,
                           const EdgePath& first_edge, const EdgePath& last_edge);
 
