@@ -18,8 +18,8 @@ const std::vector<ExampleFigure>& example_figures()
         {"n-to-l", "way1.dat", "way4.dat", {30, 40}, "example-1-n-to-l-b.png", "Fig. 5.1.b  N becomes L, THETA 30 PHI 40"},
         {"stick", "way1.dat", "way5.dat", {0, 90}, "example-2-stick-a.png", "Fig. 5.2.a  A stick falls, THETA 0 PHI 90"},
         {"stick", "way1.dat", "way5.dat", {40, 50}, "example-2-stick-b.png", "Fig. 5.2.b  A stick falls, THETA 40 PHI 50"},
-        {"snake-apple", "key1.dat", "way15.dat", {0, 90}, "example-3-snake-apple.png",
-         "Example 3  A snake moves toward an apple, THETA 0 PHI 90"},
+        {"snake-apple", "way1.dat", "way7.dat", {0, 90}, "example-3-snake-apple.png",
+         "Example 3  A snake moves toward an apple, THETA 0 PHI 90", "apple.dat"},
     };
     return figures;
 }
@@ -39,18 +39,25 @@ Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::f
         return key2.error();
     const EqualisedKeys keys = equalise_key_frames(*key1, *key2);
     std::vector<ControlPoints> paths;
-    for (const std::string& name : {example.path_first, example.path_last}) {
-        Expected<DatFile> file = read_dat_file(folder / name);
+    for (const auto& [name, end] : {std::pair{example.path_first, PathEnd::first}, std::pair{example.path_last, PathEnd::last}}) {
+        const Expected<DatFile> file = read_dat_file(folder / name);
         if (!file)
             return file.error();
-        paths.push_back(control_points_from(*file, options.staff));
+        Expected<ControlPoints> points = point_path_from(*file, (folder / name).string(), end, keys, options.staff);
+        if (!points)
+            return points.error();
+        paths.push_back(std::move(*points));
     }
-    // The apple of example 3 stands still: its first point's path is the point itself.
-    if (example.path_first == "key1.dat")
-        paths[0] = {{keys.key1.first_point(), {}}, {keys.key2.first_point(), {}}};
+    std::vector<Graphic> still;
+    if (!example.still_file.empty()) {
+        Expected<Graphic> object = read_key_frame(folder / example.still_file);
+        if (!object)
+            return object.error();
+        still.push_back(std::move(*object));
+    }
     const FrameSequence frames =
         fit_key_frames(keys, evaluate_path(paths[0], options.path), evaluate_path(paths[1], options.path));
-    return draw_frames_figure(example.title, frames, keys.key1, example.view);
+    return draw_frames_figure(example.title, frames, keys.key1, example.view, still);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "apcs/session/animation_player.h"
 
+#include "apcs/formats/path_files.h"
 #include "apcs/raster/painter.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/session_text.h"
@@ -13,10 +14,11 @@ namespace apcs {
 
 namespace text = session_text;
 
-AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, ViewAngles angles, int delay_ms,
-                                 SessionLog& log)
+AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names,
+                                 ViewAngles angles, int delay_ms, SessionLog& log)
     : m_frames(std::move(frames))
     , m_structure(std::move(structure))
+    , m_key_names(std::move(key_names))
     , m_view(ViewScene{}.add(m_frames).fit(angles, layout::drawing_area))
     , m_log(log)
     , m_phase(m_frames.frame_count() == 0 ? SessionPhase::animation_done : SessionPhase::animating)
@@ -53,6 +55,17 @@ AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
     }
 }
 
+std::string AnimationPlayer::frame_label() const
+{
+    if (m_frame == 0)
+        return "KEY1: " + m_key_names[0];
+    const std::size_t inbetweens = m_frames.frame_count() - 2;
+    if (m_frame > inbetweens)
+        return "KEY2: " + m_key_names[1];
+    return "In-between " + std::to_string(m_frame) + " of " + std::to_string(inbetweens) + ": " +
+           inbetween_file_name(m_frame);
+}
+
 void AnimationPlayer::tick()
 {
     if (!playing())
@@ -77,8 +90,7 @@ GraphicsScreen AnimationPlayer::view() const
             draw_world_polyline(painter, polyline, m_view);
     std::string message;
     if (m_phase == SessionPhase::animating)
-        message = "Frame " + std::to_string(m_frame) + " of " + std::to_string(m_frames.frame_count() - 1) +
-                  (m_paused ? "  (paused)" : "");
+        message = frame_label() + (m_paused ? "  (paused)" : "");
     else if (m_phase == SessionPhase::animation_done)
         message = std::string(text::animation_done);
     else

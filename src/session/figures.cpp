@@ -85,11 +85,18 @@ GraphicsScreen draw_curve_figure(const CurveFigure& figure)
 }
 
 GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
-                                  ViewAngles angles)
+                                  ViewAngles angles, std::span<const Graphic> still)
 {
-    const ViewTransform view = ViewScene{}.add(frames).fit(angles, figure_area);
+    ViewScene scene;
+    scene.add(frames);
+    for (const Graphic& object : still)
+        scene.add(object.all_points());
+    const ViewTransform view = scene.fit(angles, figure_area);
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
+    for (const Graphic& object : still)
+        for (const std::vector<Vec3>& polyline : object.polylines(object.all_points()))
+            draw_world_polyline(painter, polyline, view);
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
         // KEY1 and KEY2 solid, the in-betweens dotted, so the keys stand out as in fig. 5.1.
         const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
@@ -97,7 +104,8 @@ GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence&
             draw_world_polyline(painter, polyline, view, style);
     }
     screen.text.push_back({1, 0, title});
-    screen.text.push_back({1, legend_row, "solid: KEY1 and KEY2   dotted: the in-betweens"});
+    screen.text.push_back({1, legend_row, std::string("solid: KEY1 and KEY2   dotted: the in-betweens") +
+                                              (still.empty() ? "" : "   the apple stands still")});
     return screen;
 }
 

@@ -105,6 +105,7 @@ bool Session::read_key_file(const std::string& name, int which)
         return false;
     }
     m_files.protect_key_file(name);
+    m_key_names[static_cast<std::size_t>(which)] = name;
     m_key_frames[static_cast<std::size_t>(which)] = graphic_from(*file);
     m_files.log("KEY" + std::to_string(which + 1) + " " + name + ": " + std::to_string(file->point_count()) +
                 " points in " + std::to_string(file->parts.size()) + " parts");
@@ -271,7 +272,8 @@ void Session::surface_fitting(const std::string&)
 
 void Session::showing_animation(const std::string&)
 {
-    m_step.emplace<AnimationPlayer>(std::move(m_fitted_frames), m_keys.key1, m_view_angles, m_delay_ms, m_files);
+    m_step.emplace<AnimationPlayer>(std::move(m_fitted_frames), m_keys.key1, m_key_names, m_view_angles, m_delay_ms,
+                                    m_files);
 }
 
 std::vector<std::string> Session::done_lines() const

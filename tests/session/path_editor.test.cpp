@@ -106,17 +106,18 @@ TEST_CASE("the animation player shows one frame per tick, then all frames, then 
     }
     Graphic structure;
     structure.parts.push_back({"stick", Closure::open, {{0, 0, 0}, {0, 0, 1}}});
-    AnimationPlayer player(frames, structure, {0, 90}, 50, log);
+    AnimationPlayer player(frames, structure, {"k1.dat", "k2.dat"}, {0, 90}, 50, log);
     REQUIRE(player.playing());
-    REQUIRE(message_of(player.view()) == "Frame 0 of 2");
+    REQUIRE(message_of(player.view()) == "KEY1: k1.dat");
     player.tick();
     REQUIRE(player.update(cmd::Pause{}) == AnimationPlayer::Outcome::showing);
     player.tick();
-    REQUIRE(message_of(player.view()) == "Frame 1 of 2  (paused)");
+    REQUIRE(message_of(player.view()) == "In-between 1 of 1: inb001.dat  (paused)");
     player.update(cmd::Replay{});
-    REQUIRE(message_of(player.view()) == "Frame 0 of 2");
+    REQUIRE(message_of(player.view()) == "KEY1: k1.dat");
     player.tick();
     player.tick();
+    REQUIRE(message_of(player.view()) == "KEY2: k2.dat");
     player.tick();
     REQUIRE(player.phase() == SessionPhase::animation_done);
     REQUIRE(player.key_context() == KeyContext::any_key);

@@ -317,9 +317,9 @@ TEST_CASE("the animation stops on Esc and replays from the start on R", "[sessio
     REQUIRE(session.animating());
     session.tick();
     session.tick();
-    REQUIRE(graphics_message(session) == "Frame 2 of 13");
+    REQUIRE(graphics_message(session) == "In-between 2 of 12: inb002.dat");
     press(session, {ch('R')});
-    REQUIRE(graphics_message(session) == "Frame 0 of 13");
+    REQUIRE(graphics_message(session) == "KEY1: key1.dat");
     press(session, {escape});
     REQUIRE(session.phase() == SessionPhase::animation_done);
     REQUIRE_FALSE(session.animating());

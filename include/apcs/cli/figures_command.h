@@ -18,6 +18,8 @@ struct ExampleFigure {
     ViewAngles view;
     std::string file_name;
     std::string title;
+    // An object of the example that stands still, drawn once (empty: none).
+    std::string still_file = {};
 };
 
 const std::vector<ExampleFigure>& example_figures();

@@ -9,7 +9,9 @@
 #include "apcs/session/session_log.h"
 #include "apcs/session/session_phase.h"
 
+#include <array>
 #include <cstddef>
+#include <string>
 
 namespace apcs {
 
@@ -21,8 +23,10 @@ class AnimationPlayer {
 public:
     enum class Outcome { showing, finished };
 
-    // `structure` gives the parts that draw each frame (the equalised KEY1).
-    AnimationPlayer(FrameSequence frames, Graphic structure, ViewAngles angles, int delay_ms, SessionLog& log);
+    // `structure` gives the parts that draw each frame (the equalised KEY1); `key_names` name the
+    // first and the last frame on the screen.
+    AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names, ViewAngles angles,
+                    int delay_ms, SessionLog& log);
 
     Outcome update(const Command& command);
     void tick();
@@ -32,9 +36,14 @@ public:
     bool playing() const { return m_phase == SessionPhase::animating && !m_paused; }
     KeyContext key_context() const;
 
+    // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
+    // inb003.dat", "KEY2: key2.dat".
+    std::string frame_label() const;
+
 private:
     FrameSequence m_frames;
     Graphic m_structure;
+    std::array<std::string, 2> m_key_names;
     ViewTransform m_view;
     SessionLog& m_log;
     SessionPhase m_phase = SessionPhase::animating;

@@ -7,6 +7,7 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/painter.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,8 +34,9 @@ std::vector<CurveFigure> thesis_curve_figures();
 // the title at the top and a legend naming each curve's stroke at the bottom.
 GraphicsScreen draw_curve_figure(const CurveFigure& figure);
 
-// All frames of an example overlaid, as in the thesis' figures 5.1–5.2, with a title.
+// All frames of an example overlaid, as in the thesis' figures 5.1–5.2, with a title; `still`
+// objects (fitted apart, as Ch. 3.3 fits unrelated objects, and not moving) are drawn once, solid.
 GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
-                                  ViewAngles angles);
+                                  ViewAngles angles, std::span<const Graphic> still = {});
 
 } // namespace apcs

@@ -110,6 +110,7 @@ private:
     TextConsole m_console;
     Step m_step;
 
+    std::array<std::string, 2> m_key_names;
     std::array<Graphic, 2> m_key_frames;
     EqualisedKeys m_keys;
     std::size_t m_point_count = 0;
