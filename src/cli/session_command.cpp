@@ -77,8 +77,11 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     }
     FolderFiles files(folder);
     files.log("session started");
-    SessionSettings settings{options.path.samples_per_segment, options.path.inbetween_count, options.path.spacing,
-                             options.step};
+    SessionSettings settings;
+    settings.samples_per_segment = options.path.samples_per_segment;
+    settings.inbetween_count = options.path.inbetween_count;
+    settings.spacing = options.path.spacing;
+    settings.step = options.step;
     Session session(settings, files);
     std::vector<KeyEvent> recorded;
     ExitStatus status = ExitStatus::success;

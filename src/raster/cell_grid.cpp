@@ -10,6 +10,7 @@ CellGrid::CellGrid(int columns, int rows)
     : m_columns(std::max(columns, 0))
     , m_rows(std::max(rows, 0))
     , m_cells(static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows), U' ')
+    , m_styles(m_cells.size(), CellStyle::plain)
 {
 }
 
@@ -20,6 +21,20 @@ char32_t CellGrid::at(int column, int row) const
     return m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
 }
 
+CellStyle CellGrid::style_at(int column, int row) const
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return CellStyle::plain;
+    return m_styles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+}
+
+void CellGrid::set_style(int column, int row, CellStyle style)
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return;
+    m_styles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = style;
+}
+
 void CellGrid::set(int column, int row, char32_t glyph)
 {
     if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
@@ -27,10 +42,12 @@ void CellGrid::set(int column, int row, char32_t glyph)
     m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = glyph;
 }
 
-void CellGrid::put_text(int column, int row, const std::string& utf8)
+void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle style)
 {
-    for (const char32_t code_point : decode_utf8(utf8))
+    for (const char32_t code_point : decode_utf8(utf8)) {
+        set_style(column, row, style);
         set(column++, row, code_point);
+    }
 }
 
 void append_utf8(std::string& text, char32_t code_point)

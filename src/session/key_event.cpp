@@ -11,7 +11,7 @@ namespace apcs {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, Key>, 8> key_names{{
+constexpr std::array<std::pair<std::string_view, Key>, 12> key_names{{
     {"ENTER", Key::enter},
     {"ESC", Key::escape},
     {"SPACE", Key::space},
@@ -20,6 +20,10 @@ constexpr std::array<std::pair<std::string_view, Key>, 8> key_names{{
     {"UP", Key::up},
     {"DOWN", Key::down},
     {"BACKSPACE", Key::backspace},
+    {"TAB", Key::tab},
+    {"BTAB", Key::back_tab},
+    {"F1", Key::f1},
+    {"CTRL-L", Key::redraw},
 }};
 
 } // namespace
@@ -55,7 +59,7 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
             if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD) {
                 problem = Diagnostic{file_name, line_number,
                                      "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
-                                     "DOWN, BACKSPACE; found '" + std::string(token) + "'"};
+                                     "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L; found '" + std::string(token) + "'"};
                 stop = true;
                 return;
             }

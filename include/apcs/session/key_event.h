@@ -11,7 +11,7 @@ namespace apcs {
 
 // A key as the session sees it: the terminal maps digits, arrows and the keypad to these
 // (SPEC §7.3); `character` carries any other printable key.
-enum class Key { character, enter, escape, space, left, right, up, down, backspace };
+enum class Key { character, enter, escape, space, left, right, up, down, backspace, tab, back_tab, f1, redraw };
 
 struct KeyEvent {
     Key key = Key::character;
@@ -24,7 +24,7 @@ struct KeyEvent {
 
 // A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
 // literally; any other line holds tokens — a printable character, or ENTER, ESC, SPACE, LEFT,
-// RIGHT, UP, DOWN (BACKSPACE too); ';' starts a comment. Returns the events, or the first problem
+// RIGHT, UP, DOWN, BACKSPACE, TAB, BTAB (Shift-Tab), F1, CTRL-L (redraw); ';' starts a comment. Returns the events, or the first problem
 // with its line, named as `file_name`.
 [[nodiscard]] Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name);
 

@@ -26,6 +26,16 @@ struct SessionSettings {
     int inbetween_count = 12;
     Spacing spacing = Spacing::nearest;
     double step = 0.05; // staff step per key
+    // What an empty answer takes where the command line gave it (--theta, --phi, --delay,
+    // --slopes); else the thesis' example (30 40 200, 1 1).
+    std::optional<double> theta_degrees;
+    std::optional<double> phi_degrees;
+    std::optional<int> delay_ms;
+    std::optional<EndSlopes> slopes;
+    // The staff values of path files with three columns (--tension, --continuity, --bias, --accel).
+    StaffValues staff;
+    // Where the overlay of all frames goes as a PNG when the animation ends (--png), if anywhere.
+    std::optional<std::string> overlay_png;
 };
 
 // What the terminal shows now: the DOS text console or the graphics screen.
