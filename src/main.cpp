@@ -3,24 +3,10 @@
 #include "apcs/terminal/terminal_session.h"
 
 #include <clocale>
-#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
-#include <langinfo.h>
 #include <malloc.h>
-
-namespace {
-
-// --glyphs' default: braille where the locale speaks UTF-8, plain ASCII elsewhere.
-apcs::GlyphSet resolve_glyphs(apcs::GlyphSet chosen)
-{
-    if (chosen != apcs::GlyphSet::automatic)
-        return chosen;
-    return std::strcmp(nl_langinfo(CODESET), "UTF-8") == 0 ? apcs::GlyphSet::braille : apcs::GlyphSet::ascii;
-}
-
-} // namespace
 
 int main(int argc, char** argv)
 {
@@ -28,16 +14,14 @@ int main(int argc, char** argv)
     // Terminal is owned inside run_terminal_session). Exit status 1, as for bad input or a failed
     // write (SPEC §1 has no status of its own for it): the command did not do what it was asked.
     try {
+        // The locale decides the default glyphs and refuses those it cannot show (the session
+        // command's terminal_glyphs); curses needs it for wide characters.
         std::setlocale(LC_ALL, "");
         // Large buffers (key files, frames, file texts) come and go in a batch run; a fixed mmap
         // threshold hands each back to the system when freed instead of letting glibc keep it in
         // the heap, so peak memory is what is in use at once.
         mallopt(M_MMAP_THRESHOLD, 256 * 1024);
-        const apcs::TerminalSessionRunner terminal =
-            [](apcs::Session& session, const std::vector<apcs::KeyEvent>& scripted, apcs::GlyphSet glyphs,
-               std::vector<apcs::KeyEvent>& recorded, apcs::Diagnostic& problem) {
-                return apcs::run_terminal_session(session, scripted, resolve_glyphs(glyphs), recorded, problem);
-            };
+        const apcs::TerminalSessionRunner terminal = apcs::run_terminal_session;
         return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal));
     } catch (const std::bad_alloc&) {
         std::cerr << "apcs: out of memory\n";

@@ -92,7 +92,6 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
         return path;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
     const std::size_t samples = static_cast<std::size_t>(path.curve.samples_per_segment);
-    path.frames_freeze = static_cast<std::size_t>(inbetween_count) > path.curve.points.size() - 1;
 
     const std::vector<AccelerationSpan> spans = acceleration_spans(points);
     const bool exact = settings.spacing == Spacing::exact;
@@ -139,6 +138,10 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
             path.inbetweens.push_back(shown);
         }
     }
+    // With the thesis' nearest samples two in-betweens can fall on one sample: that frame repeats.
+    if (!exact)
+        for (std::size_t j = 1; j < path.inbetweens.size(); ++j)
+            path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
     return path;
 }
 

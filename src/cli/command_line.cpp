@@ -12,7 +12,9 @@
 #include <CLI/CLI.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <ostream>
+#include <string>
 
 namespace apcs {
 
@@ -87,7 +89,7 @@ void add_screen_options(CLI::App& command, CommonOptions& options)
             [&options](const std::string& name) {
                 options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
             },
-            "ascii, braille or blocks (default: braille under UTF-8, else ascii)")
+            "ascii, braille or blocks (default: braille in a UTF-8 locale on a terminal that shows it, else ascii)")
         ->check(CLI::IsMember({"ascii", "braille", "blocks"}));
     command.add_option("--step", options.step, "staff step per key (default 0.05)")
         ->check(finite_number & real_range(limits::staff_step));
@@ -104,6 +106,15 @@ void add_common_options(CLI::App& command, CommonOptions& options, std::vector<d
     command.add_option("--record", options.record, "record keystrokes to FILE");
     command.add_flag("--print", options.print, "write numbers to standard output");
     command.add_option("--out", options.out, "output folder");
+}
+
+// How often the option `name` was given, to the command or before it.
+std::size_t given_count(const CLI::App& app, const std::string& name)
+{
+    std::size_t count = app.count(name);
+    for (const CLI::App* command : app.get_subcommands())
+        count += command->count(name);
+    return count;
 }
 
 ExitStatus not_built(const std::string& command, std::ostream& err)
@@ -171,6 +182,8 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     }
     if (slopes.size() == 2)
         options.path.slopes = {slopes[0], slopes[1]};
+    options.given = {given_count(app, "--theta") > 0, given_count(app, "--phi") > 0, given_count(app, "--delay") > 0,
+                     slopes.size() == 2};
 
     if (path->parsed())
         return to_int(run_path_command(path_file, options, out, err));

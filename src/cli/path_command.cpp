@@ -36,7 +36,7 @@ std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, co
 GraphicsScreen draw_path_file_screen(const ControlPoints& points, const EvaluatedPath& path, ViewAngles angles)
 {
     const PathScreenContent content = path_screen_content(points, path);
-    return draw_path_screen(content, path_screen_scene(content).fit(angles, layout::drawing_area));
+    return draw_path_screen(content, path_screen_scene(content).fit(angles, layout::view_area));
 }
 
 ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,

@@ -3,7 +3,11 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 
+#include <cctype>
+#include <cstdlib>
+#include <langinfo.h>
 #include <ostream>
+#include <string_view>
 #include <unistd.h>
 
 namespace apcs {
@@ -13,7 +17,9 @@ namespace {
 std::string screen_text(const Session& session, GlyphSet glyphs)
 {
     const SessionScreen screen = session.screen();
-    const CellGrid grid = screen.graphics ? render_cells(screen.picture, {80, 25}, glyphs) : screen.text;
+    const CellGrid grid = screen.graphics
+                              ? render_cells(screen.picture, {text_screen_columns, text_screen_rows}, glyphs)
+                              : screen.text;
     std::string text;
     for (int row = 0; row < grid.rows(); ++row) {
         std::string line = grid.row_text(row);
@@ -28,7 +34,79 @@ void print_step(const Session& session, GlyphSet glyphs, std::ostream& out)
     out << "--- " << phase_name(session.phase()) << '\n' << screen_text(session, glyphs);
 }
 
+std::string_view glyph_set_name(GlyphSet glyphs)
+{
+    switch (glyphs) {
+    case GlyphSet::braille: return "braille";
+    case GlyphSet::blocks: return "blocks";
+    case GlyphSet::ascii: return "ascii";
+    case GlyphSet::automatic: break;
+    }
+    return "automatic";
+}
+
+// The terminal's type, "" when TERM is unset.
+std::string_view term_of_environment()
+{
+    const char* term = std::getenv("TERM");
+    return term == nullptr ? std::string_view() : std::string_view(term);
+}
+
 } // namespace
+
+bool is_utf8_codeset(std::string_view codeset)
+{
+    std::string letters;
+    for (const char c : codeset)
+        if (c != '-' && c != '_')
+            letters += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return letters == "utf8";
+}
+
+GlyphSet default_glyphs(std::string_view codeset, std::string_view term)
+{
+    const bool linux_console = term == "linux" || term.starts_with("linux-");
+    const bool dec_terminal =
+        term.size() > 2 && term.starts_with("vt") && std::isdigit(static_cast<unsigned char>(term[2])) != 0;
+    const bool shows_braille = !term.empty() && !linux_console && !dec_terminal && term != "dumb";
+    return is_utf8_codeset(codeset) && shows_braille ? GlyphSet::braille : GlyphSet::ascii;
+}
+
+Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term)
+{
+    if (asked == GlyphSet::automatic)
+        return default_glyphs(codeset, term);
+    if (asked != GlyphSet::ascii && !is_utf8_codeset(codeset))
+        return Diagnostic{"apcs", 0,
+                          "--glyphs " + std::string(glyph_set_name(asked)) +
+                              " needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii"};
+    return asked;
+}
+
+SessionSettings session_settings(const CommonOptions& options)
+{
+    SessionSettings settings;
+    settings.samples_per_segment = options.path.samples_per_segment;
+    settings.inbetween_count = options.path.inbetween_count;
+    settings.spacing = options.path.spacing;
+    settings.step = options.step;
+    if (options.given.theta)
+        settings.theta_degrees = options.view.theta_degrees;
+    if (options.given.phi)
+        settings.phi_degrees = options.view.phi_degrees;
+    if (options.given.delay)
+        settings.delay_ms = options.delay_ms;
+    if (options.given.slopes)
+        settings.slopes = options.path.slopes;
+    settings.staff = options.staff;
+    if (options.png) {
+        // The session writes in its folder; a name typed relative to where apcs started stays so.
+        const std::filesystem::path png =
+            options.workdir.empty() || options.png->is_absolute() ? *options.png : std::filesystem::absolute(*options.png);
+        settings.overlay_png = png.string();
+    }
+    return settings;
+}
 
 std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
                                            std::ostream& out)
@@ -75,24 +153,27 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
         return ExitStatus::terminal_problem;
     }
+    GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
+    if (!headless) {
+        const Expected<GlyphSet> shown = terminal_glyphs(options.glyphs, nl_langinfo(CODESET), term_of_environment());
+        if (!shown) {
+            err << shown.error().to_string() << '\n';
+            return ExitStatus::bad_usage;
+        }
+        glyphs = *shown;
+    }
     FolderFiles files(folder);
     files.log("session started");
-    SessionSettings settings;
-    settings.samples_per_segment = options.path.samples_per_segment;
-    settings.inbetween_count = options.path.inbetween_count;
-    settings.spacing = options.path.spacing;
-    settings.step = options.step;
-    Session session(settings, files);
+    Session session(session_settings(options), files);
     std::vector<KeyEvent> recorded;
     ExitStatus status = ExitStatus::success;
     if (headless) {
-        const GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
         recorded = run_headless_session(session, scripted, glyphs, out);
         if (!session.finished())
             err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     } else {
         Diagnostic problem;
-        status = terminal(session, scripted, options.glyphs, recorded, problem);
+        status = terminal(session, scripted, glyphs, recorded, problem);
         if (status == ExitStatus::terminal_problem) {
             err << problem.to_string() << '\n';
             return ExitStatus::terminal_problem;

@@ -16,9 +16,10 @@ namespace {
 constexpr int ascii_pool_columns = 3;
 constexpr int ascii_pool_rows = 7;
 
-// ASCII candidates in order of preference on equal cost: line-like symbols first, so that a thin
-// stroke becomes a stroke. Letters other than these shape-like few read as words, not lines.
-constexpr std::u32string_view ascii_preference = U".-|/\\_'`,:;=+x<>^v()[]!\"*#oXLJTVY7{}%&@$?";
+// ASCII candidates in order of preference on equal cost: line-like symbols only, so that a thin
+// stroke becomes a stroke and nothing reads as a mark. The marks' characters (x X o O * > and the
+// digits, SPEC §7.2), letters and blobs such as # @ $ % & ? are never used for line shapes.
+constexpr std::u32string_view ascii_preference = U".-|/\\_'`,:;=+^()[]!\"{}";
 
 // Whether any pixel of row y in [x0, x1) is lit, testing whole bytes at a time.
 bool any_lit(const Bitmap& bitmap, int y, int x0, int x1)

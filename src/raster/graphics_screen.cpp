@@ -4,15 +4,97 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
+#include <map>
+#include <utility>
 
 namespace apcs {
+
+char32_t mark_glyph(MarkKind kind, GlyphSet glyphs)
+{
+    const bool ascii = glyphs == GlyphSet::ascii;
+    switch (kind) {
+    case MarkKind::control_point: return U'x';
+    case MarkKind::inbetween: return ascii ? U'*' : U'\u2022';
+    case MarkKind::arrow: return ascii ? U'>' : U'\u2192';
+    case MarkKind::staff_value: return U'O';
+    }
+    return U'?';
+}
+
+namespace {
+
+// Half the height of the staff's value marker, in pixels.
+constexpr int staff_marker_half_height = 4;
+
+void draw_mark_pixels(Painter& painter, const PixelMark& mark)
+{
+    const PixelPoint at = mark.at;
+    switch (mark.kind) {
+    case MarkKind::control_point:
+        painter.cross_marker(at);
+        if (mark.style == CellStyle::reverse)
+            painter.rectangle({at.x - 4, at.y - 4, at.x + 5, at.y + 5});
+        return;
+    case MarkKind::inbetween:
+        painter.dot_marker(at);
+        return;
+    case MarkKind::arrow:
+        // Pointing right at `at` from the left, as the character stands left of its point.
+        painter.line({at.x - 16, at.y}, {at.x - 5, at.y});
+        painter.line({at.x - 8, at.y - 3}, {at.x - 5, at.y});
+        painter.line({at.x - 8, at.y + 3}, {at.x - 5, at.y});
+        return;
+    case MarkKind::staff_value:
+        for (const int side : {-1, 1})
+            painter.line({at.x + side, at.y - staff_marker_half_height}, {at.x + side, at.y + staff_marker_half_height});
+        return;
+    }
+}
+
+// The order marks are laid over the cells: a later kind hides an earlier one in the same cell.
+int mark_layer(MarkKind kind)
+{
+    switch (kind) {
+    case MarkKind::inbetween: return 0;
+    case MarkKind::staff_value: return 1;
+    case MarkKind::arrow: return 2;
+    case MarkKind::control_point: return 3;
+    }
+    return 0;
+}
+
+void lay_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area, GlyphSet glyphs)
+{
+    std::map<std::pair<int, int>, int> inbetweens_in_cell;
+    for (int layer = 0; layer <= 3; ++layer)
+        for (const PixelMark& mark : screen.marks) {
+            if (mark_layer(mark.kind) != layer || !screen.bitmap.contains(mark.at.x, mark.at.y))
+                continue;
+            int column = cell_of_pixel(mark.at.x, screen.bitmap.width(), area.columns);
+            const int row = cell_of_pixel(mark.at.y, screen.bitmap.height(), area.rows);
+            if (mark.kind == MarkKind::arrow)
+                column = std::max(column - 1, 0);
+            char32_t glyph = mark_glyph(mark.kind, glyphs);
+            if (mark.kind == MarkKind::inbetween) {
+                const int count = ++inbetweens_in_cell[{column, row}];
+                if (count > 1)
+                    glyph = U'0' + static_cast<char32_t>(std::min(count, 9));
+            }
+            grid.set(column, row, glyph);
+            grid.set_style(column, row, mark.style);
+        }
+}
+
+} // namespace
 
 Bitmap render_raster(const GraphicsScreen& screen)
 {
     Bitmap raster = screen.bitmap;
     Painter painter(raster);
+    for (const PixelMark& mark : screen.marks)
+        draw_mark_pixels(painter, mark);
     for (const TextLine& line : screen.text)
-        painter.text({line.column * Font::cell_width, line.row * Font::cell_height}, line.text);
+        painter.text({line.column * Font::cell_width, hercules::text_row_top(line.row)}, line.text);
     return raster;
 }
 
@@ -25,19 +107,16 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
-    for (const PixelMark& mark : screen.marks)
-        if (screen.bitmap.contains(mark.at.x, mark.at.y))
-            grid.set(cell_of_pixel(mark.at.x, screen.bitmap.width(), area.columns),
-                     cell_of_pixel(mark.at.y, screen.bitmap.height(), area.rows), mark.glyph);
+    lay_marks(grid, screen, area, glyphs);
     for (const TextLine& line : screen.text) {
         // A text cell goes where the centre of its 9x14 pixels falls, so that text lines up with
         // what the raster draws beside it (a staff line and its label) at any area size.
         const int centre_x = line.column * Font::cell_width + Font::cell_width / 2;
-        const int centre_y = line.row * Font::cell_height + Font::cell_height / 2;
+        const int centre_y = hercules::text_row_top(line.row) + Font::cell_height / 2;
         const int column = cell_of_pixel(centre_x, screen.bitmap.width(), area.columns);
         const int row = std::min(cell_of_pixel(centre_y, screen.bitmap.height(), area.rows), area.rows - 1);
         // Text replaces the raster glyphs of the cells it covers.
-        grid.put_text(column, row, line.text);
+        grid.put_text(column, row, line.text, line.style);
     }
     return grid;
 }

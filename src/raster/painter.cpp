@@ -27,14 +27,15 @@ void apply(Bitmap& target, int x, int y, DrawMode mode)
 }
 
 // Liang–Barsky: clips the segment to [low, high] in both axes; false when nothing is left.
-bool clip_segment(double& x0, double& y0, double& x1, double& y1, double x_high, double y_high)
+bool clip_segment(double& x0, double& y0, double& x1, double& y1, double x_low, double y_low, double x_high,
+                  double y_high)
 {
     double enter = 0.0;
     double leave = 1.0;
     const double dx = x1 - x0;
     const double dy = y1 - y0;
     const double p[4] = {-dx, dx, -dy, dy};
-    const double q[4] = {x0, x_high - x0, y0, y_high - y0};
+    const double q[4] = {x0 - x_low, x_high - x0, y0 - y_low, y_high - y0};
     for (int i = 0; i < 4; ++i) {
         if (p[i] == 0.0) {
             if (q[i] < 0.0)
@@ -75,7 +76,8 @@ void Painter::each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const
     double y0 = from.y;
     double x1 = to.x;
     double y1 = to.y;
-    if (!clip_segment(x0, y0, x1, y1, m_target.width() - 1, m_target.height() - 1))
+    const PixelRect box = bounds();
+    if (!clip_segment(x0, y0, x1, y1, box.left, box.top, box.right - 1, box.bottom - 1))
         return;
     int x = static_cast<int>(std::lround(x0));
     int y = static_cast<int>(std::lround(y0));
@@ -102,7 +104,21 @@ void Painter::each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const
     }
 }
 
-void Painter::pixel(PixelPoint point, DrawMode mode) { apply(m_target, point.x, point.y, mode); }
+PixelRect Painter::bounds() const
+{
+    const PixelRect whole{0, 0, m_target.width(), m_target.height()};
+    if (!m_clip)
+        return whole;
+    return {std::max(whole.left, m_clip->left), std::max(whole.top, m_clip->top), std::min(whole.right, m_clip->right),
+            std::min(whole.bottom, m_clip->bottom)};
+}
+
+void Painter::pixel(PixelPoint point, DrawMode mode)
+{
+    const PixelRect box = bounds();
+    if (point.x >= box.left && point.x < box.right && point.y >= box.top && point.y < box.bottom)
+        apply(m_target, point.x, point.y, mode);
+}
 
 void Painter::line(PixelPoint from, PixelPoint to, DrawMode mode)
 {

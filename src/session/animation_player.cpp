@@ -19,7 +19,7 @@ AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::a
     : m_frames(std::move(frames))
     , m_structure(std::move(structure))
     , m_key_names(std::move(key_names))
-    , m_view(ViewScene{}.add(m_frames).fit(angles, layout::drawing_area))
+    , m_view(ViewScene{}.add(m_frames).fit(angles, layout::view_area))
     , m_log(log)
     , m_phase(m_frames.frame_count() == 0 ? SessionPhase::animation_done : SessionPhase::animating)
 {
@@ -29,7 +29,7 @@ AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::a
 
 KeyContext AnimationPlayer::key_context() const
 {
-    return m_phase == SessionPhase::animating ? KeyContext::animation : KeyContext::any_key;
+    return m_phase == SessionPhase::animating ? KeyContext::animation : KeyContext::any_key_graphics;
 }
 
 AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
@@ -85,9 +85,10 @@ GraphicsScreen AnimationPlayer::view() const
     const bool all_frames = m_phase == SessionPhase::overlay;
     const std::size_t first = all_frames ? 0 : m_frame;
     const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
+    Painter inside(screen.bitmap, layout::inside_boundary);
     for (std::size_t k = first; k < last; ++k)
         for (const auto& polyline : m_structure.polylines(m_frames.frame(k)))
-            draw_world_polyline(painter, polyline, m_view);
+            draw_world_polyline(inside, polyline, m_view);
     std::string message;
     if (m_phase == SessionPhase::animating)
         message = frame_label() + (m_paused ? "  (paused)" : "");

@@ -21,7 +21,7 @@ FigureCurve curve(const std::string& label, StaffValues staff, LineStyle style)
     return {label, zigzag(staff), style};
 }
 
-constexpr PixelRect figure_area{0, 2 * 14, 720, 21 * 14};
+constexpr PixelRect figure_area{0, hercules::text_row_top(2), hercules::screen_width, hercules::text_row_top(21)};
 constexpr int legend_row = 22;
 
 const char* style_name(LineStyle style)

@@ -24,6 +24,12 @@ Expected<DatFile> FolderFiles::read_dat(const std::string& name, std::size_t min
     return parse_dat(*text, name, minimum_points);
 }
 
+bool FolderFiles::exists(const std::string& name) const
+{
+    std::error_code error;
+    return std::filesystem::exists(std::filesystem::symlink_status(m_folder / name, error));
+}
+
 void FolderFiles::protect_key_file(const std::string& name) { m_key_files.protect(m_folder / name); }
 
 std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std::string& content)

@@ -1,5 +1,7 @@
 #include "apcs/session/key_map.h"
 
+#include "apcs/raster/cell_grid.h"
+
 #include <algorithm>
 #include <array>
 #include <vector>
@@ -12,59 +14,139 @@ using Pattern = KeyPattern;
 using Context = KeyContext;
 namespace cmd = command;
 
-constexpr std::string_view key_frames_on_off = "K key frames on/off";
-
-constexpr std::array bindings{
-    // Text prompts: every printable key is typed; Esc clears the line (SPEC §7.3).
-    KeyBinding{Context::text_line, Pattern::of(Key::enter), cmd::SubmitLine{}, ""},
-    KeyBinding{Context::text_line, Pattern::of(Key::backspace), cmd::EraseCharacter{}, ""},
-    KeyBinding{Context::text_line, Pattern::of(Key::escape), cmd::ClearLine{}, ""},
-    KeyBinding{Context::text_line, Pattern::of(Key::space), cmd::TypeCharacter{U' '}, ""},
-    KeyBinding{Context::text_line, Pattern::printable(), cmd::TypeCharacter{}, ""},
-
-    KeyBinding{Context::yes_to_go_on, Pattern::letter(U'Y'), cmd::Yes{}, ""},
-    KeyBinding{Context::enter_to_go_on, Pattern::of(Key::enter), cmd::Continue{}, ""},
-    KeyBinding{Context::any_key, Pattern::any_key(), cmd::Continue{}, ""},
-
-    // Check_GorL_Control: the keypad's 8 and 2, or the arrows on them.
-    KeyBinding{Context::control_choice, Pattern::exactly(U'8'), cmd::ChooseGlobal{}, ""},
-    KeyBinding{Context::control_choice, Pattern::of(Key::up), cmd::ChooseGlobal{}, ""},
-    KeyBinding{Context::control_choice, Pattern::exactly(U'2'), cmd::ChooseLocal{}, ""},
-    KeyBinding{Context::control_choice, Pattern::of(Key::down), cmd::ChooseLocal{}, ""},
-    KeyBinding{Context::control_choice, Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, key_frames_on_off},
-
-    // Scan_Control_Point: the message line says what 4/6 and Enter do.
-    KeyBinding{Context::region_pick, Pattern::exactly(U'4'), cmd::ArrowMove{-1}, ""},
-    KeyBinding{Context::region_pick, Pattern::of(Key::left), cmd::ArrowMove{-1}, ""},
-    KeyBinding{Context::region_pick, Pattern::exactly(U'6'), cmd::ArrowMove{+1}, ""},
-    KeyBinding{Context::region_pick, Pattern::of(Key::right), cmd::ArrowMove{+1}, ""},
-    KeyBinding{Context::region_pick, Pattern::of(Key::enter), cmd::Accept{}, ""},
-    KeyBinding{Context::region_pick, Pattern::of(Key::escape), cmd::Back{}, ""},
-    KeyBinding{Context::region_pick, Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, key_frames_on_off},
-
-    // Scan_Parameters / tnextpixel (thesis fig. 3.1.5).
-    KeyBinding{Context::staff, Pattern::exactly(U'4'), cmd::StaffStep{-1}, "4/6 step"},
-    KeyBinding{Context::staff, Pattern::of(Key::left), cmd::StaffStep{-1}, ""},
-    KeyBinding{Context::staff, Pattern::exactly(U'6'), cmd::StaffStep{+1}, "4/6 step"},
-    KeyBinding{Context::staff, Pattern::of(Key::right), cmd::StaffStep{+1}, ""},
-    KeyBinding{Context::staff, Pattern::letter(U'J'), cmd::StaffStep{-3}, "J/L 3 steps"},
-    KeyBinding{Context::staff, Pattern::letter(U'L'), cmd::StaffStep{+3}, "J/L 3 steps"},
-    KeyBinding{Context::staff, Pattern::of(Key::enter), cmd::Accept{}, "Enter accept"},
-    KeyBinding{Context::staff, Pattern::of(Key::escape), cmd::Keep{}, "Esc keep"},
-    KeyBinding{Context::staff, Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K key frames"},
-
-    // Ask_Adjusting: Y adjusts again, anything else accepts the path.
-    KeyBinding{Context::adjust_again, Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, key_frames_on_off},
-    KeyBinding{Context::adjust_again, Pattern::letter(U'Y'), cmd::Yes{}, ""},
-    KeyBinding{Context::adjust_again, Pattern::any_key(), cmd::No{}, ""},
-
-    // Showing_Animation.
-    KeyBinding{Context::animation, Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop"},
-    KeyBinding{Context::animation, Pattern::of(Key::space), cmd::Pause{}, "Space pause"},
-    KeyBinding{Context::animation, Pattern::letter(U'R'), cmd::Replay{}, "R replay"},
+// A row without its context: the table below gives each context its rows.
+struct Row {
+    Pattern pattern;
+    Command command;
+    std::string_view help;
+    std::string_view meaning;
 };
 
+// The keys every step of graphics mode shares (SPEC §3, §7.3).
+constexpr std::array graphics_rows{
+    Row{Pattern::exactly(U'?'), cmd::ShowHelp{}, "? help", "this help"},
+    Row{Pattern::of(Key::f1), cmd::ShowHelp{}, "", "this help"},
+    Row{Pattern::letter(U'P'), cmd::SavePicture{}, "", "write the screen as apcsNNN.png in the work folder"},
+};
+
+std::vector<KeyBinding> make_bindings()
+{
+    std::vector<KeyBinding> table;
+    const auto add = [&](Context context, const std::vector<Row>& rows) {
+        for (const Row& row : rows)
+            table.push_back({context, row.pattern, row.command, row.help, row.meaning});
+    };
+    const auto add_graphics_rows = [&](Context context, std::string_view quit_meaning) {
+        add(context, std::vector<Row>(graphics_rows.begin(), graphics_rows.end()));
+        add(context, {Row{Pattern::letter(U'Q'), cmd::Quit{}, "q quit", quit_meaning}});
+    };
+    const Row help_key{Pattern::of(Key::f1), cmd::ShowHelp{}, "", "this help"};
+    const Row question_mark{Pattern::exactly(U'?'), cmd::ShowHelp{}, "", "this help"};
+    const Row quit_now{Pattern::letter(U'Q'), cmd::Quit{}, "", "end APCS; every file written so far stays"};
+    const Row key_frames{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K key frames on/off",
+                         "show or hide both key frames, dotted, beside the path"};
+    constexpr std::string_view quit_path = "end APCS without saving this path (asks first)";
+
+    // Text prompts: every printable key is typed; Esc clears the line (SPEC §7.3).
+    add(Context::text_line,
+        {Row{Pattern::of(Key::enter), cmd::SubmitLine{}, "", "answer (an empty line takes the value in brackets)"},
+         Row{Pattern::of(Key::backspace), cmd::EraseCharacter{}, "", "erase the last character"},
+         Row{Pattern::of(Key::escape), cmd::ClearLine{}, "", "clear the line"},
+         Row{Pattern::of(Key::f1), cmd::ShowHelp{}, "", "this help (so does the answer ? alone)"},
+         Row{Pattern::of(Key::space), cmd::TypeCharacter{U' '}, "", ""},
+         Row{Pattern::printable(), cmd::TypeCharacter{}, "", "typed into the answer"}});
+    add(Context::yes_to_go_on,
+        {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "adjust the next path"}, help_key, question_mark, quit_now});
+    add(Context::enter_to_go_on,
+        {Row{Pattern::of(Key::enter), cmd::Continue{}, "", "stop adjusting: surface fitting writes the in-betweens"},
+         help_key, question_mark, quit_now});
+    add(Context::any_key, {help_key, question_mark, quit_now, Row{Pattern::any_key(), cmd::Continue{}, "", "go on"}});
+    add(Context::any_key_graphics, std::vector<Row>(graphics_rows.begin(), graphics_rows.end()));
+    add(Context::any_key_graphics, {quit_now, Row{Pattern::any_key(), cmd::Continue{}, "", "go on"}});
+
+    // Check_GorL_Control: the keypad's 8 and 2, or the arrows on them.
+    add(Context::control_choice,
+        {Row{Pattern::exactly(U'8'), cmd::ChooseGlobal{}, "", "global control: the staff adjusts the whole path"},
+         Row{Pattern::of(Key::up), cmd::ChooseGlobal{}, "", "global control: the staff adjusts the whole path"},
+         Row{Pattern::exactly(U'2'), cmd::ChooseLocal{}, "", "local control: pick a region of control points"},
+         Row{Pattern::of(Key::down), cmd::ChooseLocal{}, "", "local control: pick a region of control points"},
+         key_frames});
+    add_graphics_rows(Context::control_choice, quit_path);
+
+    // Scan_Control_Point: the message line says what 4/6 and Enter do.
+    add(Context::region_pick,
+        {Row{Pattern::exactly(U'4'), cmd::ArrowMove{-1}, "", "the arrow to the previous control point"},
+         Row{Pattern::of(Key::left), cmd::ArrowMove{-1}, "", "the arrow to the previous control point"},
+         Row{Pattern::exactly(U'6'), cmd::ArrowMove{+1}, "", "the arrow to the next control point"},
+         Row{Pattern::of(Key::right), cmd::ArrowMove{+1}, "", "the arrow to the next control point"},
+         Row{Pattern::of(Key::enter), cmd::Accept{}, "", "pick the control point the arrow points at"},
+         Row{Pattern::of(Key::escape), cmd::Back{}, "", "one step back"}, key_frames});
+    add_graphics_rows(Context::region_pick, quit_path);
+
+    // Scan_Parameters / tnextpixel (thesis fig. 3.1.5).
+    add(Context::staff,
+        {Row{Pattern::exactly(U'4'), cmd::StaffStep{-1}, "4/6 step", "the value one step left"},
+         Row{Pattern::of(Key::left), cmd::StaffStep{-1}, "", "the value one step left"},
+         Row{Pattern::exactly(U'6'), cmd::StaffStep{+1}, "4/6 step", "the value one step right"},
+         Row{Pattern::of(Key::right), cmd::StaffStep{+1}, "", "the value one step right"},
+         Row{Pattern::letter(U'J'), cmd::StaffStep{-3}, "J/L 3 steps", "three steps left (Shift-J)"},
+         Row{Pattern::letter(U'L'), cmd::StaffStep{+3}, "J/L 3 steps", "three steps right (Shift-L)"},
+         Row{Pattern::of(Key::enter), cmd::Accept{}, "Enter accept", "accept the value, go to the next line"},
+         Row{Pattern::of(Key::escape), cmd::Keep{}, "Esc keep", "leave the line as it was, go to the next"},
+         Row{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K key frames",
+             "show or hide both key frames, dotted, beside the path"}});
+    add_graphics_rows(Context::staff, quit_path);
+
+    // Ask_Adjusting: Y again; N or Enter accepts the path; other keys are not an answer.
+    add(Context::adjust_again,
+        {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "adjust the path again"},
+         Row{Pattern::letter(U'N'), cmd::No{}, "", "accept the path: it is written back with its values"},
+         Row{Pattern::of(Key::enter), cmd::No{}, "", "accept the path: it is written back with its values"},
+         key_frames});
+    add_graphics_rows(Context::adjust_again, quit_path);
+
+    // Showing_Animation.
+    add(Context::animation,
+        {Row{Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop", "stop the animation"},
+         Row{Pattern::of(Key::space), cmd::Pause{}, "Space pause", "pause, or go on"},
+         Row{Pattern::letter(U'R'), cmd::Replay{}, "R replay", "replay from KEY1"}});
+    add_graphics_rows(Context::animation, "end APCS; every file written so far stays");
+
+    add(Context::quit_question,
+        {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "end APCS; the path shown is not saved"},
+         Row{Pattern::letter(U'N'), cmd::No{}, "", "go on adjusting"},
+         Row{Pattern::of(Key::enter), cmd::No{}, "", "go on adjusting"}});
+    add(Context::help_screen, {Row{Pattern::any_key(), cmd::Continue{}, "", "close this help"}});
+    return table;
+}
+
+const std::vector<KeyBinding>& bindings()
+{
+    static const std::vector<KeyBinding> table = make_bindings();
+    return table;
+}
+
 char32_t upper_case(char32_t character) { return character >= U'a' && character <= U'z' ? character - 32 : character; }
+
+std::string_view key_name(Key key)
+{
+    switch (key) {
+    case Key::character: return "a character";
+    case Key::enter: return "Enter";
+    case Key::escape: return "Esc";
+    case Key::space: return "Space";
+    case Key::left: return "Left";
+    case Key::right: return "Right";
+    case Key::up: return "Up";
+    case Key::down: return "Down";
+    case Key::backspace: return "Backspace";
+    case Key::tab: return "Tab";
+    case Key::back_tab: return "Shift-Tab";
+    case Key::f1: return "F1";
+    case Key::redraw: return "Ctrl-L";
+    }
+    return "";
+}
 
 } // namespace
 
@@ -80,11 +162,11 @@ bool KeyPattern::matches(const KeyEvent& event) const
     return false;
 }
 
-std::span<const KeyBinding> key_bindings() { return bindings; }
+std::span<const KeyBinding> key_bindings() { return bindings(); }
 
 std::optional<Command> command_for(KeyContext context, const KeyEvent& event)
 {
-    for (const KeyBinding& binding : bindings) {
+    for (const KeyBinding& binding : bindings()) {
         if (binding.context != context || !binding.pattern.matches(event))
             continue;
         Command command = binding.command;
@@ -98,7 +180,7 @@ std::optional<Command> command_for(KeyContext context, const KeyEvent& event)
 std::string key_help(KeyContext context)
 {
     std::vector<std::string_view> shown;
-    for (const KeyBinding& binding : bindings)
+    for (const KeyBinding& binding : bindings())
         if (binding.context == context && !binding.help.empty() &&
             std::find(shown.begin(), shown.end(), binding.help) == shown.end())
             shown.push_back(binding.help);
@@ -106,6 +188,45 @@ std::string key_help(KeyContext context)
     for (const std::string_view words : shown)
         help += (help.empty() ? "" : "  ") + std::string(words);
     return help;
+}
+
+std::string key_label(const KeyPattern& pattern)
+{
+    switch (pattern.kind) {
+    case KeyPattern::Kind::key: return std::string(key_name(pattern.key));
+    case KeyPattern::Kind::character:
+    case KeyPattern::Kind::letter: {
+        std::string label;
+        append_utf8(label, pattern.character);
+        return label;
+    }
+    case KeyPattern::Kind::printable: return "any character";
+    case KeyPattern::Kind::any: return "any other key";
+    }
+    return "";
+}
+
+std::vector<std::string> key_help_lines(KeyContext context)
+{
+    // Keys of one meaning share a line, in the order the table first names the meaning.
+    std::vector<std::pair<std::string_view, std::string>> lines;
+    for (const KeyBinding& binding : bindings()) {
+        if (binding.context != context || binding.meaning.empty())
+            continue;
+        const auto same = std::find_if(lines.begin(), lines.end(),
+                                       [&](const auto& line) { return line.first == binding.meaning; });
+        if (same == lines.end())
+            lines.emplace_back(binding.meaning, key_label(binding.pattern));
+        else
+            same->second += ", " + key_label(binding.pattern);
+    }
+    std::vector<std::string> text;
+    for (const auto& [meaning, keys] : lines) {
+        std::string line = "  " + keys;
+        line.resize(std::max<std::size_t>(line.size() + 2, 18), ' ');
+        text.push_back(line + std::string(meaning));
+    }
+    return text;
 }
 
 } // namespace apcs

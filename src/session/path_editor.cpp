@@ -23,7 +23,7 @@ ViewTransform initial_view(const PathEditor::Setup& setup, const EvaluatedPath& 
 {
     PathScreenContent shown = path_screen_content(setup.points, path);
     shown.key_frame_polylines = setup.key_frame_polylines;
-    return path_screen_scene(shown).fit(setup.view_angles, layout::drawing_area);
+    return path_screen_scene(shown).fit(setup.view_angles, layout::view_area);
 }
 
 } // namespace
@@ -162,11 +162,23 @@ std::string PathEditor::message() const
     case SessionPhase::choose_control: return std::string(text::choose_control);
     case SessionPhase::pick_region_first: return std::string(text::pick_first);
     case SessionPhase::pick_region_last: return std::string(text::pick_last);
-    case SessionPhase::staff:
-        return m_setup.path_name + ": " + std::string(staff_line_name(m_line)) +
-               (m_evaluated.frames_freeze ? "  (" + std::string(text::frames_freeze) + ")" : "");
+    case SessionPhase::staff: return staff_message();
     default: return std::string(text::ask_again);
     }
+}
+
+std::string PathEditor::staff_message() const
+{
+    const std::string line(staff_line_name(m_line));
+    // A path of two control points has no interior one, where t, c and b act: say so, or the
+    // animator sees nothing move and cannot tell why.
+    if (m_setup.points.size() == 2 && m_line != StaffLine::acceleration)
+        return line + std::string(text::no_interior_points);
+    std::string message = m_setup.path_name + ": " + line + "  control points " + std::to_string(m_region.first + 1) +
+                          " to " + std::to_string(m_region.last + 1) + " of " + std::to_string(m_setup.points.size());
+    if (m_evaluated.frames_freeze)
+        message += "  (" + std::string(text::frames_freeze) + ")";
+    return message;
 }
 
 GraphicsScreen PathEditor::view() const

@@ -1,6 +1,7 @@
 #include "apcs/session/path_screen.h"
 
 #include "apcs/raster/painter.h"
+#include "apcs/geometry/hercules.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/world_drawing.h"
 
@@ -45,15 +46,13 @@ void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenConten
         const int y = layout::staff_line_y(index);
         const int row = layout::first_staff_row + index;
         const bool active = content.active_line == line;
-        screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(line))});
+        screen.text.push_back({0, row, active ? ">" : " "});
+        screen.text.push_back({1, row, std::string(staff_line_name(line)), active ? CellStyle::reverse : CellStyle::plain});
         painter.line({layout::staff_left, y}, {layout::staff_right, y});
         for (const double tick : {-1.0, 0.0, 1.0})
             painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},
                          {layout::staff_x(tick), y + layout::staff_tick_half_height});
-        const int marker = layout::staff_x(content.staff[line]);
-        painter.line({marker - 1, y - layout::staff_marker_half_height}, {marker - 1, y + layout::staff_marker_half_height});
-        painter.line({marker + 1, y - layout::staff_marker_half_height}, {marker + 1, y + layout::staff_marker_half_height});
-        screen.marks.push_back({{marker, y}, U'O'});
+        screen.marks.push_back({{layout::staff_x(content.staff[line]), y}, MarkKind::staff_value});
         screen.text.push_back({layout::staff_value_column, row, format_staff_value(content.staff[line])});
     }
 }
@@ -73,21 +72,31 @@ void draw_dotted(Painter& painter, const std::vector<Vec3>& polyline, const View
     }
 }
 
-// Draw_Ani_Path: the in-betweens the path will show, each a small square on the curve.
-void draw_ani_path(Painter& painter, const EvaluatedPath& path, const ViewTransform& view)
+// Draw_Ani_Path: a mark at every in-between the path will show.
+void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const ViewTransform& view)
 {
     for (const Inbetween& inbetween : path.inbetweens)
-        painter.dot_marker(view.to_device(inbetween.position).rounded());
+        screen.marks.push_back({view.to_device(inbetween.position).rounded(), MarkKind::inbetween});
 }
 
-// Pre_Draw: every control point marked with an x.
-void pre_draw(Painter& painter, GraphicsScreen& screen, std::span<const ControlPoint> points, const ViewTransform& view)
+// Pre_Draw: every control point marked with an x; those of the picked region in reverse video.
+void pre_draw(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
 {
-    for (const ControlPoint& point : points) {
-        const PixelPoint centre = view.to_device(point.position).rounded();
-        painter.cross_marker(centre);
-        screen.marks.push_back({centre, U'x'});
+    for (std::size_t k = 0; k < content.control_points.size(); ++k) {
+        const bool picked = content.region && k >= content.region->first && k <= content.region->second;
+        screen.marks.push_back({view.to_device(content.control_points[k].position).rounded(), MarkKind::control_point,
+                                picked ? CellStyle::reverse : CellStyle::plain});
     }
+}
+
+// The arrow of Scan_Control_Point: beside its control point, or at the top-left before it moves.
+void draw_arrow(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
+{
+    if (content.arrow_at && *content.arrow_at < content.control_points.size())
+        screen.marks.push_back(
+            {view.to_device(content.control_points[*content.arrow_at].position).rounded(), MarkKind::arrow});
+    else if (content.arrow_home)
+        screen.marks.push_back({{2 * hercules::cell_width, hercules::text_row_top(1)}, MarkKind::arrow});
 }
 
 } // namespace
@@ -98,26 +107,16 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
     Painter painter(screen.bitmap);
     // Make_Boundary.
     painter.rectangle(layout::drawing_area);
+    Painter inside(screen.bitmap, layout::inside_boundary);
     for (const auto& polyline : content.key_frame_polylines)
-        draw_dotted(painter, polyline, view);
+        draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
-        draw_world_polyline(painter, content.path->curve.points, view);
-        draw_ani_path(painter, *content.path, view);
+        draw_world_polyline(inside, content.path->curve.points, view);
+        draw_ani_path(screen, *content.path, view);
     }
-    pre_draw(painter, screen, content.control_points, view);
-    if (content.region && content.region->second < content.control_points.size()) {
-        for (std::size_t k = content.region->first; k <= content.region->second; ++k) {
-            const PixelPoint centre = view.to_device(content.control_points[k].position).rounded();
-            painter.rectangle({centre.x - 4, centre.y - 4, centre.x + 5, centre.y + 5});
-        }
-    }
-    if (content.arrow_at && *content.arrow_at < content.control_points.size()) {
-        const PixelPoint target = view.to_device(content.control_points[*content.arrow_at].position).rounded();
-        painter.arrow({target.x + 3, target.y + 3});
-    }
-    if (content.arrow_home)
-        painter.arrow({4, 4});
+    pre_draw(screen, content, view);
+    draw_arrow(screen, content, view);
     draw_staff(painter, screen, content);
     if (!content.message.empty())
         screen.text.push_back({1, layout::message_row, content.message});

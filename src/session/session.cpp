@@ -1,10 +1,13 @@
 #include "apcs/session/session.h"
 
 #include "apcs/raster/painter.h"
+#include "apcs/raster/png_encoder.h"
+#include "apcs/session/screen_layout.h"
 #include "apcs/session/session_text.h"
 
 #include <algorithm>
 #include <cassert>
+#include <cstdio>
 
 namespace apcs {
 
@@ -71,6 +74,15 @@ bool Session::animating() const
 
 KeyContext Session::key_context() const
 {
+    if (m_help_for)
+        return KeyContext::help_screen;
+    if (m_asking_quit)
+        return KeyContext::quit_question;
+    return step_key_context();
+}
+
+KeyContext Session::step_key_context() const
+{
     if (const auto* text_step = std::get_if<TextStep>(&m_step))
         return prompt_for(text_step->current).keys;
     if (const auto* editor = std::get_if<PathEditor>(&m_step))
@@ -80,18 +92,60 @@ KeyContext Session::key_context() const
 
 void Session::handle(const KeyEvent& event)
 {
-    const std::optional<Command> command = command_for(key_context(), event);
+    const KeyContext context = key_context();
+    const std::optional<Command> command = command_for(context, event);
     if (!command)
         return;
+    m_notice.clear();
+    if (!handle_everywhere(context, *command))
+        dispatch_to_step(*command);
+}
+
+bool Session::handle_everywhere(KeyContext context, const Command& command)
+{
+    if (context == KeyContext::help_screen) {
+        m_help_for.reset();
+        return true;
+    }
+    if (context == KeyContext::quit_question) {
+        m_asking_quit = false;
+        if (std::holds_alternative<command::Yes>(command))
+            quit();
+        return true;
+    }
+    if (std::holds_alternative<command::ShowHelp>(command)) {
+        m_help_for = context;
+        return true;
+    }
+    if (std::holds_alternative<command::SavePicture>(command)) {
+        save_picture();
+        return true;
+    }
+    if (std::holds_alternative<command::Quit>(command)) {
+        // Only an unsaved path is worth a question; elsewhere every file is already written.
+        if (std::holds_alternative<PathEditor>(m_step))
+            m_asking_quit = true;
+        else
+            quit();
+        return true;
+    }
+    return false;
+}
+
+void Session::dispatch_to_step(const Command& command)
+{
     if (auto* text_step = std::get_if<TextStep>(&m_step))
-        return update_text_step(text_step->current, *command);
+        return update_text_step(text_step->current, command);
     if (auto* editor = std::get_if<PathEditor>(&m_step)) {
-        if (editor->update(*command) == PathEditor::Outcome::accepted)
+        if (editor->update(command) == PathEditor::Outcome::accepted)
             accept_path(*editor);
         return;
     }
-    if (std::get<AnimationPlayer>(m_step).update(*command) == AnimationPlayer::Outcome::finished)
-        finish();
+    auto& player = std::get<AnimationPlayer>(m_step);
+    if (player.update(command) == AnimationPlayer::Outcome::finished)
+        return finish();
+    if (player.phase() == SessionPhase::overlay)
+        write_overlay_once();
 }
 
 void Session::update_text_step(SessionPhase phase, const Command& command)
@@ -120,6 +174,12 @@ void Session::update_text_step(SessionPhase phase, const Command& command)
     } else if (std::holds_alternative<command::ClearLine>(command)) {
         m_console.set_input("");
     } else if (std::holds_alternative<command::SubmitLine>(command)) {
+        if (trimmed(input) == "?") {
+            // The answer ? alone asks for the help screen (SPEC §7.3); it is no answer.
+            m_console.set_input("");
+            m_help_for = KeyContext::text_line;
+            return;
+        }
         // An empty answer takes the thesis' example, and the console shows it as typed.
         const std::string answer = trimmed(input).empty() ? prompt.default_answer(*this) : trimmed(input);
         m_console.set_input(answer);
@@ -152,6 +212,10 @@ void Session::tick()
 SessionScreen Session::screen() const
 {
     SessionScreen shown;
+    if (m_help_for) {
+        shown.text = help_screen();
+        return shown;
+    }
     if (const auto* editor = std::get_if<PathEditor>(&m_step)) {
         shown.graphics = true;
         shown.picture = editor->view();
@@ -160,8 +224,86 @@ SessionScreen Session::screen() const
         shown.picture = player->view();
     } else {
         shown.text = m_console.render(!finished());
+        if (!m_notice.empty())
+            shown.text.put_text(0, TextConsole::rows - 1, m_notice);
+        return shown;
+    }
+    // The message line, by priority (SPEC §7.3): an open question, then what the last key did.
+    const std::string message = m_asking_quit ? std::string(session_text::quit_question) : m_notice;
+    if (!message.empty()) {
+        auto& lines = shown.picture.text;
+        lines.erase(std::remove_if(lines.begin(), lines.end(), [](const TextLine& line) { return line.row == layout::message_row; }),
+                    lines.end());
+        lines.push_back({1, layout::message_row, message});
     }
     return shown;
+}
+
+CellGrid Session::help_screen() const
+{
+    CellGrid grid(TextConsole::columns, TextConsole::rows);
+    grid.put_text(0, 0, std::string("APCS help - the keys of ") + phase_name(phase()));
+    int row = 2;
+    for (const std::string& line : key_help_lines(*m_help_for))
+        if (row < TextConsole::rows - 3)
+            grid.put_text(0, row++, line);
+    grid.put_text(0, TextConsole::rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (files written stay whole).");
+    grid.put_text(0, TextConsole::rows - 1, "Any key closes this help.");
+    return grid;
+}
+
+void Session::save_picture()
+{
+    const SessionScreen shown = screen();
+    if (!shown.graphics) {
+        m_notice = "P writes a picture in graphics mode only";
+        return;
+    }
+    std::string name;
+    for (int number = 1; number <= 999 && name.empty(); ++number) {
+        char candidate[32];
+        std::snprintf(candidate, sizeof candidate, "apcs%03d.png", number);
+        if (!m_files.exists(candidate))
+            name = candidate;
+    }
+    const std::optional<std::string> png = encode_png(render_raster(shown.picture));
+    if (name.empty() || !png) {
+        m_notice = name.empty() ? "apcs001.png … apcs999.png all exist; move some away" : "cannot encode the PNG image";
+        return;
+    }
+    if (auto problem = m_files.write(name, *png)) {
+        m_notice = problem->to_string();
+        return;
+    }
+    record_written(name);
+    m_files.log("picture " + name);
+    m_notice = "wrote " + name;
+}
+
+void Session::write_overlay_once()
+{
+    if (m_overlay_written || !m_settings.overlay_png)
+        return;
+    m_overlay_written = true;
+    const std::optional<std::string> png = encode_png(render_raster(std::get<AnimationPlayer>(m_step).view()));
+    const std::string& name = *m_settings.overlay_png;
+    if (!png) {
+        m_notice = name + ": cannot encode the PNG image";
+        return;
+    }
+    if (auto problem = m_files.write(name, *png)) {
+        m_notice = problem->to_string();
+        return;
+    }
+    record_written(name);
+    m_files.log("overlay of all frames written to " + name);
+    m_notice = "wrote " + name;
+}
+
+void Session::quit()
+{
+    m_files.log("quit at " + std::string(phase_name(phase())));
+    finish();
 }
 
 void Session::record_written(const std::string& name)

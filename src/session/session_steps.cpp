@@ -56,7 +56,7 @@ const Session::Prompt& Session::prompt_for(SessionPhase phase)
          [](const S&) { return lines_of({text::ask_key2}); }, [](const S&) { return std::string("key2.dat"); },
          &S::read_key2},
         {SessionPhase::ask_view, KeyContext::text_line, [](const S& s) { return s.view_prompt(); },
-         [](const S&) { return lines_of({text::ask_view_values}); }, [](const S&) { return std::string("30 40 200"); },
+         [](const S&) { return lines_of({text::ask_view_values}); }, [](const S& s) { return s.view_default(); },
          &S::define_view_parameters},
         {SessionPhase::ask_path_file, KeyContext::text_line,
          [](const S&) { return lines_of({text::ask_path_file, text::ask_path_file_purpose}); },
@@ -142,6 +142,13 @@ std::vector<std::string> Session::view_prompt() const
 }
 
 // Define_View_Parameters: THETA, PHI and the delay; the view itself is fitted when graphics begin.
+// The thesis' example, 30 40 200, or what the command line gave (--theta, --phi, --delay).
+std::string Session::view_default() const
+{
+    return shortest_number(m_settings.theta_degrees.value_or(30.0)) + " " +
+           shortest_number(m_settings.phi_degrees.value_or(40.0)) + " " + std::to_string(m_settings.delay_ms.value_or(200));
+}
+
 void Session::define_view_parameters(const std::string& line)
 {
     const std::optional<std::vector<double>> numbers = numbers_in(line);
@@ -178,7 +185,7 @@ void Session::read_data_file(const std::string& name)
         return ask_again(SessionPhase::ask_path_file, file.error().to_string());
     // A closed graphic's second path starts from the first path's values, as the thesis says.
     const bool closed_second = m_path == 1 && m_keys.key1.is_closed() && !m_points[0].empty();
-    const StaffValues defaults = closed_second ? m_points[0].front().staff : StaffValues{};
+    const StaffValues defaults = closed_second ? m_points[0].front().staff : m_settings.staff;
     Expected<ControlPoints> points =
         point_path_from(*file, name, m_path == 0 ? PathEnd::first : PathEnd::last, m_keys, defaults);
     if (!points)
@@ -190,7 +197,11 @@ void Session::read_data_file(const std::string& name)
     go_to(SessionPhase::ask_slopes);
 }
 
-std::string Session::slopes_default() const { return m_first_slope ? "1" : "1 1"; }
+std::string Session::slopes_default() const
+{
+    const EndSlopes slopes = m_settings.slopes.value_or(EndSlopes{});
+    return m_first_slope ? shortest_number(slopes.end) : shortest_number(slopes.start) + " " + shortest_number(slopes.end);
+}
 
 // Predefine-ENDS_slope: DS[0] and DD[N], on one line or one per line.
 void Session::predefine_ends_slope(const std::string& line)

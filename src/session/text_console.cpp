@@ -40,7 +40,7 @@ void TextConsole::print(const std::string& text)
             m_partial += c;
         }
     }
-    // Only a bounded history is needed to draw 25 rows.
+    // Only a bounded history is needed to draw 24 rows.
     constexpr std::size_t kept = 200;
     if (m_lines.size() > kept)
         m_lines.erase(m_lines.begin(), m_lines.end() - static_cast<std::ptrdiff_t>(kept));

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <unistd.h>
 
 namespace apcs {
@@ -21,15 +23,84 @@ constexpr int default_escape_delay_ms = 100;
 
 Diagnostic terminal_problem(const std::string& message) { return Diagnostic{"apcs", 0, message}; }
 
+Diagnostic no_full_screen(const std::string& term)
+{
+    return terminal_problem("the terminal type '" + term +
+                            "' cannot show a full screen (it cannot move the cursor); try TERM=xterm");
+}
+
+// Whether terminfo gives the terminal a way to move the cursor (cup), the least a full screen needs.
+bool can_move_cursor()
+{
+    const char* const move = tigetstr("cup");
+    return move != nullptr && move != reinterpret_cast<const char*>(static_cast<std::intptr_t>(-1));
+}
+
+attr_t attributes_of(CellStyle style)
+{
+    switch (style) {
+    case CellStyle::bold: return A_BOLD;
+    case CellStyle::reverse: return A_REVERSE;
+    case CellStyle::plain: break;
+    }
+    return A_NORMAL;
+}
+
 } // namespace
+
+// What get_wch gave: its result (OK, KEY_CODE_YES) and the character or key code.
+struct RawKey {
+    int kind = ERR;
+    wint_t code = 0;
+};
 
 struct Terminal::State {
     SCREEN* screen = nullptr;
     CellGrid shown;
     bool valid = false;
+    // A key code read while deciding what an Esc was, handed out next.
+    std::optional<RawKey> pending;
     // Installed once the terminal is taken over; destroyed after it is given back.
     std::optional<StopSignals> stop;
+
+    // After get_wch gave an Esc: whether it is the Esc key (true) or the start of an escape
+    // sequence that ncurses does not know, read to its end and dropped (false). What follows the
+    // Esc and is not part of a sequence is kept for the next reads.
+    bool escape_stands();
 };
+
+bool Terminal::State::escape_stands()
+{
+    std::u32string tail;
+    // ncurses returned the Esc alone after ESCDELAY, or at once when what followed matched no key:
+    // then the rest is here already, or comes within ESCDELAY.
+    timeout(0);
+    while (true) {
+        wint_t code = 0;
+        const int kind = get_wch(&code);
+        if (kind == ERR)
+            return tail.empty(); // the Esc alone, or a sequence cut short: dropped
+        if (kind == KEY_CODE_YES) {
+            // A key ncurses decoded after the Esc (Esc, then an arrow): both count.
+            pending = RawKey{kind, code};
+            return tail.empty();
+        }
+        tail += static_cast<char32_t>(code);
+        switch (escape_tail(tail)) {
+        case EscapeTail::unfinished:
+            timeout(get_escdelay());
+            break;
+        case EscapeTail::sequence:
+            return false;
+        case EscapeTail::broken:
+            unget_wch(static_cast<wchar_t>(tail.back()));
+            return false;
+        case EscapeTail::keys:
+            unget_wch(static_cast<wchar_t>(tail.back()));
+            return true;
+        }
+    }
+}
 
 Terminal::Terminal() : m_state(std::make_unique<State>()) {}
 
@@ -40,6 +111,8 @@ Expected<std::unique_ptr<Terminal>> Terminal::open()
     const char* term = std::getenv("TERM");
     if (term == nullptr || *term == '\0')
         return terminal_problem("TERM is not set; set it to your terminal's type, e.g. TERM=xterm");
+    if (std::string_view(term) == "dumb")
+        return no_full_screen(term);
     std::unique_ptr<Terminal> terminal(new Terminal());
     State& state = *terminal->m_state;
     state.screen = newterm(term, stdout, stdin);
@@ -47,14 +120,17 @@ Expected<std::unique_ptr<Terminal>> Terminal::open()
         return terminal_problem(std::string("the terminal type '") + term +
                                 "' is unknown (no terminfo entry); try TERM=xterm");
     set_term(state.screen);
+    // A hard-copy or glass terminal under another name: given back by the destructor.
+    if (!can_move_cursor())
+        return no_full_screen(term);
     cbreak();
     noecho();
     nonl();
     keypad(stdscr, TRUE);
     // Where terminfo names a sequence already, its meaning stands.
-    for (const KeypadSequence& keypad_key : keypad_sequences())
-        if (key_defined(keypad_key.sequence) == 0)
-            define_key(keypad_key.sequence, keypad_key.code);
+    for (const KeySequence& key : key_sequences())
+        if (key_defined(key.sequence) == 0)
+            define_key(key.sequence, key.code);
     // newterm has read the environment's ESCDELAY, if any.
     if (std::getenv("ESCDELAY") == nullptr)
         set_escdelay(default_escape_delay_ms);
@@ -82,7 +158,8 @@ TerminalSize Terminal::size() const
 
 TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
 {
-    StopSignals& stop = *m_state->stop;
+    State& state = *m_state;
+    StopSignals& stop = *state.stop;
     const auto start = std::chrono::steady_clock::now();
     while (true) {
         if (stop.requested())
@@ -90,14 +167,19 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
         int wait = 100;
         if (timeout_ms >= 0) {
             const auto elapsed = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count();
-            if (elapsed >= timeout_ms)
+            if (elapsed >= timeout_ms && !state.pending)
                 return TerminalInput::timeout;
-            wait = static_cast<int>(std::min<long long>(100, timeout_ms - elapsed));
+            wait = static_cast<int>(std::clamp<long long>(timeout_ms - elapsed, 0, 100));
         }
-        timeout(wait);
-        wint_t code = 0;
-        const int kind = get_wch(&code);
-        if (kind == ERR) {
+        RawKey raw;
+        if (state.pending) {
+            raw = *state.pending;
+            state.pending.reset();
+        } else {
+            timeout(wait);
+            raw.kind = get_wch(&raw.code);
+        }
+        if (raw.kind == ERR) {
             // A closed terminal reads as end of file at once, again and again. It is a hang-up
             // whose SIGHUP may still be on its way: count it as one.
             if (!::isatty(STDIN_FILENO)) {
@@ -106,9 +188,11 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
             }
             continue;
         }
-        if (kind == KEY_CODE_YES && code == KEY_RESIZE)
+        if (raw.kind == KEY_CODE_YES && raw.code == KEY_RESIZE)
             return TerminalInput::resize;
-        if (const std::optional<KeyEvent> event = key_event_from_curses(kind, code)) {
+        if (raw.kind == OK && raw.code == 27 && !state.escape_stands())
+            continue;
+        if (const std::optional<KeyEvent> event = key_event_from_curses(raw.kind, raw.code)) {
             key = *event;
             return TerminalInput::key;
         }
@@ -117,29 +201,44 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
 
 void Terminal::invalidate() { m_state->valid = false; }
 
+void Terminal::redraw()
+{
+    m_state->valid = false;
+    // The next refresh clears the terminal and sends every line, whatever curses thinks is there.
+    clearok(curscr, TRUE);
+    redrawwin(stdscr);
+}
+
 void Terminal::show(const CellGrid& grid)
 {
     State& state = *m_state;
     const bool full = !state.valid || state.shown.columns() != grid.columns() || state.shown.rows() != grid.rows();
     if (full)
         erase();
+    const auto changed = [&](int column, int row) {
+        return full || grid.at(column, row) != state.shown.at(column, row) ||
+               grid.style_at(column, row) != state.shown.style_at(column, row);
+    };
     for (int row = 0; row < grid.rows(); ++row) {
         int column = 0;
         while (column < grid.columns()) {
-            if (!full && grid.at(column, row) == state.shown.at(column, row)) {
+            if (!changed(column, row)) {
                 ++column;
                 continue;
             }
-            // A run of changed cells goes out as one string.
+            // A run of changed cells of one style goes out as one string.
+            const CellStyle style = grid.style_at(column, row);
             std::string run;
             const int start = column;
-            while (column < grid.columns() && (full || grid.at(column, row) != state.shown.at(column, row))) {
+            while (column < grid.columns() && changed(column, row) && grid.style_at(column, row) == style) {
                 append_utf8(run, grid.at(column, row));
                 ++column;
             }
+            attr_set(attributes_of(style), 0, nullptr);
             mvaddstr(row, start, run.c_str());
         }
     }
+    attr_set(A_NORMAL, 0, nullptr);
     refresh();
     state.shown = grid;
     state.valid = true;

@@ -15,7 +15,9 @@ namespace {
 CellGrid too_small_grid(TerminalSize size)
 {
     CellGrid grid(size.columns, size.rows);
-    const std::string message = "The terminal must be at least 80x25 (it is " + std::to_string(size.columns) + "x" +
+    // The least fit_cell_area accepts: the character screen of graphics mode.
+    const std::string message = "The terminal must be at least " + std::to_string(text_screen_columns) + "x" +
+                                std::to_string(text_screen_rows) + " (it is " + std::to_string(size.columns) + "x" +
                                 std::to_string(size.rows) + ")";
     const int column = std::max(0, (size.columns - static_cast<int>(message.size())) / 2);
     grid.put_text(column, size.rows / 2, message);
@@ -64,6 +66,9 @@ ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& s
             session.tick();
             break;
         case TerminalInput::key:
+            // Ctrl-L repaints the whole terminal; the session sees the key too.
+            if (key.key == Key::redraw)
+                terminal->redraw();
             recorded.push_back(key);
             session.handle(key);
             break;

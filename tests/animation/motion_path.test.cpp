@@ -165,6 +165,23 @@ TEST_CASE("more in-betweens than samples freeze frames", "[animation][accelerati
     REQUIRE(path.inbetweens.size() == 10);
 }
 
+TEST_CASE("two in-betweens on one sample freeze frames even when there are fewer than samples",
+          "[animation][acceleration]")
+{
+    // A straight 2-point path, 4 samples (chord 0, 1/4 … 1 of the length) and 3 in-betweens.
+    ControlPoints points{{{0, 0, 0}, {}}, {{0, 8, 0}, {}}};
+    // a = 0: targets 1/4, 1/2, 3/4 of the length land on samples 1, 2, 3: no two alike.
+    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 3, Spacing::nearest}).frames_freeze);
+    // a = 1, 5 in-betweens: targets 1 − cos(πτ/2) for τ = 2/6 and 3/6 are 0.134 and 0.293 of the
+    // length, both nearest to sample 1 (0.25): a repeated frame.
+    points[0].staff.acceleration = 1.0;
+    const EvaluatedPath repeated = evaluate_path(points, {{}, 4, 5, Spacing::nearest});
+    REQUIRE(repeated.inbetweens[1].sample_index == repeated.inbetweens[2].sample_index);
+    REQUIRE(repeated.frames_freeze);
+    // The exact spacing never repeats a position on a path of length.
+    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 5, Spacing::exact}).frames_freeze);
+}
+
 TEST_CASE("an evaluated path clamps what it is given: staff values of 3 and slopes of 3 act as 1",
           "[animation][acceleration]")
 {

@@ -2,10 +2,14 @@
 #include "apcs/version.h"
 
 #include "support/run_apcs.h"
+#include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+#include <optional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 using namespace apcs;
@@ -48,4 +52,150 @@ TEST_CASE("bad usage is exit 2 with a one-line reason and the usage", "[cli]")
         REQUIRE(result.err.starts_with("apcs: "));
         REQUIRE(result.err.find("Usage:") != std::string::npos);
     }
+}
+
+TEST_CASE("the default glyphs are braille only in a UTF-8 locale on a terminal that shows it (SPEC 7.2)", "[cli]")
+{
+    struct Row {
+        const char* codeset;
+        const char* term;
+        GlyphSet expected;
+    };
+    const Row rows[] = {
+        {"UTF-8", "xterm-256color", GlyphSet::braille},
+        {"UTF-8", "xterm", GlyphSet::braille},
+        {"UTF-8", "screen", GlyphSet::braille},
+        {"UTF-8", "tmux-256color", GlyphSet::braille},
+        {"UTF-8", "vte-256color", GlyphSet::braille}, // GNOME's VTE: not a DEC terminal
+        {"utf8", "xterm", GlyphSet::braille},
+        {"UTF8", "rxvt-unicode", GlyphSet::braille},
+        {"UTF-8", "linux", GlyphSet::ascii}, // the Linux console has no braille
+        {"UTF-8", "linux-16color", GlyphSet::ascii},
+        {"UTF-8", "vt100", GlyphSet::ascii},
+        {"UTF-8", "vt220", GlyphSet::ascii},
+        {"UTF-8", "vt52", GlyphSet::ascii},
+        {"UTF-8", "dumb", GlyphSet::ascii},
+        {"UTF-8", "", GlyphSet::ascii},
+        {"ANSI_X3.4-1968", "xterm", GlyphSet::ascii}, // LANG=C
+        {"ISO-8859-1", "xterm", GlyphSet::ascii},
+        {"", "xterm", GlyphSet::ascii},
+        {"UTF-16", "xterm", GlyphSet::ascii},
+    };
+    for (const Row& row : rows) {
+        INFO("codeset '" << row.codeset << "', TERM '" << row.term << "'");
+        CHECK(default_glyphs(row.codeset, row.term) == row.expected);
+        const Expected<GlyphSet> chosen = terminal_glyphs(GlyphSet::automatic, row.codeset, row.term);
+        REQUIRE(chosen);
+        CHECK(*chosen == row.expected);
+    }
+}
+
+TEST_CASE("a glyph set asked for is shown where the locale can, else refused with one line", "[cli]")
+{
+    struct Row {
+        GlyphSet asked;
+        const char* codeset;
+        const char* term;
+        std::optional<GlyphSet> expected; // nullopt: refused
+    };
+    const Row rows[] = {
+        {GlyphSet::ascii, "ANSI_X3.4-1968", "xterm", GlyphSet::ascii},
+        {GlyphSet::ascii, "UTF-8", "xterm", GlyphSet::ascii},
+        {GlyphSet::braille, "UTF-8", "xterm", GlyphSet::braille},
+        {GlyphSet::blocks, "UTF-8", "xterm", GlyphSet::blocks},
+        {GlyphSet::braille, "UTF-8", "linux", GlyphSet::braille}, // asked for: the user knows the font
+        {GlyphSet::braille, "ANSI_X3.4-1968", "xterm", std::nullopt},
+        {GlyphSet::blocks, "ANSI_X3.4-1968", "xterm", std::nullopt},
+        {GlyphSet::braille, "ISO-8859-1", "xterm", std::nullopt},
+    };
+    for (const Row& row : rows) {
+        INFO("codeset '" << row.codeset << "', TERM '" << row.term << "'");
+        const Expected<GlyphSet> chosen = terminal_glyphs(row.asked, row.codeset, row.term);
+        REQUIRE(chosen.has_value() == row.expected.has_value());
+        if (chosen)
+            CHECK(*chosen == *row.expected);
+    }
+    const Expected<GlyphSet> braille = terminal_glyphs(GlyphSet::braille, "ANSI_X3.4-1968", "xterm");
+    REQUIRE_FALSE(braille);
+    CHECK(braille.error().to_string() ==
+          "apcs: --glyphs braille needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii");
+    const Expected<GlyphSet> blocks = terminal_glyphs(GlyphSet::blocks, "ANSI_X3.4-1968", "xterm");
+    REQUIRE_FALSE(blocks);
+    CHECK(blocks.error().to_string() ==
+          "apcs: --glyphs blocks needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii");
+}
+
+TEST_CASE("the session takes the command line's answers only where they were given", "[cli]")
+{
+    const CommonOptions defaults;
+    const SessionSettings plain = session_settings(defaults);
+    CHECK_FALSE(plain.theta_degrees);
+    CHECK_FALSE(plain.phi_degrees);
+    CHECK_FALSE(plain.delay_ms);
+    CHECK_FALSE(plain.slopes);
+    CHECK_FALSE(plain.overlay_png);
+    CHECK(plain.staff == StaffValues{});
+    CHECK(plain.samples_per_segment == 32);
+    CHECK(plain.inbetween_count == 12);
+    CHECK(plain.step == 0.05);
+
+    CommonOptions options;
+    options.view = {10.0, 20.0};
+    options.delay_ms = 50;
+    options.path.slopes = {0.5, 0.25};
+    options.path.samples_per_segment = 8;
+    options.path.inbetween_count = 3;
+    options.path.spacing = Spacing::exact;
+    options.step = 0.1;
+    options.staff = {0.1, -0.2, 0.3, -0.4};
+    options.png = "overlay.png";
+    // Values without the flags that say they were typed: the session keeps the thesis' example.
+    const SessionSettings untyped = session_settings(options);
+    CHECK_FALSE(untyped.theta_degrees);
+    CHECK_FALSE(untyped.delay_ms);
+    CHECK_FALSE(untyped.slopes);
+    CHECK(untyped.staff == options.staff); // the staff seed always
+    CHECK(untyped.overlay_png == "overlay.png");
+    CHECK(untyped.samples_per_segment == 8);
+    CHECK(untyped.inbetween_count == 3);
+    CHECK(untyped.spacing == Spacing::exact);
+    CHECK(untyped.step == 0.1);
+
+    options.given = {true, true, true, true};
+    const SessionSettings typed = session_settings(options);
+    CHECK(typed.theta_degrees == 10.0);
+    CHECK(typed.phi_degrees == 20.0);
+    CHECK(typed.delay_ms == 50);
+    REQUIRE(typed.slopes);
+    CHECK(typed.slopes->start == 0.5);
+    CHECK(typed.slopes->end == 0.25);
+
+    options.given = {false, true, false, false};
+    const SessionSettings phi_only = session_settings(options);
+    CHECK_FALSE(phi_only.theta_degrees);
+    CHECK(phi_only.phi_degrees == 20.0);
+
+    // With --workdir, a relative --png is still named from where apcs was started.
+    options.workdir = "elsewhere";
+    const SessionSettings moved = session_settings(options);
+    REQUIRE(moved.overlay_png);
+    CHECK(*moved.overlay_png == (std::filesystem::current_path() / "overlay.png").string());
+    options.png = "/tmp/overlay.png";
+    CHECK(session_settings(options).overlay_png == "/tmp/overlay.png");
+}
+
+TEST_CASE("Enter at the session's prompts takes --theta, --phi, --delay and --slopes where given", "[cli][session]")
+{
+    const test::TempFolder folder;
+    for (const char* name : {"key1.dat", "key2.dat", "way1.dat"})
+        std::filesystem::copy_file(std::filesystem::path(APCS_SOURCE_DIR) / "data" / "n-to-l" / name, folder / name);
+    const auto script = folder.write("enter.keys", "ENTER\nENTER\nENTER\nTEXT way1.dat\nENTER\nENTER\n");
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string(), "--glyphs",
+                                        "ascii", "--theta", "10", "--phi", "20", "--delay", "50", "--slopes", "0.5",
+                                        "0.25"});
+    REQUIRE(result.status == 0);
+    const std::string log = test::read_all(folder / "apcs.log");
+    INFO(log);
+    CHECK(log.find("view: theta 10, phi 20, delay 50 ms") != std::string::npos);
+    CHECK(log.find("slopes DS[0] 0.5, DD[N] 0.25") != std::string::npos);
 }

@@ -32,8 +32,10 @@ for signal in INT TERM HUP; do
 done
 
 tmux -L "$socket" new-session -d -s small -x 70 -y 20 -c "$work" "'$apcs'; echo EXITED=\$?; sleep 60"
-wait_for small "The terminal must be at least 80x25 (it is 70x20)"
-tmux -L "$socket" resize-window -t small -x 80 -y 25
+wait_for small "The terminal must be at least 80x24 (it is 70x20)"
+tmux -L "$socket" resize-window -t small -x 80 -y 23
+wait_for small "The terminal must be at least 80x24 (it is 80x23)"
+tmux -L "$socket" resize-window -t small -x 80 -y 24
 wait_for small "Please keyin the KEY1 filename!"
 passed=$((passed + 1))
 

@@ -2,6 +2,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <tuple>
 #include <vector>
 
@@ -49,15 +50,36 @@ TEST_CASE("each context reads its keys as the thesis' commands", "[session][keys
         {KeyContext::adjust_again, ch(U'y'), cmd::Yes{}},
         {KeyContext::adjust_again, ch(U'Y'), cmd::Yes{}},
         {KeyContext::adjust_again, ch(U'N'), cmd::No{}},
+        {KeyContext::adjust_again, ch(U'n'), cmd::No{}},
         {KeyContext::adjust_again, key(Key::enter), cmd::No{}},
         {KeyContext::adjust_again, ch(U'K'), cmd::ToggleKeyFrames{}},
+        // A stray key does not accept the path.
+        {KeyContext::adjust_again, ch(U'6'), std::nullopt},
+        {KeyContext::adjust_again, key(Key::escape), std::nullopt},
+        // Help, pictures and quitting in graphics mode; at a text prompt ? and q are typed.
+        {KeyContext::staff, ch(U'?'), cmd::ShowHelp{}},
+        {KeyContext::staff, key(Key::f1), cmd::ShowHelp{}},
+        {KeyContext::region_pick, ch(U'q'), cmd::Quit{}},
+        {KeyContext::control_choice, ch(U'p'), cmd::SavePicture{}},
+        {KeyContext::text_line, key(Key::f1), cmd::ShowHelp{}},
+        {KeyContext::text_line, ch(U'?'), cmd::TypeCharacter{U'?'}},
+        {KeyContext::text_line, ch(U'q'), cmd::TypeCharacter{U'q'}},
+        {KeyContext::quit_question, ch(U'y'), cmd::Yes{}},
+        {KeyContext::quit_question, key(Key::enter), cmd::No{}},
+        {KeyContext::quit_question, ch(U'x'), std::nullopt},
+        {KeyContext::help_screen, ch(U'x'), cmd::Continue{}},
+        {KeyContext::any_key_graphics, ch(U'P'), cmd::SavePicture{}},
+        {KeyContext::any_key_graphics, ch(U'x'), cmd::Continue{}},
+        {KeyContext::any_key, ch(U'P'), cmd::Continue{}},
         // Questions of the text console.
         {KeyContext::yes_to_go_on, ch(U'y'), cmd::Yes{}},
         {KeyContext::yes_to_go_on, key(Key::enter), std::nullopt},
         {KeyContext::enter_to_go_on, key(Key::enter), cmd::Continue{}},
-        {KeyContext::enter_to_go_on, ch(U'q'), std::nullopt},
+        {KeyContext::enter_to_go_on, ch(U'x'), std::nullopt},
+        {KeyContext::enter_to_go_on, ch(U'q'), cmd::Quit{}},
         {KeyContext::any_key, key(Key::escape), cmd::Continue{}},
         {KeyContext::any_key, ch(U'x'), cmd::Continue{}},
+        {KeyContext::any_key, ch(U'q'), cmd::Quit{}},
         // The animation.
         {KeyContext::animation, key(Key::escape), cmd::StopAnimation{}},
         {KeyContext::animation, key(Key::space), cmd::Pause{}},
@@ -85,12 +107,32 @@ TEST_CASE("at a text prompt every printable key is typed text, digits and letter
 
 TEST_CASE("the key line of graphics mode is made from the key map's rows", "[session][keys]")
 {
-    REQUIRE(key_help(KeyContext::staff) == "4/6 step  J/L 3 steps  Enter accept  Esc keep  K key frames");
-    REQUIRE(key_help(KeyContext::control_choice) == "K key frames on/off");
-    REQUIRE(key_help(KeyContext::region_pick) == "K key frames on/off");
-    REQUIRE(key_help(KeyContext::adjust_again) == "K key frames on/off");
-    REQUIRE(key_help(KeyContext::animation) == "Esc stop  Space pause  R replay");
+    REQUIRE(key_help(KeyContext::staff) == "4/6 step  J/L 3 steps  Enter accept  Esc keep  K key frames  ? help  q quit");
+    REQUIRE(key_help(KeyContext::control_choice) == "K key frames on/off  ? help  q quit");
+    REQUIRE(key_help(KeyContext::region_pick) == "K key frames on/off  ? help  q quit");
+    REQUIRE(key_help(KeyContext::adjust_again) == "K key frames on/off  ? help  q quit");
+    REQUIRE(key_help(KeyContext::animation) == "Esc stop  Space pause  R replay  ? help  q quit");
+    // Every key line fits the 80 columns of the screen, after its first.
+    for (const KeyBinding& binding : key_bindings())
+        REQUIRE(key_help(binding.context).size() <= 78);
     REQUIRE(key_help(KeyContext::text_line).empty());
+}
+
+TEST_CASE("the help screen lists every key of a step with what it means, keys of one meaning together",
+          "[session][keys]")
+{
+    const std::vector<std::string> staff = key_help_lines(KeyContext::staff);
+    REQUIRE(staff.front() == "  4, Left         the value one step left");
+    REQUIRE(std::find(staff.begin(), staff.end(), "  J               three steps left (Shift-J)") != staff.end());
+    REQUIRE(std::find(staff.begin(), staff.end(), "  ?, F1           this help") != staff.end());
+    REQUIRE(std::find(staff.begin(), staff.end(), "  Q               end APCS without saving this path (asks first)") !=
+            staff.end());
+    // Every context a step listens in has a help screen that names at least one key.
+    for (const KeyContext context : {KeyContext::text_line, KeyContext::yes_to_go_on, KeyContext::enter_to_go_on,
+                                     KeyContext::any_key, KeyContext::any_key_graphics, KeyContext::control_choice,
+                                     KeyContext::region_pick, KeyContext::staff, KeyContext::adjust_again,
+                                     KeyContext::animation, KeyContext::quit_question})
+        REQUIRE_FALSE(key_help_lines(context).empty());
 }
 
 TEST_CASE("no key map row is hidden behind an earlier row of its context", "[session][keys]")

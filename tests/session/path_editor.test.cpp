@@ -50,9 +50,9 @@ TEST_CASE("the path editor takes the staff line by line and is accepted when not
     REQUIRE(editor.key_context() == KeyContext::control_choice);
     apply(editor, {cmd::ChooseGlobal{}});
     REQUIRE(editor.phase() == SessionPhase::staff);
-    REQUIRE(message_of(editor.view()) == "way1.dat: TENSION");
+    REQUIRE(message_of(editor.view()) == "way1.dat: TENSION  control points 1 to 4 of 4");
     apply(editor, {cmd::StaffStep{+3}, cmd::StaffStep{-1}, cmd::Accept{}});
-    REQUIRE(message_of(editor.view()) == "way1.dat: CONTINUITY");
+    REQUIRE(message_of(editor.view()) == "way1.dat: CONTINUITY  control points 1 to 4 of 4");
     apply(editor, {cmd::StaffStep{+1}, cmd::Keep{}, cmd::StaffStep{-1}, cmd::Accept{}, cmd::Accept{}});
     REQUIRE(editor.phase() == SessionPhase::ask_again);
     REQUIRE(editor.update(cmd::No{}) == PathEditor::Outcome::accepted);
@@ -120,7 +120,7 @@ TEST_CASE("the animation player shows one frame per tick, then all frames, then 
     REQUIRE(message_of(player.view()) == "KEY2: k2.dat");
     player.tick();
     REQUIRE(player.phase() == SessionPhase::animation_done);
-    REQUIRE(player.key_context() == KeyContext::any_key);
+    REQUIRE(player.key_context() == KeyContext::any_key_graphics);
     REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::showing);
     REQUIRE(player.phase() == SessionPhase::overlay);
     REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::finished);

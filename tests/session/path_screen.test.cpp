@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using namespace apcs;
 
 namespace {
@@ -24,7 +26,7 @@ Example example_screen()
     PathScreenContent content = path_screen_content(example.points, example.path);
     content.active_line = StaffLine::continuity;
     content.message = "4/6 step  J/L 3 steps  Enter accept  Esc keep";
-    const ViewTransform view = path_screen_scene(content).fit({30, 40}, layout::drawing_area);
+    const ViewTransform view = path_screen_scene(content).fit({30, 40}, layout::view_area);
     example.screen = draw_path_screen(content, view);
     return example;
 }
@@ -34,14 +36,14 @@ Example example_screen()
 TEST_CASE("the path screen in each glyph set matches its approved cell grid", "[session][screen]")
 {
     const Example example = example_screen();
-    test::check_golden("path_screen_ascii.txt", render_cells(example.screen, {80, 25}, GlyphSet::ascii).to_text());
-    test::check_golden("path_screen_braille.txt", render_cells(example.screen, {80, 25}, GlyphSet::braille).to_text());
-    test::check_golden("path_screen_blocks.txt", render_cells(example.screen, {80, 25}, GlyphSet::blocks).to_text());
+    test::check_golden("path_screen_ascii.txt", render_cells(example.screen, {80, 24}, GlyphSet::ascii).to_text());
+    test::check_golden("path_screen_braille.txt", render_cells(example.screen, {80, 24}, GlyphSet::braille).to_text());
+    test::check_golden("path_screen_blocks.txt", render_cells(example.screen, {80, 24}, GlyphSet::blocks).to_text());
 }
 
 TEST_CASE("the path screen shows the staff values and the active line", "[session][screen]")
 {
-    const CellGrid grid = render_cells(example_screen().screen, {80, 25}, GlyphSet::ascii);
+    const CellGrid grid = render_cells(example_screen().screen, {80, 24}, GlyphSet::ascii);
     REQUIRE(grid.row_text(19).starts_with(" TENSION"));
     REQUIRE(grid.row_text(20).starts_with(">CONTINUITY"));
     REQUIRE(grid.row_text(19).substr(69, 5) == "+0.25");
@@ -53,7 +55,7 @@ TEST_CASE("every control point shows as x in the cells", "[session][screen]")
     const Example example = example_screen();
     std::size_t crosses = 0;
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille}) {
-        const CellGrid grid = render_cells(example.screen, {80, 25}, glyphs);
+        const CellGrid grid = render_cells(example.screen, {80, 24}, glyphs);
         crosses = 0;
         for (int row = 0; row < 18; ++row)
             for (int column = 0; column < 80; ++column)
@@ -68,4 +70,110 @@ TEST_CASE("staff values are shown with a sign and two decimals", "[session][scre
     REQUIRE(format_staff_value(-0.0000001) == "+0.00");
     REQUIRE(format_staff_value(0.05) == "+0.05");
     REQUIRE(format_staff_value(-1.0) == "-1.00");
+}
+
+namespace {
+
+// The grid's text, then its styles: one character a cell, '.' plain, 'B' bold, 'R' reverse.
+std::string text_and_styles(const CellGrid& grid)
+{
+    std::string text = grid.to_text() + "-- styles\n";
+    for (int row = 0; row < grid.rows(); ++row) {
+        for (int column = 0; column < grid.columns(); ++column) {
+            const CellStyle style = grid.style_at(column, row);
+            text += style == CellStyle::reverse ? 'R' : style == CellStyle::bold ? 'B' : '.';
+        }
+        text += '\n';
+    }
+    return text;
+}
+
+GraphicsScreen picking_screen(std::optional<std::size_t> arrow)
+{
+    ControlPoints points;
+    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{0, 3, 4}, Vec3{0, 7, 1}, Vec3{0, 10, 6}})
+        points.push_back({position, {}});
+    static EvaluatedPath path;
+    path = evaluate_path(points, {{}, 32, 12, Spacing::nearest});
+    PathScreenContent content = path_screen_content(points, path);
+    content.region = std::pair<std::size_t, std::size_t>{1, 2};
+    content.arrow_at = arrow;
+    content.arrow_home = !arrow;
+    content.active_line = StaffLine::tension;
+    content.message = "way1.dat: TENSION  control points 2 to 3 of 4";
+    const ViewTransform view = path_screen_scene(content).fit({0, 90}, layout::view_area);
+    return draw_path_screen(content, view);
+}
+
+int count_of(const CellGrid& grid, char32_t glyph)
+{
+    int count = 0;
+    for (int row = 0; row < 18; ++row)
+        for (int column = 0; column < grid.columns(); ++column)
+            count += grid.at(column, row) == glyph ? 1 : 0;
+    return count;
+}
+
+} // namespace
+
+TEST_CASE("at 80x24 the arrow, the picked region and the in-betweens are characters in every glyph set",
+          "[session][screen]")
+{
+    const GraphicsScreen screen = picking_screen(2);
+    for (const auto& [glyphs, name] : {std::pair{GlyphSet::ascii, "ascii"}, std::pair{GlyphSet::braille, "braille"},
+                                       std::pair{GlyphSet::blocks, "blocks"}}) {
+        const CellGrid grid = render_cells(screen, {80, 24}, glyphs);
+        test::check_golden(std::string("path_screen_region_") + name + ".txt", text_and_styles(grid));
+        CAPTURE(name);
+        REQUIRE(count_of(grid, U'x') == 4);
+        REQUIRE(count_of(grid, mark_glyph(MarkKind::arrow, glyphs)) == 1);
+        // Twelve in-betweens: each a mark, or counted in a digit where two share a cell.
+        int inbetweens = count_of(grid, mark_glyph(MarkKind::inbetween, glyphs));
+        for (char32_t digit = U'2'; digit <= U'9'; ++digit)
+            inbetweens += count_of(grid, digit) * static_cast<int>(digit - U'0');
+        REQUIRE(inbetweens <= 12);
+        REQUIRE(inbetweens >= 10); // two may hide under control points' x
+        // The picked points 2 and 3 are reverse video, the others not; the active label too.
+        int reversed = 0;
+        for (int row = 0; row < 18; ++row)
+            for (int column = 0; column < 80; ++column)
+                reversed += grid.style_at(column, row) == CellStyle::reverse ? 1 : 0;
+        REQUIRE(reversed == 2);
+        REQUIRE(grid.style_at(1, 19) == CellStyle::reverse);
+        REQUIRE(grid.style_at(1, 20) == CellStyle::plain);
+    }
+}
+
+TEST_CASE("the arrow waits at the top-left before it moves", "[session][screen]")
+{
+    const CellGrid grid = render_cells(picking_screen(std::nullopt), {80, 24}, GlyphSet::ascii);
+    REQUIRE(grid.at(1, 1) == U'>');
+}
+
+TEST_CASE("moving acceleration from 0 to +1 moves the in-between marks on screen at 80x24", "[session][screen]")
+{
+    const auto marks_at = [](double acceleration) {
+        ControlPoints points;
+        for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{0, 3, 4}, Vec3{0, 7, 1}, Vec3{0, 10, 6}})
+            points.push_back({position, {0, 0, 0, acceleration}});
+        const EvaluatedPath path = evaluate_path(points, {{}, 32, 12, Spacing::nearest});
+        const PathScreenContent content = path_screen_content(points, path);
+        // One view for both, as the session keeps it while the staff moves.
+        static const ViewTransform view = path_screen_scene(content).fit({0, 90}, layout::view_area);
+        const CellGrid grid = render_cells(draw_path_screen(content, view), {80, 24}, GlyphSet::ascii);
+        std::vector<std::pair<int, int>> cells;
+        for (int row = 0; row < 18; ++row)
+            for (int column = 0; column < 80; ++column)
+                if (grid.at(column, row) == U'*' || (grid.at(column, row) >= U'2' && grid.at(column, row) <= U'9'))
+                    cells.emplace_back(column, row);
+        return cells;
+    };
+    const auto still = marks_at(0.0);
+    const auto accelerated = marks_at(1.0);
+    REQUIRE(still.size() >= 8);
+    // Most marks stand in other cells: the change is seen, not one cell's smudge.
+    int moved = 0;
+    for (const auto& cell : accelerated)
+        moved += std::find(still.begin(), still.end(), cell) == still.end() ? 1 : 0;
+    REQUIRE(moved >= static_cast<int>(still.size()) / 2);
 }

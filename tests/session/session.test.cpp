@@ -224,7 +224,7 @@ TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[ses
     type(session, "1 1");
     press(session, {ch('8'), enter, enter, enter, enter, ch('N')});
     REQUIRE(session.phase() == SessionPhase::ask_stop);
-    press(session, {ch('q')});
+    press(session, {ch('x')});
     REQUIRE(session.phase() == SessionPhase::ask_stop);
     press(session, {enter});
     REQUIRE(session.phase() == SessionPhase::ask_draw);

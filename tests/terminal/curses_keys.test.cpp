@@ -66,10 +66,15 @@ TEST_CASE("Curses key codes and characters become the session's keys", "[termina
         {"a character beyond ASCII", OK, 0xE9, typed(U'\u00E9')},
         {"a character with a key code's number", OK, KEY_LEFT, typed(static_cast<char32_t>(KEY_LEFT))},
         {"a wide character", OK, 0x2800, typed(U'\u2800')},
-        {"Tab", OK, '\t', std::nullopt},
+        {"Tab", OK, '\t', of(Key::tab)},
+        {"Shift-Tab", KEY_CODE_YES, KEY_BTAB, of(Key::back_tab)},
+        {"F1", KEY_CODE_YES, KEY_F(1), of(Key::f1)},
+        {"Ctrl-L", OK, 12, of(Key::redraw)},
+        {"F2", KEY_CODE_YES, KEY_F(2), std::nullopt},
+        {"a key code with Ctrl-L's number", KEY_CODE_YES, 12, std::nullopt},
+        {"a character with Shift-Tab's number", OK, KEY_BTAB, typed(static_cast<char32_t>(KEY_BTAB))},
         {"^A", OK, 1, std::nullopt},
         {"NUL", OK, 0, std::nullopt},
-        {"F1", KEY_CODE_YES, KEY_F(1), std::nullopt},
         {"Home", KEY_CODE_YES, KEY_HOME, std::nullopt},
         {"a key code with a character's number", KEY_CODE_YES, 'a', std::nullopt},
         {"a key code of ours unbound", KEY_CODE_YES, keypad_key_base, std::nullopt},
@@ -83,24 +88,65 @@ TEST_CASE("Curses key codes and characters become the session's keys", "[termina
     }
 }
 
-TEST_CASE("The keypad's application-mode sequences are bound to the keys 4, 6, 8, 2 and Enter", "[terminal]")
+TEST_CASE("Sequences terminfo may not name are bound: keypad, both arrow modes, Shift-Tab, F1", "[terminal]")
 {
     struct SequenceRow {
         std::string sequence;
         KeyEvent expected;
     };
     const SequenceRow rows[] = {
-        {"\033Ot", typed(U'4')}, {"\033Ov", typed(U'6')}, {"\033Ox", typed(U'8')},
-        {"\033Or", typed(U'2')}, {"\033OM", of(Key::enter)},
+        {"\033Ot", typed(U'4')},       {"\033Ov", typed(U'6')},       {"\033Ox", typed(U'8')},
+        {"\033Or", typed(U'2')},       {"\033OM", of(Key::enter)},    {"\033[A", of(Key::up)},
+        {"\033[B", of(Key::down)},     {"\033[C", of(Key::right)},    {"\033[D", of(Key::left)},
+        {"\033OA", of(Key::up)},       {"\033OB", of(Key::down)},     {"\033OC", of(Key::right)},
+        {"\033OD", of(Key::left)},     {"\033[Z", of(Key::back_tab)}, {"\033OP", of(Key::f1)},
+        {"\033[11~", of(Key::f1)},     {"\033[[A", of(Key::f1)},
     };
-    const std::span<const KeypadSequence> sequences = keypad_sequences();
+    const std::span<const KeySequence> sequences = key_sequences();
     REQUIRE(sequences.size() == std::size(rows));
     for (const SequenceRow& row : rows) {
         INFO("sequence ESC " << row.sequence.substr(1));
-        const auto bound = std::ranges::find_if(
-            sequences, [&](const KeypadSequence& entry) { return entry.sequence == row.sequence; });
+        const auto bound =
+            std::ranges::find_if(sequences, [&](const KeySequence& entry) { return entry.sequence == row.sequence; });
         REQUIRE(bound != sequences.end());
-        CHECK((bound->code > KEY_MAX || bound->code == KEY_ENTER));
         CHECK(key_event_from_curses(KEY_CODE_YES, static_cast<wint_t>(bound->code)) == row.expected);
+    }
+}
+
+TEST_CASE("What follows an unmatched Esc at once is a sequence to drop, or keys of their own", "[terminal]")
+{
+    struct TailRow {
+        std::u32string after_escape;
+        EscapeTail expected;
+    };
+    const TailRow rows[] = {
+        {U"", EscapeTail::unfinished},
+        {U"[", EscapeTail::unfinished},
+        {U"[1", EscapeTail::unfinished},
+        {U"[1;5", EscapeTail::unfinished},
+        {U"[1;5D", EscapeTail::sequence},    // Ctrl-Left
+        {U"[15~", EscapeTail::sequence},     // F5
+        {U"[200~", EscapeTail::sequence},    // bracketed paste
+        {U"[D", EscapeTail::sequence},       // left arrow, where nothing bound it
+        {U"[?1;2c", EscapeTail::sequence},   // a device attribute report
+        {U"[1 q", EscapeTail::sequence},     // an intermediate byte, then the final one
+        {U"[1 ", EscapeTail::unfinished},
+        {U"[1 2", EscapeTail::broken},       // a parameter after an intermediate
+        {U"[1\u00e9", EscapeTail::broken},   // a character no sequence holds
+        {U"[\u001b", EscapeTail::broken},    // Esc again
+        {U"O", EscapeTail::unfinished},
+        {U"Oq", EscapeTail::sequence},       // the keypad's 1 in application mode
+        {U"O\u001b", EscapeTail::broken},
+        {U"\u001b", EscapeTail::keys},       // Esc, Esc
+        {U"a", EscapeTail::keys},            // Esc, then a letter (Alt-a)
+        {U"4", EscapeTail::keys},
+        {U"\u00e9", EscapeTail::keys},
+    };
+    for (const TailRow& row : rows) {
+        std::string shown_tail;
+        for (const char32_t c : row.after_escape)
+            shown_tail += c >= 0x20 && c < 0x7F ? std::string(1, static_cast<char>(c)) : "U+" + std::to_string(c);
+        INFO("ESC " << shown_tail);
+        CHECK(escape_tail(row.after_escape) == row.expected);
     }
 }

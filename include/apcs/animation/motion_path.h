@@ -51,7 +51,9 @@ struct EvaluatedPath {
     std::vector<HermiteSegment> segments;
     SampledCurve curve;
     std::vector<Inbetween> inbetweens;
-    // More in-betweens asked for than the curve has samples: some frames repeat ("freeze").
+    // Some frames repeat ("freeze"): with nearest spacing two in-betweens fall on the same sample
+    // (more in-betweens than samples, or a strong acceleration on a short span). Exact spacing
+    // never repeats a position on a path of some length.
     bool frames_freeze = false;
 };
 

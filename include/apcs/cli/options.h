@@ -12,6 +12,15 @@
 
 namespace apcs {
 
+// Which of the session's answers the command line gave: an empty answer at the session's prompt
+// takes these where given, else the thesis' example (SPEC §3).
+struct GivenOptions {
+    bool theta = false;  // --theta
+    bool phi = false;    // --phi
+    bool delay = false;  // --delay
+    bool slopes = false; // --slopes
+};
+
 // The options every command shares (SPEC §1), validated by the command line parser.
 struct CommonOptions {
     StaffValues staff;
@@ -26,6 +35,7 @@ struct CommonOptions {
     std::optional<std::filesystem::path> png;
     bool print = false;
     std::optional<std::filesystem::path> out;
+    GivenOptions given;
 };
 
 } // namespace apcs

@@ -9,6 +9,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace apcs {
@@ -20,15 +21,37 @@ using TerminalSessionRunner =
     std::function<ExitStatus(Session&, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
                              std::vector<KeyEvent>& recorded, Diagnostic& problem)>;
 
+// Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
+bool is_utf8_codeset(std::string_view codeset);
+
+// The glyphs of a terminal session when --glyphs is not given (SPEC §7.2): braille when the locale
+// is UTF-8 and the terminal can show it, else ascii. `term` is TERM: the Linux console (linux,
+// linux-*), the DEC terminals (vt100, vt220, … : "vt" and a digit) and dumb cannot; nor can an
+// unnamed terminal.
+GlyphSet default_glyphs(std::string_view codeset, std::string_view term);
+
+// The glyphs a terminal session shows: the set asked for with --glyphs, or default_glyphs where
+// none was (GlyphSet::automatic). braille and blocks under a locale that is not UTF-8 are refused
+// (exit 2): "apcs: --glyphs braille needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs
+// ascii", since curses would show their characters as escapes.
+[[nodiscard]] Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term);
+
+// What the session takes from the command line: samples, in-betweens, spacing, step; the staff
+// values that seed path files of three columns (default 0); the answers an empty line takes
+// (--theta, --phi, --delay, --slopes) only where given; and where the overlay PNG goes (--png; a
+// relative name is taken from the current folder, also with --workdir).
+SessionSettings session_settings(const CommonOptions& options);
+
 // Runs the session headless: every key of the script, the animation untimed, and the screen after
-// each change of step to `out` (a line "--- STEP", then the 80x25 screen, trailing blanks
+// each change of step to `out` (a line "--- STEP", then the 80x24 screen, trailing blanks
 // removed). Returns the keys handled.
 std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
                                            std::ostream& out);
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
-// With a terminal the session runs there (--keys typed first); without one it needs --keys and
-// runs headless; otherwise exit 3.
+// With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,
+// for the process's locale and TERM (a set the locale cannot show: exit 2); without one it needs
+// --keys and runs headless (ascii unless --glyphs says otherwise); otherwise exit 3.
 ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
                                std::ostream& err);
 

@@ -10,6 +10,10 @@ inline constexpr int cell_width = 9;
 inline constexpr int cell_height = 14;
 inline constexpr int text_columns = screen_width / cell_width;
 inline constexpr int text_rows = screen_height / cell_height;
+// Graphics mode's text rows (staff labels, prompts) spread over the whole raster, 14.5 pixels
+// apart, so that each of an 80x24 terminal's rows holds exactly one: the top pixel row of text row
+// `row` (0 … 23).
+constexpr int text_row_top(int row) { return row * screen_height / text_rows; }
 // Horizontal scale factor of the device mapping (thesis Ch. 2.3): Hercules pixels are about 1.5
 // times as tall as wide, so x is stretched to keep a square square.
 inline constexpr double aspect_correction = 1.5;

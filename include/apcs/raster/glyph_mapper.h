@@ -18,17 +18,18 @@ enum class GlyphSet {
     blocks,    // 2x2 quadrant blocks per cell (U+2580 …)
 };
 
-// The text-mode geometry the raster was made for: 80x25 cells of 9x14 pixels.
+// The character screen the raster is shown on: 80x24 cells (9x14.5 pixels of the raster each),
+// what terminal emulators and SSH clients open with.
 inline constexpr int text_screen_columns = 80;
-inline constexpr int text_screen_rows = 25;
+inline constexpr int text_screen_rows = 24;
 
 struct CellArea {
     int columns = 0;
     int rows = 0;
 };
 
-// The largest area within a terminal of `columns` x `rows` that keeps the 80x25 proportions of
-// the DOS screen; nullopt when the terminal is smaller than 80x25.
+// The largest area within a terminal of `columns` x `rows` that keeps the 80x24 proportions of
+// the screen; nullopt when the terminal is smaller than 80x24.
 std::optional<CellArea> fit_cell_area(int columns, int rows);
 
 // Remembers the ASCII choice for each pooled mask seen, since a screen repeats few shapes and

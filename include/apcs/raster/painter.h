@@ -3,6 +3,7 @@
 #include "apcs/geometry/pixel_point.h"
 #include "apcs/raster/bitmap.h"
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,10 +17,12 @@ enum class DrawMode { set, clear, toggle };
 // (6 on, 4 off) or dotted (1 on, 2 off).
 enum class LineStyle { solid, dashed, dotted };
 
-// Draws into a Bitmap it does not own. Everything is clipped to the bitmap.
+// Draws into a Bitmap it does not own. Lines and pixels are clipped to the bitmap, and to `clip`
+// when one is given (right and bottom exclusive); markers and text to the bitmap only.
 class Painter {
 public:
     explicit Painter(Bitmap& target) : m_target(target) {}
+    Painter(Bitmap& target, PixelRect clip) : m_target(target), m_clip(clip) {}
 
     void pixel(PixelPoint point, DrawMode mode = DrawMode::set);
     // Bresenham's line from `from` to `to`, both ends included, clipped to the bitmap first so
@@ -41,8 +44,10 @@ public:
 private:
     template <typename Plot>
     void each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const;
+    PixelRect bounds() const;
 
     Bitmap& m_target;
+    std::optional<PixelRect> m_clip;
 };
 
 // Splits UTF-8 into code points; malformed bytes become U+FFFD.

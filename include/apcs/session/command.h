@@ -48,6 +48,12 @@ struct Yes : Signal<Yes> {};
 struct No : Signal<No> {};
 struct Continue : Signal<Continue> {};
 
+// Everywhere a key may mean them (SPEC §3, §7.3): the help screen of the step, a picture of the
+// screen (apcsNNN.png), ending the session, and closing the help screen.
+struct ShowHelp : Signal<ShowHelp> {};
+struct SavePicture : Signal<SavePicture> {};
+struct Quit : Signal<Quit> {};
+
 // Showing_Animation.
 struct StopAnimation : Signal<StopAnimation> {};
 struct Pause : Signal<Pause> {};
@@ -60,6 +66,7 @@ namespace apcs {
 using Command = std::variant<command::TypeCharacter, command::EraseCharacter, command::ClearLine, command::SubmitLine,
                              command::ChooseGlobal, command::ChooseLocal, command::ArrowMove, command::StaffStep,
                              command::Accept, command::Keep, command::Back, command::ToggleKeyFrames, command::Yes,
-                             command::No, command::Continue, command::StopAnimation, command::Pause, command::Replay>;
+                             command::No, command::Continue, command::ShowHelp, command::SavePicture, command::Quit,
+                             command::StopAnimation, command::Pause, command::Replay>;
 
 } // namespace apcs

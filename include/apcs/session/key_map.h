@@ -7,6 +7,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace apcs {
 
@@ -15,12 +16,15 @@ enum class KeyContext {
     text_line,      // a text prompt: every printable key is typed text
     yes_to_go_on,   // "Press 'Y' to adjust the next path !"
     enter_to_go_on, // "Press <ENTER> to Stop the work !"
-    any_key,        // "Press any key …"
+    any_key,        // "Press any key …" on the text console
+    any_key_graphics, // "Press any key …" in graphics mode (after the animation)
     control_choice, // Check_GorL_Control
     region_pick,    // Scan_Control_Point
     staff,          // Scan_Parameters
     adjust_again,   // Ask_Adjusting: Y again, anything else accepts
     animation,      // Showing_Animation
+    quit_question,  // "Quit without saving this path ? (Y/N)"
+    help_screen,    // the help screen: any key closes it
     finished,       // nothing is read
 };
 
@@ -45,12 +49,13 @@ struct KeyPattern {
 
 // One row of the key map: in `context`, a key matching `pattern` means `command`. `help` is the
 // row's words on the key line of graphics mode (rows that share words are shown once; empty: not
-// shown).
+// shown); `meaning` is what the help screen says of the key.
 struct KeyBinding {
     KeyContext context;
     KeyPattern pattern;
     Command command;
     std::string_view help;
+    std::string_view meaning;
 };
 
 // The whole key map (SPEC §3, §7.3), in the order it is searched: the first matching row wins.
@@ -62,5 +67,12 @@ std::optional<Command> command_for(KeyContext context, const KeyEvent& event);
 
 // The key line of a context: its rows' help words, each once, in table order, two spaces apart.
 std::string key_help(KeyContext context);
+
+// The name of the keys a pattern matches, as the help screen writes it: "4", "Left", "J", "Enter".
+std::string key_label(const KeyPattern& pattern);
+
+// The help screen's lines for a context: every key and what it means, keys of the same meaning on
+// one line ("4, Left    one step to the left").
+std::vector<std::string> key_help_lines(KeyContext context);
 
 } // namespace apcs

@@ -57,6 +57,7 @@ private:
     void start_staff(ControlRegion region);
     void set_staff_value(double value);
     std::string message() const;
+    std::string staff_message() const;
 
     Setup m_setup;
     SessionLog& m_log;

@@ -41,7 +41,7 @@ struct SessionSettings {
 // What the terminal shows now: the DOS text console or the graphics screen.
 struct SessionScreen {
     bool graphics = false;
-    CellGrid text;          // 80x25, when !graphics
+    CellGrid text;          // 80x24, when !graphics
     GraphicsScreen picture; // when graphics
 };
 
@@ -87,13 +87,22 @@ private:
     static const Prompt& prompt_for(SessionPhase phase);
 
     KeyContext key_context() const;
+    KeyContext step_key_context() const;
+    // Help, pictures and quitting: what any step may be asked (SPEC §3, §7.3). True when handled.
+    bool handle_everywhere(KeyContext context, const Command& command);
+    void dispatch_to_step(const Command& command);
     void update_text_step(SessionPhase phase, const Command& command);
+    void save_picture();
+    void write_overlay_once();
+    void quit();
+    CellGrid help_screen() const;
     void go_to(SessionPhase phase);
     void ask_again(SessionPhase phase, const std::string& problem);
 
     // The text steps in the order of Ch. 4.2 (session_steps.cpp), named after animate.c.
     std::vector<std::string> key2_prompt() const;
     std::vector<std::string> view_prompt() const;
+    std::string view_default() const;
     std::vector<std::string> done_lines() const;
     std::string path_file_default() const;
     std::string slopes_default() const;
@@ -138,6 +147,14 @@ private:
 
     // The frames of surface fitting, kept until the animation shows them.
     FrameSequence m_fitted_frames;
+
+    // The help screen is open over the step whose keys it lists.
+    std::optional<KeyContext> m_help_for;
+    // "Quit without saving this path ? (Y/N)" is asked.
+    bool m_asking_quit = false;
+    // What the last key did that the message line tells once (a picture written), if anything.
+    std::string m_notice;
+    bool m_overlay_written = false;
 
     std::vector<std::string> m_written;
 };

@@ -20,6 +20,8 @@ namespace apcs {
 class SessionFiles : public SessionLog {
 public:
     [[nodiscard]] virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
+    // Whether anything has the name (a new picture takes a name that nothing has).
+    [[nodiscard]] virtual bool exists(const std::string& name) const = 0;
     // From now on `name` is a key file, which no write may replace (SPEC §2.1).
     virtual void protect_key_file(const std::string& name) = 0;
     // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
@@ -38,6 +40,7 @@ public:
     explicit FolderFiles(std::filesystem::path folder) : m_folder(std::move(folder)) {}
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    bool exists(const std::string& name) const override;
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
@@ -61,6 +64,7 @@ public:
     std::vector<std::string> writes;
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    bool exists(const std::string& name) const override { return files.count(name) > 0; }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;

@@ -7,12 +7,12 @@
 
 namespace apcs {
 
-// The DOS text screen of the session: 80x25, lines scroll up, the line being typed shows below
+// The DOS text screen of the session: 80x24, lines scroll up, the line being typed shows below
 // the last printed line (input echoes on its own line).
 class TextConsole {
 public:
     static constexpr int columns = 80;
-    static constexpr int rows = 25;
+    static constexpr int rows = 24;
 
     // Prints text; '\n' ends a line; lines longer than 80 columns wrap.
     void print(const std::string& text);

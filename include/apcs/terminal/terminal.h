@@ -21,8 +21,8 @@ enum class TerminalInput { key, timeout, resize, stop };
 // signal or an exception in the program gives it back as it was (echo and line mode on).
 class Terminal {
 public:
-    // The terminal, or why there is no usable one (TERM unset or unknown, stdin or stdout not a
-    // terminal) as "apcs: PROBLEM". Keys are decoded by ncurses (keypad, with the keypad's
+    // The terminal, or why there is no usable one (TERM unset, unknown or `dumb`, a terminal that
+    // cannot move its cursor, stdin or stdout not a terminal) as "apcs: PROBLEM". Keys are decoded by ncurses (keypad, with the keypad's
     // application-mode sequences bound by define_key); Esc counts after ESCDELAY ms, the
     // environment's, else 100 (SPEC §7.3).
     [[nodiscard]] static Expected<std::unique_ptr<Terminal>> open();
@@ -33,10 +33,15 @@ public:
     TerminalSize size() const;
     // Waits up to timeout_ms (negative: for ever, but still wakes for signals).
     TerminalInput read_key(int timeout_ms, KeyEvent& key);
-    // Shows the grid at the top-left, sending only the cells that changed since the last call.
+    // Shows the grid at the top-left, each cell in its style (bold, reverse video), sending only
+    // the cells whose character or style changed since the last call; a run of changed cells of
+    // one style goes out as one string.
     void show(const CellGrid& grid);
     // Forgets what is on the screen, so that the next show() repaints everything.
     void invalidate();
+    // Forgets what is on the screen and what curses believes is there: the next show() clears
+    // the terminal and repaints every cell, so a screen garbled from outside is made whole (Ctrl-L).
+    void redraw();
 
 private:
     Terminal();
