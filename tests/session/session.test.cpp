@@ -324,3 +324,114 @@ TEST_CASE("the animation stops on Esc and replays from the start on R", "[sessio
     REQUIRE(session.phase() == SessionPhase::animation_done);
     REQUIRE_FALSE(session.animating());
 }
+
+TEST_CASE("? and F1 open the help screen of the step, any key closes it", "[session][help]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    press(session, {KeyEvent::of(Key::f1)});
+    REQUIRE(screen_text(session).starts_with("APCS help - the keys of step 1: KEY1 file\n"));
+    REQUIRE(screen_text(session).find("Backspace") != std::string::npos);
+    press(session, {ch('x')}); // closes, is not typed
+    REQUIRE(screen_text(session).starts_with("Please keyin the KEY1 filename!\n_"));
+    type(session, "?"); // the answer ? alone is the help too
+    REQUIRE(screen_text(session).starts_with("APCS help"));
+    press(session, {enter});
+    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    reach_control_choice(session);
+    press(session, {ch('8'), ch('?')});
+    REQUIRE_FALSE(session.screen().graphics);
+    REQUIRE(screen_text(session).find("  J               three steps left (Shift-J)") != std::string::npos);
+    press(session, {ch('6')}); // closes the help; the staff is unchanged
+    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(graphics_message(session) == "way1.dat: TENSION  control points 1 to 4 of 4");
+}
+
+TEST_CASE("q asks before quitting an unsaved path; Enter means N; Y ends with the files listed", "[session][quit]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), ch('6'), ch('q')});
+    REQUIRE(graphics_message(session) == "Quit without saving this path ? (Y/N)");
+    press(session, {ch('6')}); // not an answer
+    REQUIRE(graphics_message(session) == "Quit without saving this path ? (Y/N)");
+    press(session, {enter});
+    REQUIRE(session.phase() == SessionPhase::staff);
+    press(session, {ch('Q'), ch('y')});
+    REQUIRE(session.finished());
+    REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n") != std::string::npos);
+    REQUIRE(files.files["way1.dat"] == "0 0 0\n3 -4 5\n1 1 7\n0 0 10\n"); // not saved
+    REQUIRE(files.log_lines[files.log_lines.size() - 2] == "quit at step 4: four-line staff");
+}
+
+TEST_CASE("P writes the graphics screen as the first free apcsNNN.png and says so", "[session][picture]")
+{
+    MemoryFiles files = example_files();
+    files.files["apcs001.png"] = "someone's picture";
+    Session session({}, files);
+    reach_control_choice(session);
+    press(session, {ch('P')});
+    REQUIRE(graphics_message(session) == "wrote apcs002.png");
+    REQUIRE(files.files["apcs001.png"] == "someone's picture");
+    REQUIRE(files.files["apcs002.png"].starts_with("\x89PNG"));
+    press(session, {ch('8')}); // the next key takes the notice away
+    REQUIRE(graphics_message(session) == "way1.dat: TENSION  control points 1 to 4 of 4");
+}
+
+TEST_CASE("a path of two control points says that t, c and b act at interior points", "[session][staff]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    type(session, ""); // ani1.dat, as split wrote it: two control points
+    type(session, "");
+    press(session, {ch('8')});
+    REQUIRE(graphics_message(session) == "TENSION acts at interior control points: add waypoints (manual 10)");
+    press(session, {enter, enter, enter});
+    REQUIRE(graphics_message(session).starts_with("ani1.dat: ACCELERATION  control points 1 to 2 of 2"));
+}
+
+TEST_CASE("the command line's values are the answers Enter takes, and seed 3-column path files", "[session]")
+{
+    MemoryFiles files = example_files();
+    SessionSettings settings;
+    settings.theta_degrees = 0;
+    settings.phi_degrees = 90;
+    settings.delay_ms = 50;
+    settings.slopes = EndSlopes{0.5, 0.25};
+    settings.staff = {0.1, 0, 0, 0};
+    Session session(settings, files);
+    type(session, "");
+    type(session, "");
+    type(session, "");
+    REQUIRE(screen_text(session).find("THETA ,PHI & delay-time value.\n0 90 50\n") != std::string::npos);
+    type(session, "way1.dat");
+    type(session, "");
+    REQUIRE(files.log_lines.back() == "slopes DS[0] 0.5, DD[N] 0.25");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('n')});
+    REQUIRE(files.files["way1.dat"].starts_with("0 0 0 0.1 0 0 0\n"));
+}
+
+TEST_CASE("--png writes the overlay of all frames when the animation ends", "[session][picture]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n0 5 0\n";
+    SessionSettings settings;
+    settings.overlay_png = "all.png";
+    Session session(settings, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, "way4.dat");
+    type(session, "");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter, enter});
+    while (session.animating())
+        session.tick();
+    REQUIRE(files.files.count("all.png") == 0);
+    press(session, {enter});
+    REQUIRE(session.phase() == SessionPhase::overlay);
+    REQUIRE(files.files["all.png"].starts_with("\x89PNG"));
+    REQUIRE(graphics_message(session) == "wrote all.png");
+}

@@ -48,9 +48,8 @@ EscapeTail escape_tail(std::u32string_view after_escape);
 // The key the session sees for what get_wch returned (`get_wch_result`: OK for a character,
 // KEY_CODE_YES for a curses key code): arrows, Enter (CR, LF, KEY_ENTER), Space, Backspace (^H,
 // DEL, KEY_BACKSPACE), Esc, Tab, Shift-Tab (KEY_BTAB), F1, Ctrl-L (redraw), the keypad's digits
-// and any other printable character. nullopt for
-// anything else (ERR, other control characters, keys the session has no use for). KEY_RESIZE is
-// the caller's. Pure: uses the constants of <curses.h> only, so it is tested without ncurses.
+// and any other printable character. nullopt for anything else (ERR, other control characters,
+// keys the session has no use for). KEY_RESIZE is the caller's. Pure: uses the constants of <curses.h> only, so it is tested without ncurses.
 std::optional<KeyEvent> key_event_from_curses(int get_wch_result, wint_t code);
 
 } // namespace apcs

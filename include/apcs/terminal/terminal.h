@@ -22,16 +22,17 @@ enum class TerminalInput { key, timeout, resize, stop };
 class Terminal {
 public:
     // The terminal, or why there is no usable one (TERM unset, unknown or `dumb`, a terminal that
-    // cannot move its cursor, stdin or stdout not a terminal) as "apcs: PROBLEM". Keys are decoded by ncurses (keypad, with the keypad's
-    // application-mode sequences bound by define_key); Esc counts after ESCDELAY ms, the
-    // environment's, else 100 (SPEC §7.3).
+    // cannot move its cursor, stdin or stdout not a terminal) as "apcs: PROBLEM". Keys are
+    // decoded by ncurses (keypad, with the sequences of key_sequences() bound by define_key); Esc
+    // counts after ESCDELAY ms, the environment's, else 100 (SPEC §7.3).
     [[nodiscard]] static Expected<std::unique_ptr<Terminal>> open();
     ~Terminal();
     Terminal(const Terminal&) = delete;
     Terminal& operator=(const Terminal&) = delete;
 
     TerminalSize size() const;
-    // Waits up to timeout_ms (negative: for ever, but still wakes for signals).
+    // Waits up to timeout_ms (negative: for ever, but still wakes for signals). An escape
+    // sequence ncurses does not know is read to its end and dropped, never typed (escape_tail).
     TerminalInput read_key(int timeout_ms, KeyEvent& key);
     // Shows the grid at the top-left, each cell in its style (bold, reverse video), sending only
     // the cells whose character or style changed since the last call; a run of changed cells of

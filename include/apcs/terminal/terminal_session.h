@@ -13,10 +13,10 @@ namespace apcs {
 // Runs the session in the terminal: the scripted keys first, as if typed, then the keyboard, the
 // graphics screen in `glyphs` (already chosen: not GlyphSet::automatic). Every key handled is
 // appended to `recorded`; Ctrl-L (Key::redraw) also repaints the whole terminal. Below the least
-// size (text_screen_columns x text_screen_rows) the screen says how large it must be. Returns success when the session ended, stopped
-// when stopped by a signal or a lost terminal, terminal_problem with `problem` set ("apcs:
-// PROBLEM") when there is no usable terminal. The terminal is given back on every way out,
-// exceptions included.
+// size (text_screen_columns x text_screen_rows) the screen says how large it must be. Returns
+// success when the session ended, stopped when stopped by a signal or a lost terminal,
+// terminal_problem with `problem` set ("apcs: PROBLEM") when there is no usable terminal. The
+// terminal is given back on every way out, exceptions included.
 ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem);
 
