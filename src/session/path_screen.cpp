@@ -46,8 +46,8 @@ void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenConten
         const int y = layout::staff_line_y(index);
         const int row = layout::first_staff_row + index;
         const bool active = content.active_line == line;
-        screen.text.push_back({0, row, active ? ">" : " "});
-        screen.text.push_back({1, row, std::string(staff_line_name(line)), active ? CellStyle::reverse : CellStyle::plain});
+        screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(line)),
+                               active ? CellStyle::reverse : CellStyle::plain});
         painter.line({layout::staff_left, y}, {layout::staff_right, y});
         for (const double tick : {-1.0, 0.0, 1.0})
             painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},
