@@ -11,5 +11,6 @@ cmake --build --preset release -j"$(nproc)" --target apcs
 work=build/session-n-to-l
 mkdir -p "$work"
 cp data/n-to-l/*.dat "$work"/
-echo "APCS works in $work. Press Enter at each prompt for the thesis' example answers."
+echo "APCS works in $work. Press Enter at each prompt for the thesis' example answers;"
+echo "answer way1.dat for the first path to see the staff bend it (README: your first session)."
 exec build/release/apcs --workdir "$work" "$@"
