@@ -122,3 +122,21 @@ TEST_CASE("UTF-8 decoding", "[raster][painter]")
     REQUIRE(decode_utf8("a\xC3\xA9\xE2\x94\x80") == U"a\u00E9\u2500");
     REQUIRE(decode_utf8("\xFF") == U"\uFFFD");
 }
+
+TEST_CASE("a clipped painter draws nothing outside its clip rectangle", "[raster][painter]")
+{
+    Bitmap bitmap;
+    Painter clipped(bitmap, PixelRect{10, 10, 20, 20});
+    clipped.line({0, 15}, {100, 15});
+    clipped.pixel({5, 5});
+    clipped.pixel({12, 12});
+    int lit = 0;
+    for (int y = 0; y < bitmap.height(); ++y)
+        for (int x = 0; x < bitmap.width(); ++x)
+            if (bitmap.get(x, y)) {
+                ++lit;
+                REQUIRE((x >= 10 && x < 20 && y >= 10 && y < 20));
+            }
+    // The line's 10 pixels from x = 10 to 19, and the one pixel inside.
+    REQUIRE(lit == 11);
+}
