@@ -259,25 +259,13 @@ void Session::save_picture()
         m_notice = "P writes a picture in graphics mode only";
         return;
     }
-    std::string name;
-    for (int number = 1; number <= 999 && name.empty(); ++number) {
-        char candidate[32];
-        std::snprintf(candidate, sizeof candidate, "apcs%03d.png", number);
-        if (!m_files.exists(candidate))
-            name = candidate;
+    for (int number = 1; number <= 999; ++number) {
+        char name[32];
+        std::snprintf(name, sizeof name, "apcs%03d.png", number);
+        if (!m_files.exists(name))
+            return write_picture(name, shown.picture, "picture " + std::string(name));
     }
-    const std::optional<std::string> png = encode_png(render_raster(shown.picture));
-    if (name.empty() || !png) {
-        m_notice = name.empty() ? "apcs001.png … apcs999.png all exist; move some away" : "cannot encode the PNG image";
-        return;
-    }
-    if (auto problem = m_files.write(name, *png)) {
-        m_notice = problem->to_string();
-        return;
-    }
-    record_written(name);
-    m_files.log("picture " + name);
-    m_notice = "wrote " + name;
+    m_notice = "apcs001.png … apcs999.png all exist; move some away";
 }
 
 void Session::write_overlay_once()
@@ -285,8 +273,13 @@ void Session::write_overlay_once()
     if (m_overlay_written || !m_settings.overlay_png)
         return;
     m_overlay_written = true;
-    const std::optional<std::string> png = encode_png(render_raster(std::get<AnimationPlayer>(m_step).view()));
-    const std::string& name = *m_settings.overlay_png;
+    write_picture(*m_settings.overlay_png, std::get<AnimationPlayer>(m_step).view(),
+                  "overlay of all frames written to " + *m_settings.overlay_png);
+}
+
+void Session::write_picture(const std::string& name, const GraphicsScreen& picture, const std::string& log_line)
+{
+    const std::optional<std::string> png = encode_png(render_raster(picture));
     if (!png) {
         m_notice = name + ": cannot encode the PNG image";
         return;
@@ -296,7 +289,7 @@ void Session::write_overlay_once()
         return;
     }
     record_written(name);
-    m_files.log("overlay of all frames written to " + name);
+    m_files.log(log_line);
     m_notice = "wrote " + name;
 }
 

@@ -415,7 +415,7 @@ TEST_CASE("the command line's values are the answers Enter takes, and seed 3-col
     REQUIRE(files.files["way1.dat"].starts_with("0 0 0 0.1 0 0 0\n"));
 }
 
-TEST_CASE("--png writes the overlay of all frames when the animation ends", "[session][picture]")
+TEST_CASE("the session's --png writes the overlay of all frames when the animation ends", "[session][picture]")
 {
     MemoryFiles files = example_files();
     files.files["way4.dat"] = "0 6 10\n0 5 0\n";

@@ -94,6 +94,8 @@ private:
     void update_text_step(SessionPhase phase, const Command& command);
     void save_picture();
     void write_overlay_once();
+    // The picture as a PNG file; the message line says what happened.
+    void write_picture(const std::string& name, const GraphicsScreen& picture, const std::string& log_line);
     void quit();
     CellGrid help_screen() const;
     void go_to(SessionPhase phase);
