@@ -126,6 +126,10 @@ std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<K
         if (session.phase() != before)
             print_step(session, glyphs, out);
     }
+    // A script that ends mid-step (a step asked again, say after a failed write) shows where it
+    // stopped and why.
+    if (!session.finished())
+        print_step(session, glyphs, out);
     return handled;
 }
 
@@ -185,6 +189,11 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
                 out << name << '\n';
     }
     if (options.record) {
+        std::error_code ignored;
+        if (files.is_key_file(std::filesystem::absolute(*options.record, ignored).string()))
+            return report_bad_input({options.record->string(), 0, "is a key file; key files are never written (the "
+                                                                  "keystrokes were not recorded)"},
+                                    err);
         const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
         if (!written)
             return report_bad_input(written.error(), err);

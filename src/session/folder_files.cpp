@@ -30,6 +30,14 @@ bool FolderFiles::exists(const std::string& name) const
     return std::filesystem::exists(std::filesystem::symlink_status(m_folder / name, error));
 }
 
+std::string FolderFiles::name_read(const std::string& name) const
+{
+    const std::filesystem::path typed(name);
+    const std::filesystem::path found = resolve_input_path(m_folder / typed);
+    // Only the last part of a name is matched ignoring case: keep what was typed before it.
+    return (typed.parent_path() / found.filename()).string();
+}
+
 void FolderFiles::protect_key_file(const std::string& name) { m_key_files.protect(m_folder / name); }
 
 std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std::string& content)

@@ -190,7 +190,8 @@ void Session::read_data_file(const std::string& name)
         point_path_from(*file, name, m_path == 0 ? PathEnd::first : PathEnd::last, m_keys, defaults);
     if (!points)
         return ask_again(SessionPhase::ask_path_file, points.error().to_string());
-    m_path_names[static_cast<std::size_t>(m_path)] = name;
+    // Accepting rewrites the file that was read, whatever case the name was typed in.
+    m_path_names[static_cast<std::size_t>(m_path)] = m_files.name_read(name);
     m_points[static_cast<std::size_t>(m_path)] = std::move(*points);
     m_files.log("path " + name + ": " + std::to_string(file->point_count()) + " control points");
     m_first_slope.reset();

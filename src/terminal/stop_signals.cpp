@@ -19,6 +19,7 @@ extern "C" void request_stop(int)
     sigaction(SIGINT, &ignore, nullptr);
     sigaction(SIGTERM, &ignore, nullptr);
     sigaction(SIGHUP, &ignore, nullptr);
+    sigaction(SIGQUIT, &ignore, nullptr);
 }
 
 } // namespace
@@ -32,6 +33,8 @@ StopSignals::StopSignals()
     sigaction(SIGINT, &action, &m_old_int);
     sigaction(SIGTERM, &action, &m_old_term);
     sigaction(SIGHUP, &action, &m_old_hup);
+    // Ctrl-\ (SIGQUIT) would otherwise end the program with a core and the terminal left raw.
+    sigaction(SIGQUIT, &action, &m_old_quit);
 }
 
 StopSignals::~StopSignals()
@@ -41,7 +44,7 @@ StopSignals::~StopSignals()
         // when the terminal's session leader goes) must not cut that short.
         sigset_t finishing;
         sigemptyset(&finishing);
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGPIPE})
+        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE})
             sigaddset(&finishing, signal);
         sigprocmask(SIG_BLOCK, &finishing, nullptr);
         return;
@@ -49,6 +52,7 @@ StopSignals::~StopSignals()
     sigaction(SIGINT, &m_old_int, nullptr);
     sigaction(SIGTERM, &m_old_term, nullptr);
     sigaction(SIGHUP, &m_old_hup, nullptr);
+    sigaction(SIGQUIT, &m_old_quit, nullptr);
 }
 
 bool StopSignals::requested() const { return stop_requested != 0; }

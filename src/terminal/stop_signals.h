@@ -4,11 +4,11 @@
 
 namespace apcs {
 
-// While it lives, SIGINT, SIGTERM and SIGHUP ask the program to stop instead of ending it: the
-// terminal is given back and every file finished. One stop is enough: from the first signal on
-// the others are ignored. Construction clears any earlier request and installs the handler;
-// destruction gives the old handlers back, or, after a stop, blocks these signals (and SIGPIPE)
-// for the rest of the program, which only finishes its files.
+// While it lives, SIGINT, SIGTERM, SIGHUP and SIGQUIT (Ctrl-\) ask the program to stop instead of
+// ending it: the terminal is given back and every file finished. One stop is enough: from the
+// first signal on the others are ignored. Construction clears any earlier request and installs the
+// handler; destruction gives the old handlers back, or, after a stop, blocks these signals (and
+// SIGPIPE) for the rest of the program, which only finishes its files.
 class StopSignals {
 public:
     StopSignals();
@@ -25,6 +25,7 @@ private:
     struct sigaction m_old_int {};
     struct sigaction m_old_term {};
     struct sigaction m_old_hup {};
+    struct sigaction m_old_quit {};
 };
 
 } // namespace apcs

@@ -77,3 +77,56 @@ TEST_CASE("a script that ends early says at which step", "[session][headless]")
     REQUIRE(result.status == 0);
     REQUIRE(result.err == "apcs: the key script ended at step 1: KEY2 file\n");
 }
+
+namespace {
+
+// The N to L session with the answers at the KEY1 and first path prompts replaced.
+std::string n_to_l_script(const std::string& key1_answer, const std::string& first_path)
+{
+    std::string script = test::read_all(std::filesystem::path(APCS_SOURCE_DIR) / "data/n-to-l/session.keys");
+    const std::string first_key = "ENTER            ; KEY1: key1.dat";
+    script.replace(script.find(first_key), first_key.size(), "TEXT " + key1_answer + "\nENTER");
+    script.replace(script.find("TEXT way1.dat"), std::string("TEXT way1.dat").size(), "TEXT " + first_path);
+    return script;
+}
+
+} // namespace
+
+TEST_CASE("a path file typed in another case is rewritten as the file that was read", "[session][headless][files]")
+{
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    const std::string original = test::read_all(folder / "way1.dat");
+    const auto script = folder.write("upper.keys", n_to_l_script("key1.dat", "WAY1.DAT"));
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
+    REQUIRE(result.status == 0);
+    REQUIRE_FALSE(std::filesystem::exists(folder / "WAY1.DAT"));
+    REQUIRE(test::read_all(folder / "way1.dat") != original);
+    REQUIRE(test::read_all(folder / "way1.bak") == original);
+}
+
+TEST_CASE("a key file named by its absolute path is never overwritten by surface fitting", "[session][headless][files]")
+{
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    // KEY1 is a file that surface fitting would write: inb001.dat, named absolutely.
+    std::filesystem::copy_file(folder / "key1.dat", folder / "inb001.dat");
+    const std::string key = test::read_all(folder / "inb001.dat");
+    const auto script = folder.write("abs.keys", n_to_l_script((folder / "inb001.dat").string(), "way1.dat"));
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
+    REQUIRE(test::read_all(folder / "inb001.dat") == key);
+    REQUIRE(result.out.find("inb001.dat: is a key file; key files are never written") != std::string::npos);
+}
+
+TEST_CASE("--record never replaces a key file", "[session][headless][files]")
+{
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    const std::string key = test::read_all(folder / "key1.dat");
+    const auto result = test::run_apcs({"--keys", (folder / "session.keys").string(), "--workdir",
+                                        folder.path().string(), "--record", (folder / "KEY1.DAT").string()});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.err.find("is a key file; key files are never written") != std::string::npos);
+    REQUIRE(test::read_all(folder / "key1.dat") == key);
+    REQUIRE_FALSE(std::filesystem::exists(folder / "KEY1.DAT"));
+}

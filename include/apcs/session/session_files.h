@@ -22,6 +22,11 @@ public:
     [[nodiscard]] virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
     // Whether anything has the name (a new picture takes a name that nothing has).
     [[nodiscard]] virtual bool exists(const std::string& name) const = 0;
+    // The name of the file that read_dat(name) reads: another case of `name` where only that
+    // exists (DOS names: WAY1.DAT reads way1.dat), so a rewrite goes back to the same file.
+    [[nodiscard]] virtual std::string name_read(const std::string& name) const { return name; }
+    // Whether `name` is one of the key files, under any spelling.
+    [[nodiscard]] virtual bool is_key_file(const std::string& name) const = 0;
     // From now on `name` is a key file, which no write may replace (SPEC §2.1).
     virtual void protect_key_file(const std::string& name) = 0;
     // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
@@ -41,6 +46,8 @@ public:
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
     bool exists(const std::string& name) const override;
+    std::string name_read(const std::string& name) const override;
+    bool is_key_file(const std::string& name) const override { return m_key_files.guards(m_folder / name); }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
@@ -65,6 +72,7 @@ public:
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
     bool exists(const std::string& name) const override { return files.count(name) > 0; }
+    bool is_key_file(const std::string& name) const override { return m_key_files.guards(name); }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;

@@ -14,7 +14,7 @@ struct TerminalSize {
 };
 
 // What read_key saw: a key, nothing within the time-out, a resize, or a request to stop
-// (SIGINT, SIGTERM, SIGHUP, or the terminal gone).
+// (SIGINT, SIGTERM, SIGHUP, SIGQUIT, or the terminal gone).
 enum class TerminalInput { key, timeout, resize, stop };
 
 // The one door to the terminal (ncurses). Construction takes over the terminal; destruction, a
