@@ -1,4 +1,4 @@
-// Counts the bytes APCS sends to an 80x25 terminal for each staff keystroke: the real program in
+// Counts the bytes APCS sends to an 80x24 terminal for each staff keystroke: the real program in
 // a pseudo-terminal, a 6-point path, 20 presses of 6 on TENSION, for each glyph set.
 // Usage: terminal_bytes PATH_TO_APCS
 #include <algorithm>
@@ -41,7 +41,7 @@ void type(int terminal, const std::string& keys, int quiet_ms = 150)
 std::vector<std::size_t> measure(const std::string& apcs, const std::filesystem::path& folder, const char* glyphs)
 {
     int terminal = -1;
-    winsize size{25, 80, 0, 0};
+    winsize size{24, 80, 0, 0};
     const pid_t child = forkpty(&terminal, nullptr, nullptr, &size);
     if (child == 0) {
         setenv("TERM", "xterm", 1);
@@ -81,7 +81,7 @@ int main(int argc, char** argv)
     std::ofstream(folder / "key1.dat") << "0 0 0\n1 0 0\n";
     std::ofstream(folder / "key2.dat") << "0 10 6\n1 10 6\n";
     std::ofstream(folder / "way1.dat") << "0 0 0\n0 2 3\n0 4 1\n0 6 4\n0 8 2\n0 10 6\n";
-    std::printf("glyphs   median  min  max   bytes per press of 6 on TENSION (20 presses, 80x25)\n");
+    std::printf("glyphs   median  min  max   bytes per press of 6 on TENSION (20 presses, 80x24)\n");
     for (const char* glyphs : {"ascii", "braille", "blocks"}) {
         std::vector<std::size_t> bytes = measure(argv[1], folder, glyphs);
         std::vector<std::size_t> sorted = bytes;

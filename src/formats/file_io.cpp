@@ -81,6 +81,44 @@ bool holds_exactly(const fs::path& file, std::string_view content)
     return true;
 }
 
+// What a file that is not a regular file is, in a message: "a FIFO", "a character device"...
+std::string kind_of(mode_t mode)
+{
+    if (S_ISDIR(mode))
+        return "a directory";
+    if (S_ISFIFO(mode))
+        return "a FIFO";
+    if (S_ISCHR(mode))
+        return "a character device";
+    if (S_ISBLK(mode))
+        return "a block device";
+    if (S_ISSOCK(mode))
+        return "a socket";
+    if (S_ISLNK(mode))
+        return "a symbolic link";
+    return "not a regular file";
+}
+
+std::string not_regular(mode_t mode) { return "is not a regular file (" + kind_of(mode) + ")"; }
+
+std::string octal_mode(mode_t mode)
+{
+    char text[8];
+    std::snprintf(text, sizeof text, "%04o", static_cast<unsigned>(mode & 07777));
+    return text;
+}
+
+// Whether the user means the file to stay as it is: no write permission for them. As root,
+// access() and faccessat() say yes to every file, so there the mode bits decide: a file that
+// nobody may write (0444) is one its owner protected on purpose, and root replacing it would
+// quietly undo that. Other users ask the kernel, which also knows ACLs and groups.
+bool is_read_only(const fs::path& file, const struct stat& status)
+{
+    if (::geteuid() == 0)
+        return (status.st_mode & 0222) == 0;
+    return ::faccessat(AT_FDCWD, file.c_str(), W_OK, AT_EACCESS) != 0 && errno == EACCES;
+}
+
 } // namespace
 
 fs::path resolve_input_path(const fs::path& name)
@@ -100,12 +138,23 @@ Expected<std::string> read_text_file(const fs::path& name)
 {
     const std::string shown = name.string();
     const fs::path path = resolve_input_path(name);
-    std::error_code error;
-    if (fs::is_directory(path, error))
-        return Diagnostic{shown, 0, "is a directory; expected a file"};
-    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    // Only regular files are read: a FIFO would wait forever for a writer, a device could be read
+    // without end. stat() first, so that such a file is never even opened; O_NONBLOCK and the
+    // fstat() after the open cover a file swapped for a FIFO in between.
+    struct stat status {};
+    if (::stat(path.c_str(), &status) == 0) {
+        if (S_ISDIR(status.st_mode))
+            return Diagnostic{shown, 0, "is a directory; expected a file"};
+        if (!S_ISREG(status.st_mode))
+            return Diagnostic{shown, 0, not_regular(status.st_mode) + "; expected a file"};
+    }
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY));
     if (file.get() < 0)
         return Diagnostic{shown, 0, "cannot open: " + system_reason(errno)};
+    if (::fstat(file.get(), &status) != 0)
+        return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
+    if (!S_ISREG(status.st_mode))
+        return Diagnostic{shown, 0, not_regular(status.st_mode) + "; expected a file"};
     std::string content;
     char buffer[1 << 16];
     while (true) {
@@ -150,15 +199,40 @@ fs::path backup_path_for(const fs::path& target)
     return backup;
 }
 
-Expected<WriteResult> write_file_atomically(const fs::path& target, std::string_view content)
+Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content)
 {
-    const std::string shown = target.string();
-    std::error_code error;
-    if (fs::is_directory(target, error))
-        return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
-    const bool exists = fs::exists(target, error);
+    const std::string shown = requested.string();
+    // Only regular files are ever replaced. A symbolic link is written through to the file it
+    // names (replaced in its own folder; the link stays) when that is a regular file; a device, a
+    // FIFO, a socket or a directory, named or linked to, is refused and left as it is.
+    fs::path target = requested;
+    struct stat status {};
+    bool exists = false;
+    if (::lstat(requested.c_str(), &status) == 0) {
+        if (S_ISLNK(status.st_mode)) {
+            std::error_code error;
+            const fs::path named = fs::read_symlink(requested, error);
+            const std::string link_to = "is a symbolic link to " + (error ? std::string("a file") : named.string());
+            if (::stat(requested.c_str(), &status) != 0)
+                return Diagnostic{shown, 0, link_to + ", which does not exist (" + system_reason(errno) + "); APCS writes only regular files"};
+            if (!S_ISREG(status.st_mode))
+                return Diagnostic{shown, 0, link_to + ", which " + not_regular(status.st_mode) + "; APCS writes only regular files"};
+            target = fs::canonical(requested, error);
+            if (error)
+                return Diagnostic{shown, 0, link_to + ", which cannot be followed: " + error.message()};
+        } else if (S_ISDIR(status.st_mode)) {
+            return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
+        } else if (!S_ISREG(status.st_mode)) {
+            return Diagnostic{shown, 0, not_regular(status.st_mode) + "; APCS writes only regular files"};
+        }
+        exists = true;
+    }
     if (exists && holds_exactly(target, content))
         return WriteResult{WriteOutcome::unchanged, {}};
+    if (exists && is_read_only(target, status))
+        return Diagnostic{shown, 0, "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
+    // A new file is 0644; a replaced one keeps its mode, and its owner and group where allowed.
+    const mode_t mode = exists ? (status.st_mode & 07777) : 0644;
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
     std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
     FileDescriptor file(::mkstemp(temporary.data()));
@@ -174,7 +248,9 @@ Expected<WriteResult> write_file_atomically(const fs::path& target, std::string_
         return abandon("cannot write");
     if (::fsync(file.get()) != 0)
         return abandon("cannot flush to disk");
-    if (::fchmod(file.get(), 0644) != 0)
+    if (exists && (status.st_uid != ::geteuid() || status.st_gid != ::getegid()))
+        [[maybe_unused]] const int ignored = ::fchown(file.get(), status.st_uid, status.st_gid);
+    if (::fchmod(file.get(), mode) != 0)
         return abandon("cannot set permissions");
     if (file.close() != 0)
         return abandon("cannot close");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end: signals leave the terminal sane; a small terminal is told its size; a resize redraws.
-# Usage: tmux_terminal_faults.sh APCS
+# Usage: tmux_terminal_faults.sh APCS [DATA_FOLDER]
 set -euo pipefail
 apcs=$1
+data=${2:-$(dirname "$0")/../../data/n-to-l}
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
 work=$(mktemp -d)
@@ -13,23 +14,50 @@ trap cleanup EXIT
 source "$(dirname "$0")/tmux_lib.sh"
 report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
 
+# Fails unless the pane of session $1 reports exit 130 and a terminal with echo and icanon back.
+expect_restored() {
+  wait_for "$1" "EXITED=130"
+  wait_for "$1" "MODES"
+  modes=$(screen "$1" | grep "MODES$")
+  case "$modes" in
+    *-echo* | *-icanon*) echo "terminal not restored after $2: $modes"; exit 1 ;;
+    *echo* ) [[ "$modes" == *icanon* ]] || { echo "no icanon after $2: $modes"; exit 1; } ;;
+    *) echo "no echo after $2: $modes"; exit 1 ;;
+  esac
+}
+
 passed=0
-for signal in INT TERM HUP; do
+for signal in INT TERM HUP QUIT; do
   name="sig$signal"
   tmux -L "$socket" new-session -d -s "$name" -x 80 -y 25 -c "$work" \
     "'$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
   wait_for "$name" "Please keyin the KEY1 filename!"
   pkill -"$signal" -f "^$apcs\$" || pkill -"$signal" -x apcs
-  wait_for "$name" "EXITED=130"
-  wait_for "$name" "MODES"
-  modes=$(screen "$name" | grep "MODES$")
-  case "$modes" in
-    *-echo* | *-icanon*) echo "terminal not restored after SIG$signal: $modes"; exit 1 ;;
-    *echo* ) [[ "$modes" == *icanon* ]] || { echo "no icanon after SIG$signal: $modes"; exit 1; } ;;
-    *) echo "no echo after SIG$signal: $modes"; exit 1 ;;
-  esac
+  expect_restored "$name" "SIG$signal"
   passed=$((passed + 1))
 done
+
+# Ctrl-\ typed at the keyboard (SIGQUIT from the terminal's driver) once the split has written its
+# files: handled like Ctrl-C, no core, and every file written is whole (no temporary left behind).
+quit_work="$work/quit"
+mkdir "$quit_work"
+cp "$data"/key1.dat "$data"/key2.dat "$quit_work"/
+tmux -L "$socket" new-session -d -s ctrlquit -x 80 -y 25 -c "$quit_work" \
+  "ulimit -c 0; '$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
+wait_for ctrlquit "Please keyin the KEY1 filename!"
+tmux -L "$socket" send-keys -t ctrlquit Enter
+wait_for ctrlquit "Please keyin the KEY2 filename!"
+tmux -L "$socket" send-keys -t ctrlquit Enter
+wait_for ctrlquit "THETA ,PHI & delay-time value."
+tmux -L "$socket" send-keys -t ctrlquit 'C-\\'
+expect_restored ctrlquit "Ctrl-\\"
+screen ctrlquit | grep -qF "stopped; every file written so far is whole" \
+  || { echo "no stop message after Ctrl-\\"; screen ctrlquit; exit 1; }
+leftovers=$(find "$quit_work" -name '.*' -type f)
+[[ -z "$leftovers" ]] || { echo "temporary files left after Ctrl-\\: $leftovers"; exit 1; }
+[[ -s "$quit_work/ani1.dat" ]] || { echo "the split wrote no ani1.dat before Ctrl-\\"; ls -la "$quit_work"; exit 1; }
+cmp -s "$data/key1.dat" "$quit_work/key1.dat" || { echo "key1.dat changed after Ctrl-\\"; exit 1; }
+passed=$((passed + 1))
 
 tmux -L "$socket" new-session -d -s small -x 70 -y 20 -c "$work" "'$apcs'; echo EXITED=\$?; sleep 60"
 wait_for small "The terminal must be at least 80x24 (it is 70x20)"

@@ -4,6 +4,15 @@
 
 #include <catch2/catch.hpp>
 
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <fcntl.h>
+#include <future>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <unistd.h>
+
 using namespace apcs;
 using test::read_all;
 using test::TempFolder;
@@ -69,4 +78,196 @@ TEST_CASE("the backup of a .bak file is not the file itself", "[formats][files]"
     REQUIRE(backup_path_for("a/way1.dat") == "a/way1.bak");
     REQUIRE(backup_path_for("way1.bak") == "way1.bak.bak");
     REQUIRE(backup_path_for("noext") == "noext.bak");
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Makes a FIFO named `name` in `folder`; false when the file system cannot hold one.
+bool make_fifo(const fs::path& fifo) { return ::mkfifo(fifo.c_str(), 0644) == 0; }
+
+// Reads `name` on another thread; a read still blocked after 5 s is released (a writer opens and
+// closes the FIFO, which ends the read) and reported as a hang instead of hanging the suite.
+Expected<std::string> read_without_hanging(const fs::path& name, bool& hung)
+{
+    auto reading = std::async(std::launch::async, [name] { return read_text_file(name); });
+    hung = reading.wait_for(std::chrono::seconds(5)) != std::future_status::ready;
+    if (hung) {
+        const int writer = ::open(name.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+        if (writer >= 0)
+            ::close(writer);
+    }
+    return reading.get();
+}
+
+bool is_regular_file_not_link(const fs::path& file)
+{
+    std::error_code error;
+    return fs::symlink_status(file, error).type() == fs::file_type::regular;
+}
+
+mode_t mode_of(const fs::path& file)
+{
+    struct stat status {};
+    REQUIRE(::stat(file.c_str(), &status) == 0);
+    return status.st_mode & 07777;
+}
+
+std::size_t entries_in(const fs::path& folder)
+{
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : fs::directory_iterator(folder))
+        ++entries;
+    return entries;
+}
+
+} // namespace
+
+TEST_CASE("a FIFO given as an input file is refused at once, never waited on", "[formats][files][special]")
+{
+    const TempFolder folder;
+    const fs::path fifo = folder / "key1.dat";
+    if (!make_fifo(fifo)) {
+        WARN("skipped: cannot make a FIFO in " << folder.path());
+        return;
+    }
+    bool hung = false;
+    const Expected<std::string> text = read_without_hanging(fifo, hung);
+    REQUIRE_FALSE(hung);
+    REQUIRE_FALSE(text.has_value());
+    REQUIRE(text.error().to_string() == fifo.string() + ": is not a regular file (a FIFO); expected a file");
+
+    // The same through a symbolic link, through a name that differs in case, and as a .dat file.
+    fs::create_symlink(fifo, folder / "link.dat");
+    REQUIRE(read_without_hanging(folder / "link.dat", hung).error().message == "is not a regular file (a FIFO); expected a file");
+    REQUIRE_FALSE(hung);
+    REQUIRE(read_without_hanging(folder / "KEY1.DAT", hung).error().message == "is not a regular file (a FIFO); expected a file");
+    REQUIRE_FALSE(hung);
+    REQUIRE(read_dat_file(fifo).error().message == "is not a regular file (a FIFO); expected a file");
+}
+
+TEST_CASE("a device given as an input file is refused without reading it", "[formats][files][special]")
+{
+    if (!fs::exists("/dev/zero") || !fs::exists("/dev/null")) {
+        WARN("skipped: no /dev/zero or /dev/null");
+        return;
+    }
+    REQUIRE(read_text_file("/dev/zero").error().to_string() == "/dev/zero: is not a regular file (a character device); expected a file");
+    REQUIRE(read_text_file("/dev/null").error().message == "is not a regular file (a character device); expected a file");
+    const TempFolder folder;
+    fs::create_symlink("/dev/null", folder / "null.dat");
+    REQUIRE(read_dat_file(folder / "null.dat").error().message == "is not a regular file (a character device); expected a file");
+}
+
+TEST_CASE("a write never replaces a FIFO, and never opens it", "[formats][files][special]")
+{
+    const TempFolder folder;
+    const fs::path fifo = folder / "out.png";
+    if (!make_fifo(fifo)) {
+        WARN("skipped: cannot make a FIFO in " << folder.path());
+        return;
+    }
+    const Expected<WriteResult> written = write_file_atomically(fifo, "PNG");
+    REQUIRE_FALSE(written.has_value());
+    REQUIRE(written.error().to_string() == fifo.string() + ": is not a regular file (a FIFO); APCS writes only regular files");
+    REQUIRE(fs::is_fifo(fs::symlink_status(fifo)));
+    REQUIRE(entries_in(folder.path()) == 1); // no .bak, no temporary file
+}
+
+TEST_CASE("a write through a symbolic link replaces the regular file it names and keeps the link", "[formats][files][special]")
+{
+    const TempFolder folder;
+    fs::create_directory(folder / "real");
+    const fs::path real = folder.write("real/way1.dat", "0 0 0\n1 1 1\n");
+    const fs::path link = folder / "way1.dat";
+    fs::create_symlink("real/way1.dat", link);
+
+    const Expected<WriteResult> written = write_file_atomically(link, "0 0 0\n2 2 2\n");
+    REQUIRE(written.has_value());
+    REQUIRE(written->outcome == WriteOutcome::replaced);
+    REQUIRE(fs::is_symlink(link));
+    REQUIRE(fs::read_symlink(link) == "real/way1.dat");
+    REQUIRE(is_regular_file_not_link(real));
+    REQUIRE(read_all(real) == "0 0 0\n2 2 2\n");
+    // The old content is kept beside the file the link names, in its own folder.
+    REQUIRE(written->backup == folder / "real/way1.bak");
+    REQUIRE(read_all(folder / "real/way1.bak") == "0 0 0\n1 1 1\n");
+    REQUIRE_FALSE(fs::exists(fs::symlink_status(folder / "way1.bak")));
+    REQUIRE(entries_in(folder.path()) == 2);
+    REQUIRE(entries_in(folder / "real") == 2);
+}
+
+TEST_CASE("a write through a symbolic link to a device or to nothing is refused", "[formats][files][special]")
+{
+    const TempFolder folder;
+    // Only inspected: /dev/null is never written by this test, and the refusal comes first.
+    if (fs::exists("/dev/null")) {
+        const fs::path to_null = folder / "null.png";
+        fs::create_symlink("/dev/null", to_null);
+        const Expected<WriteResult> written = write_file_atomically(to_null, "PNG");
+        REQUIRE_FALSE(written.has_value());
+        REQUIRE(written.error().message ==
+                "is a symbolic link to /dev/null, which is not a regular file (a character device); APCS writes only regular files");
+        REQUIRE(fs::is_symlink(to_null));
+        REQUIRE(fs::is_character_file("/dev/null"));
+    }
+    const fs::path dangling = folder / "gone.dat";
+    fs::create_symlink(folder / "missing/none.dat", dangling);
+    const Expected<WriteResult> into_nothing = write_file_atomically(dangling, "1 1\n");
+    REQUIRE_FALSE(into_nothing.has_value());
+    REQUIRE(into_nothing.error().message.starts_with("is a symbolic link to " + (folder / "missing/none.dat").string() + ", which does not exist"));
+    REQUIRE(fs::is_symlink(dangling));
+}
+
+TEST_CASE("a write never replaces a device node", "[formats][files][special]")
+{
+    const TempFolder folder;
+    const fs::path device = folder / "X";
+    // Making a device node needs root (CAP_MKNOD); /dev/null's numbers, 1 3.
+    if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) != 0) {
+        WARN("skipped: mknod needs root (" << std::strerror(errno) << ")");
+        return;
+    }
+    const Expected<WriteResult> written = write_file_atomically(device, "PNG");
+    REQUIRE_FALSE(written.has_value());
+    REQUIRE(written.error().message == "is not a regular file (a character device); APCS writes only regular files");
+    REQUIRE(fs::is_character_file(fs::symlink_status(device)));
+    REQUIRE(entries_in(folder.path()) == 1);
+}
+
+TEST_CASE("rewriting a file keeps its mode", "[formats][files][mode]")
+{
+    const TempFolder folder;
+    const fs::path secret = folder.write("secret.dat", "0 0\n1 1\n");
+    fs::permissions(secret, fs::perms::owner_read | fs::perms::owner_write);
+    REQUIRE(mode_of(secret) == 0600);
+    REQUIRE(write_file_atomically(secret, "0 0\n2 2\n")->outcome == WriteOutcome::replaced);
+    REQUIRE(read_all(secret) == "0 0\n2 2\n");
+    REQUIRE(mode_of(secret) == 0600);
+
+    const fs::path shared = folder.write("shared.dat", "0 0\n1 1\n");
+    ::chmod(shared.c_str(), 0664);
+    REQUIRE(write_file_atomically(shared, "0 0\n2 2\n").has_value());
+    REQUIRE(mode_of(shared) == 0664);
+
+    // A new file is 0644 as before.
+    REQUIRE(write_file_atomically(folder / "new.dat", "0 0\n1 1\n").has_value());
+    REQUIRE(mode_of(folder / "new.dat") == 0644);
+}
+
+TEST_CASE("a read-only file is refused, not replaced", "[formats][files][mode]")
+{
+    const TempFolder folder;
+    const fs::path locked = folder.write("locked.dat", "0 0\n1 1\n");
+    ::chmod(locked.c_str(), 0444);
+    // Also as root, who may write anything: the mode bits say the user does not want it written.
+    const Expected<WriteResult> written = write_file_atomically(locked, "0 0\n2 2\n");
+    REQUIRE_FALSE(written.has_value());
+    REQUIRE(written.error().to_string() == locked.string() + ": is read-only (mode 0444); not replaced");
+    REQUIRE(read_all(locked) == "0 0\n1 1\n");
+    REQUIRE(mode_of(locked) == 0444);
+    REQUIRE(entries_in(folder.path()) == 1);
+    // Identical content writes nothing, so there is nothing to refuse.
+    REQUIRE(write_file_atomically(locked, "0 0\n1 1\n")->outcome == WriteOutcome::unchanged);
 }
