@@ -3,6 +3,7 @@
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/inbetween_files.h"
 
+#include <algorithm>
 #include <fstream>
 
 namespace apcs {
@@ -28,6 +29,27 @@ bool FolderFiles::exists(const std::string& name) const
 {
     std::error_code error;
     return std::filesystem::exists(std::filesystem::symlink_status(m_folder / name, error));
+}
+
+bool SessionFiles::lies_in_folder(const std::string& name) const
+{
+    const std::filesystem::path typed(name);
+    return !typed.is_absolute() &&
+           std::none_of(typed.begin(), typed.end(), [](const std::filesystem::path& part) { return part == ".."; });
+}
+
+bool FolderFiles::lies_in_folder(const std::string& name) const
+{
+    if (!SessionFiles::lies_in_folder(name))
+        return false;
+    // Symbolic links on the way are followed: out -> ../elsewhere makes out/way1.dat lie elsewhere.
+    std::error_code error;
+    const std::filesystem::path folder = std::filesystem::weakly_canonical(m_folder, error);
+    const std::filesystem::path file = std::filesystem::weakly_canonical(m_folder / name, error);
+    if (error)
+        return false;
+    const std::filesystem::path relative = file.lexically_relative(folder);
+    return !relative.empty() && *relative.begin() != "..";
 }
 
 std::string FolderFiles::name_read(const std::string& name) const

@@ -172,14 +172,10 @@ std::string Session::path_file_default() const { return path_file_name(m_path ==
 void Session::read_data_file(const std::string& name)
 {
     // The path file is rewritten after adjusting: it must lie in the session's folder.
-    const std::filesystem::path typed(name);
-    const bool escapes = typed.is_absolute() || std::any_of(typed.begin(), typed.end(), [](const auto& part) {
-                             return part == "..";
-                         });
-    if (escapes)
+    if (!m_files.lies_in_folder(name))
         return ask_again(SessionPhase::ask_path_file,
-                         name + ": expected a file in the session's folder (no leading '/', no '..'), since APCS "
-                                "rewrites it");
+                         name + ": expected a file in the session's folder (no leading '/', no '..', no link "
+                                "out of it), since APCS rewrites it");
     const Expected<DatFile> file = m_files.read_dat(name, 2);
     if (!file)
         return ask_again(SessionPhase::ask_path_file, file.error().to_string());

@@ -130,3 +130,18 @@ TEST_CASE("--record never replaces a key file", "[session][headless][files]")
     REQUIRE(test::read_all(folder / "key1.dat") == key);
     REQUIRE_FALSE(std::filesystem::exists(folder / "KEY1.DAT"));
 }
+
+TEST_CASE("a path file reached through a symbolic link out of the work folder is refused", "[session][headless][files]")
+{
+    const test::TempFolder outside;
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    std::filesystem::copy_file(folder / "way1.dat", outside / "way1.dat");
+    std::filesystem::create_directory_symlink(outside.path(), folder / "out");
+    const std::string original = test::read_all(outside / "way1.dat");
+    const auto script = folder.write("link.keys", n_to_l_script("key1.dat", "out/way1.dat"));
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
+    REQUIRE(result.out.find("out/way1.dat: expected a file in the session's folder") != std::string::npos);
+    REQUIRE(test::read_all(outside / "way1.dat") == original);
+    REQUIRE_FALSE(std::filesystem::exists(outside / "way1.bak"));
+}

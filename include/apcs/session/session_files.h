@@ -27,6 +27,9 @@ public:
     [[nodiscard]] virtual std::string name_read(const std::string& name) const { return name; }
     // Whether `name` is one of the key files, under any spelling.
     [[nodiscard]] virtual bool is_key_file(const std::string& name) const = 0;
+    // Whether `name` names a file of the session's folder or below it, and not, through '..', an
+    // absolute name or a symbolic link, a file elsewhere (the path file is rewritten there).
+    [[nodiscard]] virtual bool lies_in_folder(const std::string& name) const;
     // From now on `name` is a key file, which no write may replace (SPEC §2.1).
     virtual void protect_key_file(const std::string& name) = 0;
     // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
@@ -47,6 +50,7 @@ public:
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
     bool exists(const std::string& name) const override;
     std::string name_read(const std::string& name) const override;
+    bool lies_in_folder(const std::string& name) const override;
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(m_folder / name); }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
