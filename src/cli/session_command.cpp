@@ -175,6 +175,11 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         recorded = run_headless_session(session, scripted, glyphs, out);
         if (!session.finished())
             err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+        // Nobody watched the screen: a file that could not be written is the run's failure.
+        if (session.write_problem()) {
+            err << "apcs: " << session.write_problem()->to_string() << '\n';
+            status = ExitStatus::bad_input;
+        }
     } else {
         Diagnostic problem;
         status = terminal(session, scripted, glyphs, recorded, problem);

@@ -284,7 +284,7 @@ void Session::write_picture(const std::string& name, const GraphicsScreen& pictu
         m_notice = name + ": cannot encode the PNG image";
         return;
     }
-    if (auto problem = m_files.write(name, *png)) {
+    if (auto problem = write_file(name, *png)) {
         m_notice = problem->to_string();
         return;
     }
@@ -297,6 +297,14 @@ void Session::quit()
 {
     m_files.log("quit at " + std::string(phase_name(phase())));
     finish();
+}
+
+std::optional<Diagnostic> Session::write_file(const std::string& name, const std::string& content)
+{
+    std::optional<Diagnostic> problem = m_files.write(name, content);
+    if (problem)
+        m_write_problem = problem;
+    return problem;
 }
 
 void Session::record_written(const std::string& name)

@@ -118,7 +118,7 @@ void Session::add_points_and_split()
     m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
     m_point_count = m_keys.key1.point_count();
     for (const NamedText& file : split_path_files(m_keys.key1, m_keys.key2)) {
-        if (auto problem = m_files.write(file.name, file.content))
+        if (auto problem = write_file(file.name, file.content))
             return ask_again(SessionPhase::ask_key2, problem->to_string());
         record_written(file.name);
     }
@@ -246,7 +246,7 @@ void Session::initial_graphics()
 void Session::accept_path(PathEditor& editor)
 {
     const auto index = static_cast<std::size_t>(m_path);
-    if (auto problem = m_files.write(editor.path_name(), format_dat(dat_from(editor.points()))))
+    if (auto problem = write_file(editor.path_name(), format_dat(dat_from(editor.points()))))
         return editor.show_problem(problem->to_string());
     record_written(editor.path_name());
     m_points[index] = editor.points();
@@ -268,8 +268,10 @@ void Session::surface_fitting(const std::string&)
     FrameSequence frames = fit_key_frames(m_keys, evaluate_path(m_points[0], path_settings(0)),
                                                 evaluate_path(m_points[1], path_settings(1)));
     const Expected<std::vector<std::string>> written = m_files.write_inbetweens(frames, m_keys.key1);
-    if (!written)
+    if (!written) {
+        m_write_problem = written.error();
         return ask_again(SessionPhase::ask_stop, written.error().to_string());
+    }
     for (const std::string& name : *written)
         record_written(name);
     m_files.log("surface fitting: " + std::to_string(written->size()) + " in-betweens of " + std::to_string(m_point_count) +

@@ -116,6 +116,9 @@ TEST_CASE("a key file named by its absolute path is never overwritten by surface
     const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
     REQUIRE(test::read_all(folder / "inb001.dat") == key);
     REQUIRE(result.out.find("inb001.dat: is a key file; key files are never written") != std::string::npos);
+    // Headless, nobody saw the message: the run fails with it.
+    REQUIRE(result.status == 1);
+    REQUIRE(result.err.find("apcs: inb001.dat: is a key file; key files are never written\n") != std::string::npos);
 }
 
 TEST_CASE("--record never replaces a key file", "[session][headless][files]")

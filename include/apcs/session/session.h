@@ -66,6 +66,8 @@ public:
     int delay_ms() const { return m_delay_ms; }
     SessionScreen screen() const;
     const std::vector<std::string>& written_files() const { return m_written; }
+    // The last write that failed, if any did (the step that tried it was asked again).
+    const std::optional<Diagnostic>& write_problem() const { return m_write_problem; }
 
 private:
     // A step of the text console: a prompt, its answer and what follows.
@@ -125,6 +127,8 @@ private:
     PathSettings path_settings(int path) const;
     void say(const std::string& line) { m_console.print_line(line); }
     void record_written(const std::string& name);
+    // Writes through SessionFiles, remembering a failure for write_problem().
+    [[nodiscard]] std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
 
     SessionSettings m_settings;
     SessionFiles& m_files;
@@ -159,6 +163,7 @@ private:
     bool m_overlay_written = false;
 
     std::vector<std::string> m_written;
+    std::optional<Diagnostic> m_write_problem;
 };
 
 } // namespace apcs
