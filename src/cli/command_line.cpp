@@ -11,9 +11,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <ostream>
+#include <streambuf>
 #include <string>
 
 namespace apcs {
@@ -125,8 +128,68 @@ ExitStatus not_built(const std::string& command, std::ostream& err)
 
 } // namespace
 
-int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                     const TerminalSessionRunner& terminal)
+namespace {
+
+// Passes everything to `target` and remembers the errno of the first write or flush that failed.
+class FailureRecordingBuffer : public std::streambuf {
+public:
+    explicit FailureRecordingBuffer(std::streambuf* target) : m_target(target) {}
+    int first_error() const { return m_error; }
+
+protected:
+    int_type overflow(int_type c) override
+    {
+        if (traits_type::eq_int_type(c, traits_type::eof()))
+            return traits_type::not_eof(c);
+        errno = 0;
+        const int_type result = m_target ? m_target->sputc(traits_type::to_char_type(c)) : traits_type::eof();
+        if (traits_type::eq_int_type(result, traits_type::eof()))
+            note_failure();
+        return result;
+    }
+    std::streamsize xsputn(const char* text, std::streamsize count) override
+    {
+        errno = 0;
+        const std::streamsize written = m_target ? m_target->sputn(text, count) : 0;
+        if (written != count)
+            note_failure();
+        return written;
+    }
+    int sync() override
+    {
+        errno = 0;
+        const int result = m_target ? m_target->pubsync() : -1;
+        if (result != 0)
+            note_failure();
+        return result;
+    }
+
+private:
+    void note_failure()
+    {
+        if (m_error == 0)
+            m_error = errno != 0 ? errno : EIO;
+    }
+
+    std::streambuf* m_target;
+    int m_error = 0;
+};
+
+// Gives `stream` another buffer while it lives, and its own back at the end.
+class ReplacedBuffer {
+public:
+    ReplacedBuffer(std::ostream& stream, std::streambuf* buffer) : m_stream(stream), m_old(stream.rdbuf(buffer)) {}
+    ~ReplacedBuffer() { m_stream.rdbuf(m_old); }
+    ReplacedBuffer(const ReplacedBuffer&) = delete;
+    ReplacedBuffer& operator=(const ReplacedBuffer&) = delete;
+
+private:
+    std::ostream& m_stream;
+    std::streambuf* m_old;
+};
+
+int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                  const TerminalSessionRunner& terminal)
 {
     CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths", "apcs"};
     app.set_version_flag("--version", std::string("apcs ") + std::string(version));
@@ -199,6 +262,29 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     if (play->parsed())
         return to_int(not_built("play", err));
     return to_int(run_session_command(options, terminal, out, err));
+}
+
+} // namespace
+
+int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                     const TerminalSessionRunner& terminal)
+{
+    // Output that never arrived (a full disk, /dev/full, a closed pipe with SIGPIPE ignored) is a
+    // failure, not a success. Standard output is buffered, so the failure may show only at the
+    // last flush, or long before it (then errno is gone): the buffer below keeps the first reason.
+    FailureRecordingBuffer recorder(out.rdbuf());
+    int status = 0;
+    {
+        const ReplacedBuffer replaced(out, &recorder);
+        status = parse_and_run(argc, argv, out, err, terminal);
+        out.flush();
+    }
+    if (out.fail() || recorder.first_error() != 0) {
+        err << "apcs: cannot write to standard output: " << std::strerror(recorder.first_error() != 0 ? recorder.first_error() : EIO) << '\n';
+        if (status == to_int(ExitStatus::success))
+            status = to_int(ExitStatus::bad_input);
+    }
+    return status;
 }
 
 } // namespace apcs

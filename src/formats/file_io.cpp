@@ -248,8 +248,11 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
         return abandon("cannot write");
     if (::fsync(file.get()) != 0)
         return abandon("cannot flush to disk");
-    if (exists && (status.st_uid != ::geteuid() || status.st_gid != ::getegid()))
+    if (exists && (status.st_uid != ::geteuid() || status.st_gid != ::getegid())) {
+        // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes the
+        // user's, as any new file would.
         [[maybe_unused]] const int ignored = ::fchown(file.get(), status.st_uid, status.st_gid);
+    }
     if (::fchmod(file.get(), mode) != 0)
         return abandon("cannot set permissions");
     if (file.close() != 0)
@@ -261,6 +264,7 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
         // the rename replaces it, so no moment exists without the user's file.
         const fs::path backup = backup_path_for(target);
         ::unlink(backup.c_str());
+        std::error_code error;
         if (::link(target.c_str(), backup.c_str()) != 0) {
             fs::copy_file(target, backup, fs::copy_options::overwrite_existing, error);
             if (error) {

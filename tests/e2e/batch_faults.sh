@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Batch faults: a full disk leaves no partial file and keeps the old one; SIGPIPE ends quietly;
-# TERM unset is a clear exit 3. Usage: batch_faults.sh APCS
+# TERM unset is a clear exit 3; a FIFO is neither read nor replaced; output lost on a full
+# standard output is exit 1. Usage: batch_faults.sh APCS
 set -uo pipefail
 apcs=$1
 work=$(mktemp -d)
@@ -20,6 +21,51 @@ env -u TERM "$apcs" < /dev/null > /dev/null 2> "$work/err"; status=$?
 [ "$status" -eq 3 ] || fail "exit $status without a terminal"
 grep -q "give --keys FILE" "$work/err" || fail "no message: $(cat "$work/err")"
 passed=$((passed + 1))
+
+# A FIFO as the input file: refused at once (exit 1), never waited on.
+mkfifo "$work/fifo.dat" || fail "cannot make a FIFO"
+timeout 10 "$apcs" path "$work/fifo.dat" > /dev/null 2> "$work/err"; status=$?
+[ "$status" -ne 124 ] || fail "apcs path hung on a FIFO"
+[ "$status" -eq 1 ] || fail "exit $status on a FIFO input"
+grep -qF "fifo.dat: is not a regular file (a FIFO); expected a file" "$work/err" || fail "no message: $(cat "$work/err")"
+for command in "inbetween $work/fifo.dat $work/path.dat" "fit $work/path.dat $work/path.dat $work/fifo.dat $work/path.dat"; do
+  # shellcheck disable=SC2086
+  timeout 10 "$apcs" $command --out "$work" > /dev/null 2> "$work/err"; status=$?
+  [ "$status" -eq 1 ] || fail "exit $status for apcs $command"
+  grep -qF "is not a regular file (a FIFO)" "$work/err" || fail "apcs $command: no message: $(cat "$work/err")"
+done
+passed=$((passed + 1))
+
+# A FIFO, or a link to a device, as the PNG: refused (exit 1), left as it is, no .bak.
+timeout 10 "$apcs" path "$work/path.dat" --png "$work/fifo.dat" > /dev/null 2> "$work/err"; status=$?
+[ "$status" -eq 1 ] || fail "exit $status for --png FIFO"
+grep -qF "is not a regular file (a FIFO); APCS writes only regular files" "$work/err" || fail "no message: $(cat "$work/err")"
+[ -p "$work/fifo.dat" ] && [ ! -e "$work/fifo.bak" ] || fail "the FIFO was replaced: $(ls -la "$work")"
+ln -s /dev/null "$work/null.png"
+"$apcs" path "$work/path.dat" --png "$work/null.png" > /dev/null 2> "$work/err"; status=$?
+[ "$status" -eq 1 ] || fail "exit $status for --png to a link to /dev/null"
+grep -qF "is a symbolic link to /dev/null, which is not a regular file" "$work/err" || fail "no message: $(cat "$work/err")"
+[ -L "$work/null.png" ] && [ -c /dev/null ] || fail "the link or /dev/null was replaced"
+passed=$((passed + 1))
+
+# A full standard output: the output is lost, and that is said (exit 1), for --print and --help.
+if [ -w /dev/full ]; then
+  printf '0 0 0\n1 0 0\n' > "$work/k1.dat"; printf '0 1 0\n1 1 0\n' > "$work/k2.dat"
+  printf '0 0 0\n0 1 0\n' > "$work/first.dat"; printf '1 0 0\n1 1 0\n' > "$work/last.dat"
+  mkdir -p "$work/fitted"
+  for command in "path $work/path.dat --print" "inbetween $work/path.dat $work/path.dat --print" \
+                 "path $work/path.dat --print --samples 5000" \
+                 "fit $work/k1.dat $work/k2.dat $work/first.dat $work/last.dat --out $work/fitted --print" "--help"; do
+    # shellcheck disable=SC2086
+    "$apcs" $command > /dev/full 2> "$work/err"; status=$?
+    [ "$status" -eq 1 ] || fail "exit $status for apcs $command > /dev/full"
+    grep -qxF "apcs: cannot write to standard output: No space left on device" "$work/err" \
+      || fail "apcs $command > /dev/full: $(cat "$work/err")"
+  done
+  passed=$((passed + 1))
+else
+  echo "skipped the full-output case: no /dev/full"
+fi
 
 # A full disk: a 64 KiB tmpfs (needs root; skipped elsewhere).
 mkdir -p "$work/small"

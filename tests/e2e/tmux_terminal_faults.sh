@@ -49,7 +49,7 @@ tmux -L "$socket" send-keys -t ctrlquit Enter
 wait_for ctrlquit "Please keyin the KEY2 filename!"
 tmux -L "$socket" send-keys -t ctrlquit Enter
 wait_for ctrlquit "THETA ,PHI & delay-time value."
-tmux -L "$socket" send-keys -t ctrlquit 'C-\\'
+tmux -L "$socket" send-keys -t ctrlquit 'C-\'
 expect_restored ctrlquit "Ctrl-\\"
 screen ctrlquit | grep -qF "stopped; every file written so far is whole" \
   || { echo "no stop message after Ctrl-\\"; screen ctrlquit; exit 1; }

@@ -191,7 +191,7 @@ TEST_CASE("a write through a symbolic link replaces the regular file it names an
     REQUIRE(is_regular_file_not_link(real));
     REQUIRE(read_all(real) == "0 0 0\n2 2 2\n");
     // The old content is kept beside the file the link names, in its own folder.
-    REQUIRE(written->backup == folder / "real/way1.bak");
+    REQUIRE(fs::equivalent(written->backup, folder / "real/way1.bak"));
     REQUIRE(read_all(folder / "real/way1.bak") == "0 0 0\n1 1 1\n");
     REQUIRE_FALSE(fs::exists(fs::symlink_status(folder / "way1.bak")));
     REQUIRE(entries_in(folder.path()) == 2);

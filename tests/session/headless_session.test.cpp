@@ -121,7 +121,7 @@ TEST_CASE("a key file named by its absolute path is never overwritten by surface
     REQUIRE(result.err.find("apcs: inb001.dat: is a key file; key files are never written\n") != std::string::npos);
 }
 
-TEST_CASE("--record never replaces a key file", "[session][headless][files]")
+TEST_CASE("a --record script never replaces a key file", "[session][headless][files]")
 {
     const test::TempFolder folder;
     copy_example("n-to-l", folder);

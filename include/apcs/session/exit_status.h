@@ -8,7 +8,7 @@ enum class ExitStatus : int {
     bad_input = 1,
     bad_usage = 2,
     terminal_problem = 3,
-    // The session was stopped by Ctrl-C, SIGTERM, SIGHUP or a lost terminal (128 + SIGINT, as
+    // The session was stopped by Ctrl-C, Ctrl-\ (SIGQUIT), SIGTERM, SIGHUP or a lost terminal (128 + SIGINT, as
     // shells report it); every file written so far is whole.
     stopped = 130,
 };
