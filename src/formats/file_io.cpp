@@ -189,17 +189,27 @@ Expected<Graphic> read_key_frame(const fs::path& name)
     return graphic_from(*file);
 }
 
-fs::path backup_path_for(const fs::path& target)
+fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
 {
     fs::path backup = target;
     backup.replace_extension(".bak");
     // A .bak file being replaced keeps its predecessor under NAME.bak.bak, never under itself.
     if (backup == target)
         backup += ".bak";
-    return backup;
+    if (inputs == nullptr || !inputs->guards(backup))
+        return backup;
+    for (int number = 1; number <= 99; ++number) {
+        fs::path numbered = target;
+        numbered.replace_extension(std::string(number < 10 ? ".b0" : ".b") + std::to_string(number));
+        std::error_code error;
+        if (!inputs->guards(numbered) && (number == 99 || !fs::exists(fs::symlink_status(numbered, error))))
+            return numbered;
+    }
+    return {}; // .bak and .b01 … .b99 are all inputs: there is nowhere to keep the old file
 }
 
-Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content)
+Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content,
+                                            const KeyFileGuard* inputs)
 {
     const std::string shown = requested.string();
     // Only regular files are ever replaced. A symbolic link is written through to the file it
@@ -262,7 +272,12 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
     if (exists) {
         // A hard link keeps the old content as .bak while the target itself stays in place until
         // the rename replaces it, so no moment exists without the user's file.
-        const fs::path backup = backup_path_for(target);
+        const fs::path backup = backup_path_for(target, inputs);
+        if (backup.empty()) {
+            file.close();
+            ::unlink(temporary.c_str());
+            return Diagnostic{shown, 0, "cannot keep the old file: its .bak and .b01 … .b99 are all key files"};
+        }
         ::unlink(backup.c_str());
         std::error_code error;
         if (::link(target.c_str(), backup.c_str()) != 0) {

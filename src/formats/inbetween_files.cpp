@@ -31,7 +31,7 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
     const auto work = [&] {
         for (std::size_t index = next++; index < count; index = next++) {
             const NamedText file = inbetween_file(frames, structure, index + 1);
-            const Expected<WriteResult> result = write_file_atomically(targets[index], file.content);
+            const Expected<WriteResult> result = write_file_atomically(targets[index], file.content, &guard);
             if (!result)
                 problems[index] = result.error();
         }

@@ -66,9 +66,11 @@ std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std:
 {
     if (m_key_files.guards(m_folder / name))
         return Diagnostic{name, 0, "is a key file; key files are never written"};
-    const Expected<WriteResult> result = write_file_atomically(m_folder / name, content);
+    const Expected<WriteResult> result = write_file_atomically(m_folder / name, content, &m_key_files);
     if (!result)
         return Diagnostic{name, 0, result.error().message};
+    if (!result->backup.empty() && result->backup.extension() != ".bak")
+        log("kept the old " + name + " as " + result->backup.filename().string() + ", since its .bak is a key file");
     return std::nullopt;
 }
 

@@ -271,3 +271,24 @@ TEST_CASE("a read-only file is refused, not replaced", "[formats][files][mode]")
     // Identical content writes nothing, so there is nothing to refuse.
     REQUIRE(write_file_atomically(locked, "0 0\n1 1\n")->outcome == WriteOutcome::unchanged);
 }
+
+TEST_CASE("a backup never replaces an input: the old file goes to NAME.b01 when NAME.bak is a key file",
+          "[formats][files]")
+{
+    const TempFolder folder;
+    const auto key = folder.write("ani1.bak", "0 0 0\n1 1 1\n");
+    const auto target = folder.write("ani1.dat", "old\n");
+    folder.write("ani1.b01", "someone's\n");
+    KeyFileGuard inputs;
+    inputs.protect(key);
+    const Expected<WriteResult> written = write_file_atomically(target, "new\n", &inputs);
+    REQUIRE(written.has_value());
+    REQUIRE(read_all(key) == "0 0 0\n1 1 1\n");
+    REQUIRE(read_all(target) == "new\n");
+    // ani1.b01 exists already: the old file takes the next free number.
+    REQUIRE(written->backup == folder / "ani1.b02");
+    REQUIRE(read_all(folder / "ani1.b02") == "old\n");
+    REQUIRE(read_all(folder / "ani1.b01") == "someone's\n");
+    // Without inputs, .bak is replaced as always.
+    REQUIRE(write_file_atomically(target, "newer\n")->backup == folder / "ani1.bak");
+}

@@ -148,3 +148,21 @@ TEST_CASE("a path file reached through a symbolic link out of the work folder is
     REQUIRE(test::read_all(outside / "way1.dat") == original);
     REQUIRE_FALSE(std::filesystem::exists(outside / "way1.bak"));
 }
+
+TEST_CASE("a key named like the .bak of a file the session rewrites is never replaced by that backup",
+          "[session][headless][files]")
+{
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    // KEY1 is ani1.bak; an older ani1.dat is there, which the split rewrites.
+    std::filesystem::rename(folder / "key1.dat", folder / "ani1.bak");
+    folder.write("ani1.dat", "0 0 0\n0 0 1\n");
+    const std::string key = test::read_all(folder / "ani1.bak");
+    const auto script = folder.write("bak.keys", n_to_l_script("ani1.bak", "way1.dat"));
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
+    REQUIRE(result.status == 0);
+    REQUIRE(test::read_all(folder / "ani1.bak") == key);
+    REQUIRE(test::read_all(folder / "ani1.b01") == "0 0 0\n0 0 1\n");
+    REQUIRE(test::read_all(folder / "apcs.log").find("kept the old ani1.dat as ani1.b01, since its .bak is a key file") !=
+            std::string::npos);
+}

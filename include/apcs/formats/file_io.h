@@ -2,6 +2,7 @@
 
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/diagnostic.h"
+#include "apcs/formats/key_file_guard.h"
 
 #include <filesystem>
 #include <string>
@@ -40,10 +41,15 @@ struct WriteResult {
 // its own folder, its .bak beside it, the link stays); a directory, a FIFO, a device, a socket, a
 // link to one or a dangling link is refused, and so is a read-only file (no write permission for
 // the user; for root, no write bit at all). A refusal, a missing folder, a full disk or a failed
-// rename is reported and leaves every file as it was.
-Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, std::string_view content);
+// rename is reported and leaves every file as it was. When NAME.bak is one of `inputs` (a key
+// file of the run), the old file is kept as NAME.b01 (or the first of .b02 … .b99 that is free)
+// instead, so that a backup never replaces an input; WriteResult::backup names it.
+Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, std::string_view content,
+                                            const KeyFileGuard* inputs = nullptr);
 
-// NAME.ext → NAME.bak in the same folder.
-std::filesystem::path backup_path_for(const std::filesystem::path& target);
+// NAME.ext → NAME.bak in the same folder; NAME.b01 … NAME.b99 when NAME.bak is one of `inputs`
+// (the first of those that is neither an input nor an existing file; NAME.b99 when all exist;
+// empty when all are inputs).
+std::filesystem::path backup_path_for(const std::filesystem::path& target, const KeyFileGuard* inputs = nullptr);
 
 } // namespace apcs
