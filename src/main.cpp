@@ -1,15 +1,40 @@
 #include "apcs/cli/command_line.h"
+#include "apcs/formats/unfinished_files.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/terminal/terminal_session.h"
 
 #include <clocale>
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <new>
 #include <malloc.h>
 
+namespace {
+
+// A signal that ends a batch command (the session's terminal handles its own) first removes the
+// temporary files being written, then ends the program as the signal would have.
+extern "C" void end_on_signal(int signal)
+{
+    apcs::remove_unfinished_files();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+void remove_unfinished_files_on_signals()
+{
+    struct sigaction action {};
+    action.sa_handler = end_on_signal;
+    sigemptyset(&action.sa_mask);
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
+        sigaction(signal, &action, nullptr);
+}
+
+} // namespace
+
 int main(int argc, char** argv)
 {
+    remove_unfinished_files_on_signals();
     // Any exception ends the program here, after unwinding has given the terminal back (the
     // Terminal is owned inside run_terminal_session). Exit status 1, as for bad input or a failed
     // write (SPEC §1 has no status of its own for it): the command did not do what it was asked.

@@ -1,6 +1,7 @@
 #include "apcs/formats/file_io.h"
 
 #include "apcs/formats/text_fields.h"
+#include "apcs/formats/unfinished_files.h"
 
 #include <algorithm>
 #include <cctype>
@@ -248,6 +249,8 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
     FileDescriptor file(::mkstemp(temporary.data()));
     if (file.get() < 0)
         return Diagnostic{shown, 0, "cannot create a temporary file in " + folder.string() + ": " + system_reason(errno)};
+    // Known until this function returns, renamed or removed: a signal meanwhile removes it.
+    const UnfinishedFile unfinished(temporary);
     const auto abandon = [&](const std::string& what) {
         const int reason = errno;
         file.close();

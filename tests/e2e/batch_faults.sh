@@ -86,4 +86,31 @@ if mount -t tmpfs -o size=64k tmpfs "$work/small" 2>/dev/null; then
 else
   echo "skipped the full-disk case: cannot mount a tmpfs here"
 fi
+# SIGTERM while the in-betweens are being written: no hidden temporary file is left behind.
+mkdir -p "$work/signal"
+awk 'BEGIN { for (i = 0; i < 300000; i++) printf "0 %d %d\n", i, i % 7 }' > "$work/signal/key1.dat"
+awk 'BEGIN { for (i = 0; i < 300000; i++) printf "5 %d %d\n", i, i % 5 }' > "$work/signal/key2.dat"
+printf '0 0 0\n5 0 0\n' > "$work/signal/first.dat"
+printf '0 299999 0\n5 299999 4\n' > "$work/signal/last.dat"
+mkdir -p "$work/signal/out"
+"$apcs" fit "$work/signal/key1.dat" "$work/signal/key2.dat" "$work/signal/first.dat" "$work/signal/last.dat" \
+  --inbetweens 40 --out "$work/signal/out" > /dev/null 2>&1 &
+pid=$!
+caught=0
+for _ in $(seq 1 2000); do
+  if [ -n "$(find "$work/signal/out" -name '.inb*' -type f 2>/dev/null | head -1)" ]; then
+    kill -TERM "$pid" 2>/dev/null && caught=1
+    break
+  fi
+  kill -0 "$pid" 2>/dev/null || break
+  sleep 0.005
+done
+wait "$pid"; status=$?
+if [ "$caught" -eq 1 ] && [ "$status" -eq 143 ]; then
+  leftovers=$(find "$work/signal/out" -name '.*' -type f | wc -l)
+  [ "$leftovers" -eq 0 ] || fail "SIGTERM left $leftovers temporary files: $(ls -a "$work/signal/out" | head)"
+  passed=$((passed + 1))
+else
+  echo "skipped the SIGTERM case: the writing was not caught in the act (exit $status)"
+fi
 echo "$passed passed, 0 failed"
