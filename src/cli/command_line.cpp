@@ -7,6 +7,7 @@
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
 #include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
 #include "apcs/version.h"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +16,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <filesystem>
 #include <ostream>
 #include <streambuf>
 #include <string>
@@ -35,6 +37,16 @@ const CLI::Validator finite_number(
         return "expected a finite number, found '" + text + "'";
     },
     "NUMBER");
+
+// A picture's name ends in .png (any case) or has no extension: PNG bytes in x.svg would mislead.
+const CLI::Validator png_name(
+    [](std::string& text) -> std::string {
+        const std::string extension = std::filesystem::path(text).extension().string();
+        if (extension.empty() || equals_ignoring_case(extension, ".png"))
+            return {};
+        return "a PNG file's name ends in .png, found '" + text + "'";
+    },
+    "FILE.png");
 
 // CLI11's check of a range of apcs::limits, for options that take any number. (CLI11 names the
 // range's type in --help and writes its bounds the type's way: whole_range keeps "INT in [1 - 100]".)
@@ -82,8 +94,26 @@ void add_screen_options(CLI::App& command, CommonOptions& options)
 {
     command.add_option("--theta", options.view.theta_degrees, "viewer direction theta in degrees (default 30)")
         ->check(finite_number & real_range(limits::view_degrees));
-    command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees (default 40)")
+    CLI::Option* phi = command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees (default 40)")
         ->check(finite_number & real_range(limits::view_degrees));
+    std::vector<std::string> preset_names;
+    std::string preset_help = "a view along the axes instead of --theta/--phi";
+    for (const ViewPreset& preset : view_presets) {
+        preset_names.emplace_back(preset.name);
+        preset_help += std::string(preset_names.size() == 1 ? ": " : "; ") + preset.name + " " + preset.shows;
+    }
+    command
+        .add_option_function<std::string>(
+            "--view",
+            [&options](const std::string& name) {
+                for (const ViewPreset& preset : view_presets)
+                    if (name == preset.name)
+                        options.view = preset.angles;
+            },
+            preset_help)
+        ->check(CLI::IsMember(preset_names))
+        ->excludes(phi)
+        ->excludes(command.get_option("--theta"));
     command.add_option("--delay", options.delay_ms, "milliseconds per animation frame (default 200)")
         ->check(whole_range(limits::delay_ms));
     command
@@ -96,7 +126,10 @@ void add_screen_options(CLI::App& command, CommonOptions& options)
         ->check(CLI::IsMember({"ascii", "braille", "blocks"}));
     command.add_option("--step", options.step, "staff step per key (default 0.05)")
         ->check(finite_number & real_range(limits::staff_step));
-    command.add_option("--png", options.png, "write the 720x348 screen as a PNG");
+    command.add_option("--png", options.png, "write the screen as a PNG as the monitor showed it (720x522)")
+        ->check(png_name);
+    command.add_option("--png-raw", options.png_raw, "write the bare 720x348 raster as a PNG (pixel aspect 3:2)")
+        ->check(png_name);
 }
 
 void add_common_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
@@ -245,8 +278,9 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     }
     if (slopes.size() == 2)
         options.path.slopes = {slopes[0], slopes[1]};
-    options.given = {given_count(app, "--theta") > 0, given_count(app, "--phi") > 0, given_count(app, "--delay") > 0,
-                     slopes.size() == 2};
+    const bool view_given = given_count(app, "--view") > 0;
+    options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
+                     given_count(app, "--delay") > 0, slopes.size() == 2};
 
     if (path->parsed())
         return to_int(run_path_command(path_file, options, out, err));

@@ -72,7 +72,7 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         return ExitStatus::bad_input;
     }
     for (const CurveFigure& figure : thesis_curve_figures()) {
-        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure)))
+        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure), PngShape::monitor))
             return report_bad_input(*problem, err);
         out << (target / figure.file_name).string() << '\n';
     }
@@ -81,7 +81,7 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         const Expected<GraphicsScreen> screen = draw_example(example, examples, options);
         if (!screen)
             return report_bad_input(screen.error(), err);
-        if (auto problem = write_png_file(target / example.file_name, *screen))
+        if (auto problem = write_png_file(target / example.file_name, *screen, PngShape::monitor))
             return report_bad_input(*problem, err);
         out << (target / example.file_name).string() << '\n';
     }

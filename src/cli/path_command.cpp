@@ -9,6 +9,7 @@
 #include "apcs/session/screen_layout.h"
 
 #include <ostream>
+#include <utility>
 
 namespace apcs {
 
@@ -22,9 +23,10 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
-std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen)
+std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                                         PngShape shape)
 {
-    const std::optional<std::string> png = encode_png(render_raster(screen));
+    const std::optional<std::string> png = encode_png(render_raster(screen), shape);
     if (!png)
         return Diagnostic{target.string(), 0, "cannot encode the PNG image"};
     const Expected<WriteResult> written = write_file_atomically(target, *png);
@@ -48,11 +50,16 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
     const ControlPoints points = control_points_from(*dat, options.staff);
     const EvaluatedPath path = evaluate_path(points, options.path);
     warn_if_frames_freeze(path, options.path.inbetween_count, err);
-    if (options.png) {
-        if (auto problem = write_png_file(*options.png, draw_path_file_screen(points, path, options.view)))
-            return report_bad_input(*problem, err);
+    if (options.png || options.png_raw) {
+        const GraphicsScreen screen = draw_path_file_screen(points, path, options.view);
+        for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}}) {
+            if (!target)
+                continue;
+            if (auto problem = write_png_file(*target, screen, shape))
+                return report_bad_input(*problem, err);
+        }
     }
-    if (options.print || !options.png) {
+    if (options.print || !(options.png || options.png_raw)) {
         const std::string text = format_path_print(path);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));
     }

@@ -99,12 +99,14 @@ SessionSettings session_settings(const CommonOptions& options)
     if (options.given.slopes)
         settings.slopes = options.path.slopes;
     settings.staff = options.staff;
-    if (options.png) {
-        // The session writes in its folder; a name typed relative to where apcs started stays so.
-        const std::filesystem::path png =
-            options.workdir.empty() || options.png->is_absolute() ? *options.png : std::filesystem::absolute(*options.png);
-        settings.overlay_png = png.string();
-    }
+    // The session writes in its folder; a name typed relative to where apcs started stays so.
+    const auto as_started = [&options](const std::filesystem::path& name) {
+        return (options.workdir.empty() || name.is_absolute() ? name : std::filesystem::absolute(name)).string();
+    };
+    if (options.png)
+        settings.overlay_png = as_started(*options.png);
+    if (options.png_raw)
+        settings.overlay_png_raw = as_started(*options.png_raw);
     return settings;
 }
 

@@ -17,9 +17,17 @@ void append_to_string(png_structp png, png_bytep data, png_size_t length)
 
 void flush_nothing(png_structp) {}
 
+// The raster row that picture row `row` shows: rows 0 1 2 3 4 5 … show 0 0 1 2 2 3 ….
+int raster_row_of(int row, PngShape shape) { return shape == PngShape::monitor ? row * 2 / 3 : row; }
+
 } // namespace
 
-std::optional<std::string> encode_png(const Bitmap& bitmap)
+int png_rows(int raster_rows, PngShape shape)
+{
+    return shape == PngShape::monitor ? (raster_rows * 3 + 1) / 2 : raster_rows;
+}
+
+std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     if (png == nullptr)
@@ -37,12 +45,16 @@ std::optional<std::string> encode_png(const Bitmap& bitmap)
         return std::nullopt;
     }
     png_set_write_fn(png, &output, append_to_string, flush_nothing);
-    png_set_IHDR(png, info, static_cast<png_uint_32>(bitmap.width()), static_cast<png_uint_32>(bitmap.height()), 8,
+    const int rows = png_rows(bitmap.height(), shape);
+    png_set_IHDR(png, info, static_cast<png_uint_32>(bitmap.width()), static_cast<png_uint_32>(rows), 8,
                  PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (shape == PngShape::raw)
+        png_set_pHYs(png, info, 3, 2, PNG_RESOLUTION_UNKNOWN);
     png_write_info(png, info);
-    for (int y = 0; y < bitmap.height(); ++y) {
+    for (int y = 0; y < rows; ++y) {
+        const int source = raster_row_of(y, shape);
         for (int x = 0; x < bitmap.width(); ++x)
-            row[static_cast<std::size_t>(x)] = bitmap.get(x, y) ? 255 : 0;
+            row[static_cast<std::size_t>(x)] = bitmap.get(x, source) ? 255 : 0;
         png_write_row(png, row.data());
     }
     png_write_end(png, info);

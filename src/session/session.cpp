@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cstdio>
+#include <utility>
 
 namespace apcs {
 
@@ -263,23 +264,28 @@ void Session::save_picture()
         char name[32];
         std::snprintf(name, sizeof name, "apcs%03d.png", number);
         if (!m_files.exists(name))
-            return write_picture(name, shown.picture, "picture " + std::string(name));
+            return write_picture(name, shown.picture, PngShape::monitor, "picture " + std::string(name));
     }
     m_notice = "apcs001.png … apcs999.png all exist; move some away";
 }
 
 void Session::write_overlay_once()
 {
-    if (m_overlay_written || !m_settings.overlay_png)
+    if (m_overlay_written)
         return;
     m_overlay_written = true;
-    write_picture(*m_settings.overlay_png, std::get<AnimationPlayer>(m_step).view(),
-                  "overlay of all frames written to " + *m_settings.overlay_png);
+    const GraphicsScreen& overlay = std::get<AnimationPlayer>(m_step).view();
+    for (const auto& [name, shape] : {std::pair{m_settings.overlay_png, PngShape::monitor},
+                                      std::pair{m_settings.overlay_png_raw, PngShape::raw}}) {
+        if (name)
+            write_picture(*name, overlay, shape, "overlay of all frames written to " + *name);
+    }
 }
 
-void Session::write_picture(const std::string& name, const GraphicsScreen& picture, const std::string& log_line)
+void Session::write_picture(const std::string& name, const GraphicsScreen& picture, PngShape shape,
+                            const std::string& log_line)
 {
-    const std::optional<std::string> png = encode_png(render_raster(picture));
+    const std::optional<std::string> png = encode_png(render_raster(picture), shape);
     if (!png) {
         m_notice = name + ": cannot encode the PNG image";
         return;

@@ -1,10 +1,9 @@
 #include "support/golden.h"
+#include "support/png_pixels.h"
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
-
-#include <png.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -13,27 +12,6 @@
 #include <vector>
 
 using namespace apcs;
-
-namespace {
-
-// The pixels of a PNG file (8-bit grey), or empty when it cannot be read.
-std::vector<png_byte> grey_pixels(const std::string& bytes, png_uint_32& width, png_uint_32& height)
-{
-    png_image image;
-    std::memset(&image, 0, sizeof image);
-    image.version = PNG_IMAGE_VERSION;
-    if (png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()) == 0)
-        return {};
-    image.format = PNG_FORMAT_GRAY;
-    std::vector<png_byte> pixels(PNG_IMAGE_SIZE(image));
-    width = image.width;
-    height = image.height;
-    if (png_image_finish_read(&image, nullptr, pixels.data(), 0, nullptr) == 0)
-        return {};
-    return pixels;
-}
-
-} // namespace
 
 TEST_CASE("apcs figures draws the thesis' figures and the examples as approved rasters", "[cli][figures]")
 {
@@ -46,11 +24,10 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
     for (const std::string& name : names) {
         CAPTURE(name);
         const std::string written = test::read_all(folder / name);
-        png_uint_32 width = 0;
-        png_uint_32 height = 0;
-        const std::vector<png_byte> pixels = grey_pixels(written, width, height);
-        REQUIRE(width == 720);
-        REQUIRE(height == 348);
+        const test::GreyPicture picture = test::grey_picture(written);
+        // As the monitor showed it: 348 raster rows, each 1.5 pixels tall.
+        REQUIRE(picture.width == 720);
+        REQUIRE(picture.height == 522);
         // Golden rasters are compared pixel by pixel, not byte by byte, so that another zlib may
         // compress them differently.
         const std::filesystem::path golden = std::filesystem::path(APCS_SOURCE_DIR) / "tests/golden/figures" / name;
@@ -59,9 +36,7 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
             std::ofstream(golden, std::ios::binary) << written;
             continue;
         }
-        png_uint_32 golden_width = 0;
-        png_uint_32 golden_height = 0;
-        REQUIRE(grey_pixels(test::read_all(golden), golden_width, golden_height) == pixels);
+        REQUIRE(test::grey_picture(test::read_all(golden)).pixels == picture.pixels);
     }
 }
 

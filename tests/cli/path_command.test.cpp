@@ -1,12 +1,15 @@
 #include "apcs/cli/command_line.h"
 #include "apcs/cli/path_command.h"
 
+#include "support/png_pixels.h"
 #include "support/temp_folder.h"
 
 #include "support/run_apcs.h"
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <filesystem>
 #include <sstream>
 #include <vector>
 
@@ -93,7 +96,7 @@ TEST_CASE("more in-betweens than samples warn that frames will freeze", "[cli][p
     REQUIRE(result.err == "apcs: 5 in-betweens from 2 curve samples: frames will freeze\n");
 }
 
-TEST_CASE("apcs path --png draws the path screen as a 720x348 PNG", "[cli][path][png]")
+TEST_CASE("apcs path --png draws the path screen as a 720x522 PNG", "[cli][path][png]")
 {
     const TempFolder folder;
     const auto file = folder.write("ani1.dat", "0 0 0\n3 -4 5\n0 0 10\n");
@@ -109,7 +112,76 @@ TEST_CASE("apcs path --png draws the path screen as a 720x348 PNG", "[cli][path]
                (static_cast<unsigned char>(bytes[at + 2]) << 8) | static_cast<unsigned char>(bytes[at + 3]);
     };
     REQUIRE(be32(16) == 720);
-    REQUIRE(be32(20) == 348);
+    REQUIRE(be32(20) == 522);
     const auto both = run_apcs({"path", file.string(), "--png", png.string(), "--print"});
     REQUIRE(both.out.starts_with("# curve\n"));
+}
+
+namespace {
+
+// Width over height of the lit pixels above the staff (the drawing area is the top 7/10).
+double drawing_aspect(const test::GreyPicture& picture)
+{
+    png_uint_32 left = picture.width, right = 0, top = picture.height, bottom = 0;
+    // Inside the drawing area's frame (2 pixels in from the picture's edge).
+    for (png_uint_32 y = 4; y < picture.height * 7 / 10; ++y)
+        for (png_uint_32 x = 4; x + 4 < picture.width; ++x)
+            if (picture.lit(x, y)) {
+                left = std::min(left, x);
+                right = std::max(right, x);
+                top = std::min(top, y);
+                bottom = std::max(bottom, y);
+            }
+    REQUIRE(right > left);
+    REQUIRE(bottom > top);
+    return static_cast<double>(right - left) / static_cast<double>(bottom - top);
+}
+
+} // namespace
+
+TEST_CASE("a unit square seen face-on is square in --png and 1.5:1 in --png-raw", "[cli][path][png]")
+{
+    const TempFolder folder;
+    // Tension 1 everywhere: straight sides through the four corners.
+    const auto square = folder.write("square.dat", "0 0 0 1 0 0 0\n1 0 0 1 0 0 0\n1 1 0 1 0 0 0\n0 1 0 1 0 0 0\n0 0 0 1 0 0 0\n");
+    const auto monitor = folder / "monitor.png";
+    const auto raw = folder / "raw.png";
+    const auto result =
+        run_apcs({"path", square.string(), "--view", "top", "--png", monitor.string(), "--png-raw", raw.string()});
+    REQUIRE(result.status == 0);
+    const test::GreyPicture seen = test::grey_picture(test::read_all(monitor));
+    const test::GreyPicture bare = test::grey_picture(test::read_all(raw));
+    REQUIRE(seen.height == 522);
+    REQUIRE(bare.height == 348);
+    CHECK(drawing_aspect(seen) == Approx(1.0).epsilon(0.03));
+    CHECK(drawing_aspect(bare) == Approx(1.5).epsilon(0.03));
+}
+
+TEST_CASE("the views top, front and side are theta/phi -90/0, 0/90 and -90/90", "[cli][path][png]")
+{
+    const TempFolder folder;
+    const auto file = folder.write("ani1.dat", "0 0 0\n3 -4 5\n0 2 10\n");
+    const auto picture = [&](std::vector<std::string> view) {
+        std::vector<std::string> arguments{"path", file.string(), "--png", (folder / "p.png").string()};
+        arguments.insert(arguments.end(), view.begin(), view.end());
+        REQUIRE(run_apcs(arguments).status == 0);
+        return test::read_all(folder / "p.png");
+    };
+    CHECK(picture({"--view", "top"}) == picture({"--theta", "-90", "--phi", "0"}));
+    CHECK(picture({"--view", "front"}) == picture({"--theta", "0", "--phi", "90"}));
+    CHECK(picture({"--view", "side"}) == picture({"--theta", "-90", "--phi", "90"}));
+    CHECK(picture({"--view", "top"}) != picture({"--view", "front"}));
+}
+
+TEST_CASE("a picture's name must end in .png, and a view preset excludes theta and phi", "[cli][path][png]")
+{
+    const TempFolder folder;
+    const auto file = folder.write("ani1.dat", "0 0 0\n3 -4 5\n");
+    const auto svg = run_apcs({"path", file.string(), "--png", (folder / "x.svg").string()});
+    CHECK(svg.status == 2);
+    CHECK(svg.err.find("a PNG file's name ends in .png") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(folder / "x.svg"));
+    CHECK(run_apcs({"path", file.string(), "--png-raw", (folder / "x.PNG").string()}).status == 0);
+    CHECK(run_apcs({"path", file.string(), "--view", "top", "--theta", "3"}).status == 2);
+    CHECK(run_apcs({"path", file.string(), "--view", "diagonal"}).status == 2);
 }

@@ -37,10 +37,11 @@ done
 passed=$((passed + 1))
 
 # A FIFO, or a link to a device, as the PNG: refused (exit 1), left as it is, no .bak.
-timeout 10 "$apcs" path "$work/path.dat" --png "$work/fifo.dat" > /dev/null 2> "$work/err"; status=$?
+mkfifo "$work/fifo.png"
+timeout 10 "$apcs" path "$work/path.dat" --png "$work/fifo.png" > /dev/null 2> "$work/err"; status=$?
 [ "$status" -eq 1 ] || fail "exit $status for --png FIFO"
 grep -qF "is not a regular file (a FIFO); APCS writes only regular files" "$work/err" || fail "no message: $(cat "$work/err")"
-[ -p "$work/fifo.dat" ] && [ ! -e "$work/fifo.bak" ] || fail "the FIFO was replaced: $(ls -la "$work")"
+[ -p "$work/fifo.png" ] && [ ! -e "$work/fifo.bak" ] || fail "the FIFO was replaced: $(ls -la "$work")"
 ln -s /dev/null "$work/null.png"
 "$apcs" path "$work/path.dat" --png "$work/null.png" > /dev/null 2> "$work/err"; status=$?
 [ "$status" -eq 1 ] || fail "exit $status for --png to a link to /dev/null"

@@ -6,6 +6,7 @@
 #include <png.h>
 
 #include <cstring>
+#include <utility>
 #include <vector>
 
 using namespace apcs;
@@ -32,13 +33,28 @@ Decoded decode(const std::string& bytes)
 
 } // namespace
 
-TEST_CASE("a PNG reads back with libpng as the same 720x348 raster, white on black", "[raster][png]")
+// The pixels per unit of a PNG's pHYs chunk, x then y; {0, 0} when it has none.
+std::pair<png_uint_32, png_uint_32> pixel_aspect(const std::string& bytes)
+{
+    const std::size_t chunk = bytes.find("pHYs");
+    if (chunk == std::string::npos || chunk + 12 > bytes.size())
+        return {0, 0};
+    const auto big_endian = [&bytes](std::size_t at) {
+        png_uint_32 value = 0;
+        for (std::size_t i = 0; i < 4; ++i)
+            value = value << 8 | static_cast<unsigned char>(bytes[at + i]);
+        return value;
+    };
+    return {big_endian(chunk + 4), big_endian(chunk + 8)};
+}
+
+TEST_CASE("a raw PNG reads back with libpng as the same 720x348 raster, white on black, pixels 3:2", "[raster][png]")
 {
     Bitmap bitmap;
     Painter painter(bitmap);
     painter.line({0, 0}, {719, 347});
     painter.cross_marker({360, 100});
-    const auto png = encode_png(bitmap);
+    const auto png = encode_png(bitmap, PngShape::raw);
     REQUIRE(png.has_value());
     const Decoded decoded = decode(*png);
     REQUIRE(decoded.width == 720);
@@ -53,4 +69,31 @@ TEST_CASE("a PNG reads back with libpng as the same 720x348 raster, white on bla
         }
     REQUIRE(mismatches == 0);
     REQUIRE(white == bitmap.lit_count());
+    // 3 pixels per unit across, 2 down: a pixel 1.5 times taller than wide, as on the monitor.
+    REQUIRE(pixel_aspect(*png) == std::pair<png_uint_32, png_uint_32>{3, 2});
+}
+
+TEST_CASE("a monitor PNG is 720x522: every raster row 1.5 pixels tall, rows repeated nearest-neighbour", "[raster][png]")
+{
+    Bitmap bitmap;
+    // Each raster row y lit at x = y only, so every picture row tells which raster row it shows.
+    for (int y = 0; y < bitmap.height(); ++y)
+        bitmap.set(y, y, true);
+    const auto png = encode_png(bitmap, PngShape::monitor);
+    REQUIRE(png.has_value());
+    const Decoded decoded = decode(*png);
+    REQUIRE(decoded.width == 720);
+    REQUIRE(decoded.height == 522);
+    REQUIRE(pixel_aspect(*png) == std::pair<png_uint_32, png_uint_32>{0, 0});
+    std::vector<int> shown;
+    for (std::size_t row = 0; row < 522; ++row)
+        for (std::size_t x = 0; x < 720; ++x)
+            if (decoded.pixels[row * 720 + x] == 255)
+                shown.push_back(static_cast<int>(x));
+    REQUIRE(shown.size() == 522);
+    // Rows 0 1 2 | 3 4 5 show raster rows 0 0 1 | 2 2 3: even rows twice, odd rows once.
+    CHECK(std::vector<int>(shown.begin(), shown.begin() + 6) == std::vector<int>{0, 0, 1, 2, 2, 3});
+    CHECK(shown.back() == 347);
+    for (std::size_t row = 1; row < shown.size(); ++row)
+        REQUIRE(shown[row] - shown[row - 1] <= 1);
 }

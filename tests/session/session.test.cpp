@@ -4,6 +4,8 @@
 
 #include "apcs/session/session_files.h"
 
+#include "support/png_pixels.h"
+
 #include <catch2/catch.hpp>
 
 using namespace apcs;
@@ -347,7 +349,7 @@ TEST_CASE("? and F1 open the help screen of the step, any key closes it", "[sess
     REQUIRE(graphics_message(session) == "way1.dat: TENSION  control points 1 to 4 of 4");
 }
 
-TEST_CASE("q asks before quitting an unsaved path; Enter means N; Y ends with the files listed", "[session][quit]")
+TEST_CASE("q asks before quitting an unsaved path, Enter means N, Y ends with the files listed", "[session][quit]")
 {
     MemoryFiles files = example_files();
     Session session({}, files);
@@ -432,6 +434,31 @@ TEST_CASE("the session's --png writes the overlay of all frames when the animati
     REQUIRE(files.files.count("all.png") == 0);
     press(session, {enter});
     REQUIRE(session.phase() == SessionPhase::overlay);
-    REQUIRE(files.files["all.png"].starts_with("\x89PNG"));
+    REQUIRE(test::grey_picture(files.files["all.png"]).height == 522);
     REQUIRE(graphics_message(session) == "wrote all.png");
+}
+
+TEST_CASE("the session's --png-raw writes the bare 720x348 overlay beside --png's 720x522", "[session][picture]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n0 5 0\n";
+    SessionSettings settings;
+    settings.overlay_png = "all.png";
+    settings.overlay_png_raw = "raw.png";
+    Session session(settings, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, "way4.dat");
+    type(session, "");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter, enter});
+    while (session.animating())
+        session.tick();
+    press(session, {enter});
+    const test::GreyPicture seen = test::grey_picture(files.files["all.png"]);
+    const test::GreyPicture bare = test::grey_picture(files.files["raw.png"]);
+    REQUIRE(seen.height == 522);
+    REQUIRE(bare.height == 348);
+    // The same raster: picture row 3 shows raster row 2.
+    for (png_uint_32 x = 0; x < 720; ++x)
+        REQUIRE(seen.lit(x, 3) == bare.lit(x, 2));
 }

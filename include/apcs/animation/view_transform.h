@@ -13,6 +13,18 @@ struct ViewAngles {
     double phi_degrees = 40.0;
 };
 
+// Named views along the axes (SPEC §4.5: theta 0, phi 90 looks along -x).
+struct ViewPreset {
+    const char* name;
+    ViewAngles angles;
+    const char* shows; // the axes on the screen, right then up
+};
+inline constexpr ViewPreset view_presets[] = {
+    {"front", {0.0, 90.0}, "+y right, +z up: the thesis' examples face-on"},
+    {"side", {-90.0, 90.0}, "+x right, +z up"},
+    {"top", {-90.0, 0.0}, "+x right, +y up: 2-D data of x y columns"},
+};
+
 // Eye coordinates: x_e right, y_e up, z_e depth (positive in front of the eye).
 struct EyePoint {
     double x = 0.0;

@@ -32,7 +32,8 @@ struct CommonOptions {
     double step = 0.05;
     std::optional<std::filesystem::path> keys;
     std::optional<std::filesystem::path> record;
-    std::optional<std::filesystem::path> png;
+    std::optional<std::filesystem::path> png;     // as the monitor showed it, 720x522
+    std::optional<std::filesystem::path> png_raw; // the bare 720x348 raster
     bool print = false;
     std::optional<std::filesystem::path> out;
     GivenOptions given;

@@ -4,6 +4,7 @@
 #include "apcs/cli/options.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/raster/png_encoder.h"
 
 #include <filesystem>
 #include <iosfwd>
@@ -16,7 +17,8 @@ namespace apcs {
 std::string format_path_print(const EvaluatedPath& path);
 
 // Writes the screen's raster (text drawn in the font) as a PNG, atomically.
-[[nodiscard]] std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen);
+[[nodiscard]] std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                                                       PngShape shape);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the
 // first control point's values.

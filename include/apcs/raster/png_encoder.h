@@ -7,8 +7,22 @@
 
 namespace apcs {
 
+// How a picture's pixels are shaped (SPEC §7.1). The Hercules pixel is about 1.5 times taller than
+// wide (hence SCF = 1.5), so the raster seen on square pixels is squashed.
+enum class PngShape {
+    // As the monitor showed it: each row 1.5 pixels tall (720x348 becomes 720x522, rows repeated
+    // nearest-neighbour), so what APCS drew square is square.
+    monitor,
+    // The bare raster, one pixel per raster pixel, with a pHYs chunk giving the pixel aspect
+    // (pixels per unit x:y = 3:2) for viewers that honour it.
+    raw,
+};
+
+// The rows of a picture of `raster_rows` rows in `shape`.
+int png_rows(int raster_rows, PngShape shape);
+
 // The bitmap as a PNG file's bytes (libpng): 8-bit greyscale, lit pixels white on black like the
 // monitor. Empty on a libpng failure.
-std::optional<std::string> encode_png(const Bitmap& bitmap);
+std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape);
 
 } // namespace apcs

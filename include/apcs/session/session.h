@@ -5,6 +5,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/raster/png_encoder.h"
 #include "apcs/session/animation_player.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/key_map.h"
@@ -34,8 +35,10 @@ struct SessionSettings {
     std::optional<EndSlopes> slopes;
     // The staff values of path files with three columns (--tension, --continuity, --bias, --accel).
     StaffValues staff;
-    // Where the overlay of all frames goes as a PNG when the animation ends (--png), if anywhere.
+    // Where the overlay of all frames goes as a PNG when the animation ends, if anywhere: as the
+    // monitor showed it (--png) and as the bare raster (--png-raw).
     std::optional<std::string> overlay_png;
+    std::optional<std::string> overlay_png_raw;
 };
 
 // What the terminal shows now: the DOS text console or the graphics screen.
@@ -97,7 +100,8 @@ private:
     void save_picture();
     void write_overlay_once();
     // The picture as a PNG file; the message line says what happened.
-    void write_picture(const std::string& name, const GraphicsScreen& picture, const std::string& log_line);
+    void write_picture(const std::string& name, const GraphicsScreen& picture, PngShape shape,
+                       const std::string& log_line);
     void quit();
     CellGrid help_screen() const;
     void go_to(SessionPhase phase);
