@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages APCS needs to build, test and run, skipping those already present.
-# Usage: scripts/install-deps.sh [extra-package ...]
+# Usage: scripts/install-deps.sh [extra-package ...]   (README.md says why each package is needed)
 set -euo pipefail
 
-packages=(g++ cmake make catch2 libcli11-dev libpng-dev libncurses-dev console-setup-linux tmux procps "$@")
+packages=(g++ cmake make catch2 libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux tmux procps groff-base "$@")
 
 missing=()
 for package in "${packages[@]}"; do

@@ -1,23 +1,26 @@
 #include "apcs/cli/command_line.h"
 
 #include "apcs/session/exit_status.h"
+#include "apcs/cli/draw_command.h"
 #include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
-#include "apcs/formats/number_text.h"
-#include "apcs/formats/text_fields.h"
 #include "apcs/version.h"
+#include "option_sets.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cerrno>
-#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <ostream>
+#include <span>
 #include <streambuf>
 #include <string>
 
@@ -25,138 +28,17 @@ namespace apcs {
 
 namespace {
 
-const CLI::Validator finite_number(
-    [](std::string& text) -> std::string {
-        try {
-            std::size_t used = 0;
-            const double value = std::stod(text, &used);
-            if (used == text.size() && std::isfinite(value))
-                return {};
-        } catch (const std::exception&) {
-        }
-        return "expected a finite number, found '" + text + "'";
-    },
-    "NUMBER");
-
-// A picture's name ends in .png (any case) or has no extension: PNG bytes in x.svg would mislead.
-const CLI::Validator png_name(
-    [](std::string& text) -> std::string {
-        const std::string extension = std::filesystem::path(text).extension().string();
-        if (extension.empty() || equals_ignoring_case(extension, ".png"))
-            return {};
-        return "a PNG file's name ends in .png, found '" + text + "'";
-    },
-    "FILE.png");
-
-// CLI11's check of a range of apcs::limits, for options that take any number. (CLI11 names the
-// range's type in --help and writes its bounds the type's way: whole_range keeps "INT in [1 - 100]".)
-CLI::Range real_range(const limits::Range& range) { return CLI::Range(range.min, range.max); }
-
-// The same for options that take whole numbers.
-CLI::Range whole_range(const limits::Range& range)
-{
-    return CLI::Range(static_cast<int>(range.min), static_cast<int>(range.max));
-}
-
-void add_staff_options(CLI::App& command, CommonOptions& options)
-{
-    const CLI::Range staff_range = real_range(limits::staff_value);
-    const std::string range = " in " + range_text(limits::staff_value) + " (default 0)";
-    command.add_option("--tension", options.staff.tension, "tension t" + range)->check(finite_number & staff_range);
-    command.add_option("--continuity", options.staff.continuity, "continuity c" + range)
-        ->check(finite_number & staff_range);
-    command.add_option("--bias", options.staff.bias, "bias b" + range)->check(finite_number & staff_range);
-    command.add_option("--accel", options.staff.acceleration, "acceleration a" + range)
-        ->check(finite_number & staff_range);
-}
-
-void add_path_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
-{
-    command
-        .add_option("--slopes", slopes, "end slopes S0 S1, each in " + range_text(limits::end_slope) + " (default 1 1)")
-        ->expected(2)
-        ->check(finite_number & real_range(limits::end_slope));
-    command.add_option("--samples", options.path.samples_per_segment, "curve samples per segment (default 32)")
-        ->check(whole_range(limits::samples_per_segment));
-    command.add_option("--inbetweens", options.path.inbetween_count, "in-between frames M (default 12)")
-        ->check(whole_range(limits::inbetween_count));
-    command
-        .add_option_function<std::string>(
-            "--spacing",
-            [&options](const std::string& name) {
-                options.path.spacing = name == "exact" ? Spacing::exact : Spacing::nearest;
-            },
-            "nearest (the thesis) or exact (arc length); default nearest")
-        ->check(CLI::IsMember({"nearest", "exact"}));
-}
-
-void add_screen_options(CLI::App& command, CommonOptions& options)
-{
-    command.add_option("--theta", options.view.theta_degrees, "viewer direction theta in degrees (default 30)")
-        ->check(finite_number & real_range(limits::view_degrees));
-    CLI::Option* phi = command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees (default 40)")
-        ->check(finite_number & real_range(limits::view_degrees));
-    std::vector<std::string> preset_names;
-    std::string preset_help = "a view along the axes instead of --theta/--phi";
-    for (const ViewPreset& preset : view_presets) {
-        preset_names.emplace_back(preset.name);
-        preset_help += std::string(preset_names.size() == 1 ? ": " : "; ") + preset.name + " " + preset.shows;
-    }
-    command
-        .add_option_function<std::string>(
-            "--view",
-            [&options](const std::string& name) {
-                for (const ViewPreset& preset : view_presets)
-                    if (name == preset.name)
-                        options.view = preset.angles;
-            },
-            preset_help)
-        ->check(CLI::IsMember(preset_names))
-        ->excludes(phi)
-        ->excludes(command.get_option("--theta"));
-    command.add_option("--delay", options.delay_ms, "milliseconds per animation frame (default 200)")
-        ->check(whole_range(limits::delay_ms));
-    command
-        .add_option_function<std::string>(
-            "--glyphs",
-            [&options](const std::string& name) {
-                options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
-            },
-            "ascii, braille or blocks (default: braille in a UTF-8 locale on a terminal that shows it, else ascii)")
-        ->check(CLI::IsMember({"ascii", "braille", "blocks"}));
-    command.add_option("--step", options.step, "staff step per key (default 0.05)")
-        ->check(finite_number & real_range(limits::staff_step));
-    command.add_option("--png", options.png, "write the screen as a PNG as the monitor showed it (720x522)")
-        ->check(png_name);
-    command.add_option("--png-raw", options.png_raw, "write the bare 720x348 raster as a PNG (pixel aspect 3:2)")
-        ->check(png_name);
-}
-
-void add_common_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
-{
-    add_staff_options(command, options);
-    add_path_options(command, options, slopes);
-    add_screen_options(command, options);
-    command.add_option("--workdir", options.workdir, "folder the session works in (default: current)");
-    command.add_option("--keys", options.keys, "replay keystrokes from FILE");
-    command.add_option("--record", options.record, "record keystrokes to FILE");
-    command.add_flag("--print", options.print, "write numbers to standard output");
-    command.add_option("--out", options.out, "output folder");
-}
-
 // How often the option `name` was given, to the command or before it.
 std::size_t given_count(const CLI::App& app, const std::string& name)
 {
-    std::size_t count = app.count(name);
+    const auto count_in = [&name](const CLI::App& command) {
+        const CLI::Option* option = command.get_option_no_throw(name);
+        return option == nullptr ? std::size_t{0} : option->count();
+    };
+    std::size_t count = count_in(app);
     for (const CLI::App* command : app.get_subcommands())
-        count += command->count(name);
+        count += count_in(*command);
     return count;
-}
-
-ExitStatus not_built(const std::string& command, std::ostream& err)
-{
-    err << "apcs: '" << command << "' is not built yet in this version\n";
-    return ExitStatus::bad_usage;
 }
 
 } // namespace
@@ -221,61 +103,165 @@ private:
     std::streambuf* m_old;
 };
 
+// What GNU tools print for --version: the program, its version, and what it is.
+std::string version_text()
+{
+    return "apcs (APCS) " + std::string(version) +
+           "\nThe Animation Path Control System of the 1989 master's thesis \"Design of An Animation Path\n"
+           "Control System\" (National Chung Hsing University, Taiwan), re-created: Kochanek-Bartels\n"
+           "motion paths between two key frames, the four-line staff and surface fitting.";
+}
+
+std::string command_name(const CLI::App* command)
+{
+    return command->get_parent() == nullptr ? "apcs" : "apcs " + command->get_name();
+}
+
+// The commands of `app` (the session included) that take the option `name`.
+std::string commands_taking(const CLI::App& app, const std::string& name)
+{
+    std::string names;
+    const auto note = [&](const CLI::App* command) {
+        if (command->get_option_no_throw(name) != nullptr)
+            names += (names.empty() ? "'" : ", '") + command_name(command) + "'";
+    };
+    note(&app);
+    for (const CLI::App* command : app.get_subcommands({}))
+        note(command);
+    return names;
+}
+
+// The first "--NAME" after the command's name that the command does not take. CLI11 reports such
+// an option late and by its effect (its value counted as one file too many): name it instead.
+std::optional<std::string> foreign_option(const CLI::App& command, std::span<const char* const> arguments)
+{
+    bool in_command = command.get_parent() == nullptr;
+    for (const char* argument : arguments) {
+        const std::string token(argument);
+        if (token == "--")
+            break;
+        if (!in_command) {
+            in_command = token == command.get_name();
+            continue;
+        }
+        const std::string name = token.substr(0, token.find('='));
+        if (name.starts_with("--") && name != "--help" && command.get_option_no_throw(name) == nullptr)
+            return name;
+    }
+    return std::nullopt;
+}
+
+// The one line a usage error prints: an option of another command is named as such.
+std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::span<const char* const> arguments,
+                             const CLI::ParseError& error)
+{
+    if (const auto name = foreign_option(command, arguments)) {
+        const std::string owners = commands_taking(app, *name);
+        if (owners.empty())
+            return "unknown option " + *name;
+        return *name + " is not an option of '" + command_name(&command) + "' (it is one of " + owners + ")";
+    }
+    if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr && command.get_parent() == nullptr &&
+        !command.remaining().empty() && !command.remaining().front().starts_with("-"))
+        return "unknown command '" + command.remaining().front() + "' (the commands: path, inbetween, fit, draw, figures)";
+    return error.what();
+}
+
+// An option given before the command belongs to the session unless the command takes it too.
+std::optional<std::string> session_option_before_command(const CLI::App& app, const CLI::App& command)
+{
+    for (const CLI::Option* option : app.get_options()) {
+        const std::string name = option->get_name();
+        if (option->count() > 0 && name != "--help" && command.get_option_no_throw(name) == nullptr)
+            return name + " is not an option of '" + command_name(&command) + "' (it is one of " +
+                   commands_taking(app, name) + ")";
+    }
+    return std::nullopt;
+}
+
+// "-" is standard input where a file is read and standard output where one is written: each holds
+// one stream, and the session's standard output is its screen.
+std::optional<std::string> standard_stream_clash(const CommonOptions& options,
+                                                 std::span<const std::filesystem::path> inputs, bool session)
+{
+    const std::filesystem::path dash(standard_stream_name);
+    if (std::count(inputs.begin(), inputs.end(), dash) > 1)
+        return "standard input (-) can be read only once";
+    const int writers = (options.print ? 1 : 0) + (options.png == dash ? 1 : 0) + (options.png_raw == dash ? 1 : 0) +
+                        (options.svg == dash ? 1 : 0) + (options.gif == dash ? 1 : 0);
+    if (session && writers > 0)
+        return "the session's standard output is its screen: name a file for --png, --png-raw and --svg";
+    if (writers > 1)
+        return "only one of --print, --png -, --png-raw -, --svg - and --gif - can write to standard output";
+    return std::nullopt;
+}
+
+int usage_error(const std::string& line, const CLI::App* command, std::ostream& err)
+{
+    err << "apcs: " << line << "\nTry '" << command_name(command) << " --help' for more information.\n";
+    return to_int(ExitStatus::bad_usage);
+}
+
 int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
                   const TerminalSessionRunner& terminal)
 {
-    CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths", "apcs"};
-    app.set_version_flag("--version", std::string("apcs ") + std::string(version));
+    CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
+                 "Without a command, the interactive session of the thesis (manual.txt, section 10).",
+                 "apcs"};
+    app.set_version_flag("--version", version_text());
     app.require_subcommand(0, 1);
+    app.formatter(std::make_shared<PlainOptionFormatter>());
+    app.footer("The user's manual: manual.txt (installed as share/doc/apcs/manual.txt); man apcs.");
 
     CommonOptions options;
     std::vector<double> slopes;
-    add_common_options(app, options, slopes);
+    add_session_options(app, options, slopes);
 
     std::filesystem::path path_file;
-    CLI::App* path = app.add_subcommand("path", "one point's path: print it or draw it (SPEC 4)");
-    path->add_option("FILE", path_file, "path file (.dat)")->required();
-    add_common_options(*path, options, slopes);
+    CLI::App* path = app.add_subcommand("path", "one point's path: print its numbers or draw it");
+    path->add_option("FILE", path_file, "the path file (.dat)")->required()->type_name("");
+    add_path_command_options(*path, options, slopes);
 
     std::vector<std::filesystem::path> key_files;
     InbetweenSettings inbetween_settings;
-    CLI::App* inbetween = app.add_subcommand("inbetween", "in-betweens by interpolation law and padding (SPEC 6)");
-    inbetween->add_option("KEYS", key_files, "KEY1 KEY2")->expected(2)->required();
-    inbetween->add_option("--frames", inbetween_settings.frame_intervals, "T: frames 0 ... T (default: --inbetweens + 1)")
-        ->check(whole_range(limits::frame_intervals));
-    inbetween
-        ->add_option_function<std::string>(
-            "--law", [&](const std::string& name) { inbetween_settings.law = *speed_law_from_name(name); },
-            "linear, sqrt, square, ease-in, ease-out or ease-in-out (default linear)")
-        ->check(CLI::IsMember({"linear", "sqrt", "square", "ease-in", "ease-out", "ease-in-out"}));
-    inbetween
-        ->add_option_function<std::string>(
-            "--pad", [&](const std::string& name) { inbetween_settings.padding = *padding_from_name(name); },
-            "apcs, start, end, middle or midpoint (default apcs)")
-        ->check(CLI::IsMember({"apcs", "start", "end", "middle", "midpoint"}));
-    add_common_options(*inbetween, options, slopes);
+    CLI::App* inbetween = app.add_subcommand("inbetween", "in-between frames by an interpolation law and a padding");
+    inbetween->add_option("KEYS", key_files, "KEY1 KEY2: the key frames (.dat)")->expected(2)->required()->type_name("");
+    add_inbetween_command_options(*inbetween, options, inbetween_settings);
 
     std::vector<std::filesystem::path> fit_files;
-    CLI::App* fit = app.add_subcommand("fit", "surface fitting: all in-between frames");
-    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST")->expected(4)->required();
-    add_common_options(*fit, options, slopes);
+    CLI::App* fit = app.add_subcommand("fit", "surface fitting: the in-between frames of two key frames");
+    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")->expected(4)->required()->type_name("");
+    add_fit_command_options(*fit, options, slopes);
 
-    CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures as PNG");
-    add_common_options(*figures, options, slopes);
+    std::vector<std::filesystem::path> draw_files;
+    CLI::App* draw = app.add_subcommand("draw", "draw key frames and in-between files overlaid as a picture");
+    draw->add_option("FILES", draw_files, "the graphics (.dat): the first solid, the last dashed, the others dotted")
+        ->required()
+        ->type_name("");
+    add_draw_command_options(*draw, options);
 
-    std::filesystem::path scene;
-    CLI::App* play = app.add_subcommand("play", "scenes of several objects and actors");
-    play->add_option("SCENE", scene, "scene file")->required();
-    add_common_options(*play, options, slopes);
+    CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures and examples as PNG");
+    add_figures_command_options(*figures, options, slopes);
 
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         if (error.get_exit_code() == 0)
             return app.exit(error, out, err);
-        err << "apcs: " << error.what() << "\n\n" << app.help();
-        return to_int(ExitStatus::bad_usage);
+        const std::vector<CLI::App*> parsed = app.get_subcommands();
+        const CLI::App* command = parsed.empty() ? &app : parsed.back();
+        const std::span<const char* const> arguments(argv + 1, static_cast<std::size_t>(argc > 0 ? argc - 1 : 0));
+        return usage_error(usage_error_text(app, *command, arguments, error), command, err);
     }
+    for (const CLI::App* command : app.get_subcommands())
+        if (const auto misplaced = session_option_before_command(app, *command))
+            return usage_error(*misplaced, command, err);
+    std::vector<std::filesystem::path> inputs = key_files;
+    inputs.insert(inputs.end(), fit_files.begin(), fit_files.end());
+    inputs.insert(inputs.end(), draw_files.begin(), draw_files.end());
+    inputs.push_back(path_file);
+    if (const auto clash = standard_stream_clash(options, inputs, app.get_subcommands().empty()))
+        return usage_error(*clash, app.get_subcommands().empty() ? &app : app.get_subcommands().front(), err);
     if (slopes.size() == 2)
         options.path.slopes = {slopes[0], slopes[1]};
     const bool view_given = given_count(app, "--view") > 0;
@@ -291,10 +277,13 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     }
     if (fit->parsed())
         return to_int(run_fit_command({fit_files[0], fit_files[1], fit_files[2], fit_files[3]}, options, out, err));
+    if (draw->parsed()) {
+        if (!pictures_asked(options))
+            return usage_error("apcs draw writes a picture: give --png, --png-raw or --svg", draw, err);
+        return to_int(run_draw_command(draw_files, options, out, err));
+    }
     if (figures->parsed())
-        return to_int(run_figures_command(options, APCS_DATA_DIR, out, err));
-    if (play->parsed())
-        return to_int(not_built("play", err));
+        return to_int(run_figures_command(options, out, err));
     return to_int(run_session_command(options, terminal, out, err));
 }
 

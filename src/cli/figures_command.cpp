@@ -1,6 +1,7 @@
 #include "apcs/cli/figures_command.h"
 
 #include "apcs/animation/surface_fit.h"
+#include "apcs/cli/data_folder.h"
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
@@ -72,7 +73,7 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         return ExitStatus::bad_input;
     }
     for (const CurveFigure& figure : thesis_curve_figures()) {
-        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure), PngShape::monitor))
+        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure), PngShape::monitor, out))
             return report_bad_input(*problem, err);
         out << (target / figure.file_name).string() << '\n';
     }
@@ -81,11 +82,21 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         const Expected<GraphicsScreen> screen = draw_example(example, examples, options);
         if (!screen)
             return report_bad_input(screen.error(), err);
-        if (auto problem = write_png_file(target / example.file_name, *screen, PngShape::monitor))
+        if (auto problem = write_png_file(target / example.file_name, *screen, PngShape::monitor, out))
             return report_bad_input(*problem, err);
         out << (target / example.file_name).string() << '\n';
     }
     return ExitStatus::success;
+}
+
+ExitStatus run_figures_command(const CommonOptions& options, std::ostream& out, std::ostream& err)
+{
+    if (!options.workdir.empty())
+        return run_figures_command(options, options.workdir, out, err);
+    const Expected<std::filesystem::path> examples = find_data_folder();
+    if (!examples)
+        return report_bad_input(examples.error(), err);
+    return run_figures_command(options, *examples, out, err);
 }
 
 } // namespace apcs

@@ -2,15 +2,40 @@
 
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/surface_fit.h"
+#include "apcs/animation/memory_budget.h"
 #include "apcs/cli/frame_output.h"
+#include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 
 #include <array>
+#include <optional>
+#include <string>
 #include <ostream>
 
 namespace apcs {
+
+namespace {
+
+// Surface fitting holds M + 2 frames of every point, and both edge paths while it fits.
+std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, const ControlPoints& first,
+                                                    const ControlPoints& last, const CommonOptions& options,
+                                                    std::ostream& err)
+{
+    const memory::FramesRequest frames{static_cast<std::size_t>(options.path.inbetween_count) + 2,
+                                       keys.key1.point_count(), options.print};
+    const auto path = [&options](const ControlPoints& points) {
+        return memory::path_bytes({points.size(), options.path.samples_per_segment, options.path.inbetween_count, false});
+    };
+    const std::uint64_t needed = memory::saturating_sum(memory::frames_bytes(frames),
+                                                        memory::saturating_sum(path(first), path(last)));
+    return refuse_over_budget(memory::describe(frames) + " (--inbetweens " +
+                                  std::to_string(options.path.inbetween_count) + ") and their paths",
+                              needed, options, "lower --inbetweens or --samples, or use key frames of fewer points", err);
+}
+
+} // namespace
 
 ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
 {
@@ -40,6 +65,8 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
     if (!last)
         return report_bad_input(last.error(), err);
 
+    if (const auto refused = refuse_over_budget_of_fit(keys, *first, *last, options, err))
+        return *refused;
     const EvaluatedPath first_path = evaluate_path(*first, options.path);
     const EvaluatedPath last_path = evaluate_path(*last, options.path);
     warn_if_frames_freeze(first_path.frames_freeze ? first_path : last_path, options.path.inbetween_count, err);

@@ -1,11 +1,18 @@
 #include "apcs/cli/frame_output.h"
 
+#include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
 
 #include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/print_format.h"
+#include "apcs/raster/gif_encoder.h"
+#include "apcs/session/animation_player.h"
 
+#include <optional>
 #include <ostream>
+#include <utility>
+#include <string>
+#include <vector>
 
 namespace apcs {
 
@@ -19,20 +26,78 @@ std::string format_frames_print(const FrameSequence& frames)
     return text;
 }
 
+namespace {
+
+std::optional<Diagnostic> write_overlay_pictures(const FrameSequence& frames, const Graphic& structure,
+                                                 const CommonOptions& options,
+                                                 std::span<const std::filesystem::path> key_files, std::ostream& out)
+{
+    if (!pictures_asked(options))
+        return std::nullopt;
+    const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " +
+                                key_files.front().filename().string() + " to " +
+                                key_files.back().filename().string();
+    return write_pictures(frames_overlay_screen(frames, structure, options.view, caption), options, out);
+}
+
+// The batch commands keep no session log.
+class UnloggedSteps : public SessionLog {
+public:
+    void log(const std::string&) override {}
+};
+
+// --gif: every frame as the session's animation shows it (KEY1, the in-betweens, KEY2).
+std::optional<Diagnostic> write_animation_gif(const FrameSequence& frames, const Graphic& structure,
+                                              const CommonOptions& options,
+                                              std::span<const std::filesystem::path> key_files, std::ostream& out)
+{
+    if (!options.gif)
+        return std::nullopt;
+    UnloggedSteps log;
+    AnimationPlayer player(frames, structure, {key_files.front().filename().string(), key_files.back().filename().string()},
+                           options.view, options.delay_ms, log);
+    std::size_t shown = 0;
+    const auto frame_at = [&](std::size_t k) {
+        for (; shown < k; ++shown)
+            player.tick();
+        return render_raster(player.view());
+    };
+    const std::optional<std::string> gif =
+        encode_gif(frames.frame_count(), frame_at, gif_delay_centiseconds(options.delay_ms));
+    if (!gif)
+        return Diagnostic{options.gif->string(), 0, "cannot encode the GIF image"};
+    return write_picture_bytes(*options.gif, *gif, out);
+}
+
+} // namespace
+
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err)
 {
+    if (auto problem = write_overlay_pictures(frames, structure, options, key_files, out))
+        return report_bad_input(*problem, err);
+    if (auto problem = write_animation_gif(frames, structure, options, key_files, out))
+        return report_bad_input(*problem, err);
     if (options.print) {
         const std::string text = format_frames_print(frames);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        return ExitStatus::success;
     }
+    const bool files_asked = options.out || !(options.print || pictures_asked(options));
+    if (!files_asked)
+        return ExitStatus::success;
     KeyFileGuard guard;
     for (const std::filesystem::path& key_file : key_files)
         guard.protect(key_file);
-    const auto written = write_inbetween_files(frames, structure, options.out.value_or("."), guard);
+    const std::filesystem::path folder = options.out.value_or(".");
+    const auto written = write_inbetween_files(frames, structure, folder, guard);
     if (!written)
         return report_bad_input(written.error(), err);
+    std::vector<std::string> earlier = inbetweens_beyond(folder, written->size());
+    if (options.out)
+        for (std::string& name : earlier)
+            name = (folder / name).string();
+    if (const std::optional<std::string> note = earlier_inbetweens_note(earlier))
+        err << "apcs: " << *note << '\n';
     return ExitStatus::success;
 }
 

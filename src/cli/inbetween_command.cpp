@@ -1,10 +1,13 @@
 #include "apcs/cli/inbetween_command.h"
 
 #include "apcs/animation/add_points.h"
+#include "apcs/animation/memory_budget.h"
 #include "apcs/cli/frame_output.h"
+#include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 
+#include <algorithm>
 #include <array>
 #include <ostream>
 
@@ -48,8 +51,14 @@ ExitStatus run_inbetween_command(const InbetweenSettings& settings, const Common
     const Expected<Graphic> key2 = read_key_frame(settings.key2);
     if (!key2)
         return report_bad_input(key2.error(), err);
-    const PaddedKeys keys = pad_keys(*key1, *key2, settings.padding);
     const int intervals = settings.frame_intervals.value_or(options.path.inbetween_count + 1);
+    // Both keys are padded to the larger point count.
+    const memory::FramesRequest request{static_cast<std::size_t>(intervals) + 1,
+                                        std::max(key1->point_count(), key2->point_count()), options.print};
+    if (const auto refused = refuse_over_budget(memory::describe(request), memory::frames_bytes(request), options,
+                                                "lower --frames or --inbetweens, or use key frames of fewer points", err))
+        return *refused;
+    const PaddedKeys keys = pad_keys(*key1, *key2, settings.padding);
     const FrameSequence frames = interpolate_frames(keys.begin, keys.end, intervals, settings.law);
     const std::array<std::filesystem::path, 2> key_files{settings.key1, settings.key2};
     return deliver_frames(frames, keys.structure, options, key_files, out, err);

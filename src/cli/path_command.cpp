@@ -1,10 +1,13 @@
 #include "apcs/cli/path_command.h"
 
+#include "apcs/animation/memory_budget.h"
+#include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/png_encoder.h"
+#include "apcs/raster/svg_encoder.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/screen_layout.h"
 
@@ -23,15 +26,42 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
+std::optional<Diagnostic> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
+                                              std::ostream& out)
+{
+    if (target == standard_stream_name) {
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        return std::nullopt;
+    }
+    const Expected<WriteResult> written = write_file_atomically(target, bytes);
+    if (!written)
+        return written.error();
+    return std::nullopt;
+}
+
 std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                                         PngShape shape)
+                                         PngShape shape, std::ostream& out)
 {
     const std::optional<std::string> png = encode_png(render_raster(screen), shape);
     if (!png)
         return Diagnostic{target.string(), 0, "cannot encode the PNG image"};
-    const Expected<WriteResult> written = write_file_atomically(target, *png);
-    if (!written)
-        return written.error();
+    return write_picture_bytes(target, *png, out);
+}
+
+std::optional<Diagnostic> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                                         std::ostream& out)
+{
+    return write_picture_bytes(target, encode_svg(screen), out);
+}
+
+std::optional<Diagnostic> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out)
+{
+    for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}})
+        if (target)
+            if (auto problem = write_png_file(*target, screen, shape, out))
+                return problem;
+    if (options.svg)
+        return write_svg_file(*options.svg, screen, out);
     return std::nullopt;
 }
 
@@ -48,18 +78,17 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
     if (!dat)
         return report_bad_input(dat.error(), err);
     const ControlPoints points = control_points_from(*dat, options.staff);
+    const memory::PathRequest request{points.size(), options.path.samples_per_segment, options.path.inbetween_count,
+                                      options.print || !pictures_asked(options)};
+    if (const auto refused = refuse_over_budget(memory::describe(request), memory::path_bytes(request), options,
+                                                "lower --samples or --inbetweens", err))
+        return *refused;
     const EvaluatedPath path = evaluate_path(points, options.path);
     warn_if_frames_freeze(path, options.path.inbetween_count, err);
-    if (options.png || options.png_raw) {
-        const GraphicsScreen screen = draw_path_file_screen(points, path, options.view);
-        for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}}) {
-            if (!target)
-                continue;
-            if (auto problem = write_png_file(*target, screen, shape))
-                return report_bad_input(*problem, err);
-        }
-    }
-    if (options.print || !(options.png || options.png_raw)) {
+    if (pictures_asked(options))
+        if (auto problem = write_pictures(draw_path_file_screen(points, path, options.view), options, out))
+            return report_bad_input(*problem, err);
+    if (options.print || !pictures_asked(options)) {
         const std::string text = format_path_print(path);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));
     }

@@ -1,5 +1,6 @@
 #include "apcs/cli/session_command.h"
 
+#include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 
@@ -107,20 +108,25 @@ SessionSettings session_settings(const CommonOptions& options)
         settings.overlay_png = as_started(*options.png);
     if (options.png_raw)
         settings.overlay_png_raw = as_started(*options.png_raw);
+    if (options.svg)
+        settings.overlay_svg = as_started(*options.svg);
     return settings;
 }
 
 std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
                                            std::ostream& out)
 {
-    std::vector<KeyEvent> handled;
+    std::size_t handled = 0;
     print_step(session, glyphs, out);
     for (const KeyEvent& key : keys) {
         if (session.finished())
             break;
         const SessionPhase before = session.phase();
-        handled.push_back(key);
+        ++handled;
         session.handle(key);
+        // Nobody can press Esc: the split runs to its end.
+        while (session.busy())
+            session.work();
         if (session.phase() == SessionPhase::animating && session.phase() != before)
             print_step(session, glyphs, out);
         while (session.animating())
@@ -132,7 +138,8 @@ std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<K
     // stopped and why.
     if (!session.finished())
         print_step(session, glyphs, out);
-    return handled;
+    // The keys handled are the script's first ones: one copy of exactly their size.
+    return {keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(handled)};
 }
 
 ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
@@ -144,9 +151,19 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         err << folder.string() << ": is not a folder; expected the folder to work in (--workdir)\n";
         return ExitStatus::bad_input;
     }
+    const Expected<std::uint64_t> limit = memory_limit(options);
+    if (!limit) {
+        err << limit.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
     std::vector<KeyEvent> scripted;
     if (options.keys) {
-        const Expected<std::string> text = read_text_file(*options.keys);
+        // The terminal session reads its keys from standard input: a script cannot come from there too.
+        if (*options.keys == "-" && ::isatty(STDIN_FILENO)) {
+            err << "apcs: --keys -: standard input is a terminal; pipe the script in, or give --keys FILE\n";
+            return ExitStatus::bad_usage;
+        }
+        const Expected<std::string> text = read_script_text(*options.keys, max_key_script_bytes);
         if (!text)
             return report_bad_input(text.error(), err);
         Expected<std::vector<KeyEvent>> script = parse_key_script(*text, options.keys->string());
@@ -170,7 +187,9 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     }
     FolderFiles files(folder);
     files.log("session started");
-    Session session(session_settings(options), files);
+    SessionSettings settings = session_settings(options);
+    settings.memory_limit_bytes = *limit;
+    Session session(std::move(settings), files);
     std::vector<KeyEvent> recorded;
     ExitStatus status = ExitStatus::success;
     if (headless) {

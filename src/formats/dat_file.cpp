@@ -20,6 +20,34 @@ namespace {
 constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 constexpr char dos_end_of_file = '\x1A';
 
+// Removes the first line from `text` and returns it without its end. A line ends with LF (Unix),
+// CR LF (DOS) or a lone CR (old Macintosh files), so each form numbers lines the same way.
+std::string_view take_line(std::string_view& text)
+{
+    const std::size_t end = text.find_first_of("\r\n");
+    const std::string_view line = text.substr(0, end);
+    if (end == std::string_view::npos) {
+        text = {};
+        return line;
+    }
+    const bool crlf = text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
+    text.remove_prefix(end + (crlf ? 2 : 1));
+    return line;
+}
+
+// The 1-based number of the line that holds byte `position` of `text`, with line ends as
+// take_line finds them.
+int line_number_at(std::string_view text, std::size_t position)
+{
+    int line = 1;
+    for (std::size_t i = 0; i < position && i < text.size(); ++i) {
+        const bool lone_cr = text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n');
+        if (text[i] == '\n' || lone_cr)
+            ++line;
+    }
+    return line;
+}
+
 void append_xyz(std::string& text, const Vec3& point)
 {
     append_shortest(text, point.x);
@@ -99,14 +127,12 @@ Expected<DatFile> DatParser::parse(std::string_view text)
         });
         if (!only_trailer)
             return error("Ctrl-Z (end of file) followed by more data; expected it only at the end",
-                         1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(end_mark), '\n')));
+                         line_number_at(text, end_mark));
         text = text.substr(0, end_mark);
     }
     while (!text.empty()) {
         ++m_line;
-        const std::size_t newline = text.find('\n');
-        const std::string_view line = text.substr(0, newline);
-        text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+        const std::string_view line = take_line(text);
         if (auto problem = parse_line(line))
             return *problem;
     }

@@ -1,5 +1,6 @@
 #include "apcs/formats/file_io.h"
 
+#include "apcs/animation/memory_budget.h"
 #include "apcs/formats/text_fields.h"
 #include "apcs/formats/unfinished_files.h"
 
@@ -12,6 +13,7 @@
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
+#include <vector>
 
 namespace apcs {
 
@@ -19,11 +21,24 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Larger inputs than this cannot be valid: 10^6 points of at most 4096 bytes would be 4 GB, but
-// no real key file comes near; refusing here keeps memory bounded for any input.
-constexpr std::uintmax_t max_input_bytes = 1ull << 30;
-
 std::string system_reason(int error_number) { return std::strerror(error_number); }
+
+Diagnostic too_large(const std::string& shown, std::uintmax_t bytes, std::uintmax_t most_bytes)
+{
+    return Diagnostic{shown, 0, "is " + std::to_string(bytes) + " bytes; expected at most " + std::to_string(most_bytes) +
+                                    " bytes (" + memory::byte_count_text(most_bytes) + ")"};
+}
+
+// No text APCS reads holds a NUL byte: a binary file is refused at the first one, before the rest
+// of it is read. `read` is the text before `chunk`, for the line number.
+std::optional<Diagnostic> refuse_nul_byte(const std::string& shown, std::string_view read, std::string_view chunk)
+{
+    const std::size_t nul = chunk.find('\0');
+    if (nul == std::string_view::npos)
+        return std::nullopt;
+    const auto lines = std::count(read.begin(), read.end(), '\n') + std::count(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    return Diagnostic{shown, 1 + static_cast<int>(lines), "NUL byte; expected a text file"};
+}
 
 // Closes a POSIX file descriptor when it goes out of scope.
 class FileDescriptor {
@@ -58,12 +73,11 @@ bool write_all(int descriptor, std::string_view content)
     return true;
 }
 
-// Whether the file's bytes are `content`, compared chunk by chunk so that no copy of a large file
-// is held in memory.
-bool holds_exactly(const fs::path& file, std::string_view content)
+// Whether the file, of `size` bytes, holds exactly `content`, compared chunk by chunk so that no
+// copy of a large file is held in memory.
+bool holds_exactly(const fs::path& file, off_t size, std::string_view content)
 {
-    std::error_code error;
-    if (fs::file_size(file, error) != content.size() || error)
+    if (size < 0 || static_cast<std::size_t>(size) != content.size())
         return false;
     FileDescriptor input(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
     if (input.get() < 0)
@@ -120,25 +134,62 @@ bool is_read_only(const fs::path& file, const struct stat& status)
     return ::faccessat(AT_FDCWD, file.c_str(), W_OK, AT_EACCESS) != 0 && errno == EACCES;
 }
 
+// The mkstemp pattern of the hidden temporary file for `name` in `folder`: ".NAME.XXXXXX", with
+// NAME cut short (at a UTF-8 character boundary) when the whole would pass the folder's longest
+// name, so that every name the file system accepts can be written; mkstemp keeps it unique.
+std::string temporary_name_for(const fs::path& folder, const std::string& name)
+{
+    constexpr std::string_view dot = ".";
+    constexpr std::string_view unique_tail = ".XXXXXX";
+    const long folder_limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+    const std::size_t longest = folder_limit > 0 ? static_cast<std::size_t>(folder_limit) : 255;
+    std::size_t kept = name.size();
+    if (dot.size() + kept + unique_tail.size() > longest) {
+        kept = longest - dot.size() - unique_tail.size();
+        while (kept > 0 && (static_cast<unsigned char>(name[kept]) & 0xC0) == 0x80)
+            --kept;
+    }
+    return std::string(dot) + name.substr(0, kept) + std::string(unique_tail);
+}
+
 } // namespace
 
-fs::path resolve_input_path(const fs::path& name)
+Expected<fs::path> find_input_path(const fs::path& name)
 {
     std::error_code error;
     if (fs::exists(name, error))
         return name;
     const fs::path folder = name.has_parent_path() ? name.parent_path() : fs::path(".");
     const std::string wanted = name.filename().string();
+    std::vector<std::string> matches;
     for (fs::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
         if (equals_ignoring_case(entry->path().filename().string(), wanted))
-            return name.has_parent_path() ? folder / entry->path().filename() : entry->path().filename();
-    return name;
+            matches.push_back(entry->path().filename().string());
+    if (matches.empty())
+        return name;
+    if (matches.size() == 1)
+        return name.has_parent_path() ? folder / matches[0] : fs::path(matches[0]);
+    // The folder's order is no choice the user made: naming them all lets them type the one meant.
+    std::sort(matches.begin(), matches.end());
+    std::string listed;
+    for (const std::string& match : matches)
+        listed += (listed.empty() ? "" : match == matches.back() ? " and " : ", ") + match;
+    return Diagnostic{name.string(), 0, "is ambiguous: " + listed + " differ only in case; expected the exact name"};
 }
 
-Expected<std::string> read_text_file(const fs::path& name)
+fs::path resolve_input_path(const fs::path& name)
+{
+    const Expected<fs::path> found = find_input_path(name);
+    return found ? *found : name;
+}
+
+Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_bytes)
 {
     const std::string shown = name.string();
-    const fs::path path = resolve_input_path(name);
+    const Expected<fs::path> found = find_input_path(name);
+    if (!found)
+        return Diagnostic{shown, 0, found.error().message};
+    const fs::path& path = *found;
     // Only regular files are read: a FIFO would wait forever for a writer, a device could be read
     // without end. stat() first, so that such a file is never even opened; O_NONBLOCK and the
     // fstat() after the open cover a file swapped for a FIFO in between.
@@ -156,6 +207,9 @@ Expected<std::string> read_text_file(const fs::path& name)
         return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
     if (!S_ISREG(status.st_mode))
         return Diagnostic{shown, 0, not_regular(status.st_mode) + "; expected a file"};
+    // Refused by its size before a byte is read, so a huge file costs no time and no memory.
+    if (static_cast<std::uintmax_t>(status.st_size) > most_bytes)
+        return too_large(shown, static_cast<std::uintmax_t>(status.st_size), most_bytes);
     std::string content;
     char buffer[1 << 16];
     while (true) {
@@ -167,15 +221,28 @@ Expected<std::string> read_text_file(const fs::path& name)
         }
         if (got == 0)
             break;
-        if (content.size() + static_cast<std::size_t>(got) > max_input_bytes)
-            return Diagnostic{shown, 0, "is larger than 1 GiB; expected a .dat file"};
-        content.append(buffer, static_cast<std::size_t>(got));
+        const std::string_view chunk(buffer, static_cast<std::size_t>(got));
+        if (auto binary = refuse_nul_byte(shown, content, chunk))
+            return *std::move(binary);
+        // A file that grew while it was read.
+        if (content.size() + chunk.size() > most_bytes)
+            return too_large(shown, content.size() + chunk.size(), most_bytes);
+        if (content.empty())
+            content.reserve(static_cast<std::size_t>(status.st_size));
+        content.append(chunk);
     }
     return content;
 }
 
 Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points)
 {
+    // "-" is standard input, read like a keystroke script: a pipe, once, to its end.
+    if (name == "-") {
+        Expected<std::string> piped = read_script_text(name);
+        if (!piped)
+            return piped.error();
+        return parse_dat(*piped, "standard input", minimum_points);
+    }
     Expected<std::string> text = read_text_file(name);
     if (!text)
         return text.error();
@@ -188,6 +255,42 @@ Expected<Graphic> read_key_frame(const fs::path& name)
     if (!file)
         return file.error();
     return graphic_from(*file);
+}
+
+namespace {
+
+// Everything a pipe holds until its writer closes it, at most `most_bytes`.
+Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown, std::uintmax_t most_bytes)
+{
+    std::string content;
+    char buffer[1 << 16];
+    while (true) {
+        const ssize_t got = ::read(descriptor, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0)
+            return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
+        if (got == 0)
+            return content;
+        if (content.size() + static_cast<std::size_t>(got) > most_bytes)
+            return too_large(shown, content.size() + static_cast<std::size_t>(got), most_bytes);
+        content.append(buffer, static_cast<std::size_t>(got));
+    }
+}
+
+} // namespace
+
+Expected<std::string> read_script_text(const fs::path& name, std::uintmax_t most_bytes)
+{
+    if (name == "-")
+        return read_pipe_to_end(STDIN_FILENO, "standard input", most_bytes);
+    struct stat status {};
+    if (::stat(name.c_str(), &status) != 0 || !S_ISFIFO(status.st_mode))
+        return read_text_file(name, most_bytes);
+    FileDescriptor pipe(::open(name.c_str(), O_RDONLY | O_CLOEXEC));
+    if (pipe.get() < 0)
+        return Diagnostic{name.string(), 0, "cannot open: " + system_reason(errno)};
+    return read_pipe_to_end(pipe.get(), name.string(), most_bytes);
 }
 
 fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
@@ -210,7 +313,7 @@ fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
 }
 
 Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content,
-                                            const KeyFileGuard* inputs)
+                                            const KeyFileGuard* inputs, Durability durability)
 {
     const std::string shown = requested.string();
     // Only regular files are ever replaced. A symbolic link is written through to the file it
@@ -238,14 +341,14 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
         }
         exists = true;
     }
-    if (exists && holds_exactly(target, content))
+    if (exists && holds_exactly(target, status.st_size, content))
         return WriteResult{WriteOutcome::unchanged, {}};
     if (exists && is_read_only(target, status))
         return Diagnostic{shown, 0, "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
     // A new file is 0644; a replaced one keeps its mode, and its owner and group where allowed.
     const mode_t mode = exists ? (status.st_mode & 07777) : 0644;
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::string temporary = (folder / ("." + target.filename().string() + ".XXXXXX")).string();
+    std::string temporary = (folder / temporary_name_for(folder, target.filename().string())).string();
     FileDescriptor file(::mkstemp(temporary.data()));
     if (file.get() < 0)
         return Diagnostic{shown, 0, "cannot create a temporary file in " + folder.string() + ": " + system_reason(errno)};
@@ -259,7 +362,7 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
     };
     if (!write_all(file.get(), content))
         return abandon("cannot write");
-    if (::fsync(file.get()) != 0)
+    if (durability == Durability::each_file && ::fsync(file.get()) != 0)
         return abandon("cannot flush to disk");
     if (exists && (status.st_uid != ::geteuid() || status.st_gid != ::getegid())) {
         // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes the
@@ -295,6 +398,14 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
     if (::rename(temporary.c_str(), target.c_str()) != 0)
         return abandon("cannot replace the file");
     return result;
+}
+
+std::optional<Diagnostic> flush_file_system(const fs::path& folder)
+{
+    FileDescriptor opened(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (opened.get() < 0 || ::syncfs(opened.get()) != 0)
+        return Diagnostic{folder.string(), 0, "cannot flush the files written to disk: " + system_reason(errno)};
+    return std::nullopt;
 }
 
 } // namespace apcs

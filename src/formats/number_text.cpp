@@ -1,11 +1,46 @@
 #include "apcs/formats/number_text.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cstdint>
 #include <limits>
 
 namespace apcs {
+
+namespace {
+
+// Whether a well-formed decimal number (not NaN or infinity) has a magnitude below 1, judged
+// from its text alone: the power of ten of its first significant digit is negative.
+bool is_below_one(std::string_view number)
+{
+    if (number.starts_with('-') || number.starts_with('+'))
+        number.remove_prefix(1);
+    const std::size_t exponent_mark = number.find_first_of("eE");
+    const std::string_view digits = number.substr(0, exponent_mark);
+    const std::size_t point = std::min(digits.find('.'), digits.size());
+    const std::size_t first_significant = digits.find_first_of("123456789");
+    if (first_significant == std::string_view::npos)
+        return true;
+    long long power = first_significant < point ? static_cast<long long>(point - first_significant) - 1
+                                                : -static_cast<long long>(first_significant - point);
+    if (exponent_mark != std::string_view::npos) {
+        std::string_view exponent_text = number.substr(exponent_mark + 1);
+        const bool negative = exponent_text.starts_with('-');
+        if (negative || exponent_text.starts_with('+'))
+            exponent_text.remove_prefix(1);
+        long long exponent = 0;
+        const auto result = std::from_chars(exponent_text.data(), exponent_text.data() + exponent_text.size(), exponent);
+        // An exponent this large outweighs any count of digits, so its sign alone decides.
+        constexpr long long decisive_exponent = 1'000'000'000'000'000;
+        if (result.ec == std::errc::result_out_of_range || exponent > decisive_exponent)
+            return negative;
+        power += negative ? -exponent : exponent;
+    }
+    return power < 0;
+}
+
+} // namespace
 
 std::optional<double> parse_number(std::string_view field)
 {
@@ -18,10 +53,12 @@ std::optional<double> parse_number(std::string_view field)
         return std::nullopt;
     double value = 0.0;
     const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    if (error == std::errc::result_out_of_range) {
-        // Magnitudes beyond double's range: report them as infinite so they are rejected as such.
-        return field.front() == '-' ? -std::numeric_limits<double>::infinity()
-                                    : std::numeric_limits<double>::infinity();
+    if (error == std::errc::result_out_of_range && end == field.data() + field.size()) {
+        // Too large for a double: infinite, so the caller rejects it as such. Too small (below
+        // the smallest subnormal, 4.9e-324): zero, as 1e-310 already rounds to a subnormal, so
+        // that every tiny magnitude is read the same way.
+        const double sign = field.front() == '-' ? -1.0 : 1.0;
+        return is_below_one(field) ? sign * 0.0 : sign * std::numeric_limits<double>::infinity();
     }
     if (error != std::errc{} || end != field.data() + field.size())
         return std::nullopt;

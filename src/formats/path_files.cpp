@@ -17,12 +17,16 @@ std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2
     const std::size_t count = std::min(first.size(), second.size());
     std::vector<NamedText> files;
     files.reserve(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        DatFile path;
-        path.parts.push_back({"", Closure::open, {{first[i], std::nullopt, 0}, {second[i], std::nullopt, 0}}});
-        files.push_back({path_file_name(i + 1), format_dat(path)});
-    }
+    for (std::size_t i = 0; i < count; ++i)
+        files.push_back(split_path_file(i + 1, first[i], second[i]));
     return files;
+}
+
+NamedText split_path_file(std::size_t point_number, const Vec3& key1_point, const Vec3& key2_point)
+{
+    DatFile path;
+    path.parts.push_back({"", Closure::open, {{key1_point, std::nullopt, 0}, {key2_point, std::nullopt, 0}}});
+    return {path_file_name(point_number), format_dat(path)};
 }
 
 std::string inbetween_file_name(std::size_t number)

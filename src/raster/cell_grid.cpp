@@ -3,6 +3,8 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
+#include <locale.h>
+#include <wchar.h>
 
 namespace apcs {
 
@@ -39,15 +41,45 @@ void CellGrid::set(int column, int row, char32_t glyph)
 {
     if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
         return;
-    m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = glyph;
+    const std::size_t index = static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column);
+    // Half a wide character is never left behind: its other half becomes a blank.
+    if (m_cells[index] == wide_tail && glyph != wide_tail)
+        m_cells[index - 1] = U' ';
+    if (m_cells[index] != wide_tail && column + 1 < m_columns && m_cells[index + 1] == wide_tail)
+        m_cells[index + 1] = U' ';
+    m_cells[index] = glyph;
 }
 
 void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle style)
 {
     for (const char32_t code_point : decode_utf8(utf8)) {
+        const int width = cell_width(code_point);
+        if (width <= 0)
+            continue;
+        if (width == 2 && column + 1 >= m_columns)
+            break;
         set_style(column, row, style);
         set(column++, row, code_point);
+        if (width == 2) {
+            set_style(column, row, style);
+            set(column++, row, wide_tail);
+        }
     }
+}
+
+int cell_width(char32_t code_point)
+{
+    if (code_point >= 0x20 && code_point < 0x7F)
+        return 1;
+    // A locale of its own, used on this thread only for the call: the user's locale and every
+    // other thread are left as they are.
+    static const locale_t utf8 = ::newlocale(LC_CTYPE_MASK, "C.UTF-8", static_cast<locale_t>(nullptr));
+    if (utf8 == static_cast<locale_t>(nullptr))
+        return code_point < 0x20 || (code_point >= 0x7F && code_point < 0xA0) ? -1 : 1;
+    const locale_t previous = ::uselocale(utf8);
+    const int width = ::wcwidth(static_cast<wchar_t>(code_point));
+    ::uselocale(previous);
+    return width;
 }
 
 void append_utf8(std::string& text, char32_t code_point)
@@ -73,7 +105,8 @@ std::string CellGrid::row_text(int row) const
 {
     std::string text;
     for (int column = 0; column < m_columns; ++column)
-        append_utf8(text, at(column, row));
+        if (at(column, row) != wide_tail)
+            append_utf8(text, at(column, row));
     return text;
 }
 

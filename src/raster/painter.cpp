@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -67,6 +68,13 @@ void toggle_once(Bitmap& target, std::vector<PixelPoint>& pixels)
         target.toggle(point.x, point.y);
 }
 
+bool same_clip(const std::optional<PixelRect>& a, const std::optional<PixelRect>& b)
+{
+    if (!a || !b)
+        return a.has_value() == b.has_value();
+    return a->left == b->left && a->top == b->top && a->right == b->right && a->bottom == b->bottom;
+}
+
 } // namespace
 
 template <typename Plot>
@@ -113,8 +121,33 @@ PixelRect Painter::bounds() const
             std::min(whole.bottom, m_clip->bottom)};
 }
 
+Painter& Painter::record_into(std::vector<Stroke>& strokes)
+{
+    m_record = &strokes;
+    return *this;
+}
+
+void Painter::record(PixelPoint from, PixelPoint to, LineStyle style)
+{
+    if (m_record == nullptr)
+        return;
+    if (!m_record->empty()) {
+        Stroke& last = m_record->back();
+        if (last.style == style && same_clip(last.clip, m_clip) && last.points.size() > 1 && last.points.back() == from) {
+            last.points.push_back(to);
+            return;
+        }
+    }
+    Stroke stroke{{from}, style, m_clip};
+    if (to != from)
+        stroke.points.push_back(to);
+    m_record->push_back(std::move(stroke));
+}
+
 void Painter::pixel(PixelPoint point, DrawMode mode)
 {
+    if (mode == DrawMode::set)
+        record(point, point, LineStyle::solid);
     const PixelRect box = bounds();
     if (point.x >= box.left && point.x < box.right && point.y >= box.top && point.y < box.bottom)
         apply(m_target, point.x, point.y, mode);
@@ -122,11 +155,14 @@ void Painter::pixel(PixelPoint point, DrawMode mode)
 
 void Painter::line(PixelPoint from, PixelPoint to, DrawMode mode)
 {
+    if (mode == DrawMode::set)
+        record(from, to, LineStyle::solid);
     each_line_pixel(from, to, [&](int x, int y) { apply(m_target, x, y, mode); });
 }
 
 void Painter::styled_line(PixelPoint from, PixelPoint to, LineStyle style, int& phase)
 {
+    record(from, to, style);
     bool first = true;
     each_line_pixel(from, to, [&](int x, int y) {
         // A segment's first pixel is the previous segment's last: counted once.

@@ -17,10 +17,9 @@ void append_to_string(png_structp png, png_bytep data, png_size_t length)
 
 void flush_nothing(png_structp) {}
 
-// The raster row that picture row `row` shows: rows 0 1 2 3 4 5 … show 0 0 1 2 2 3 ….
-int raster_row_of(int row, PngShape shape) { return shape == PngShape::monitor ? row * 2 / 3 : row; }
-
 } // namespace
+
+int raster_row_of(int row, PngShape shape) { return shape == PngShape::monitor ? row * 2 / 3 : row; }
 
 int png_rows(int raster_rows, PngShape shape)
 {

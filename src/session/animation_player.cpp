@@ -14,6 +14,34 @@ namespace apcs {
 
 namespace text = session_text;
 
+namespace {
+
+// Frames first … last−1, each drawn by the parts of `structure`, inside the drawing area.
+GraphicsScreen draw_frames(const FrameSequence& frames, const Graphic& structure, const ViewTransform& view,
+                           std::size_t first, std::size_t last)
+{
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    painter.record_into(screen.strokes).rectangle(layout::drawing_area);
+    Painter inside(screen.bitmap, layout::inside_boundary);
+    inside.record_into(screen.strokes);
+    for (std::size_t k = first; k < last; ++k)
+        for (const auto& polyline : structure.polylines(frames.frame(k)))
+            draw_world_polyline(inside, polyline, view);
+    return screen;
+}
+
+} // namespace
+
+GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure, ViewAngles angles,
+                                     const std::string& caption)
+{
+    const ViewTransform view = ViewScene{}.add(frames).fit(angles, layout::view_area);
+    GraphicsScreen screen = draw_frames(frames, structure, view, 0, frames.frame_count());
+    screen.text.push_back({1, layout::message_row, caption});
+    return screen;
+}
+
 AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names,
                                  ViewAngles angles, int delay_ms, SessionLog& log)
     : m_frames(std::move(frames))
@@ -79,16 +107,10 @@ void AnimationPlayer::tick()
 GraphicsScreen AnimationPlayer::view() const
 {
     assert(m_frames.frame_count() == 0 || m_frame < m_frames.frame_count());
-    GraphicsScreen screen;
-    Painter painter(screen.bitmap);
-    painter.rectangle(layout::drawing_area);
     const bool all_frames = m_phase == SessionPhase::overlay;
     const std::size_t first = all_frames ? 0 : m_frame;
     const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
-    Painter inside(screen.bitmap, layout::inside_boundary);
-    for (std::size_t k = first; k < last; ++k)
-        for (const auto& polyline : m_structure.polylines(m_frames.frame(k)))
-            draw_world_polyline(inside, polyline, m_view);
+    GraphicsScreen screen = draw_frames(m_frames, m_structure, m_view, first, last);
     std::string message;
     if (m_phase == SessionPhase::animating)
         message = frame_label() + (m_paused ? "  (paused)" : "");

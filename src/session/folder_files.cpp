@@ -66,7 +66,8 @@ std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std:
 {
     if (m_key_files.guards(m_folder / name))
         return Diagnostic{name, 0, "is a key file; key files are never written"};
-    const Expected<WriteResult> result = write_file_atomically(m_folder / name, content, &m_key_files);
+    const Expected<WriteResult> result = write_file_atomically(
+        m_folder / name, content, &m_key_files, m_in_batch ? Durability::at_barrier : Durability::each_file);
     if (!result)
         return Diagnostic{name, 0, result.error().message};
     if (!result->backup.empty() && result->backup.extension() != ".bak")
@@ -84,6 +85,23 @@ Expected<std::vector<std::string>> FolderFiles::write_inbetweens(const FrameSequ
     for (const std::filesystem::path& path : *written)
         names.push_back(path.filename().string());
     return names;
+}
+
+std::vector<std::string> FolderFiles::earlier_inbetweens(std::size_t written_count) const
+{
+    return inbetweens_beyond(m_folder, written_count);
+}
+
+std::optional<Diagnostic> FolderFiles::end_batch()
+{
+    m_in_batch = false;
+    return flush_file_system(m_folder);
+}
+
+FolderFiles::~FolderFiles()
+{
+    if (m_in_batch)
+        [[maybe_unused]] const std::optional<Diagnostic> ignored = end_batch();
 }
 
 void FolderFiles::log(const std::string& line)

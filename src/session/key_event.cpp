@@ -30,7 +30,9 @@ constexpr std::array<std::pair<std::string_view, Key>, 12> key_names{{
 
 Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
 {
+    // Every event takes at least one byte of the script: one allocation, never a doubling.
     std::vector<KeyEvent> events;
+    events.reserve(text.size());
     std::optional<Diagnostic> problem;
     int line_number = 0;
     while (!text.empty()) {
@@ -68,6 +70,9 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
         if (stop)
             return *problem;
     }
+    // Keys named by words (ENTER) take many bytes each: give back what they left unused.
+    if (events.size() < events.capacity() / 2)
+        events.shrink_to_fit();
     return events;
 }
 

@@ -61,6 +61,9 @@ std::vector<KeyBinding> make_bindings()
         {Row{Pattern::of(Key::enter), cmd::Continue{}, "", "stop adjusting: surface fitting writes the in-betweens"},
          help_key, question_mark, quit_now});
     add(Context::any_key, {help_key, question_mark, quit_now, Row{Pattern::any_key(), cmd::Continue{}, "", "go on"}});
+    add(Context::splitting,
+        {Row{Pattern::of(Key::escape), cmd::Back{}, "", "stop the split: back to the KEY2 prompt (files written stay)"},
+         quit_now});
     add(Context::any_key_graphics, std::vector<Row>(graphics_rows.begin(), graphics_rows.end()));
     add(Context::any_key_graphics, {quit_now, Row{Pattern::any_key(), cmd::Continue{}, "", "go on"}});
 

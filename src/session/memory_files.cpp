@@ -1,3 +1,4 @@
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/session_files.h"
 
@@ -36,6 +37,14 @@ Expected<std::vector<std::string>> MemoryFiles::write_inbetweens(const FrameSequ
         names.push_back(file.name);
     }
     return names;
+}
+
+std::vector<std::string> MemoryFiles::earlier_inbetweens(std::size_t written_count) const
+{
+    std::vector<std::string> names;
+    for (const auto& [name, content] : files)
+        names.push_back(name);
+    return inbetweens_beyond(names, written_count);
 }
 
 } // namespace apcs

@@ -2,6 +2,7 @@
 
 #include "apcs/raster/painter.h"
 #include "apcs/raster/png_encoder.h"
+#include "apcs/raster/svg_encoder.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/session_text.h"
 
@@ -19,6 +20,7 @@ const char* phase_name(SessionPhase phase)
     switch (phase) {
     case SessionPhase::ask_key1: return "step 1: KEY1 file";
     case SessionPhase::ask_key2: return "step 1: KEY2 file";
+    case SessionPhase::splitting: return "step 1: splitting into path files";
     case SessionPhase::ask_view: return "step 2: view and delay";
     case SessionPhase::ask_path_file: return "step 3: path file";
     case SessionPhase::ask_slopes: return "step 3: end slopes";
@@ -160,7 +162,8 @@ void Session::update_text_step(SessionPhase phase, const Command& command)
     }
     std::string input = m_console.input();
     if (const auto* typed = std::get_if<command::TypeCharacter>(&command)) {
-        if (input.size() < max_answer_bytes) {
+        // A zero-width or control character would change the answer where nobody can see it.
+        if (input.size() < max_answer_bytes && cell_width(typed->character) > 0) {
             append_utf8(input, typed->character);
             m_console.set_input(input);
         }
@@ -225,8 +228,9 @@ SessionScreen Session::screen() const
         shown.picture = player->view();
     } else {
         shown.text = m_console.render(!finished());
-        if (!m_notice.empty())
-            shown.text.put_text(0, TextConsole::rows - 1, m_notice);
+        const std::string message = m_split ? split_progress() : m_notice;
+        if (!message.empty())
+            shown.text.put_text(0, TextConsole::rows - 1, message);
         return shown;
     }
     // The message line, by priority (SPEC §7.3): an open question, then what the last key did.
@@ -280,6 +284,9 @@ void Session::write_overlay_once()
         if (name)
             write_picture(*name, overlay, shape, "overlay of all frames written to " + *name);
     }
+    if (m_settings.overlay_svg)
+        store_picture(*m_settings.overlay_svg, encode_svg(overlay),
+                      "overlay of all frames written to " + *m_settings.overlay_svg);
 }
 
 void Session::write_picture(const std::string& name, const GraphicsScreen& picture, PngShape shape,
@@ -290,7 +297,12 @@ void Session::write_picture(const std::string& name, const GraphicsScreen& pictu
         m_notice = name + ": cannot encode the PNG image";
         return;
     }
-    if (auto problem = write_file(name, *png)) {
+    store_picture(name, *png, log_line);
+}
+
+void Session::store_picture(const std::string& name, const std::string& bytes, const std::string& log_line)
+{
+    if (auto problem = write_file(name, bytes)) {
         m_notice = problem->to_string();
         return;
     }
@@ -302,6 +314,8 @@ void Session::write_picture(const std::string& name, const GraphicsScreen& pictu
 void Session::quit()
 {
     m_files.log("quit at " + std::string(phase_name(phase())));
+    if (m_split)
+        close_split();
     finish();
 }
 
@@ -315,7 +329,7 @@ std::optional<Diagnostic> Session::write_file(const std::string& name, const std
 
 void Session::record_written(const std::string& name)
 {
-    if (std::find(m_written.begin(), m_written.end(), name) == m_written.end())
+    if (m_written_names.insert(name).second)
         m_written.push_back(name);
 }
 

@@ -4,8 +4,10 @@
 
 #include "apcs/animation/input_limits.h"
 #include "apcs/animation/surface_fit.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/session/session_budget.h"
 #include "apcs/session/session_text.h"
 
 #include <algorithm>
@@ -55,6 +57,9 @@ const Session::Prompt& Session::prompt_for(SessionPhase phase)
         {SessionPhase::ask_key2, KeyContext::text_line, [](const S&) { return lines_of({text::ask_key2}); },
          [](const S&) { return lines_of({text::ask_key2}); }, [](const S&) { return std::string("key2.dat"); },
          &S::read_key2},
+        // The split shows its progress on the message line, not in the console's lines.
+        {SessionPhase::splitting, KeyContext::splitting, [](const S&) { return std::vector<std::string>{}; },
+         [](const S&) { return std::vector<std::string>{}; }, nullptr, &S::stop_split},
         {SessionPhase::ask_view, KeyContext::text_line, [](const S& s) { return s.view_prompt(); },
          [](const S&) { return lines_of({text::ask_view_values}); }, [](const S& s) { return s.view_default(); },
          &S::define_view_parameters},
@@ -92,8 +97,12 @@ void Session::read_key1(const std::string& name)
 
 void Session::read_key2(const std::string& name)
 {
-    if (read_key_file(name, 1))
-        add_points_and_split();
+    if (!read_key_file(name, 1))
+        return;
+    const std::size_t key_points = std::max(m_key_frames[0].point_count(), m_key_frames[1].point_count());
+    if (const std::optional<std::string> refused = frames_refusal(key_points, m_settings))
+        return ask_again(SessionPhase::ask_key2, *refused);
+    add_points_and_split();
 }
 
 bool Session::read_key_file(const std::string& name, int which)
@@ -112,20 +121,7 @@ bool Session::read_key_file(const std::string& name, int which)
     return true;
 }
 
-// addpoint.c and split.c (SPEC §5.1, §5.2): equal point counts, then one path file per point.
-void Session::add_points_and_split()
-{
-    m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
-    m_point_count = m_keys.key1.point_count();
-    for (const NamedText& file : split_path_files(m_keys.key1, m_keys.key2)) {
-        if (auto problem = write_file(file.name, file.content))
-            return ask_again(SessionPhase::ask_key2, problem->to_string());
-        record_written(file.name);
-    }
-    m_files.log("added points: both keys have " + std::to_string(m_point_count) + " points in " +
-                std::to_string(m_keys.key1.parts.size()) + " parts; wrote ani1.dat … " + path_file_name(m_point_count));
-    go_to(SessionPhase::ask_view);
-}
+// addpoint.c and split.c: session_split.cpp.
 
 // Step 2 (fig. 4.2.2).
 
@@ -186,6 +182,8 @@ void Session::read_data_file(const std::string& name)
         point_path_from(*file, name, m_path == 0 ? PathEnd::first : PathEnd::last, m_keys, defaults);
     if (!points)
         return ask_again(SessionPhase::ask_path_file, points.error().to_string());
+    if (const std::optional<std::string> refused = path_refusal(points->size(), m_settings))
+        return ask_again(SessionPhase::ask_path_file, name + ": " + *refused);
     // Accepting rewrites the file that was read, whatever case the name was typed in.
     m_path_names[static_cast<std::size_t>(m_path)] = m_files.name_read(name);
     m_points[static_cast<std::size_t>(m_path)] = std::move(*points);
@@ -276,6 +274,10 @@ void Session::surface_fitting(const std::string&)
         record_written(name);
     m_files.log("surface fitting: " + std::to_string(written->size()) + " in-betweens of " + std::to_string(m_point_count) +
                 " points written");
+    if (const std::optional<std::string> note = earlier_inbetweens_note(m_files.earlier_inbetweens(written->size()))) {
+        say(*note);
+        m_files.log(*note);
+    }
     m_fitted_frames = std::move(frames);
     go_to(SessionPhase::ask_draw);
 }

@@ -8,20 +8,22 @@ namespace apcs {
 
 namespace {
 
-// Splits a line into pieces of at most 80 code points.
+// Splits a line into pieces of at most 80 columns, a wide character counting two (and never cut
+// in half), so that each piece fills one row of the grid as the terminal shows it.
 std::vector<std::string> wrap(const std::string& line)
 {
     std::vector<std::string> pieces;
     std::string piece;
     int width = 0;
     for (const char32_t code_point : decode_utf8(line)) {
-        if (width == TextConsole::columns) {
+        const int columns = std::max(cell_width(code_point), 0);
+        if (width + columns > TextConsole::columns) {
             pieces.push_back(piece);
             piece.clear();
             width = 0;
         }
         append_utf8(piece, code_point);
-        ++width;
+        width += columns;
     }
     pieces.push_back(piece);
     return pieces;

@@ -161,13 +161,15 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
     State& state = *m_state;
     StopSignals& stop = *state.stop;
     const auto start = std::chrono::steady_clock::now();
+    // A time-out of 0 still looks once for a key typed meanwhile (between batches of work).
+    bool looked = false;
     while (true) {
         if (stop.requested())
             return TerminalInput::stop;
         int wait = 100;
         if (timeout_ms >= 0) {
             const auto elapsed = std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - start).count();
-            if (elapsed >= timeout_ms && !state.pending)
+            if (elapsed >= timeout_ms && !state.pending && looked)
                 return TerminalInput::timeout;
             wait = static_cast<int>(std::clamp<long long>(timeout_ms - elapsed, 0, 100));
         }
@@ -178,6 +180,7 @@ TerminalInput Terminal::read_key(int timeout_ms, KeyEvent& key)
         } else {
             timeout(wait);
             raw.kind = get_wch(&raw.code);
+            looked = true;
         }
         if (raw.kind == ERR) {
             // A closed terminal reads as end of file at once, again and again. It is a hang-up
@@ -226,12 +229,20 @@ void Terminal::show(const CellGrid& grid)
                 ++column;
                 continue;
             }
-            // A run of changed cells of one style goes out as one string.
+            // A run of changed cells of one style goes out as one string. A wide character is sent
+            // once, from its left cell, which the terminal fills with both halves.
+            if (grid.at(column, row) == CellGrid::wide_tail && column > 0)
+                --column;
             const CellStyle style = grid.style_at(column, row);
             std::string run;
             const int start = column;
-            while (column < grid.columns() && changed(column, row) && grid.style_at(column, row) == style) {
-                append_utf8(run, grid.at(column, row));
+            const auto continues_run = [&](int next) {
+                return grid.at(next, row) == CellGrid::wide_tail ||
+                       (changed(next, row) && grid.style_at(next, row) == style);
+            };
+            while (column < grid.columns() && (column == start || continues_run(column))) {
+                if (grid.at(column, row) != CellGrid::wide_tail)
+                    append_utf8(run, grid.at(column, row));
                 ++column;
             }
             attr_set(attributes_of(style), 0, nullptr);

@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <optional>
 #include <sstream>
@@ -16,22 +17,24 @@ using namespace apcs;
 
 using test::run_apcs;
 
-TEST_CASE("the --version option prints the version and exits 0", "[cli]")
+TEST_CASE("the --version option names the program, its version and the thesis, and exits 0", "[cli]")
 {
     const auto result = run_apcs({"--version"});
     REQUIRE(result.status == 0);
-    REQUIRE(result.out == "apcs " + std::string(version) + "\n");
+    REQUIRE(result.out.starts_with("apcs (APCS) " + std::string(version) + "\n"));
+    REQUIRE(result.out.find("1989 master's thesis \"Design of An Animation Path\nControl System\"") != std::string::npos);
 }
 
-TEST_CASE("the --help option lists the subcommands and exits 0", "[cli]")
+TEST_CASE("the --help option lists the commands and exits 0", "[cli]")
 {
     const auto result = run_apcs({"--help"});
     REQUIRE(result.status == 0);
-    for (const char* command : {"path", "inbetween", "fit", "figures", "play"})
+    for (const char* command : {"path", "inbetween", "fit", "figures"})
         REQUIRE(result.out.find(command) != std::string::npos);
+    CHECK(result.out.find("manual.txt") != std::string::npos);
 }
 
-TEST_CASE("bad usage is exit 2 with a one-line reason and the usage", "[cli]")
+TEST_CASE("bad usage is exit 2 with one line of reason and where help is", "[cli]")
 {
     for (const auto& arguments : std::vector<std::vector<std::string>>{
              {"--frobnicate"},
@@ -44,13 +47,43 @@ TEST_CASE("bad usage is exit 2 with a one-line reason and the usage", "[cli]")
              {"path", "a.dat", "--glyphs", "emoji"},
              {"path"},
              {"fit", "a.dat"},
+             {"play", "robot.scn"},
          }) {
         const auto result = run_apcs(arguments);
         CAPTURE(arguments);
         REQUIRE(result.status == 2);
         REQUIRE(result.out.empty());
         REQUIRE(result.err.starts_with("apcs: "));
-        REQUIRE(result.err.find("Usage:") != std::string::npos);
+        const std::string command = arguments.front().starts_with("-") || arguments.front() == "play"
+                                        ? "apcs"
+                                        : "apcs " + arguments.front();
+        const std::string try_help = "Try '" + command + " --help' for more information.\n";
+        REQUIRE(result.err.ends_with(try_help));
+        REQUIRE(std::count(result.err.begin(), result.err.end(), '\n') == 2);
+    }
+}
+
+TEST_CASE("a usage error says what was expected", "[cli]")
+{
+    struct Row {
+        std::vector<std::string> arguments;
+        std::string line;
+    };
+    const Row rows[] = {
+        {{"path", "a.dat", "--tension", "2"}, "apcs: --tension: expected a number in [-1, 1], found 2"},
+        {{"path", "a.dat", "--tension", "nan"}, "apcs: --tension: expected a number in [-1, 1], found 'nan'"},
+        {{"path", "a.dat", "--samples", "0"}, "apcs: --samples: expected a whole number in [1, 100000], found 0"},
+        {{"path", "a.dat", "--spacing", "wobbly"}, "apcs: --spacing: expected one of nearest, exact, found 'wobbly'"},
+        {{"--frobnicate"}, "apcs: unknown option --frobnicate"},
+        {{"play", "robot.scn"}, "apcs: unknown command 'play' (the commands: path, inbetween, fit, draw, figures)"},
+        {{"fit", "a", "b", "c", "d", "--keys", "x.keys"}, "apcs: --keys is not an option of 'apcs fit' (it is one of 'apcs')"},
+        {{"--glyphs", "ascii", "path", "a.dat"}, "apcs: --glyphs is not an option of 'apcs path' (it is one of 'apcs')"},
+    };
+    for (const Row& row : rows) {
+        CAPTURE(row.arguments);
+        const auto result = run_apcs(row.arguments);
+        CHECK(result.status == 2);
+        CHECK(result.err.substr(0, result.err.find('\n')) == row.line);
     }
 }
 
@@ -182,6 +215,8 @@ TEST_CASE("the session takes the command line's answers only where they were giv
     CHECK(*moved.overlay_png == (std::filesystem::current_path() / "overlay.png").string());
     options.png = "/tmp/overlay.png";
     CHECK(session_settings(options).overlay_png == "/tmp/overlay.png");
+    options.svg = "overlay.svg";
+    CHECK(session_settings(options).overlay_svg == (std::filesystem::current_path() / "overlay.svg").string());
 }
 
 TEST_CASE("Enter at the session's prompts takes --theta, --phi, --delay and --slopes where given", "[cli][session]")

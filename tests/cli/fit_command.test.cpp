@@ -1,6 +1,7 @@
 #include "apcs/cli/command_line.h"
 #include "apcs/formats/file_io.h"
 
+#include "support/png_pixels.h"
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"
 
@@ -131,4 +132,77 @@ TEST_CASE("apcs inbetween writes the in-between files and never a key file", "[c
     REQUIRE(written.status == 0);
     REQUIRE(std::filesystem::exists(folder / "inb002.dat"));
     REQUIRE(std::filesystem::exists(folder / "inb001.bak")); // the old inb001.dat, kept
+}
+
+TEST_CASE("a run with fewer in-betweens says on stderr which older ones it left, and keeps them",
+          "[cli][inbetween]")
+{
+    const TempFolder folder;
+    folder.write("gb.dat", "0 0\n2 0\n");
+    folder.write("ge.dat", "1 1\n3 3\n");
+    const auto run = [&](const char* frames) {
+        return run_apcs({"inbetween", (folder / "gb.dat").string(), (folder / "ge.dat").string(), "--frames", frames,
+                         "--out", folder.path().string()});
+    };
+    const auto longer = run("6");
+    REQUIRE(longer.status == 0);
+    REQUIRE(longer.err.find("earlier run") == std::string::npos);
+    REQUIRE(std::filesystem::exists(folder / "inb005.dat"));
+    const auto shorter = run("3");
+    REQUIRE(shorter.status == 0);
+    REQUIRE(shorter.err == "apcs: " + (folder / "inb003.dat").string() + " to " + (folder / "inb005.dat").string() +
+                               " (3 files) are from an earlier run (not rewritten)\n");
+    REQUIRE(std::filesystem::exists(folder / "inb005.dat"));
+}
+
+TEST_CASE("apcs fit --png draws all frames overlaid and writes no in-between file unless --out asks", "[cli][fit][png]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    const auto pictured = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                    (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens",
+                                    "3", "--png", (folder / "all.png").string(), "--png-raw",
+                                    (folder / "raw.png").string()});
+    REQUIRE(pictured.status == 0);
+    const test::GreyPicture monitor = test::grey_picture(test::read_all(folder / "all.png"));
+    CHECK(monitor.width == 720);
+    CHECK(monitor.height == 522);
+    const test::GreyPicture raw = test::grey_picture(test::read_all(folder / "raw.png"));
+    CHECK(raw.width == 720);
+    CHECK(raw.height == 348);
+    CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
+
+    const auto both = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens", "3",
+                                "--png", (folder / "again.png").string(), "--out", folder.path().string()});
+    REQUIRE(both.status == 0);
+    CHECK(std::filesystem::exists(folder / "again.png"));
+    CHECK(std::filesystem::exists(folder / "inb003.dat"));
+    CHECK_FALSE(std::filesystem::exists(folder / "inb004.dat"));
+}
+
+TEST_CASE("the overlay of more frames lights more pixels: every frame is drawn", "[cli][inbetween][png]")
+{
+    const TempFolder folder;
+    // A vertical bar moving right: each frame is its own column of pixels.
+    folder.write("gb.dat", "0 0 0\n0 0 10\n");
+    folder.write("ge.dat", "0 20 0\n0 20 10\n");
+    const auto lit_pixels = [&](const std::string& frames) {
+        const auto name = (folder / ("f" + frames + ".png")).string();
+        const auto result = run_apcs({"inbetween", (folder / "gb.dat").string(), (folder / "ge.dat").string(),
+                                      "--frames", frames, "--view", "front", "--png-raw", name});
+        REQUIRE(result.status == 0);
+        const test::GreyPicture picture = test::grey_picture(test::read_all(name));
+        std::size_t lit = 0;
+        for (png_uint_32 y = 0; y < picture.height; ++y)
+            for (png_uint_32 x = 0; x < picture.width; ++x)
+                if (picture.lit(x, y))
+                    ++lit;
+        return lit;
+    };
+    const std::size_t two = lit_pixels("1");
+    const std::size_t five = lit_pixels("4");
+    // Three more bars of the same height; the caption's digits differ by a few pixels only.
+    CHECK(five > two + 3 * 100);
+    CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
 }

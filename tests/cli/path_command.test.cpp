@@ -70,6 +70,17 @@ TEST_CASE("a 7-column path file uses its own t c b a and a 3-column one the glob
     REQUIRE(with_own.out != with_default.out);
 }
 
+TEST_CASE("an option value too small for a double is 0, as in a .dat file", "[cli][path]")
+{
+    const TempFolder folder;
+    const auto plain = folder.write("plain.dat", "0 0 0\n1 2 0\n3 0 0\n");
+    const auto tiny = run_apcs({"path", plain.string(), "--slopes", "1e-400", "0", "--tension", "-1e-400"});
+    const auto zero = run_apcs({"path", plain.string(), "--slopes", "0", "0", "--tension", "0"});
+    REQUIRE(tiny.err.empty());
+    REQUIRE(tiny.status == 0);
+    REQUIRE(tiny.out == zero.out);
+}
+
 TEST_CASE("apcs path output is deterministic", "[cli][path]")
 {
     const TempFolder folder;

@@ -81,6 +81,31 @@ TEST_CASE("DOS-style forms are accepted", "[formats][dat]")
     }
 }
 
+TEST_CASE("old Macintosh files with lone CR line ends read like their LF twins", "[formats][dat]")
+{
+    const DatFile mac = accepted("; key frame\r0 0 0\r1 2 3\r\r4 5 6\r");
+    const DatFile unix_twin = accepted("; key frame\n0 0 0\n1 2 3\n\n4 5 6\n");
+    REQUIRE(mac.point_count() == 3);
+    REQUIRE(mac.parts[0].points[2].position == unix_twin.parts[0].points[2].position);
+    REQUIRE(mac.parts[0].points[2].line == 5);
+    REQUIRE(rejection("0 0\r1 one\r") == "key1.dat:2: expected a number, found 'one'");
+    REQUIRE(rejection("0 0\r\n1 1\r2 x\n") == "key1.dat:3: expected a number, found 'x'");
+    REQUIRE(rejection("0 0\r\x1A" "1 1\r") ==
+            "key1.dat:2: Ctrl-Z (end of file) followed by more data; expected it only at the end");
+}
+
+TEST_CASE("magnitudes below the smallest double read as zero, as subnormal ones read as themselves", "[formats][dat]")
+{
+    const DatFile file = accepted("1e-310 -1e-400\n0.000001e-999 1e-99999999999999999999999\n");
+    REQUIRE(file.parts[0].points[0].position.x == 1e-310);
+    REQUIRE(file.parts[0].points[0].position.y == 0.0);
+    REQUIRE(file.parts[0].points[1].position == Vec3{0, 0, 0});
+    REQUIRE(rejection("0 0 0\n1 1 1000e306\n") == "key1.dat:2: expected a finite number, found '1000e306'");
+    REQUIRE(rejection("0 0 0\n1 1 1e9999999999999999999\n") ==
+            "key1.dat:2: expected a finite number, found '1e9999999999999999999'");
+    REQUIRE(rejection("0 0 0\n1 1 1e-400x\n") == "key1.dat:2: expected a number, found '1e-400x'");
+}
+
 TEST_CASE("every malformed input is rejected with FILE:LINE and what was expected", "[formats][dat]")
 {
     REQUIRE(rejection("") == "key1.dat: expected at least 2 points, found 0");

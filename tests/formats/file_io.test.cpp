@@ -27,6 +27,21 @@ TEST_CASE("a missing name finds the file that differs only in case", "[formats][
     REQUIRE(file->point_count() == 2);
 }
 
+TEST_CASE("the exact name wins over case variants, and several variants without it are ambiguous",
+          "[formats][files]")
+{
+    const TempFolder folder;
+    folder.write("Case.dat", "0 0\n1 1\n");
+    folder.write("case.DAT", "0 0\n1 1\n2 2\n");
+    REQUIRE(read_dat_file(folder / "Case.dat")->point_count() == 2);
+    REQUIRE(read_dat_file(folder / "case.DAT")->point_count() == 3);
+    const std::string typed = (folder / "CASE.dat").string();
+    const Expected<DatFile> ambiguous = read_dat_file(typed);
+    REQUIRE_FALSE(ambiguous.has_value());
+    REQUIRE(ambiguous.error().to_string() ==
+            typed + ": is ambiguous: Case.dat and case.DAT differ only in case; expected the exact name");
+}
+
 TEST_CASE("reading a missing file or a folder names the file", "[formats][files]")
 {
     const TempFolder folder;
@@ -58,6 +73,31 @@ TEST_CASE("an atomic write creates, keeps identical files untouched and backs up
     for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path()))
         ++entries;
     REQUIRE(entries == 2); // no temporary file left behind
+}
+
+TEST_CASE("names up to the file system's longest (255 bytes) are written, created and replaced", "[formats][files]")
+{
+    const TempFolder folder;
+    std::string utf8_name = "x";
+    for (int i = 0; i < 125; ++i)
+        utf8_name += "\xC3\xA9"; // é
+    utf8_name += ".dat";
+    REQUIRE(utf8_name.size() == 255);
+    for (const std::string& name : {std::string(245, 'a') + ".dat", std::string(251, 'b') + ".dat", utf8_name}) {
+        const auto target = folder / name;
+        INFO(name.size() << "-byte name");
+        const Expected<WriteResult> created = write_file_atomically(target, "0 0\n1 1\n");
+        if (!created)
+            FAIL(created.error().to_string());
+        const Expected<WriteResult> replaced = write_file_atomically(target, "0 0\n2 2\n");
+        REQUIRE(replaced.has_value());
+        REQUIRE(replaced->outcome == WriteOutcome::replaced);
+        REQUIRE(read_all(target) == "0 0\n2 2\n");
+    }
+    std::size_t entries = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+        entries += entry.path().filename().string().starts_with('.') ? std::size_t{100} : std::size_t{1};
+    REQUIRE(entries == 6); // three files and their .bak, no temporary file left behind
 }
 
 TEST_CASE("a failed write reports why and leaves no file", "[formats][files]")
@@ -291,4 +331,25 @@ TEST_CASE("a backup never replaces an input: the old file goes to NAME.b01 when 
     REQUIRE(read_all(folder / "ani1.b01") == "someone's\n");
     // Without inputs, .bak is replaced as always.
     REQUIRE(write_file_atomically(target, "newer\n")->backup == folder / "ani1.bak");
+}
+
+TEST_CASE("writes left for one barrier are atomic and keep backups as ever; the barrier names a missing folder",
+          "[formats][files]")
+{
+    const TempFolder folder;
+    const auto target = folder.write("ani1.dat", "old\n");
+    const Expected<WriteResult> replaced = write_file_atomically(target, "new\n", nullptr, Durability::at_barrier);
+    REQUIRE(replaced.has_value());
+    REQUIRE(replaced->outcome == WriteOutcome::replaced);
+    REQUIRE(read_all(target) == "new\n");
+    REQUIRE(read_all(folder / "ani1.bak") == "old\n");
+    REQUIRE(write_file_atomically(folder / "ani2.dat", "2\n", nullptr, Durability::at_barrier)->outcome ==
+            WriteOutcome::created);
+    for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
+        REQUIRE(entry.path().filename().string().front() != '.');
+    REQUIRE_FALSE(flush_file_system(folder.path()).has_value());
+    const std::optional<Diagnostic> missing = flush_file_system(folder / "no-such-folder");
+    REQUIRE(missing.has_value());
+    REQUIRE(missing->to_string() == (folder / "no-such-folder").string() +
+                                        ": cannot flush the files written to disk: No such file or directory");
 }

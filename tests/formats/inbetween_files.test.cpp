@@ -7,6 +7,8 @@
 #include <catch2/catch.hpp>
 
 #include <array>
+#include <string>
+#include <vector>
 
 using namespace apcs;
 using test::read_all;
@@ -60,4 +62,22 @@ TEST_CASE("in-betweens into a missing folder are refused", "[formats][inbetween-
     const auto written = write_inbetween_files(four_steps(), one_point(), folder / "nowhere", KeyFileGuard{});
     REQUIRE_FALSE(written.has_value());
     REQUIRE(written.error().message == "is not a folder; expected an existing folder for the in-between files");
+}
+
+TEST_CASE("in-between files numbered above this run's are found in number order and named in one note",
+          "[formats][inbetween-files]")
+{
+    const std::vector<std::string> names{"inb020.dat", "INB013.DAT", "inb012.dat", "inb1000.dat", "inb14.dat",
+                                         "inbx13.dat", "key1.dat", "inb015.dat.bak"};
+    const std::vector<std::string> earlier = inbetweens_beyond(names, 12);
+    REQUIRE(earlier == std::vector<std::string>{"INB013.DAT", "inb020.dat", "inb1000.dat"});
+    REQUIRE(earlier_inbetweens_note(earlier) == "INB013.DAT to inb1000.dat (3 files) are from an earlier run (not rewritten)");
+    REQUIRE(earlier_inbetweens_note(std::vector<std::string>{"inb013.dat"}) ==
+            "inb013.dat is from an earlier run (not rewritten)");
+    REQUIRE_FALSE(earlier_inbetweens_note(inbetweens_beyond(names, 1000)).has_value());
+
+    const TempFolder folder;
+    folder.write("inb004.dat", "0 0\n");
+    folder.write("inb003.dat", "0 0\n");
+    REQUIRE(inbetweens_beyond(folder.path(), 3) == std::vector<std::string>{"inb004.dat"});
 }

@@ -1,12 +1,16 @@
 #include "apcs/formats/path_files.h"
 #include "apcs/session/session.h"
 #include "apcs/session/session_text.h"
+#include "apcs/session/text_console.h"
 
 #include "apcs/session/session_files.h"
 
 #include "support/png_pixels.h"
+#include "support/xml_elements.h"
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 
 using namespace apcs;
 
@@ -254,6 +258,69 @@ TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[ses
     REQUIRE(session.written_files().size() == 4 + 2 + 5);
 }
 
+TEST_CASE("in-betweens left by an earlier, longer run are pointed out on screen and in the log, not deleted",
+          "[session]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n-3 10 5\n0 5 0\n";
+    for (const char* earlier : {"inb004.dat", "inb006.dat", "inb007.dat", "inb009.dat"})
+        files.files[earlier] = "; from an earlier run\n0 0\n1 1\n";
+    SessionSettings settings;
+    settings.inbetween_count = 5;
+    Session session(settings, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, "way4.dat");
+    type(session, "1 1");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter});
+    REQUIRE(session.phase() == SessionPhase::ask_draw);
+    const std::string note = "inb006.dat to inb009.dat (3 files) are from an earlier run (not rewritten)";
+    REQUIRE(screen_text(session).find(note + "\n") != std::string::npos);
+    REQUIRE(std::find(files.log_lines.begin(), files.log_lines.end(), note) != files.log_lines.end());
+    REQUIRE(files.files["inb009.dat"] == "; from an earlier run\n0 0\n1 1\n");
+}
+
+TEST_CASE("a number too small for a double is 0 at a prompt, as in a .dat file", "[session]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    type(session, "");
+    type(session, "");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+    type(session, "1e-400 -1e-310 200");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+}
+
+TEST_CASE("wide characters typed at a prompt take two columns, zero-width ones are refused, and a wide name reads",
+          "[session][cells]")
+{
+    MemoryFiles files = example_files();
+    files.files["\u6F22\u5B57.dat"] = files.files["key1.dat"];
+    Session session(SessionSettings{}, files);
+    for (const char32_t typed : std::u32string(U"\u6F22\u0301\u200B\u5B57.dat"))
+        session.handle(KeyEvent::typed(typed));
+    const CellGrid grid = session.screen().text;
+    int row = grid.rows() - 1;
+    while (row > 0 && grid.at(0, row) == U' ')
+        --row;
+    REQUIRE(grid.row_text(row).starts_with("\u6F22\u5B57.dat_ "));
+    REQUIRE(grid.at(4, row) == U'.');
+    REQUIRE(grid.at(8, row) == U'_');
+    session.handle(enter);
+    REQUIRE(session.phase() == SessionPhase::ask_key2);
+
+    // 41 wide characters are 82 columns: the 41st wraps to the next row whole.
+    std::string long_line;
+    for (int i = 0; i < 41; ++i)
+        long_line += "\u6F22";
+    TextConsole console;
+    console.print_line(long_line);
+    const CellGrid wrapped = console.render(false);
+    REQUIRE(wrapped.at(78, 0) == U'\u6F22');
+    REQUIRE(wrapped.at(79, 0) == CellGrid::wide_tail);
+    REQUIRE(wrapped.row_text(1).starts_with("\u6F22 "));
+}
+
 TEST_CASE("a closed graphic's second path starts from the first path's values", "[session]")
 {
     MemoryFiles files;
@@ -461,4 +528,27 @@ TEST_CASE("the session's --png-raw writes the bare 720x348 overlay beside --png'
     // The same raster: picture row 3 shows raster row 2.
     for (png_uint_32 x = 0; x < 720; ++x)
         REQUIRE(seen.lit(x, 3) == bare.lit(x, 2));
+}
+
+TEST_CASE("the session's --svg writes the overlay of all frames as vector lines", "[session][picture][svg]")
+{
+    MemoryFiles files = example_files();
+    files.files["way4.dat"] = "0 6 10\n0 5 0\n";
+    SessionSettings settings;
+    settings.overlay_svg = "all.svg";
+    Session session(settings, files);
+    reach_control_choice(session);
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), ch('Y')});
+    type(session, "way4.dat");
+    type(session, "");
+    press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter, enter});
+    while (session.animating())
+        session.tick();
+    REQUIRE(files.files.count("all.svg") == 0);
+    press(session, {enter});
+    const auto elements = test::XmlReader::read(files.files["all.svg"]);
+    REQUIRE(elements);
+    // The boundary's four lines, then one polyline a frame: KEY1, 12 in-betweens, KEY2.
+    CHECK(test::elements_named(*elements, "polyline").size() == 4 + 14);
+    REQUIRE(graphics_message(session) == "wrote all.svg");
 }

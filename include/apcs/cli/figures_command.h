@@ -25,8 +25,12 @@ struct ExampleFigure {
 const std::vector<ExampleFigure>& example_figures();
 
 // `apcs figures --out DIR`: fig-3-1-1.png … fig-3-1-4.png and one PNG per example view, read
-// from --workdir (default: the project's data folder).
+// from --workdir, else from data_folder.
 ExitStatus run_figures_command(const CommonOptions& options, const std::filesystem::path& data_folder,
                                std::ostream& out, std::ostream& err);
+
+// The same with the examples of --workdir, else of the data folder (data_folder.h); a data folder
+// that cannot be found is said before any figure is written.
+ExitStatus run_figures_command(const CommonOptions& options, std::ostream& out, std::ostream& err);
 
 } // namespace apcs

@@ -15,9 +15,10 @@ namespace apcs {
 // "# frame 0" … "# frame K", each followed by its points (SPEC §7.4).
 std::string format_frames_print(const FrameSequence& frames);
 
-// The end of a batch command: frames to `out` with --print, else the in-between files into --out
-// (default: the current folder; write_inbetween_files), never over one of `key_files`. Problems go
-// to `err` as exit status 1.
+// The end of a batch command: all frames overlaid in the pictures --png and --png-raw name, the
+// numbers to `out` with --print, and the in-between files into --out (write_inbetween_files) —
+// into the current folder when neither a picture nor --print was asked —, never over one of
+// `key_files` (KEY1, KEY2). Problems go to `err` as exit status 1.
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err);
 

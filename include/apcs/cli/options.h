@@ -5,6 +5,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/glyph_mapper.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -34,9 +35,19 @@ struct CommonOptions {
     std::optional<std::filesystem::path> record;
     std::optional<std::filesystem::path> png;     // as the monitor showed it, 720x522
     std::optional<std::filesystem::path> png_raw; // the bare 720x348 raster
+    std::optional<std::filesystem::path> svg;     // the same drawing as vector lines
+    std::optional<std::filesystem::path> gif;     // the frames, animated (fit, inbetween)
     bool print = false;
     std::optional<std::filesystem::path> out;
     GivenOptions given;
+    // The memory budget of one request (memory_budget.h); unset, APCS_MEMORY_LIMIT or the default.
+    std::optional<std::uint64_t> memory_limit;
 };
+
+// Whether a picture was asked for (--png, --png-raw, --svg or --gif).
+inline bool pictures_asked(const CommonOptions& options)
+{
+    return options.png || options.png_raw || options.svg || options.gif;
+}
 
 } // namespace apcs

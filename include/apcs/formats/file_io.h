@@ -4,25 +4,41 @@
 #include "apcs/formats/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
 namespace apcs {
 
-// The file a user means by `name`: the name itself when it exists, else the one entry of its
-// folder whose name matches case-insensitively (as DOS did: KEY1.DAT finds key1.dat), else `name`.
+// The file a user means by `name`: the name itself when it exists (so Case.dat beside case.DAT
+// is Case.dat), else the one entry of its folder whose name matches case-insensitively (as DOS
+// did: KEY1.DAT finds key1.dat), else `name`. Two or more such entries and no exact one is an
+// error that names them all ("is ambiguous: Case.dat and case.DAT differ only in case; ...").
+Expected<std::filesystem::path> find_input_path(const std::filesystem::path& name);
+
+// find_input_path's file, or `name` itself when that is ambiguous.
 std::filesystem::path resolve_input_path(const std::filesystem::path& name);
 
 // Whole text of a file, resolved as above. Errors name the file as the user typed it. Only a
 // regular file (or a symbolic link to one) is read: a directory, a FIFO, a device or a socket is
-// refused without being opened, so that a FIFO nobody writes never hangs the program.
-Expected<std::string> read_text_file(const std::filesystem::path& name);
+// refused without being opened, so that a FIFO nobody writes never hangs the program. A file of
+// more than `most_bytes` is refused by its size before it is read, and a NUL byte (no text has
+// one) at the chunk that holds it, so that neither costs the memory of the whole file.
+inline constexpr std::uintmax_t max_input_bytes = 1ull << 30;
+Expected<std::string> read_text_file(const std::filesystem::path& name, std::uintmax_t most_bytes = max_input_bytes);
 
+// A .dat file, or standard input when `name` is "-" (messages then say "standard input:LINE").
 Expected<DatFile> read_dat_file(const std::filesystem::path& name, std::size_t minimum_points = 2);
 
 // A key frame: a .dat file of at least two points, as a graphic.
 Expected<Graphic> read_key_frame(const std::filesystem::path& name);
+
+// A keystroke script (--keys): read as read_text_file reads, except that a pipe or a FIFO is read
+// too, once to its end, since scripts come from other programs (bash's <(...) is /dev/fd/N); one
+// that nobody writes waits for a writer, as `cat` would. "-" is standard input.
+Expected<std::string> read_script_text(const std::filesystem::path& name, std::uintmax_t most_bytes = max_input_bytes);
 
 enum class WriteOutcome { created, replaced, unchanged };
 
@@ -31,6 +47,12 @@ struct WriteResult {
     // Where the previous content was kept when the file was replaced (NAME.bak), else empty.
     std::filesystem::path backup;
 };
+
+// When a written file's bytes must be on the disk: before its rename (each file on its own), or
+// at one barrier the caller makes for many files (flush_file_system). Either way a reader, or a
+// program stopped by a signal, never sees half a file; only a crash of the whole machine before
+// the barrier could lose the new files' content.
+enum class Durability { each_file, at_barrier };
 
 // Writes `content` to `target` atomically: a temporary file in the same folder, flushed, then
 // renamed over the target, so a reader never sees half a file. An existing target whose content
@@ -45,7 +67,12 @@ struct WriteResult {
 // file of the run), the old file is kept as NAME.b01 (or the first of .b02 … .b99 that is free)
 // instead, so that a backup never replaces an input; WriteResult::backup names it.
 Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, std::string_view content,
-                                            const KeyFileGuard* inputs = nullptr);
+                                            const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+
+// The barrier of Durability::at_barrier: every file written on the file system of `folder` is
+// flushed to the disk (syncfs), the folders' entries with them. The problem, if any.
+[[nodiscard]] std::optional<Diagnostic> flush_file_system(const std::filesystem::path& folder);
 
 // NAME.ext → NAME.bak in the same folder; NAME.b01 … NAME.b99 when NAME.bak is one of `inputs`
 // (the first of those that is neither an input nor an existing file; NAME.b99 when all exist;

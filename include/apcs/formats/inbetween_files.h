@@ -6,6 +6,9 @@
 #include "apcs/formats/key_file_guard.h"
 
 #include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace apcs {
@@ -19,5 +22,17 @@ namespace apcs {
                                                                                  const Graphic& structure,
                                                                                  const std::filesystem::path& folder,
                                                                                  const KeyFileGuard& guard);
+
+// Of `names` (a folder's file names), the in-between files numbered above `written_count`
+// (inb013.dat … when 12 were written now; any case, as DOS wrote them), in number order: what an
+// earlier run with more in-betweens left behind. They are never deleted, only pointed out.
+[[nodiscard]] std::vector<std::string> inbetweens_beyond(std::span<const std::string> names, std::size_t written_count);
+
+// inbetweens_beyond for the files of `folder`.
+[[nodiscard]] std::vector<std::string> inbetweens_beyond(const std::filesystem::path& folder, std::size_t written_count);
+
+// "inb013.dat to inb020.dat (8 files) are from an earlier run (not rewritten)" for `earlier`
+// (from inbetweens_beyond), "inb013.dat is from ..." for one; nullopt for none.
+[[nodiscard]] std::optional<std::string> earlier_inbetweens_note(std::span<const std::string> earlier);
 
 } // namespace apcs

@@ -3,6 +3,7 @@
 #include "apcs/raster/bitmap.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/glyph_mapper.h"
+#include "apcs/raster/stroke.h"
 
 #include <string>
 #include <vector>
@@ -34,11 +35,14 @@ struct PixelMark {
     CellStyle style = CellStyle::plain;
 };
 
-// What graphics mode shows: the 720x348 raster of lines, the marks and the text over it.
+// What graphics mode shows: the 720x348 raster of lines, the marks and the text over it. `strokes`
+// holds the raster's lines as vector lines where the drawing recorded them (Painter::record_into),
+// for pictures that scale (SVG).
 struct GraphicsScreen {
     Bitmap bitmap;
     std::vector<TextLine> text;
     std::vector<PixelMark> marks;
+    std::vector<Stroke> strokes;
 };
 
 // The character a mark shows in `glyphs`.

@@ -2,10 +2,12 @@
 
 #include "apcs/geometry/pixel_point.h"
 #include "apcs/raster/bitmap.h"
+#include "apcs/raster/stroke.h"
 
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace apcs {
 
@@ -13,16 +15,18 @@ namespace apcs {
 // call erases again; every pixel of one primitive is toggled once, however often its strokes cross.
 enum class DrawMode { set, clear, toggle };
 
-// How a line is stroked, so that curves overlaid in one colour stay apart: solid, dashed
-// (6 on, 4 off) or dotted (1 on, 2 off).
-enum class LineStyle { solid, dashed, dotted };
-
 // Draws into a Bitmap it does not own. Lines and pixels are clipped to the bitmap, and to `clip`
 // when one is given (right and bottom exclusive); markers and text to the bitmap only.
 class Painter {
 public:
     explicit Painter(Bitmap& target) : m_target(target) {}
     Painter(Bitmap& target, PixelRect clip) : m_target(target), m_clip(clip) {}
+
+    // From now on lines and pixels drawn in DrawMode::set are also kept in `strokes` as vector
+    // lines (a segment that starts where the last stroke ended, in its style, extends it).
+    // Markers, text and toggled or cleared pixels are not kept: pictures draw marks and text from
+    // the GraphicsScreen's own lists.
+    Painter& record_into(std::vector<Stroke>& strokes);
 
     void pixel(PixelPoint point, DrawMode mode = DrawMode::set);
     // Bresenham's line from `from` to `to`, both ends included, clipped to the bitmap first so
@@ -45,9 +49,11 @@ private:
     template <typename Plot>
     void each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const;
     PixelRect bounds() const;
+    void record(PixelPoint from, PixelPoint to, LineStyle style);
 
     Bitmap& m_target;
     std::optional<PixelRect> m_clip;
+    std::vector<Stroke>* m_record = nullptr;
 };
 
 // Splits UTF-8 into code points; malformed bytes become U+FFFD.

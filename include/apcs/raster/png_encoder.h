@@ -21,6 +21,9 @@ enum class PngShape {
 // The rows of a picture of `raster_rows` rows in `shape`.
 int png_rows(int raster_rows, PngShape shape);
 
+// The raster row that picture row `row` shows: on the monitor rows 0 1 2 3 4 5 … show 0 0 1 2 2 3 ….
+int raster_row_of(int row, PngShape shape);
+
 // The bitmap as a PNG file's bytes (libpng): 8-bit greyscale, lit pixels white on black like the
 // monitor. Empty on a libpng failure.
 std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape);

@@ -51,4 +51,9 @@ private:
     bool m_paused = false;
 };
 
+// All `frames` overlaid as the player shows them after the last frame (figs. 5.1–5.2), fitted to
+// the view from `angles`, with `caption` on the message line: the picture of `apcs fit --png`.
+GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure, ViewAngles angles,
+                                     const std::string& caption);
+
 } // namespace apcs

@@ -2,6 +2,7 @@
 
 #include "apcs/formats/diagnostic.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +27,10 @@ struct KeyEvent {
 // literally; any other line holds tokens — a printable character, or ENTER, ESC, SPACE, LEFT,
 // RIGHT, UP, DOWN, BACKSPACE, TAB, BTAB (Shift-Tab), F1, CTRL-L (redraw); ';' starts a comment. Returns the events, or the first problem
 // with its line, named as `file_name`.
+// A longer script is refused before it is read: 16 MiB is 16 million keystrokes or more, and
+// each takes sizeof(KeyEvent) = 8 bytes once parsed.
+inline constexpr std::uintmax_t max_key_script_bytes = 16ull << 20;
+
 [[nodiscard]] Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name);
 
 // Writes events as a script that parse_key_script reads back to the same events: runs of

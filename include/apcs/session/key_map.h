@@ -17,6 +17,7 @@ enum class KeyContext {
     yes_to_go_on,   // "Press 'Y' to adjust the next path !"
     enter_to_go_on, // "Press <ENTER> to Stop the work !"
     any_key,        // "Press any key …" on the text console
+    splitting,      // the split writing its path files: Esc stops it
     any_key_graphics, // "Press any key …" in graphics mode (after the animation)
     control_choice, // Check_GorL_Control
     region_pick,    // Scan_Control_Point

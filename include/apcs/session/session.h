@@ -2,6 +2,7 @@
 
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/control_point.h"
+#include "apcs/animation/memory_budget.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
@@ -15,8 +16,10 @@
 #include "apcs/session/text_console.h"
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <unordered_set>
 #include <variant>
 #include <vector>
 
@@ -39,6 +42,9 @@ struct SessionSettings {
     // monitor showed it (--png) and as the bare raster (--png-raw).
     std::optional<std::string> overlay_png;
     std::optional<std::string> overlay_png_raw;
+    std::optional<std::string> overlay_svg; // the same as vector lines (--svg)
+    // The memory one request may take (APCS_MEMORY_LIMIT): more points or samples are refused.
+    std::uint64_t memory_limit_bytes = memory::default_limit_bytes;
 };
 
 // What the terminal shows now: the DOS text console or the graphics screen.
@@ -66,6 +72,11 @@ public:
     SessionPhase phase() const;
     bool finished() const { return phase() == SessionPhase::finished; }
     bool animating() const;
+    // The split is writing its path files, one per point (seconds for 10^5 points): the shell
+    // calls work() until busy() is false, reading keys in between, so that Esc stops the split at
+    // once. Each work() writes one batch of files; the screen shows how far the split is.
+    bool busy() const { return m_split.has_value(); }
+    void work();
     int delay_ms() const { return m_delay_ms; }
     SessionScreen screen() const;
     const std::vector<std::string>& written_files() const { return m_written; }
@@ -102,6 +113,7 @@ private:
     // The picture as a PNG file; the message line says what happened.
     void write_picture(const std::string& name, const GraphicsScreen& picture, PngShape shape,
                        const std::string& log_line);
+    void store_picture(const std::string& name, const std::string& bytes, const std::string& log_line);
     void quit();
     CellGrid help_screen() const;
     void go_to(SessionPhase phase);
@@ -118,6 +130,12 @@ private:
     void read_key2(const std::string& name);
     bool read_key_file(const std::string& name, int which);
     void add_points_and_split();
+    void finish_split();
+    void stop_split(const std::string&);
+    // Ends the split's batch of writes: the one disk barrier for all its files. Its problem, if any
+    // (remembered for write_problem() too).
+    std::optional<Diagnostic> close_split();
+    std::string split_progress() const;
     void define_view_parameters(const std::string& line);
     void read_data_file(const std::string& name);
     void predefine_ends_slope(const std::string& line);
@@ -143,6 +161,13 @@ private:
     std::array<Graphic, 2> m_key_frames;
     EqualisedKeys m_keys;
     std::size_t m_point_count = 0;
+    // The split under way: the points of both keys, and how many path files are written.
+    struct Split {
+        std::vector<Vec3> key1;
+        std::vector<Vec3> key2;
+        std::size_t written = 0;
+    };
+    std::optional<Split> m_split;
 
     ViewAngles m_view_angles;
     int m_delay_ms = 200;
@@ -167,6 +192,7 @@ private:
     bool m_overlay_written = false;
 
     std::vector<std::string> m_written;
+    std::unordered_set<std::string> m_written_names; // m_written's, to find one among 10^6 at once
     std::optional<Diagnostic> m_write_problem;
 };
 

@@ -34,11 +34,18 @@ public:
     virtual void protect_key_file(const std::string& name) = 0;
     // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
     [[nodiscard]] virtual std::optional<Diagnostic> write(const std::string& name, const std::string& content) = 0;
+    // Many writes in a row (the split's path files, one per point): from begin_batch() on, each
+    // write stays atomic but does not wait for the disk; end_batch() then flushes them all at
+    // once, one barrier instead of one per file. The problem of the barrier, if any.
+    virtual void begin_batch() {}
+    [[nodiscard]] virtual std::optional<Diagnostic> end_batch() { return std::nullopt; }
     // The in-betweens inb001.dat … (every frame but the first and the last), each a whole graphic
     // with the parts of `structure`; nothing is written if any of them is a key file. Returns the
     // names written.
     [[nodiscard]] virtual Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames,
                                                                              const Graphic& structure) = 0;
+    // The in-between files numbered above `written_count` that an earlier run left (never deleted).
+    [[nodiscard]] virtual std::vector<std::string> earlier_inbetweens(std::size_t written_count) const = 0;
 };
 
 // Files in a folder: names are relative to it (an absolute name is used as it is); apcs.log is
@@ -46,6 +53,10 @@ public:
 class FolderFiles final : public SessionFiles {
 public:
     explicit FolderFiles(std::filesystem::path folder) : m_folder(std::move(folder)) {}
+    // A batch still open (the program stopped mid-split) is flushed, so no file is left to chance.
+    ~FolderFiles() override;
+    FolderFiles(const FolderFiles&) = delete;
+    FolderFiles& operator=(const FolderFiles&) = delete;
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
     bool exists(const std::string& name) const override;
@@ -54,7 +65,10 @@ public:
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(m_folder / name); }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    void begin_batch() override { m_in_batch = true; }
+    std::optional<Diagnostic> end_batch() override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
+    std::vector<std::string> earlier_inbetweens(std::size_t written_count) const override;
     void log(const std::string& line) override;
 
 private:
@@ -63,6 +77,7 @@ private:
 
     std::filesystem::path m_folder;
     KeyFileGuard m_key_files;
+    bool m_in_batch = false;
 };
 
 // Files kept in memory: what a session reads, writes and logs, with no disk (tests, the fuzzer,
@@ -73,13 +88,23 @@ public:
     std::vector<std::string> log_lines;
     // Every write, in order, with repeats.
     std::vector<std::string> writes;
+    // Batches begun and ended (end_batch is the disk barrier of a FolderFiles).
+    int batches_begun = 0;
+    int batches_ended = 0;
 
     Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
     bool exists(const std::string& name) const override { return files.count(name) > 0; }
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(name); }
     void protect_key_file(const std::string& name) override;
     std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    void begin_batch() override { ++batches_begun; }
+    std::optional<Diagnostic> end_batch() override
+    {
+        ++batches_ended;
+        return std::nullopt;
+    }
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
+    std::vector<std::string> earlier_inbetweens(std::size_t written_count) const override;
     void log(const std::string& line) override { log_lines.push_back(line); }
 
 private:

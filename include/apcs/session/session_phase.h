@@ -7,6 +7,7 @@ namespace apcs {
 enum class SessionPhase {
     ask_key1,
     ask_key2,
+    splitting, // writing ani1.dat … aniN.dat, a batch per Session::work()
     ask_view,
     ask_path_file,
     ask_slopes,

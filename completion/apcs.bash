@@ -1,0 +1,70 @@
+# bash completion for apcs (installed as share/bash-completion/completions/apcs).
+# Stands alone: it needs neither the bash-completion package nor its helpers. Each command takes
+# only its own options: the lists below are those of `apcs COMMAND --help` (tests/e2e/completion.sh
+# compares them).
+
+# The words of "$1" that start with "$2".
+_apcs_words()
+{
+    mapfile -t COMPREPLY < <(compgen -W "$1" -- "$2")
+}
+
+# The files ending in ".$1" that start with "$2", and folders, so that a file further down can be
+# reached.
+_apcs_files()
+{
+    mapfile -t COMPREPLY < <(compgen -d -- "$2"; compgen -f -X "!*.$1" -- "$2")
+}
+
+_apcs_options()
+{
+    local staff="--tension --continuity --bias --accel"
+    local curve="--slopes --samples --spacing --inbetweens"
+    local view="--theta --phi --view"
+    local pictures="--png --png-raw --svg"
+    case $1 in
+        path) echo "$staff $curve $view $pictures --print --help" ;;
+        fit) echo "$staff $curve $view $pictures --gif --delay --print --out --help" ;;
+        inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
+        draw) echo "$view $pictures --help" ;;
+        figures) echo "$staff $curve --workdir --out --help" ;;
+        *) echo "$staff $curve $view --delay --glyphs --step $pictures --workdir --keys --record --help --version" ;;
+    esac
+}
+
+_apcs()
+{
+    local current=${COMP_WORDS[COMP_CWORD]}
+    local previous=${COMP_WORDS[COMP_CWORD - 1]}
+    COMPREPLY=()
+
+    case $previous in
+        --glyphs) _apcs_words "ascii braille blocks" "$current"; return ;;
+        --spacing) _apcs_words "nearest exact" "$current"; return ;;
+        --view) _apcs_words "front side top" "$current"; return ;;
+        --law) _apcs_words "linear sqrt square ease-in ease-out ease-in-out" "$current"; return ;;
+        --pad) _apcs_words "apcs start end middle midpoint" "$current"; return ;;
+        --keys | --record) _apcs_files keys "$current"; return ;;
+        --png | --png-raw) _apcs_files png "$current"; return ;;
+        --svg) _apcs_files svg "$current"; return ;;
+        --gif) _apcs_files gif "$current"; return ;;
+        --out | --workdir) mapfile -t COMPREPLY < <(compgen -d -- "$current"); return ;;
+        --tension | --continuity | --bias | --accel | --slopes | --samples | --inbetweens | --theta | \
+            --phi | --delay | --step | --frames) return ;;
+    esac
+
+    local command="" word
+    for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
+        case $word in path | inbetween | fit | draw | figures) command=$word; break ;; esac
+    done
+
+    if [[ $current == -* ]]; then
+        _apcs_words "$(_apcs_options "$command")" "$current"
+    elif [[ -z $command ]]; then
+        _apcs_words "path inbetween fit draw figures" "$current"
+    elif [[ $command != figures ]]; then
+        _apcs_files dat "$current"
+    fi
+}
+
+complete -o filenames -F _apcs apcs

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "apcs/geometry/pixel_point.h"
+#include "apcs/raster/graphics_screen.h"
+
+#include <string>
+
+namespace apcs {
+
+// An SVG picture is drawn as the monitor showed the raster (SPEC §7.1): 720 wide, rows 1.5 units
+// tall (720x522), so that what APCS drew square is square.
+inline constexpr double svg_row_height = 1.5;
+
+// Where the centre of raster pixel `pixel` lies in the SVG picture, as its points attributes
+// write it: "X,Y" with X = x + 0.5 and Y = (y + 0.5) × 1.5, in the shortest decimal form.
+std::string svg_point_text(PixelPoint pixel);
+
+// The screen as an SVG document, white on black like the PNG: its recorded strokes as polylines
+// (stroke-dasharray "6 4" for dashed, "1 2" for dotted; a stroke of one point is one pixel's
+// square), its marks as small vector shapes (the x of 5x5, the 3x3 square, the arrow, the staff
+// marker) and its text as <text> in a monospace font at its 9x14 cells. Lines the drawing did
+// not record (GraphicsScreen::strokes) are not in it.
+std::string encode_svg(const GraphicsScreen& screen);
+
+} // namespace apcs

@@ -1,0 +1,69 @@
+#include "apcs/cli/draw_command.h"
+
+#include "apcs/cli/path_command.h"
+#include "apcs/cli/report.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/raster/painter.h"
+#include "apcs/session/screen_layout.h"
+#include "apcs/session/world_drawing.h"
+
+namespace apcs {
+
+LineStyle overlay_style(std::size_t index, std::size_t count)
+{
+    if (index == 0)
+        return LineStyle::solid;
+    return index + 1 == count ? LineStyle::dashed : LineStyle::dotted;
+}
+
+std::string overlay_legend(std::span<const NamedGraphic> graphics)
+{
+    if (graphics.empty())
+        return {};
+    std::string legend = "solid: " + graphics.front().name;
+    if (graphics.size() > 1)
+        legend += "  dashed: " + graphics.back().name;
+    if (graphics.size() == 3)
+        legend += "  dotted: " + graphics[1].name;
+    else if (graphics.size() > 3)
+        legend += "  dotted: " + std::to_string(graphics.size() - 2) + " between";
+    return legend;
+}
+
+GraphicsScreen draw_graphics_overlay(std::span<const NamedGraphic> graphics, ViewAngles angles)
+{
+    ViewScene scene;
+    for (const NamedGraphic& named : graphics)
+        scene.add(named.graphic.polylines(named.graphic.all_points()));
+    const ViewTransform view = scene.fit(angles, layout::view_area);
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    painter.record_into(screen.strokes).rectangle(layout::drawing_area);
+    Painter inside(screen.bitmap, layout::inside_boundary);
+    inside.record_into(screen.strokes);
+    for (std::size_t k = 0; k < graphics.size(); ++k) {
+        const Graphic& graphic = graphics[k].graphic;
+        for (const std::vector<Vec3>& polyline : graphic.polylines(graphic.all_points()))
+            draw_world_polyline(inside, polyline, view, overlay_style(k, graphics.size()));
+    }
+    screen.text.push_back({1, layout::message_row, overlay_legend(graphics)});
+    return screen;
+}
+
+ExitStatus run_draw_command(std::span<const std::filesystem::path> files, const CommonOptions& options,
+                            std::ostream& out, std::ostream& err)
+{
+    std::vector<NamedGraphic> graphics;
+    for (const std::filesystem::path& file : files) {
+        Expected<Graphic> graphic = read_key_frame(file);
+        if (!graphic)
+            return report_bad_input(graphic.error(), err);
+        const std::string name = file == standard_stream_name ? "standard input" : file.filename().string();
+        graphics.push_back({name, std::move(*graphic)});
+    }
+    if (auto problem = write_pictures(draw_graphics_overlay(graphics, options.view), options, out))
+        return report_bad_input(*problem, err);
+    return ExitStatus::success;
+}
+
+} // namespace apcs

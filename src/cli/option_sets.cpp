@@ -1,0 +1,324 @@
+#include "option_sets.h"
+
+#include "apcs/animation/input_limits.h"
+#include "apcs/animation/speed_law.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
+
+#include <cmath>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+
+namespace apcs {
+
+namespace {
+
+// A number in `range`, read as the .dat reader reads one. The value goes on to CLI11 in its
+// shortest form, so the two readers cannot disagree (an underflow, say). The validator has no
+// description: --help shows the option's own name for the value and its range in the text.
+CLI::Validator number_in(const limits::Range& range)
+{
+    return CLI::Validator(
+        [range](std::string& text) -> std::string {
+            const std::optional<double> value = parse_number(text);
+            if (!value || !std::isfinite(*value))
+                return "expected a number in " + range_text(range) + ", found " + quote_field(text);
+            if (!range.contains(*value))
+                return "expected a number in " + range_text(range) + ", found " + text;
+            text = shortest_number(*value);
+            return {};
+        },
+        "");
+}
+
+// "[1, 100000]": a range of whole numbers as a user types them.
+std::string whole_range_text(const limits::Range& range)
+{
+    return "[" + std::to_string(static_cast<long long>(range.min)) + ", " +
+           std::to_string(static_cast<long long>(range.max)) + "]";
+}
+
+// A whole number in `range`.
+CLI::Validator whole_number_in(const limits::Range& range)
+{
+    return CLI::Validator(
+        [range](std::string& text) -> std::string {
+            const std::optional<std::size_t> value = parse_count_value(text);
+            if (!value)
+                return "expected a whole number in " + whole_range_text(range) + ", found " + quote_field(text);
+            if (!range.contains(static_cast<double>(*value)))
+                return "expected a whole number in " + whole_range_text(range) + ", found " + text;
+            text = std::to_string(*value);
+            return {};
+        },
+        "");
+}
+
+// One of `names`, exactly.
+CLI::Validator one_of(std::vector<std::string> names)
+{
+    return CLI::Validator(
+        [names](std::string& text) -> std::string {
+            std::string listed;
+            for (const std::string& name : names) {
+                if (text == name)
+                    return {};
+                listed += (listed.empty() ? "" : ", ") + name;
+            }
+            return "expected one of " + listed + ", found " + quote_field(text);
+        },
+        "");
+}
+
+std::string alternatives(const std::vector<std::string>& names)
+{
+    std::string joined;
+    for (const std::string& name : names)
+        joined += (joined.empty() ? "" : "|") + name;
+    return joined;
+}
+
+// A picture's name ends in its format's extension (any case) or has none: PNG bytes in x.svg
+// would mislead.
+// `a_file` is "a PNG file", say.
+CLI::Validator picture_name(const std::string& a_file, const std::string& wanted)
+{
+    return CLI::Validator(
+        [a_file, wanted](std::string& text) -> std::string {
+            const std::string extension = std::filesystem::path(text).extension().string();
+            if (extension.empty() || equals_ignoring_case(extension, wanted))
+                return {};
+            return a_file + "'s name ends in " + wanted + ", found '" + text + "'";
+        },
+        "");
+}
+
+const CLI::Validator png_name = picture_name("a PNG file", ".png");
+const CLI::Validator svg_name = picture_name("an SVG file", ".svg");
+const CLI::Validator gif_name = picture_name("a GIF file", ".gif");
+
+} // namespace
+
+// Help shows an option's value by its name only ("--tension T"): CLI11's types, validators and
+// exclusions are said in the option's text where they matter.
+std::string PlainOptionFormatter::make_option_opts(const CLI::Option* option) const
+{
+    return option->get_type_name().empty() ? std::string() : " " + option->get_type_name();
+}
+
+namespace {
+
+void add_staff(CLI::App& command, CommonOptions& options)
+{
+    const std::string range = " in " + range_text(limits::staff_value) + ", default 0";
+    const CLI::Validator staff = number_in(limits::staff_value);
+    command.add_option("--tension", options.staff.tension, "tension" + range)->check(staff)->type_name("T");
+    command.add_option("--continuity", options.staff.continuity, "continuity" + range)->check(staff)->type_name("C");
+    command.add_option("--bias", options.staff.bias, "bias" + range)->check(staff)->type_name("B");
+    command.add_option("--accel", options.staff.acceleration, "acceleration" + range)->check(staff)->type_name("A");
+}
+
+void add_curve(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    command
+        .add_option("--slopes", slopes,
+                    "end slopes DS[0] and DD[N], each in " + range_text(limits::end_slope) + ", default 1 1")
+        ->expected(2)
+        ->check(number_in(limits::end_slope))
+        ->type_name("S0 S1");
+    command
+        .add_option("--samples", options.path.samples_per_segment,
+                    "curve samples per segment, " + whole_range_text(limits::samples_per_segment) + ", default 32")
+        ->check(whole_number_in(limits::samples_per_segment))
+        ->type_name("N");
+    const std::vector<std::string> spacings{"nearest", "exact"};
+    command
+        .add_option_function<std::string>(
+            "--spacing",
+            [&options](const std::string& name) {
+                options.path.spacing = name == "exact" ? Spacing::exact : Spacing::nearest;
+            },
+            "in-betweens at the sample nearest each distance (the thesis, default) or exactly on it")
+        ->check(one_of(spacings))
+        ->type_name(alternatives(spacings));
+}
+
+void add_inbetween_count(CLI::App& command, CommonOptions& options)
+{
+    command
+        .add_option("--inbetweens", options.path.inbetween_count,
+                    "in-between frames M, " + whole_range_text(limits::inbetween_count) + ", default 12")
+        ->check(whole_number_in(limits::inbetween_count))
+        ->type_name("M");
+}
+
+void add_view(CLI::App& command, CommonOptions& options)
+{
+    const CLI::Validator degrees = number_in(limits::view_degrees);
+    CLI::Option* theta =
+        command.add_option("--theta", options.view.theta_degrees, "viewer direction theta in degrees, default 30")
+            ->check(degrees)
+            ->type_name("DEG");
+    CLI::Option* phi =
+        command.add_option("--phi", options.view.phi_degrees, "viewer direction phi in degrees, default 40")
+            ->check(degrees)
+            ->type_name("DEG");
+    std::vector<std::string> names;
+    std::string help = "a view along the axes instead of --theta and --phi";
+    for (const ViewPreset& preset : view_presets) {
+        names.emplace_back(preset.name);
+        help += std::string(names.size() == 1 ? ": " : "; ") + preset.name + " " + preset.shows;
+    }
+    command
+        .add_option_function<std::string>(
+            "--view",
+            [&options](const std::string& name) {
+                for (const ViewPreset& preset : view_presets)
+                    if (name == preset.name)
+                        options.view = preset.angles;
+            },
+            help)
+        ->check(one_of(names))
+        ->type_name(alternatives(names))
+        ->excludes(theta)
+        ->excludes(phi);
+}
+
+void add_pictures(CLI::App& command, CommonOptions& options, const std::string& what)
+{
+    command.add_option("--png", options.png, "write " + what + " as a PNG as the monitor showed it (720x522)")
+        ->check(png_name)
+        ->type_name("FILE");
+    command.add_option("--png-raw", options.png_raw, "write " + what + " as the bare 720x348 raster (pixel aspect 3:2)")
+        ->check(png_name)
+        ->type_name("FILE");
+    command.add_option("--svg", options.svg, "write " + what + " as vector lines (SVG, 720x522)")
+        ->check(svg_name)
+        ->type_name("FILE");
+}
+
+void add_delay(CLI::App& command, CommonOptions& options)
+{
+    command.add_option("--delay", options.delay_ms, "milliseconds per animation frame, default 200")
+        ->check(whole_number_in(limits::delay_ms))
+        ->type_name("MS");
+}
+
+// The frames as the session's animation shows them, one after the other.
+void add_animation(CLI::App& command, CommonOptions& options)
+{
+    command.add_option("--gif", options.gif, "write the frames as an animated GIF (720x522, --delay each, looping)")
+        ->check(gif_name)
+        ->type_name("FILE");
+    add_delay(command, options);
+}
+
+void add_print(CLI::App& command, CommonOptions& options)
+{
+    command.add_flag("--print", options.print, "write the numbers to standard output");
+}
+
+void add_out(CLI::App& command, CommonOptions& options, const std::string& what)
+{
+    command.add_option("--out", options.out, "folder " + what + " go to, default the current one")->type_name("DIR");
+}
+
+} // namespace
+
+void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_staff(app, options);
+    add_curve(app, options, slopes);
+    add_inbetween_count(app, options);
+    add_view(app, options);
+    add_delay(app, options);
+    const std::vector<std::string> glyphs{"ascii", "braille", "blocks"};
+    app.add_option_function<std::string>(
+           "--glyphs",
+           [&options](const std::string& name) {
+               options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
+           },
+           "characters that draw the raster; default braille in a UTF-8 locale on a terminal that shows it, "
+           "else ascii")
+        ->check(one_of(glyphs))
+        ->type_name(alternatives(glyphs));
+    app.add_option("--step", options.step,
+                   "staff step per key, " + range_text(limits::staff_step) + ", default 0.05")
+        ->check(number_in(limits::staff_step))
+        ->type_name("S");
+    add_pictures(app, options, "the overlay of all frames");
+    app.add_option("--workdir", options.workdir, "folder the session reads and writes, default the current one")
+        ->type_name("DIR");
+    app.add_option("--keys", options.keys, "replay the keystrokes of FILE")->type_name("FILE");
+    app.add_option("--record", options.record, "record the keystrokes to FILE")->type_name("FILE");
+}
+
+void add_path_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_staff(command, options);
+    add_curve(command, options, slopes);
+    add_inbetween_count(command, options);
+    add_view(command, options);
+    add_pictures(command, options, "the path's screen");
+    add_print(command, options);
+}
+
+void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_staff(command, options);
+    add_curve(command, options, slopes);
+    add_inbetween_count(command, options);
+    add_view(command, options);
+    add_pictures(command, options, "all frames overlaid");
+    add_animation(command, options);
+    add_print(command, options);
+    add_out(command, options, "the in-between files");
+}
+
+void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings)
+{
+    add_inbetween_count(command, options);
+    command
+        .add_option("--frames", settings.frame_intervals,
+                    "T: frames 0 to T, " + whole_range_text(limits::frame_intervals) + ", default M + 1")
+        ->check(whole_number_in(limits::frame_intervals))
+        ->type_name("T");
+    const std::vector<std::string> laws{"linear", "sqrt", "square", "ease-in", "ease-out", "ease-in-out"};
+    command
+        .add_option_function<std::string>(
+            "--law", [&settings](const std::string& name) { settings.law = *speed_law_from_name(name); },
+            "the interpolation law, default linear")
+        ->check(one_of(laws))
+        ->type_name(alternatives(laws));
+    const std::vector<std::string> paddings{"apcs", "start", "end", "middle", "midpoint"};
+    command
+        .add_option_function<std::string>(
+            "--pad", [&settings](const std::string& name) { settings.padding = *padding_from_name(name); },
+            "how the key with fewer points is padded, default apcs")
+        ->check(one_of(paddings))
+        ->type_name(alternatives(paddings));
+    add_view(command, options);
+    add_pictures(command, options, "all frames overlaid");
+    add_animation(command, options);
+    add_print(command, options);
+    add_out(command, options, "the in-between files");
+}
+
+void add_draw_command_options(CLI::App& command, CommonOptions& options)
+{
+    add_view(command, options);
+    add_pictures(command, options, "the drawing");
+}
+
+void add_figures_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_staff(command, options);
+    add_curve(command, options, slopes);
+    add_inbetween_count(command, options);
+    command.add_option("--workdir", options.workdir, "folder of the examples, default the installed ones")
+        ->type_name("DIR");
+    add_out(command, options, "the pictures");
+}
+
+} // namespace apcs

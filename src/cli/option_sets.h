@@ -1,0 +1,27 @@
+#pragma once
+
+#include "apcs/cli/inbetween_command.h"
+#include "apcs/cli/options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+class PlainOptionFormatter : public CLI::Formatter {
+public:
+    std::string make_option_opts(const CLI::Option* option) const override;
+};
+
+// Each command takes only the options it uses (manual section 2): an option of another command
+// is a usage error, never silently ignored. `slopes` collects --slopes S0 S1 for all of them.
+void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes);
+void add_path_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
+void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
+void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings);
+void add_draw_command_options(CLI::App& command, CommonOptions& options);
+void add_figures_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
+
+} // namespace apcs

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# End-to-end: an allocation that fails mid-session (the budget raised past what `ulimit -v` allows)
+# ends the session with "apcs: out of memory" and exit 1, the terminal given back: echo and icanon
+# on. Usage: tmux_out_of_memory.sh APCS
+set -euo pipefail
+apcs=$1
+command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
+
+# Address space for the program and curses, far below the 3 GB the path below asks for.
+limit_kib=$((512 * 1024))
+# AddressSanitizer reserves terabytes of address space at start: under ulimit -v it cannot run.
+if ! (ulimit -v "$limit_kib" && "$apcs" --version) >/dev/null 2>&1; then
+  echo "apcs does not start under ulimit -v $limit_kib (a sanitizer build?): skipped"
+  exit 77
+fi
+
+work=$(mktemp -d)
+socket="apcs-oom-$$"
+cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
+trap cleanup EXIT
+source "$(dirname "$0")/tmux_lib.sh"
+
+# Two-point keys, and a path of 1000 control points from KEY1's first point to KEY2's: with
+# --samples 100000 its curve takes 999 x 100000 samples, over 3 GB.
+printf '0 0 0\n1 0 0\n' >"$work/key1.dat"
+printf '0 0 10\n1 0 10\n' >"$work/key2.dat"
+awk 'BEGIN { for (i = 0; i < 1000; ++i) printf "%d %d %.6f\n", i % 2, (i % 3 == 1), i * 10 / 999 }' >"$work/big.dat"
+# The ends exactly: KEY1's first point, KEY2's first point.
+sed -i '1s/.*/0 0 0/;$s/.*/0 0 10/' "$work/big.dat"
+
+report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
+tmux -L "$socket" new-session -d -s oom -x 80 -y 25 -c "$work" \
+  "ulimit -v $limit_kib; APCS_MEMORY_LIMIT=1T '$apcs' --samples 100000 2>err.txt; echo EXITED=\$?; $report_modes; sleep 60"
+wait_for oom "Please keyin the KEY1 filename!"
+tmux -L "$socket" send-keys -t oom Enter
+wait_for oom "Please keyin the KEY2 filename!"
+tmux -L "$socket" send-keys -t oom Enter
+wait_for oom "THETA ,PHI & delay-time value."
+tmux -L "$socket" send-keys -t oom Enter
+wait_for oom "Please keyin the anix.dat filename"
+tmux -L "$socket" send-keys -t oom 'big.dat' Enter
+wait_for oom "Please input the slope : DS[0] ,DD[N]"
+tmux -L "$socket" send-keys -t oom Enter
+wait_for oom "EXITED="
+wait_for oom "MODES"
+screen oom | grep -qF "EXITED=1" || { echo "expected exit status 1"; screen oom; exit 1; }
+modes=$(screen oom | grep "MODES$")
+case "$modes" in
+  *-echo* | *-icanon*) echo "terminal not restored after running out of memory: $modes"; exit 1 ;;
+  *echo*icanon* | *icanon*echo*) ;;
+  *) echo "echo or icanon missing after running out of memory: $modes"; exit 1 ;;
+esac
+grep -qx "apcs: out of memory" "$work/err.txt" || { echo "no 'apcs: out of memory' on stderr:"; cat "$work/err.txt"; exit 1; }
+echo "out of memory mid-session: exit 1, terminal restored"

@@ -1,0 +1,84 @@
+#include "fuzz/hostile_folder.h"
+
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <filesystem>
+
+using namespace apcs;
+
+TEST_CASE("every input of the folder session fuzzing corpus leaves special, read-only, key and outside files as they were",
+          "[session][fuzz]")
+{
+    std::size_t inputs = 0;
+    std::size_t reached_fitting = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) /
+                                                                 "tests/fuzz/folder_session")) {
+        const std::string bytes = test::read_all(entry.path());
+        const fuzzing::FolderRun run =
+            fuzzing::play_in_hostile_folder({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
+        ++inputs;
+        INFO(entry.path().filename().string());
+        REQUIRE(run.violation.value_or("") == "");
+        if (std::find(run.written.begin(), run.written.end(), "inb001.dat") != run.written.end())
+            ++reached_fitting;
+    }
+    REQUIRE(inputs > 20);
+    // The corpus reaches the in-betweens, not only the first prompts.
+    REQUIRE(reached_fitting > 0);
+}
+
+TEST_CASE("the folder fuzzer's invariants catch a special file replaced, a key file written and a temporary file left",
+          "[session][fuzz]")
+{
+    const test::TempFolder root;
+    std::filesystem::create_directories(root / "work");
+    std::filesystem::create_directories(root / "outside");
+    fuzzing::hostile::populate(root / "work", root / "outside");
+    const fuzzing::FolderState work = fuzzing::snapshot(root / "work");
+    const fuzzing::FolderState outside = fuzzing::snapshot(root / "outside");
+    const std::vector<fuzzing::FileIdentity> keys{*fuzzing::hostile::identity_of(root / "work/key1.dat")};
+    REQUIRE_FALSE(fuzzing::hostile::check_invariants(root.path(), work, outside, keys));
+
+    SECTION("a FIFO replaced by a regular file")
+    {
+        std::filesystem::remove(root / "work/fifo.dat");
+        root.write("work/fifo.dat", "0 0 0\n");
+    }
+    SECTION("a key file written under its hard link") { root.write("work/keyhard.dat", "1 2 3\n"); }
+    SECTION("a file outside the folder written") { root.write("outside/victim.dat", "1 2 3\n"); }
+    SECTION("a temporary file left behind") { root.write("work/.ani1.dat.a1B2c3", ""); }
+    SECTION("a read-only file replaced by a writable one")
+    {
+        std::filesystem::remove(root / "work/readonly.dat");
+        root.write("work/readonly.dat", "0 0 0\n3 -4 5\n0 0 10\n");
+    }
+    REQUIRE(fuzzing::hostile::check_invariants(root.path(), work, outside, keys));
+}
+
+TEST_CASE("the folder fuzzer's invariants let a link to a file that is no key be written through", "[session][fuzz]")
+{
+    const test::TempFolder root;
+    std::filesystem::create_directories(root / "work");
+    std::filesystem::create_directories(root / "outside");
+    fuzzing::hostile::populate(root / "work", root / "outside");
+    const fuzzing::FolderState work = fuzzing::snapshot(root / "work");
+    const fuzzing::FolderState outside = fuzzing::snapshot(root / "outside");
+    root.write("work/keylink.dat", "1 2 3\n4 5 6\n");
+    REQUIRE_FALSE(fuzzing::hostile::check_invariants(root.path(), work, outside, {}));
+}
+
+// Inputs on which the folder fuzzer found a file replaced that must stay (a .bak that is a FIFO, a
+// link or read-only): hidden until the fix, then `apcs_tests "[finding]"` shows it holds.
+TEST_CASE("the folder fuzzer's findings leave special and read-only files as they were", "[.][session][fuzz][finding]")
+{
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) /
+                                                                 "tests/fuzz/folder_session_findings")) {
+        const std::string bytes = test::read_all(entry.path());
+        INFO(entry.path().filename().string());
+        CHECK(fuzzing::play_in_hostile_folder({reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()})
+                  .violation.value_or("") == "");
+    }
+}

@@ -1,0 +1,108 @@
+#include "apcs/session/session.h"
+#include "apcs/session/session_files.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace apcs;
+
+namespace {
+
+void type(Session& session, const std::string& line)
+{
+    for (const char c : line)
+        session.handle(c == ' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(static_cast<char32_t>(c)));
+    session.handle(KeyEvent::of(Key::enter));
+}
+
+std::string without_blanks(std::string text)
+{
+    std::erase(text, ' ');
+    return text;
+}
+
+// Whether the text screen shows `message`. The console breaks a long message every 80 columns,
+// at a blank or not: the screen's rows are joined and blanks left out on both sides.
+bool shows(const Session& session, const std::string& message)
+{
+    const CellGrid grid = session.screen().text;
+    std::string shown;
+    for (int row = 0; row < grid.rows(); ++row)
+        shown += grid.row_text(row);
+    return without_blanks(shown).find(without_blanks(message)) != std::string::npos;
+}
+
+MemoryFiles example_files()
+{
+    MemoryFiles files;
+    files.files["key1.dat"] = "0 0 0\n0 0 10\n0 6 0\n0 6 10\n";
+    files.files["key2.dat"] = "0 0 10\n0 0 0\n0 5 0\n";
+    files.files["way1.dat"] = "0 0 0\n3 -4 5\n1 1 7\n0 0 10\n";
+    return files;
+}
+
+} // namespace
+
+TEST_CASE("frames over the memory limit are refused after KEY2, which is asked again", "[session][memory]")
+{
+    MemoryFiles files = example_files();
+    SessionSettings settings;
+    settings.inbetween_count = 1000;
+    // 1002 frames x 4 points x 24 + 4 x 608 = 98624 bytes.
+    settings.memory_limit_bytes = 64 * 1024;
+    Session session(settings, files);
+    type(session, "key1.dat");
+    type(session, "key2.dat");
+    CHECK(session.phase() == SessionPhase::ask_key2);
+    CHECK(files.files.count("ani1.dat") == 0);
+    CHECK(shows(session, "1002 frames of 4 points (--inbetweens 1000) need 96.3 KiB; the memory "
+                                    "limit is 64 KiB (APCS_MEMORY_LIMIT); use key frames of fewer points, or start "
+                                    "apcs with a lower --inbetweens"));
+    // Keys within the limit go on.
+    settings.inbetween_count = 12;
+    Session allowed(settings, files);
+    type(allowed, "key1.dat");
+    type(allowed, "key2.dat");
+    while (allowed.busy())
+        allowed.work();
+    CHECK(allowed.phase() == SessionPhase::ask_view);
+}
+
+TEST_CASE("a path file over the memory limit is refused, and asked again", "[session][memory]")
+{
+    MemoryFiles files = example_files();
+    SessionSettings settings;
+    settings.samples_per_segment = 1000;
+    // 3 x 1000 + 1 samples x 56 + 12 x 48 + 4 x 320 = 169912 bytes.
+    settings.memory_limit_bytes = 128 * 1024;
+    Session session(settings, files);
+    type(session, "key1.dat");
+    type(session, "key2.dat");
+    while (session.busy())
+        session.work();
+    type(session, "");
+    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    type(session, "way1.dat");
+    CHECK(session.phase() == SessionPhase::ask_path_file);
+    CHECK(shows(session, "way1.dat: 4 control points x 1000 samples per segment (--samples) and 12 "
+                                    "in-betweens (--inbetweens) need 165.9 KiB; the memory limit is 128 KiB "
+                                    "(APCS_MEMORY_LIMIT); use a path of fewer control points, or start apcs with a "
+                                    "lower --samples or --inbetweens"));
+}
+
+TEST_CASE("a key script's keys take one allocation of at most 8 bytes per byte of script", "[session][memory]")
+{
+    const std::string script = "TEXT " + std::string(1000, 'a') + "\n";
+    const Expected<std::vector<KeyEvent>> keys = parse_key_script(script, "typed.keys");
+    REQUIRE(keys);
+    CHECK(keys->size() == 1000);
+    CHECK(keys->capacity() * sizeof(KeyEvent) <= script.size() * 8);
+    // Keys named by words leave no unused room behind either.
+    std::string named;
+    for (int i = 0; i < 1000; ++i)
+        named += "BACKSPACE\n";
+    const Expected<std::vector<KeyEvent>> words = parse_key_script(named, "named.keys");
+    REQUIRE(words);
+    CHECK(words->capacity() < 2 * words->size());
+}
