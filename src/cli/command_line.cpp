@@ -243,6 +243,8 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures and examples as PNG");
     add_figures_command_options(*figures, options, slopes);
 
+    for (CLI::App* command : app.get_subcommands({}))
+        command->group("Commands");
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {

@@ -12,6 +12,11 @@ namespace apcs {
 
 class PlainOptionFormatter : public CLI::Formatter {
 public:
+    PlainOptionFormatter()
+    {
+        label("SUBCOMMAND", "COMMAND");
+        label("Positionals", "Arguments");
+    }
     std::string make_option_opts(const CLI::Option* option) const override;
 };
 

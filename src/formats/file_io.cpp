@@ -134,6 +134,25 @@ bool is_read_only(const fs::path& file, const struct stat& status)
     return ::faccessat(AT_FDCWD, file.c_str(), W_OK, AT_EACCESS) != 0 && errno == EACCES;
 }
 
+// NAME.bak is replaced by the old file only when it is a writable regular file or absent: a FIFO, a
+// link, a directory or a read-only file there is the user's, and is left as it is.
+std::optional<Diagnostic> backup_refusal(const fs::path& backup, const std::string& shown)
+{
+    struct stat status {};
+    if (backup.empty() || ::lstat(backup.c_str(), &status) != 0)
+        return std::nullopt;
+    const std::string cannot = "cannot keep the old file as " + backup.string() + ": it ";
+    if (S_ISLNK(status.st_mode))
+        return Diagnostic{shown, 0, cannot + "is a symbolic link; a backup replaces only a regular file"};
+    if (S_ISDIR(status.st_mode))
+        return Diagnostic{shown, 0, cannot + "is a directory; a backup replaces only a regular file"};
+    if (!S_ISREG(status.st_mode))
+        return Diagnostic{shown, 0, cannot + not_regular(status.st_mode) + "; a backup replaces only a regular file"};
+    if (is_read_only(backup, status))
+        return Diagnostic{shown, 0, cannot + "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
+    return std::nullopt;
+}
+
 // The mkstemp pattern of the hidden temporary file for `name` in `folder`: ".NAME.XXXXXX", with
 // NAME cut short (at a UTF-8 character boundary) when the whole would pass the folder's longest
 // name, so that every name the file system accepts can be written; mkstemp keeps it unique.
@@ -345,6 +364,9 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
         return WriteResult{WriteOutcome::unchanged, {}};
     if (exists && is_read_only(target, status))
         return Diagnostic{shown, 0, "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
+    if (exists)
+        if (auto problem = backup_refusal(backup_path_for(target, inputs), shown))
+            return *problem;
     // A new file is 0644; a replaced one keeps its mode, and its owner and group where allowed.
     const mode_t mode = exists ? (status.st_mode & 07777) : 0644;
     const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");

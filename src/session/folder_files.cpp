@@ -4,7 +4,9 @@
 #include "apcs/formats/inbetween_files.h"
 
 #include <algorithm>
-#include <fstream>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace apcs {
 
@@ -106,8 +108,18 @@ FolderFiles::~FolderFiles()
 
 void FolderFiles::log(const std::string& line)
 {
-    // The log is the session's own record, appended line by line so that it survives a stop.
-    std::ofstream(m_folder / "apcs.log", std::ios::app) << line << '\n';
+    // The log is the session's own record, appended line by line so that it survives a stop. Only
+    // a regular file is appended to: a FIFO there would block the session, a link lead outside.
+    const int log = ::open((m_folder / "apcs.log").c_str(),
+                           O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+    if (log < 0)
+        return;
+    struct stat status {};
+    if (::fstat(log, &status) == 0 && S_ISREG(status.st_mode)) {
+        const std::string text = line + '\n';
+        [[maybe_unused]] const ssize_t written = ::write(log, text.data(), text.size());
+    }
+    ::close(log);
 }
 
 } // namespace apcs

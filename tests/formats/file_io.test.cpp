@@ -353,3 +353,36 @@ TEST_CASE("writes left for one barrier are atomic and keep backups as ever; the 
     REQUIRE(missing->to_string() == (folder / "no-such-folder").string() +
                                         ": cannot flush the files written to disk: No such file or directory");
 }
+
+TEST_CASE("a .bak that is a FIFO, a link, a directory or read-only is never replaced by the old file",
+          "[formats][files]")
+{
+    const TempFolder folder;
+    folder.write("way1.dat", "1 1 1\n2 2 2\n");
+    const auto refused_with = [&](const std::string& reason) {
+        const Expected<WriteResult> written = write_file_atomically(folder / "way1.dat", "3 3 3\n4 4 4\n");
+        REQUIRE_FALSE(written);
+        CHECK(written.error().message ==
+              "cannot keep the old file as " + (folder / "way1.bak").string() + ": it " + reason);
+        CHECK(read_all(folder / "way1.dat") == "1 1 1\n2 2 2\n");
+    };
+    REQUIRE(::mkfifo((folder / "way1.bak").c_str(), 0644) == 0);
+    refused_with("is not a regular file (a FIFO); a backup replaces only a regular file");
+    CHECK(std::filesystem::is_fifo(folder / "way1.bak"));
+    std::filesystem::remove(folder / "way1.bak");
+
+    std::filesystem::create_symlink("/dev/null", folder / "way1.bak");
+    refused_with("is a symbolic link; a backup replaces only a regular file");
+    CHECK(std::filesystem::is_symlink(folder / "way1.bak"));
+    std::filesystem::remove(folder / "way1.bak");
+
+    std::filesystem::create_directory(folder / "way1.bak");
+    refused_with("is a directory; a backup replaces only a regular file");
+    std::filesystem::remove(folder / "way1.bak");
+
+    // Read-only for root too: no write bit at all.
+    folder.write("way1.bak", "older\n");
+    std::filesystem::permissions(folder / "way1.bak", std::filesystem::perms::owner_read);
+    refused_with("is read-only (mode 0400); not replaced");
+    CHECK(read_all(folder / "way1.bak") == "older\n");
+}
