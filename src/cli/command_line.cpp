@@ -206,7 +206,7 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
                   const TerminalSessionRunner& terminal)
 {
     CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
-                 "Without a command, the interactive session of the thesis (manual.txt, section 10).",
+                 "Without a command, the interactive session of the thesis (manual.txt, section 4).",
                  "apcs"};
     app.set_version_flag("--version", version_text());
     app.require_subcommand(0, 1);

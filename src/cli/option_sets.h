@@ -20,7 +20,7 @@ public:
     std::string make_option_opts(const CLI::Option* option) const override;
 };
 
-// Each command takes only the options it uses (manual section 2): an option of another command
+// Each command takes only the options it uses (manual section 14): an option of another command
 // is a usage error, never silently ignored. `slopes` collects --slopes S0 S1 for all of them.
 void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes);
 void add_path_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);

@@ -10,7 +10,7 @@ using apcs::test::run_apcs;
 
 namespace {
 
-// Each command's options as manual.txt section 2 lists them.
+// Each command's options as manual.txt section 14 lists them.
 struct CommandOptions {
     std::vector<std::string> command; // {} is the session
     std::set<std::string> options;

@@ -458,7 +458,7 @@ TEST_CASE("a path of two control points says that t, c and b act at interior poi
     type(session, ""); // ani1.dat, as split wrote it: two control points
     type(session, "");
     press(session, {ch('8')});
-    REQUIRE(graphics_message(session) == "TENSION acts at interior control points: add waypoints (manual 10)");
+    REQUIRE(graphics_message(session) == "TENSION acts at interior control points: add waypoints (manual 4)");
     press(session, {enter, enter, enter});
     REQUIRE(graphics_message(session).starts_with("ani1.dat: ACCELERATION  control points 1 to 2 of 2"));
 }
