@@ -7,6 +7,8 @@
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
+#include "apcs/cli/report.h"
+#include "apcs/formats/key_file_guard.h"
 #include "apcs/version.h"
 #include "option_sets.h"
 
@@ -23,6 +25,8 @@
 #include <span>
 #include <streambuf>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace apcs {
 
@@ -131,22 +135,38 @@ std::string commands_taking(const CLI::App& app, const std::string& name)
     return names;
 }
 
-// The first "--NAME" after the command's name that the command does not take. CLI11 reports such
-// an option late and by its effect (its value counted as one file too many): name it instead.
-std::optional<std::string> foreign_option(const CLI::App& command, std::span<const char* const> arguments)
+// The first "--NAME" on the command line that the place it stands in does not take, with the line
+// that says so. CLI11 reports such an option late and by its effect (its value counted as one file
+// too many, or "arguments were not expected"): name it instead.
+std::optional<std::string> foreign_option(const CLI::App& app, std::span<const char* const> arguments)
 {
-    bool in_command = command.get_parent() == nullptr;
+    const CLI::App* command = nullptr;
+    for (const char* argument : arguments)
+        for (const CLI::App* candidate : app.get_subcommands({}))
+            if (command == nullptr && candidate->get_name() == argument)
+                command = candidate;
+    bool after_command = false;
     for (const char* argument : arguments) {
         const std::string token(argument);
         if (token == "--")
             break;
-        if (!in_command) {
-            in_command = token == command.get_name();
+        if (command != nullptr && token == command->get_name()) {
+            after_command = true;
             continue;
         }
         const std::string name = token.substr(0, token.find('='));
-        if (name.starts_with("--") && name != "--help" && command.get_option_no_throw(name) == nullptr)
-            return name;
+        if (!name.starts_with("--") || name == "--help")
+            continue;
+        const CLI::App& place = after_command ? *command : app;
+        if (place.get_option_no_throw(name) != nullptr)
+            continue;
+        if (!after_command && command != nullptr && command->get_option_no_throw(name) != nullptr)
+            return name + " goes after the command: " + command_name(command) + " ... " + name;
+        const CLI::App& shown = command != nullptr ? *command : app;
+        const std::string owners = commands_taking(app, name);
+        if (owners.empty())
+            return "unknown option " + name;
+        return name + " is not an option of '" + command_name(&shown) + "' (it is one of " + owners + ")";
     }
     return std::nullopt;
 }
@@ -155,26 +175,57 @@ std::optional<std::string> foreign_option(const CLI::App& command, std::span<con
 std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::span<const char* const> arguments,
                              const CLI::ParseError& error)
 {
-    if (const auto name = foreign_option(command, arguments)) {
-        const std::string owners = commands_taking(app, *name);
-        if (owners.empty())
-            return "unknown option " + *name;
-        return *name + " is not an option of '" + command_name(&command) + "' (it is one of " + owners + ")";
-    }
+    if (auto line = foreign_option(app, arguments))
+        return *std::move(line);
     if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr && command.get_parent() == nullptr &&
         !command.remaining().empty() && !command.remaining().front().starts_with("-"))
         return "unknown command '" + command.remaining().front() + "' (the commands: path, inbetween, fit, draw, figures)";
     return error.what();
 }
 
-// An option given before the command belongs to the session unless the command takes it too.
+// An option given before the command belongs to the session unless the command takes it too; given
+// both before and after it, the first would be lost.
 std::optional<std::string> session_option_before_command(const CLI::App& app, const CLI::App& command)
 {
     for (const CLI::Option* option : app.get_options()) {
         const std::string name = option->get_name();
-        if (option->count() > 0 && name != "--help" && command.get_option_no_throw(name) == nullptr)
+        if (option->count() == 0 || name == "--help")
+            continue;
+        const CLI::Option* own = command.get_option_no_throw(name);
+        if (own == nullptr)
             return name + " is not an option of '" + command_name(&command) + "' (it is one of " +
                    commands_taking(app, name) + ")";
+        if (own->count() > 0)
+            return name + " is given twice, before and after '" + command.get_name() + "'";
+    }
+    return std::nullopt;
+}
+
+// A picture is never written over an input of the run (through a link, another case, a name
+// without extension), and two pictures never go to one file, where one would be lost silently.
+std::optional<Diagnostic> picture_target_clash(const CommonOptions& options,
+                                               std::span<const std::filesystem::path> inputs, bool& usage)
+{
+    const std::filesystem::path dash(standard_stream_name);
+    KeyFileGuard read;
+    for (const std::filesystem::path& input : inputs)
+        if (!input.empty() && input != dash)
+            read.protect(input);
+    KeyFileGuard pictures;
+    const std::pair<const char*, const std::optional<std::filesystem::path>*> targets[] = {
+        {"--png", &options.png}, {"--png-raw", &options.png_raw}, {"--svg", &options.svg}, {"--gif", &options.gif}};
+    for (const auto& [option, target] : targets) {
+        if (!*target || **target == dash)
+            continue;
+        if (read.guards(**target))
+            return Diagnostic{(*target)->string(), 0, "is an input of this run; " + std::string(option) +
+                                                          " never writes over an input"};
+        if (pictures.guards(**target)) {
+            usage = true;
+            return Diagnostic{"apcs", 0, std::string(option) + " names a file another picture option names: " +
+                                             (*target)->string()};
+        }
+        pictures.protect(**target);
     }
     return std::nullopt;
 }
@@ -262,8 +313,15 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     inputs.insert(inputs.end(), fit_files.begin(), fit_files.end());
     inputs.insert(inputs.end(), draw_files.begin(), draw_files.end());
     inputs.push_back(path_file);
-    if (const auto clash = standard_stream_clash(options, inputs, app.get_subcommands().empty()))
-        return usage_error(*clash, app.get_subcommands().empty() ? &app : app.get_subcommands().front(), err);
+    const CLI::App* chosen = app.get_subcommands().empty() ? &app : app.get_subcommands().front();
+    if (const auto clash = standard_stream_clash(options, inputs, chosen == &app))
+        return usage_error(*clash, chosen, err);
+    bool usage = false;
+    if (const auto clash = picture_target_clash(options, inputs, usage)) {
+        if (usage)
+            return usage_error(clash->message, chosen, err);
+        return to_int(report_bad_input(*clash, err));
+    }
     if (slopes.size() == 2)
         options.path.slopes = {slopes[0], slopes[1]};
     const bool view_given = given_count(app, "--view") > 0;

@@ -291,9 +291,13 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
             return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
         if (got == 0)
             return content;
-        if (content.size() + static_cast<std::size_t>(got) > most_bytes)
-            return too_large(shown, content.size() + static_cast<std::size_t>(got), most_bytes);
-        content.append(buffer, static_cast<std::size_t>(got));
+        // A stream has no size to refuse up front: it is refused at its first NUL, as a file is.
+        const std::string_view chunk(buffer, static_cast<std::size_t>(got));
+        if (auto binary = refuse_nul_byte(shown, content, chunk))
+            return *std::move(binary);
+        if (content.size() + chunk.size() > most_bytes)
+            return too_large(shown, content.size() + chunk.size(), most_bytes);
+        content.append(chunk);
     }
 }
 

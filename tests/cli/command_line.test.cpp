@@ -78,6 +78,12 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"play", "robot.scn"}, "apcs: unknown command 'play' (the commands: path, inbetween, fit, draw, figures)"},
         {{"fit", "a", "b", "c", "d", "--keys", "x.keys"}, "apcs: --keys is not an option of 'apcs fit' (it is one of 'apcs')"},
         {{"--glyphs", "ascii", "path", "a.dat"}, "apcs: --glyphs is not an option of 'apcs path' (it is one of 'apcs')"},
+        {{"--out", "x", "path", "a.dat"},
+         "apcs: --out is not an option of 'apcs path' (it is one of 'apcs inbetween', 'apcs fit', 'apcs figures')"},
+        {{"--print", "path", "a.dat"}, "apcs: --print goes after the command: apcs path ... --print"},
+        {{"--png", "a.png", "path", "a.dat", "--png", "b.png"}, "apcs: --png is given twice, before and after 'path'"},
+        {{"draw", "a.dat", "--png", "x.png", "--png-raw", "x.png"},
+         "apcs: --png-raw names a file another picture option names: x.png"},
     };
     for (const Row& row : rows) {
         CAPTURE(row.arguments);

@@ -1,7 +1,9 @@
 #include "support/run_apcs.h"
+#include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <set>
 #include <string>
 #include <vector>
@@ -86,5 +88,33 @@ TEST_CASE("every command's --help lists exactly its own options, without the par
                    help.find("  " + option + "\n") != std::string::npos) == command.options.contains(option));
         for (const char* jargon : {"SPEC", "FLOAT", "TEXT", "INT", "Excludes", "REQUIRED", "1e+05"})
             CHECK(help.find(jargon) == std::string::npos);
+    }
+}
+
+TEST_CASE("a picture is never written over an input of the run, by a link or a name without extension", "[cli]")
+{
+    const apcs::test::TempFolder folder;
+    const std::string key = "0 0 0\n0 0 10\n";
+    folder.write("key1.dat", key);
+    folder.write("key2.dat", "0 5 0\n0 5 10\n");
+    folder.write("k1", key);
+    std::filesystem::create_symlink(folder / "key1.dat", folder / "k.png");
+    struct Row {
+        std::vector<std::string> arguments;
+        std::filesystem::path input;
+        std::string line;
+    };
+    const Row rows[] = {
+        {{"inbetween", (folder / "key1.dat").string(), (folder / "key2.dat").string(), "--png", (folder / "k.png").string()},
+         folder / "key1.dat", (folder / "k.png").string() + ": is an input of this run; --png never writes over an input\n"},
+        {{"draw", (folder / "k1").string(), "--svg", (folder / "k1").string()}, folder / "k1",
+         (folder / "k1").string() + ": is an input of this run; --svg never writes over an input\n"},
+    };
+    for (const Row& row : rows) {
+        CAPTURE(row.arguments);
+        const auto result = run_apcs(row.arguments);
+        CHECK(result.status == 1);
+        CHECK(result.err == row.line);
+        CHECK(apcs::test::read_all(row.input) == key);
     }
 }

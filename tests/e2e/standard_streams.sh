@@ -21,6 +21,11 @@ printf '0 0\n1 x\n' | "$apcs" path - 2> "$work/err"; status=$?
 [ "$status" -eq 1 ] || fail "exit $status for a bad file on standard input"
 grep -qxF "standard input:2: expected a number, found 'x'" "$work/err" || fail "message: $(cat "$work/err")"
 
+# An endless stream is refused at its first NUL, not read to the size limit.
+timeout 20 "$apcs" path - < /dev/zero 2> "$work/err"; status=$?
+[ "$status" -eq 1 ] || fail "exit $status for /dev/zero on standard input"
+grep -qxF "standard input:1: NUL byte; expected a text file" "$work/err" || fail "message: $(cat "$work/err")"
+
 # Pictures to standard output: the same bytes as the file, and nothing else on the stream.
 "$apcs" path "$data/way1.dat" --png "$work/file.png" || fail "path --png FILE"
 "$apcs" path "$data/way1.dat" --png - > "$work/stdout.png" || fail "path --png -"
