@@ -9,6 +9,9 @@
 #include "apcs/session/figures.h"
 
 #include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace apcs {
 
@@ -72,19 +75,22 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         err << target.string() << ": is not a folder; expected an existing folder for the figures (mkdir it first)\n";
         return ExitStatus::bad_input;
     }
-    for (const CurveFigure& figure : thesis_curve_figures()) {
-        if (auto problem = write_png_file(target / figure.file_name, draw_curve_figure(figure), PngShape::monitor, out))
-            return report_bad_input(*problem, err);
-        out << (target / figure.file_name).string() << '\n';
-    }
+    // Every picture is drawn before the first is written: examples that cannot be read leave the
+    // folder as it was, not with some of the figures.
+    std::vector<std::pair<std::string, GraphicsScreen>> pictures;
+    for (const CurveFigure& figure : thesis_curve_figures())
+        pictures.emplace_back(figure.file_name, draw_curve_figure(figure));
     const std::filesystem::path examples = options.workdir.empty() ? data_folder : options.workdir;
     for (const ExampleFigure& example : example_figures()) {
-        const Expected<GraphicsScreen> screen = draw_example(example, examples, options);
+        Expected<GraphicsScreen> screen = draw_example(example, examples, options);
         if (!screen)
             return report_bad_input(screen.error(), err);
-        if (auto problem = write_png_file(target / example.file_name, *screen, PngShape::monitor, out))
+        pictures.emplace_back(example.file_name, std::move(*screen));
+    }
+    for (const auto& [name, screen] : pictures) {
+        if (auto problem = write_png_file(target / name, screen, PngShape::monitor, out))
             return report_bad_input(*problem, err);
-        out << (target / example.file_name).string() << '\n';
+        out << (target / name).string() << '\n';
     }
     return ExitStatus::success;
 }

@@ -48,6 +48,18 @@ TEST_CASE("apcs figures into a missing folder is exit 1", "[cli][figures]")
     REQUIRE(result.err.find("is not a folder") != std::string::npos);
 }
 
+TEST_CASE("apcs figures with examples it cannot read writes no picture at all", "[cli][figures]")
+{
+    const apcs::test::TempFolder folder;
+    std::filesystem::create_directory(folder / "empty");
+    const auto result = apcs::test::run_apcs({"figures", "--workdir", (folder / "empty").string(), "--out",
+                                              folder.path().string()});
+    CHECK(result.status == 1);
+    CHECK(result.err.find("key1.dat") != std::string::npos);
+    CHECK(result.out.empty());
+    CHECK_FALSE(std::filesystem::exists(folder / "fig-3-1-1.png"));
+}
+
 TEST_CASE("each example's session replays headless to its approved in-between files", "[session][examples]")
 {
     for (const std::string example : {"n-to-l", "stick", "snake-apple"}) {
