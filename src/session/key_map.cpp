@@ -100,6 +100,44 @@ std::vector<KeyBinding> make_bindings()
              "show or hide both key frames, dotted, beside the path"}});
     add_graphics_rows(Context::staff, quit_path);
 
+    // "=": the value typed on the message line, as at a text prompt.
+    add(Context::value_field,
+        {Row{Pattern::of(Key::enter), cmd::SubmitLine{}, "Enter set", "set the line to the typed value"},
+         Row{Pattern::of(Key::backspace), cmd::EraseCharacter{}, "Backspace erase", "erase the last character"},
+         Row{Pattern::of(Key::escape), cmd::ClearLine{}, "Esc close", "close the field; the value stays"},
+         Row{Pattern::of(Key::f1), cmd::ShowHelp{}, "", "this help"},
+         Row{Pattern::of(Key::space), cmd::TypeCharacter{U' '}, "", ""},
+         Row{Pattern::printable(), cmd::TypeCharacter{}, "", "typed into the value"}});
+
+    // The waypoint editor: the keypad moves the chosen control point in the screen's plane.
+    const Row choose_next{Pattern::of(Key::tab), cmd::ChoosePoint{+1}, "Tab next", "choose the next control point"};
+    const Row choose_previous{Pattern::of(Key::back_tab), cmd::ChoosePoint{-1}, "",
+                              "choose the previous control point"};
+    add(Context::waypoints,
+        {choose_next, choose_previous,
+         Row{Pattern::exactly(U']'), cmd::ChoosePoint{+1}, "", "choose the next control point"},
+         Row{Pattern::exactly(U'['), cmd::ChoosePoint{-1}, "", "choose the previous control point"},
+         Row{Pattern::exactly(U'4'), cmd::MovePoint{-1, 0, 0}, "4/6/8/2 move", "move the point one step left"},
+         Row{Pattern::of(Key::left), cmd::MovePoint{-1, 0, 0}, "", "move the point one step left"},
+         Row{Pattern::exactly(U'6'), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
+         Row{Pattern::of(Key::right), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
+         Row{Pattern::exactly(U'8'), cmd::MovePoint{0, +1, 0}, "", "move the point one step up"},
+         Row{Pattern::of(Key::up), cmd::MovePoint{0, +1, 0}, "", "move the point one step up"},
+         Row{Pattern::exactly(U'2'), cmd::MovePoint{0, -1, 0}, "", "move the point one step down"},
+         Row{Pattern::of(Key::down), cmd::MovePoint{0, -1, 0}, "", "move the point one step down"},
+         Row{Pattern::letter(U'J'), cmd::MovePoint{-3, 0, 0}, "", "move the point three steps left (Shift-J)"},
+         Row{Pattern::letter(U'L'), cmd::MovePoint{+3, 0, 0}, "", "move the point three steps right (Shift-L)"},
+         Row{Pattern::exactly(U'+'), cmd::MovePoint{0, 0, +1}, "+/- depth", "move the point toward the viewer"},
+         Row{Pattern::exactly(U'-'), cmd::MovePoint{0, 0, -1}, "", "move the point away from the viewer"},
+         Row{Pattern::letter(U'I'), cmd::InsertPoint{}, "I insert", "insert a control point after the chosen one"},
+         Row{Pattern::letter(U'D'), cmd::DeletePoint{}, "D delete", "delete the chosen control point"},
+         Row{Pattern::letter(U'U'), cmd::Undo{}, "U undo", "undo the last change"},
+         Row{Pattern::of(Key::enter), cmd::Accept{}, "Enter keep", "leave the editor keeping the changes"},
+         Row{Pattern::of(Key::escape), cmd::Back{}, "Esc undo all", "leave the editor undoing its changes"},
+         Row{Pattern::letter(U'T'), cmd::ToggleTangents{}, "", "show or hide the tangents DS and DD"},
+         key_frames});
+    add_graphics_rows(Context::waypoints, quit_path);
+
     // Ask_Adjusting: Y again; N or Enter accepts the path; other keys are not an answer.
     add(Context::adjust_again,
         {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "adjust the path again"},

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <numeric>
 
 namespace apcs {
 
@@ -26,10 +27,18 @@ ViewTransform initial_view(const PathEditor::Setup& setup, const EvaluatedPath& 
     return path_screen_scene(shown).fit(setup.view_angles, layout::view_area);
 }
 
+std::vector<std::size_t> origins_of(std::size_t point_count)
+{
+    std::vector<std::size_t> origins(point_count);
+    std::iota(origins.begin(), origins.end(), std::size_t{0});
+    return origins;
+}
+
 } // namespace
 
 PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
+    , m_origins(origins_of(m_setup.points.size()))
     , m_log(log)
     , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
     , m_view(initial_view(m_setup, m_evaluated))

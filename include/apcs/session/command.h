@@ -43,6 +43,31 @@ struct Keep : Signal<Keep> {};
 struct Back : Signal<Back> {};
 struct ToggleKeyFrames : Signal<ToggleKeyFrames> {};
 
+// Teaching and editing on the path screen (thesis Ch. 6's future work).
+// T: the tangents DS and DD drawn at every control point; G: the inset graph of the span's law.
+struct ToggleTangents : Signal<ToggleTangents> {};
+struct ToggleLawGraph : Signal<ToggleLawGraph> {};
+// Tab, Shift-Tab, ] and [: another control point chosen, `by` points on.
+struct ChoosePoint {
+    int by = 0;
+    friend bool operator==(const ChoosePoint&, const ChoosePoint&) = default;
+};
+// =: a field on the message line for typing the staff line's value.
+struct OpenValueField : Signal<OpenValueField> {};
+// W: the waypoint editor. I inserts a control point after the chosen one, D deletes it, the moves
+// shift it by steps: right and up on the screen, toward the viewer.
+struct OpenWaypoints : Signal<OpenWaypoints> {};
+struct InsertPoint : Signal<InsertPoint> {};
+struct DeletePoint : Signal<DeletePoint> {};
+struct MovePoint {
+    int right = 0;
+    int up = 0;
+    int toward = 0;
+    friend bool operator==(const MovePoint&, const MovePoint&) = default;
+};
+// U: the last change of the path taken back.
+struct Undo : Signal<Undo> {};
+
 // Questions: Y/N, Enter, any key.
 struct Yes : Signal<Yes> {};
 struct No : Signal<No> {};
@@ -65,7 +90,10 @@ namespace apcs {
 
 using Command = std::variant<command::TypeCharacter, command::EraseCharacter, command::ClearLine, command::SubmitLine,
                              command::ChooseGlobal, command::ChooseLocal, command::ArrowMove, command::StaffStep,
-                             command::Accept, command::Keep, command::Back, command::ToggleKeyFrames, command::Yes,
+                             command::Accept, command::Keep, command::Back, command::ToggleKeyFrames,
+                             command::ToggleTangents, command::ToggleLawGraph, command::ChoosePoint,
+                             command::OpenValueField, command::OpenWaypoints, command::InsertPoint,
+                             command::DeletePoint, command::MovePoint, command::Undo, command::Yes,
                              command::No, command::Continue, command::ShowHelp, command::SavePicture, command::Quit,
                              command::StopAnimation, command::Pause, command::Replay>;
 

@@ -22,6 +22,8 @@ enum class KeyContext {
     control_choice, // Check_GorL_Control
     region_pick,    // Scan_Control_Point
     staff,          // Scan_Parameters
+    value_field,    // "=" on a staff line: the value typed on the message line
+    waypoints,      // the waypoint editor (W at the 8/2 choice)
     adjust_again,   // Ask_Adjusting: Y again, anything else accepts
     animation,      // Showing_Animation
     quit_question,  // "Quit without saving this path ? (Y/N)"

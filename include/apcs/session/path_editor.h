@@ -4,6 +4,7 @@
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
+#include "apcs/animation/waypoint_change.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
 #include "apcs/session/key_map.h"
@@ -45,6 +46,9 @@ public:
     KeyContext key_context() const;
     const std::string& path_name() const { return m_setup.path_name; }
     const ControlPoints& points() const { return m_setup.points; }
+    // Parallel to points(): each point's index among the path file's points, or new_point for one
+    // the waypoint editor inserted (waypoint_change.h). The file's comments stay with their points.
+    const std::vector<std::size_t>& point_origins() const { return m_origins; }
     const EvaluatedPath& evaluated() const { return m_evaluated; }
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);
@@ -60,6 +64,7 @@ private:
     std::string staff_message() const;
 
     Setup m_setup;
+    std::vector<std::size_t> m_origins;
     SessionLog& m_log;
     EvaluatedPath m_evaluated;
     ViewTransform m_view;

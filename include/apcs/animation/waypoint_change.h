@@ -1,0 +1,30 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace apcs {
+
+// Where a control point of an edited path came from: its index among the path file's points, or
+// new_point for one the waypoint editor inserted. The file's comments stay with their points.
+inline constexpr std::size_t new_point = static_cast<std::size_t>(-1);
+
+// One edit of a path's control points in the waypoint editor. Each can be reverted exactly, so
+// that undo (U) and leaving the editor with Esc take changes back in reverse order.
+struct WaypointChange {
+    enum class Kind { insert, remove, move };
+    Kind kind = Kind::move;
+    std::size_t index = 0;  // the point inserted (its new index), removed or moved
+    ControlPoint point;     // the point inserted or removed
+    std::size_t origin = new_point; // the removed point's origin
+    Vec3 offset;            // a move's displacement
+};
+
+// `origins` runs parallel to `points`; both change together. An index outside the points is a
+// programming error (asserted).
+void apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
+void revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
+
+} // namespace apcs
