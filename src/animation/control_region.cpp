@@ -15,4 +15,24 @@ void apply_staff_to_region(ControlPoints& points, ControlRegion region, const St
     }
 }
 
+std::vector<StaffRun> staff_runs(const ControlPoints& points, ControlRegion region)
+{
+    std::vector<StaffRun> runs;
+    for (std::size_t k = region.first; k <= region.last && k < points.size(); ++k) {
+        if (!runs.empty() && runs.back().staff == points[k].staff)
+            ++runs.back().count;
+        else
+            runs.push_back({1, points[k].staff});
+    }
+    return runs;
+}
+
+void restore_staff_runs(ControlPoints& points, ControlRegion region, const std::vector<StaffRun>& runs)
+{
+    std::size_t k = region.first;
+    for (const StaffRun& run : runs)
+        for (std::size_t i = 0; i < run.count && k < points.size(); ++i, ++k)
+            points[k].staff = run.staff;
+}
+
 } // namespace apcs

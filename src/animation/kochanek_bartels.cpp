@@ -56,4 +56,14 @@ std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, En
     return segments;
 }
 
+PointTangents tangents_at(std::span<const HermiteSegment> segments, std::size_t point)
+{
+    PointTangents tangents;
+    if (point >= 1 && point <= segments.size())
+        tangents.incoming = segments[point - 1].end_tangent;
+    if (point < segments.size())
+        tangents.outgoing = segments[point].start_tangent;
+    return tangents;
+}
+
 } // namespace apcs

@@ -123,6 +123,8 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 
     for (std::size_t s = 0; s < spans.size(); ++s) {
         const double start = boundary(spans[s].first_point);
+        path.span_timings.push_back({spans[s], start / total, span_lengths[s] / total, path.inbetweens.size(),
+                                     static_cast<std::size_t>(shares[s])});
         for (const double target : span_targets(start, span_lengths[s], shares[s], spans[s].acceleration)) {
             Inbetween shown;
             if (exact) {

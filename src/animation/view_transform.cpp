@@ -65,6 +65,30 @@ EyePoint ViewTransform::to_eye(const Vec3& world) const
     };
 }
 
+namespace {
+
+// cos 90° is 6e-17 in doubles: a move along an axis must not leave such dust in a path file.
+Vec3 without_dust(Vec3 direction)
+{
+    for (double* component : {&direction.x, &direction.y, &direction.z})
+        if (std::abs(*component) < 1e-12)
+            *component = 0.0;
+    return direction;
+}
+
+} // namespace
+
+// The rows of to_eye's rotation.
+Vec3 ViewTransform::screen_right() const { return without_dust({-m_sin_theta, m_cos_theta, 0.0}); }
+Vec3 ViewTransform::screen_up() const
+{
+    return without_dust({-m_cos_theta * m_cos_phi, -m_sin_theta * m_cos_phi, m_sin_phi});
+}
+Vec3 ViewTransform::toward_viewer() const
+{
+    return without_dust({m_cos_theta * m_sin_phi, m_sin_theta * m_sin_phi, m_cos_phi});
+}
+
 DevicePoint ViewTransform::to_device(const Vec3& world) const
 {
     const EyePoint eye = to_eye(world);

@@ -296,17 +296,22 @@ std::string format_dat(const DatFile& file)
         if (part_lines)
             append_part_line(text, part.name, part.closure, i);
         for (const DatPoint& point : part.points) {
-            append_xyz(text, point.position);
-            if (point.staff) {
-                for (const StaffLine line : staff_lines) {
-                    text += ' ';
-                    append_shortest(text, (*point.staff)[line]);
-                }
-            }
+            append_point_line(text, point.position, point.staff);
             text += '\n';
         }
     }
     return text;
+}
+
+void append_point_line(std::string& text, const Vec3& position, const std::optional<StaffValues>& staff)
+{
+    append_xyz(text, position);
+    if (!staff)
+        return;
+    for (const StaffLine line : staff_lines) {
+        text += ' ';
+        append_shortest(text, (*staff)[line]);
+    }
 }
 
 std::string format_graphic(const Graphic& structure, std::span<const Vec3> points)

@@ -112,4 +112,63 @@ DatFile dat_from(const ControlPoints& points)
     return file;
 }
 
+namespace {
+
+// The text's lines without their line ends; a final line end starts no further line.
+std::vector<std::string_view> lines_of(std::string_view text)
+{
+    std::vector<std::string_view> lines;
+    while (!text.empty()) {
+        const std::size_t end = text.find('\n');
+        std::string_view line = text.substr(0, end);
+        if (!line.empty() && line.back() == '\r')
+            line.remove_suffix(1);
+        lines.push_back(line);
+        text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
+    }
+    return lines;
+}
+
+} // namespace
+
+std::string format_path_file(std::string_view original_text, const DatFile& original, const ControlPoints& points,
+                             std::span<const std::size_t> origins)
+{
+    const std::vector<std::string_view> lines = lines_of(original_text);
+    const std::string line_end = original_text.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
+    std::vector<std::size_t> point_lines; // from 1, each original point's
+    std::vector<bool> is_point_line(lines.size() + 1, false);
+    for (const DatPart& part : original.parts)
+        for (const DatPoint& point : part.points) {
+            point_lines.push_back(static_cast<std::size_t>(point.line));
+            if (static_cast<std::size_t>(point.line) < is_point_line.size())
+                is_point_line[static_cast<std::size_t>(point.line)] = true;
+        }
+    std::string text;
+    text.reserve(original_text.size() + points.size() * 16);
+    std::size_t next_line = 1; // the first line not written yet
+    // The other lines before `line` (comments, PART lines); a deleted point's own line goes.
+    const auto copy_lines_before = [&](std::size_t line) {
+        for (; next_line < line && next_line <= lines.size(); ++next_line)
+            if (!is_point_line[next_line])
+                text.append(lines[next_line - 1]).append(line_end);
+    };
+    for (std::size_t j = 0; j < points.size(); ++j) {
+        std::string_view comment; // a comment after the numbers on the point's own line
+        if (j < origins.size() && origins[j] < point_lines.size()) {
+            const std::size_t line = point_lines[origins[j]];
+            copy_lines_before(line);
+            next_line = line + 1;
+            if (line >= 1 && line <= lines.size() && lines[line - 1].find(';') != std::string_view::npos)
+                comment = lines[line - 1].substr(lines[line - 1].find(';'));
+        }
+        append_point_line(text, points[j].position, points[j].staff);
+        if (!comment.empty())
+            text.append(" ").append(comment);
+        text += line_end;
+    }
+    copy_lines_before(lines.size() + 1);
+    return text;
+}
+
 } // namespace apcs

@@ -17,6 +17,7 @@ char32_t mark_glyph(MarkKind kind, GlyphSet glyphs)
     case MarkKind::inbetween: return ascii ? U'*' : U'\u2022';
     case MarkKind::arrow: return ascii ? U'>' : U'\u2192';
     case MarkKind::staff_value: return U'O';
+    case MarkKind::tangent_end: return U'+';
     }
     return U'?';
 }
@@ -48,17 +49,23 @@ void draw_mark_pixels(Painter& painter, const PixelMark& mark)
         for (const int side : {-1, 1})
             painter.line({at.x + side, at.y - staff_marker_half_height}, {at.x + side, at.y + staff_marker_half_height});
         return;
+    case MarkKind::tangent_end:
+        painter.line({at.x - 2, at.y}, {at.x + 2, at.y});
+        painter.line({at.x, at.y - 2}, {at.x, at.y + 2});
+        return;
     }
 }
 
 // The order marks are laid over the cells: a later kind hides an earlier one in the same cell.
+constexpr int top_mark_layer = 4;
 int mark_layer(MarkKind kind)
 {
     switch (kind) {
     case MarkKind::inbetween: return 0;
-    case MarkKind::staff_value: return 1;
-    case MarkKind::arrow: return 2;
-    case MarkKind::control_point: return 3;
+    case MarkKind::tangent_end: return 1;
+    case MarkKind::staff_value: return 2;
+    case MarkKind::arrow: return 3;
+    case MarkKind::control_point: return top_mark_layer;
     }
     return 0;
 }
@@ -66,7 +73,7 @@ int mark_layer(MarkKind kind)
 void lay_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area, GlyphSet glyphs)
 {
     std::map<std::pair<int, int>, int> inbetweens_in_cell;
-    for (int layer = 0; layer <= 3; ++layer)
+    for (int layer = 0; layer <= top_mark_layer; ++layer)
         for (const PixelMark& mark : screen.marks) {
             if (mark_layer(mark.kind) != layer || !screen.bitmap.contains(mark.at.x, mark.at.y))
                 continue;

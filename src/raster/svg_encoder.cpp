@@ -137,6 +137,9 @@ std::string mark_element(const PixelMark& mark)
     case MarkKind::staff_value:
         path = segment({at.x - 1, at.y - 4}, {at.x - 1, at.y + 4}) + segment({at.x + 1, at.y - 4}, {at.x + 1, at.y + 4});
         break;
+    case MarkKind::tangent_end:
+        path = segment({at.x - 2, at.y}, {at.x + 2, at.y}) + segment({at.x, at.y - 2}, {at.x, at.y + 2});
+        break;
     }
     path.pop_back();
     return "<path d=\"" + path + "\"/>\n";

@@ -19,12 +19,31 @@ Diagnostic FolderFiles::as_typed(Diagnostic problem) const
     return problem;
 }
 
-Expected<DatFile> FolderFiles::read_dat(const std::string& name, std::size_t minimum_points)
+Expected<std::string> FolderFiles::read_text(const std::string& name)
 {
-    const Expected<std::string> text = read_text_file(m_folder / name);
+    Expected<std::string> text = read_text_file(m_folder / name);
     if (!text)
         return Diagnostic{name, 0, text.error().message};
+    return text;
+}
+
+Expected<DatFile> SessionFiles::read_dat(const std::string& name, std::size_t minimum_points)
+{
+    const Expected<std::string> text = read_text(name);
+    if (!text)
+        return text.error();
     return parse_dat(*text, name, minimum_points);
+}
+
+Expected<DatText> SessionFiles::read_dat_text(const std::string& name, std::size_t minimum_points)
+{
+    Expected<std::string> text = read_text(name);
+    if (!text)
+        return text.error();
+    Expected<DatFile> file = parse_dat(*text, name, minimum_points);
+    if (!file)
+        return file.error();
+    return DatText{std::move(*file), std::move(*text)};
 }
 
 bool FolderFiles::exists(const std::string& name) const

@@ -36,15 +36,30 @@ std::vector<KeyBinding> make_bindings()
         for (const Row& row : rows)
             table.push_back({context, row.pattern, row.command, row.help, row.meaning});
     };
-    const auto add_graphics_rows = [&](Context context, std::string_view quit_meaning) {
+    // A full key line leaves "q quit" to the help screen.
+    const auto add_graphics_rows = [&](Context context, std::string_view quit_meaning, bool quit_on_key_line = true) {
         add(context, std::vector<Row>(graphics_rows.begin(), graphics_rows.end()));
-        add(context, {Row{Pattern::letter(U'Q'), cmd::Quit{}, "q quit", quit_meaning}});
+        add(context, {Row{Pattern::letter(U'Q'), cmd::Quit{}, quit_on_key_line ? "q quit" : "", quit_meaning}});
     };
     const Row help_key{Pattern::of(Key::f1), cmd::ShowHelp{}, "", "this help"};
     const Row question_mark{Pattern::exactly(U'?'), cmd::ShowHelp{}, "", "this help"};
     const Row quit_now{Pattern::letter(U'Q'), cmd::Quit{}, "", "end APCS; every file written so far stays"};
-    const Row key_frames{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K key frames on/off",
+    const Row key_frames{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K/T/G show",
                          "show or hide both key frames, dotted, beside the path"};
+    const Row tangents{Pattern::letter(U'T'), cmd::ToggleTangents{}, "K/T/G show",
+                       "show or hide the tangents: DD leaving each control point (solid), DS arriving (dashed)"};
+    const Row law_graph{Pattern::letter(U'G'), cmd::ToggleLawGraph{}, "K/T/G show",
+                        "show or hide the graph of distance against frame of the span's acceleration"};
+    // The same key without words on the key line, where the line is full.
+    const auto unlabelled = [](Row row) {
+        row.help = "";
+        return row;
+    };
+    const Row undo{Pattern::letter(U'U'), cmd::Undo{}, "U undo", "undo the last change of this path"};
+    const Row tangent_next{Pattern::of(Key::tab), cmd::ChoosePoint{+1}, "",
+                           "the tangents' numbers of the next control point"};
+    const Row tangent_previous{Pattern::of(Key::back_tab), cmd::ChoosePoint{-1}, "",
+                               "the tangents' numbers of the previous control point"};
     constexpr std::string_view quit_path = "end APCS without saving this path (asks first)";
 
     // Text prompts: every printable key is typed; Esc clears the line (SPEC §7.3).
@@ -73,7 +88,9 @@ std::vector<KeyBinding> make_bindings()
          Row{Pattern::of(Key::up), cmd::ChooseGlobal{}, "", "global control: the staff adjusts the whole path"},
          Row{Pattern::exactly(U'2'), cmd::ChooseLocal{}, "", "local control: pick a region of control points"},
          Row{Pattern::of(Key::down), cmd::ChooseLocal{}, "", "local control: pick a region of control points"},
-         key_frames});
+         Row{Pattern::letter(U'W'), cmd::OpenWaypoints{}, "W waypoints",
+             "the waypoint editor: insert, delete and move control points"},
+         undo, key_frames, tangents, law_graph, tangent_next, tangent_previous});
     add_graphics_rows(Context::control_choice, quit_path);
 
     // Scan_Control_Point: the message line says what 4/6 and Enter do.
@@ -83,22 +100,22 @@ std::vector<KeyBinding> make_bindings()
          Row{Pattern::exactly(U'6'), cmd::ArrowMove{+1}, "", "the arrow to the next control point"},
          Row{Pattern::of(Key::right), cmd::ArrowMove{+1}, "", "the arrow to the next control point"},
          Row{Pattern::of(Key::enter), cmd::Accept{}, "", "pick the control point the arrow points at"},
-         Row{Pattern::of(Key::escape), cmd::Back{}, "", "one step back"}, key_frames});
+         Row{Pattern::of(Key::escape), cmd::Back{}, "", "one step back"}, key_frames, tangents, law_graph});
     add_graphics_rows(Context::region_pick, quit_path);
 
     // Scan_Parameters / tnextpixel (thesis fig. 3.1.5).
     add(Context::staff,
-        {Row{Pattern::exactly(U'4'), cmd::StaffStep{-1}, "4/6 step", "the value one step left"},
+        {Row{Pattern::exactly(U'4'), cmd::StaffStep{-1}, "4/6 J/L step", "the value one step left"},
          Row{Pattern::of(Key::left), cmd::StaffStep{-1}, "", "the value one step left"},
-         Row{Pattern::exactly(U'6'), cmd::StaffStep{+1}, "4/6 step", "the value one step right"},
+         Row{Pattern::exactly(U'6'), cmd::StaffStep{+1}, "", "the value one step right"},
          Row{Pattern::of(Key::right), cmd::StaffStep{+1}, "", "the value one step right"},
-         Row{Pattern::letter(U'J'), cmd::StaffStep{-3}, "J/L 3 steps", "three steps left (Shift-J)"},
-         Row{Pattern::letter(U'L'), cmd::StaffStep{+3}, "J/L 3 steps", "three steps right (Shift-L)"},
+         Row{Pattern::letter(U'J'), cmd::StaffStep{-3}, "", "three steps left (Shift-J)"},
+         Row{Pattern::letter(U'L'), cmd::StaffStep{+3}, "", "three steps right (Shift-L)"},
+         Row{Pattern::exactly(U'='), cmd::OpenValueField{}, "= type", "type the value on the message line"},
          Row{Pattern::of(Key::enter), cmd::Accept{}, "Enter accept", "accept the value, go to the next line"},
          Row{Pattern::of(Key::escape), cmd::Keep{}, "Esc keep", "leave the line as it was, go to the next"},
-         Row{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K key frames",
-             "show or hide both key frames, dotted, beside the path"}});
-    add_graphics_rows(Context::staff, quit_path);
+         undo, key_frames, tangents, law_graph, tangent_next, tangent_previous});
+    add_graphics_rows(Context::staff, quit_path, false);
 
     // "=": the value typed on the message line, as at a text prompt.
     add(Context::value_field,
@@ -110,14 +127,14 @@ std::vector<KeyBinding> make_bindings()
          Row{Pattern::printable(), cmd::TypeCharacter{}, "", "typed into the value"}});
 
     // The waypoint editor: the keypad moves the chosen control point in the screen's plane.
-    const Row choose_next{Pattern::of(Key::tab), cmd::ChoosePoint{+1}, "Tab next", "choose the next control point"};
+    const Row choose_next{Pattern::of(Key::tab), cmd::ChoosePoint{+1}, "Tab point", "choose the next control point"};
     const Row choose_previous{Pattern::of(Key::back_tab), cmd::ChoosePoint{-1}, "",
                               "choose the previous control point"};
     add(Context::waypoints,
         {choose_next, choose_previous,
          Row{Pattern::exactly(U']'), cmd::ChoosePoint{+1}, "", "choose the next control point"},
          Row{Pattern::exactly(U'['), cmd::ChoosePoint{-1}, "", "choose the previous control point"},
-         Row{Pattern::exactly(U'4'), cmd::MovePoint{-1, 0, 0}, "4/6/8/2 move", "move the point one step left"},
+         Row{Pattern::exactly(U'4'), cmd::MovePoint{-1, 0, 0}, "2468 +- move", "move the point one step left"},
          Row{Pattern::of(Key::left), cmd::MovePoint{-1, 0, 0}, "", "move the point one step left"},
          Row{Pattern::exactly(U'6'), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
          Row{Pattern::of(Key::right), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
@@ -127,23 +144,22 @@ std::vector<KeyBinding> make_bindings()
          Row{Pattern::of(Key::down), cmd::MovePoint{0, -1, 0}, "", "move the point one step down"},
          Row{Pattern::letter(U'J'), cmd::MovePoint{-3, 0, 0}, "", "move the point three steps left (Shift-J)"},
          Row{Pattern::letter(U'L'), cmd::MovePoint{+3, 0, 0}, "", "move the point three steps right (Shift-L)"},
-         Row{Pattern::exactly(U'+'), cmd::MovePoint{0, 0, +1}, "+/- depth", "move the point toward the viewer"},
+         Row{Pattern::exactly(U'+'), cmd::MovePoint{0, 0, +1}, "", "move the point toward the viewer"},
          Row{Pattern::exactly(U'-'), cmd::MovePoint{0, 0, -1}, "", "move the point away from the viewer"},
-         Row{Pattern::letter(U'I'), cmd::InsertPoint{}, "I insert", "insert a control point after the chosen one"},
-         Row{Pattern::letter(U'D'), cmd::DeletePoint{}, "D delete", "delete the chosen control point"},
-         Row{Pattern::letter(U'U'), cmd::Undo{}, "U undo", "undo the last change"},
+         Row{Pattern::letter(U'I'), cmd::InsertPoint{}, "I/D ins/del", "insert a control point after the chosen one"},
+         Row{Pattern::letter(U'D'), cmd::DeletePoint{}, "", "delete the chosen control point"},
+         Row{Pattern::letter(U'U'), cmd::Undo{}, "U undo", "undo the last change in the editor"},
          Row{Pattern::of(Key::enter), cmd::Accept{}, "Enter keep", "leave the editor keeping the changes"},
-         Row{Pattern::of(Key::escape), cmd::Back{}, "Esc undo all", "leave the editor undoing its changes"},
-         Row{Pattern::letter(U'T'), cmd::ToggleTangents{}, "", "show or hide the tangents DS and DD"},
-         key_frames});
-    add_graphics_rows(Context::waypoints, quit_path);
+         Row{Pattern::of(Key::escape), cmd::Back{}, "Esc drop", "leave the editor undoing its changes"},
+         unlabelled(key_frames), unlabelled(tangents), unlabelled(law_graph)});
+    add_graphics_rows(Context::waypoints, quit_path, false);
 
     // Ask_Adjusting: Y again; N or Enter accepts the path; other keys are not an answer.
     add(Context::adjust_again,
         {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "adjust the path again"},
          Row{Pattern::letter(U'N'), cmd::No{}, "", "accept the path: it is written back with its values"},
          Row{Pattern::of(Key::enter), cmd::No{}, "", "accept the path: it is written back with its values"},
-         key_frames});
+         undo, key_frames, tangents, law_graph, tangent_next, tangent_previous});
     add_graphics_rows(Context::adjust_again, quit_path);
 
     // Showing_Animation.

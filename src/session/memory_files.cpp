@@ -4,12 +4,12 @@
 
 namespace apcs {
 
-Expected<DatFile> MemoryFiles::read_dat(const std::string& name, std::size_t minimum_points)
+Expected<std::string> MemoryFiles::read_text(const std::string& name)
 {
     const auto found = files.find(name);
     if (found == files.end())
         return Diagnostic{name, 0, "cannot open: No such file or directory"};
-    return parse_dat(found->second, name, minimum_points);
+    return found->second;
 }
 
 void MemoryFiles::protect_key_file(const std::string& name) { m_key_files.protect(name); }

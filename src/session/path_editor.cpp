@@ -1,10 +1,9 @@
 #include "apcs/session/path_editor.h"
 
 #include "apcs/animation/input_limits.h"
-#include "apcs/session/path_screen.h"
+#include "apcs/session/path_overlays.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/session_text.h"
-#include "apcs/session/world_drawing.h"
 
 #include <algorithm>
 #include <cassert>
@@ -20,18 +19,25 @@ namespace {
 // Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
 double snapped(double value) { return limits::staff_value.clamp(std::round(value * 1e9) / 1e9); }
 
-ViewTransform initial_view(const PathEditor::Setup& setup, const EvaluatedPath& path)
-{
-    PathScreenContent shown = path_screen_content(setup.points, path);
-    shown.key_frame_polylines = setup.key_frame_polylines;
-    return path_screen_scene(shown).fit(setup.view_angles, layout::view_area);
-}
-
 std::vector<std::size_t> origins_of(std::size_t point_count)
 {
     std::vector<std::size_t> origins(point_count);
     std::iota(origins.begin(), origins.end(), std::size_t{0});
     return origins;
+}
+
+// Tab past the last control point comes back to the first.
+std::size_t wrapped(std::size_t index, int by, std::size_t count)
+{
+    const auto n = static_cast<long long>(count);
+    return static_cast<std::size_t>(((static_cast<long long>(index) + by) % n + n) % n);
+}
+
+ViewTransform fitted_view(const PathEditor::Setup& setup, const EvaluatedPath& path)
+{
+    PathScreenContent shown = path_screen_content(setup.points, path);
+    shown.key_frame_polylines = setup.key_frame_polylines;
+    return path_screen_scene(shown).fit(setup.view_angles, layout::view_area);
 }
 
 } // namespace
@@ -41,13 +47,28 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     , m_origins(origins_of(m_setup.points.size()))
     , m_log(log)
     , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
-    , m_view(initial_view(m_setup, m_evaluated))
+    , m_view(fitted_view(m_setup, m_evaluated))
+    , m_tangent_scale(tangent_arrow_scale(m_setup.points, m_view))
 {
     assert(m_setup.points.size() >= 2);
 }
 
+// Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
+// against a still picture; the waypoint editor fits it again when it is left.
+void PathEditor::fit_view()
+{
+    m_view = fitted_view(m_setup, m_evaluated);
+    m_tangent_scale = tangent_arrow_scale(m_setup.points, m_view);
+}
+
+SessionPhase PathEditor::phase() const { return m_waypoints ? SessionPhase::waypoints : m_phase; }
+
 KeyContext PathEditor::key_context() const
 {
+    if (m_waypoints)
+        return KeyContext::waypoints;
+    if (m_field)
+        return KeyContext::value_field;
     switch (m_phase) {
     case SessionPhase::choose_control: return KeyContext::control_choice;
     case SessionPhase::pick_region_first:
@@ -65,8 +86,19 @@ void PathEditor::show_problem(const std::string& message)
 
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
-    if (std::holds_alternative<command::ToggleKeyFrames>(command)) {
-        m_show_key_frames = !m_show_key_frames;
+    m_notice.clear();
+    if (update_views(command))
+        return Outcome::editing;
+    if (m_waypoints) {
+        update_waypoints(command);
+        return Outcome::editing;
+    }
+    if (m_field) {
+        update_value_field(command);
+        return Outcome::editing;
+    }
+    if (std::holds_alternative<command::Undo>(command)) {
+        undo();
         return Outcome::editing;
     }
     switch (m_phase) {
@@ -79,6 +111,22 @@ PathEditor::Outcome PathEditor::update(const Command& command)
     return Outcome::editing;
 }
 
+// K, T, G and Tab change what is shown, never the path.
+bool PathEditor::update_views(const Command& command)
+{
+    if (std::holds_alternative<command::ToggleKeyFrames>(command))
+        m_show_key_frames = !m_show_key_frames;
+    else if (std::holds_alternative<command::ToggleTangents>(command))
+        m_show_tangents = !m_show_tangents;
+    else if (std::holds_alternative<command::ToggleLawGraph>(command))
+        m_show_law = !m_show_law;
+    else if (const auto* choose = std::get_if<command::ChoosePoint>(&command); choose != nullptr && !m_waypoints)
+        m_tangent_point = wrapped(m_tangent_point, choose->by, m_setup.points.size());
+    else
+        return false;
+    return true;
+}
+
 void PathEditor::check_global_or_local_control(const Command& command)
 {
     if (std::holds_alternative<command::ChooseGlobal>(command)) {
@@ -87,6 +135,8 @@ void PathEditor::check_global_or_local_control(const Command& command)
     } else if (std::holds_alternative<command::ChooseLocal>(command)) {
         m_arrow.reset();
         m_phase = SessionPhase::pick_region_first;
+    } else if (std::holds_alternative<command::OpenWaypoints>(command)) {
+        open_waypoints();
     }
 }
 
@@ -106,13 +156,16 @@ void PathEditor::scan_control_point(const Command& command)
             m_region_first = *m_arrow;
             m_problem.clear();
             m_phase = SessionPhase::pick_region_last;
-        } else if (*m_arrow <= m_region_first) {
+        } else if (*m_arrow < m_region_first) {
             m_problem = "The last control point must come after the first (point " +
                         std::to_string(m_region_first + 1) + ")";
         } else {
+            // Enter twice on one control point picks it alone: KB's per-key control.
             m_problem.clear();
-            m_log.log("local control: control points " + std::to_string(m_region_first + 1) + " to " +
-                      std::to_string(*m_arrow + 1));
+            m_log.log(*m_arrow == m_region_first
+                          ? "local control: control point " + std::to_string(m_region_first + 1)
+                          : "local control: control points " + std::to_string(m_region_first + 1) + " to " +
+                                std::to_string(*m_arrow + 1));
             start_staff({m_region_first, *m_arrow});
         }
     }
@@ -120,18 +173,25 @@ void PathEditor::scan_control_point(const Command& command)
 
 void PathEditor::start_staff(ControlRegion region)
 {
-    assert(region.first < region.last && region.last < m_setup.points.size());
+    assert(region.first <= region.last && region.last < m_setup.points.size());
     m_region = region;
     m_staff = m_setup.points[region.first].staff;
     m_line = StaffLine::tension;
     m_line_start_value = m_staff[m_line];
+    m_tangent_point = region.is_whole(m_setup.points) ? 1 : region.first;
     m_phase = SessionPhase::staff;
 }
 
+// Every value that changes a point is one change for undo; a key that changes nothing (a step
+// past the end of the line) is not.
 void PathEditor::set_staff_value(double value)
 {
+    StaffChange change{m_region, m_line, m_staff, m_line_start_value, staff_runs(m_setup.points, m_region)};
     m_staff[m_line] = snapped(value);
     apply_staff_to_region(m_setup.points, m_region, m_staff);
+    if (m_staff == change.staff && staff_runs(m_setup.points, m_region) == change.points_before)
+        return;
+    m_history.push_back(std::move(change));
     m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
 }
 
@@ -140,18 +200,43 @@ void PathEditor::scan_parameters(const Command& command)
 {
     if (const auto* step = std::get_if<command::StaffStep>(&command))
         return set_staff_value(m_staff[m_line] + step->steps * m_setup.staff_step);
-    const bool keep = std::holds_alternative<command::Keep>(command);
-    if (!keep && !std::holds_alternative<command::Accept>(command))
-        return;
+    if (std::holds_alternative<command::OpenValueField>(command))
+        m_field.emplace();
+    else if (std::holds_alternative<command::Keep>(command))
+        accept_staff_line(true);
+    else if (std::holds_alternative<command::Accept>(command))
+        accept_staff_line(false);
+}
+
+void PathEditor::accept_staff_line(bool keep)
+{
     if (keep)
         set_staff_value(m_line_start_value);
     m_log.log(std::string(staff_line_name(m_line)) + " " + format_staff_value(m_staff[m_line]) + (keep ? " (kept)" : ""));
-    if (is_last_staff_line(m_line)) {
+    // A single control point starts no span of its own: its acceleration line is skipped.
+    const bool last_line = is_last_staff_line(m_line) || (single_point_region() && m_line == StaffLine::bias);
+    if (last_line) {
         m_phase = SessionPhase::ask_again;
         return;
     }
     m_line = next_staff_line(m_line);
     m_line_start_value = m_staff[m_line];
+}
+
+// "=": the typed value sets the line like keys would; the line stays active.
+void PathEditor::update_value_field(const Command& command)
+{
+    const ValueField::Outcome outcome = m_field->update(command);
+    if (outcome == ValueField::Outcome::editing)
+        return;
+    if (outcome == ValueField::Outcome::set) {
+        set_staff_value(m_field->value());
+        m_log.log(std::string(staff_line_name(m_line)) + " typed " + format_staff_value(m_staff[m_line]));
+        if (const std::optional<double> typed = m_field->unclamped())
+            m_notice = std::string(staff_line_name(m_line)) + " set to " + format_staff_value(m_staff[m_line]) +
+                       ": the staff runs from -1 to 1";
+    }
+    m_field.reset();
 }
 
 PathEditor::Outcome PathEditor::ask_adjusting(const Command& command)
@@ -163,54 +248,78 @@ PathEditor::Outcome PathEditor::ask_adjusting(const Command& command)
     return std::holds_alternative<command::No>(command) ? Outcome::accepted : Outcome::editing;
 }
 
-std::string PathEditor::message() const
+void PathEditor::undo()
 {
-    if (!m_problem.empty())
-        return m_problem;
-    switch (m_phase) {
-    case SessionPhase::choose_control: return std::string(text::choose_control);
-    case SessionPhase::pick_region_first: return std::string(text::pick_first);
-    case SessionPhase::pick_region_last: return std::string(text::pick_last);
-    case SessionPhase::staff: return staff_message();
-    default: return std::string(text::ask_again);
+    if (m_history.empty()) {
+        m_notice = "Nothing to undo: the path is as it was opened";
+        return;
     }
+    const Change change = std::move(m_history.back());
+    m_history.pop_back();
+    m_problem.clear();
+    std::visit([this](const auto& last) { undo_change(last); }, change);
+    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    m_notice += "; " + std::to_string(m_history.size()) + (m_history.size() == 1 ? " change" : " changes") +
+                " left to undo";
+    m_log.log(m_notice);
 }
 
-std::string PathEditor::staff_message() const
+// Back to the staff line the change was made on, with the staff as it was.
+void PathEditor::undo_change(const StaffChange& change)
 {
-    const std::string line(staff_line_name(m_line));
-    // A path of two control points has no interior one, where t, c and b act: say so, or the
-    // animator sees nothing move and cannot tell why.
-    if (m_setup.points.size() == 2 && m_line != StaffLine::acceleration)
-        return line + std::string(text::no_interior_points);
-    std::string message = m_setup.path_name + ": " + line + "  control points " + std::to_string(m_region.first + 1) +
-                          " to " + std::to_string(m_region.last + 1) + " of " + std::to_string(m_setup.points.size());
-    if (m_evaluated.frames_freeze)
-        message += "  (" + std::string(text::frames_freeze) + ")";
-    return message;
+    restore_staff_runs(m_setup.points, change.region, change.points_before);
+    m_region = change.region;
+    m_staff = change.staff;
+    m_line = change.line;
+    m_line_start_value = change.line_start_value;
+    m_phase = SessionPhase::staff;
+    m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
+               format_staff_value(change.staff[change.line]);
 }
 
-GraphicsScreen PathEditor::view() const
+// A waypoint edit is undone at the choice of control, where the editor was opened.
+void PathEditor::undo_change(const WaypointChange& change)
 {
-    PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
-    const bool adjusting = m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again;
-    if (adjusting) {
-        content.staff = m_staff;
-        content.region = std::pair{m_region.first, m_region.last};
+    revert_change(m_setup.points, m_origins, change);
+    const std::string point = "control point " + std::to_string(change.index + 1);
+    switch (change.kind) {
+    case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;
+    case WaypointChange::Kind::remove: m_notice = "Undone: the deletion of " + point; break;
+    case WaypointChange::Kind::move: m_notice = "Undone: the move of " + point; break;
     }
-    if (m_phase == SessionPhase::staff)
-        content.active_line = m_line;
-    if (m_phase == SessionPhase::pick_region_last)
-        content.region = std::pair{m_region_first, m_region_first};
-    if (m_phase == SessionPhase::pick_region_first || m_phase == SessionPhase::pick_region_last) {
-        content.arrow_at = m_arrow;
-        content.arrow_home = !m_arrow.has_value();
+    m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
+    m_phase = SessionPhase::choose_control;
+}
+
+void PathEditor::open_waypoints()
+{
+    PathScreenContent shown = path_screen_content(m_setup.points, m_evaluated);
+    shown.key_frame_polylines = m_setup.key_frame_polylines;
+    m_waypoints.emplace(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
+                                              waypoint_step(path_screen_scene(shown).points())});
+    m_log.log("waypoint editor");
+}
+
+void PathEditor::update_waypoints(const Command& command)
+{
+    const WaypointEditor::Outcome outcome = m_waypoints->update(command);
+    if (outcome == WaypointEditor::Outcome::editing)
+        return;
+    const std::size_t changes = m_waypoints->changes().size();
+    if (outcome == WaypointEditor::Outcome::kept) {
+        m_history.insert(m_history.end(), m_waypoints->changes().begin(), m_waypoints->changes().end());
+        m_setup.points = m_waypoints->points();
+        m_origins = m_waypoints->origins();
+        m_evaluated = m_waypoints->evaluated();
+        m_notice = "Waypoints: " + std::to_string(changes) + (changes == 1 ? " change" : " changes") + " kept, " +
+                   std::to_string(m_setup.points.size()) + " control points";
+    } else {
+        m_notice = "Waypoints: " + std::to_string(changes) + (changes == 1 ? " change" : " changes") + " undone";
     }
-    if (m_show_key_frames)
-        content.key_frame_polylines = m_setup.key_frame_polylines;
-    content.message = message();
-    content.key_help = key_help(key_context());
-    return draw_path_screen(content, m_view);
+    m_log.log(m_notice);
+    m_waypoints.reset();
+    m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
+    fit_view();
 }
 
 } // namespace apcs

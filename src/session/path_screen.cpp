@@ -2,6 +2,7 @@
 
 #include "apcs/raster/painter.h"
 #include "apcs/geometry/hercules.h"
+#include "apcs/session/path_overlays.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/world_drawing.h"
 
@@ -115,6 +116,13 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         // DRAW: the KB curve, sampled.
         draw_world_polyline(inside, content.path->curve.points, view);
         draw_ani_path(screen, *content.path, view);
+        if (content.tangent_scale) {
+            draw_tangent_arrows(screen, inside, content.path->segments, view, *content.tangent_scale);
+            // An arrow's line is clipped at the boundary; its end mark must not sit on it or beside it.
+            std::erase_if(screen.marks, [](const PixelMark& mark) {
+                return mark.kind == MarkKind::tangent_end && !layout::view_area.contains(mark.at);
+            });
+        }
     }
     pre_draw(screen, content, view);
     draw_arrow(screen, content, view);
@@ -123,6 +131,8 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         screen.text.push_back({1, layout::message_row, content.message});
     if (!content.key_help.empty())
         screen.text.push_back({1, layout::key_help_row, content.key_help});
+    if (content.path != nullptr && content.law_span)
+        draw_law_inset(screen, *content.path, *content.law_span);
     return screen;
 }
 

@@ -28,6 +28,7 @@ const char* phase_name(SessionPhase phase)
     case SessionPhase::pick_region_first: return "step 3: first control point of the region";
     case SessionPhase::pick_region_last: return "step 3: last control point of the region";
     case SessionPhase::staff: return "step 4: four-line staff";
+    case SessionPhase::waypoints: return "step 3: waypoint editor";
     case SessionPhase::ask_again: return "step 5: adjust again";
     case SessionPhase::ask_next_path: return "step 5: next path";
     case SessionPhase::ask_stop: return "step 6: stop the work";

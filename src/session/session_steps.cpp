@@ -172,9 +172,10 @@ void Session::read_data_file(const std::string& name)
         return ask_again(SessionPhase::ask_path_file,
                          name + ": expected a file in the session's folder (no leading '/', no '..', no link "
                                 "out of it), since APCS rewrites it");
-    const Expected<DatFile> file = m_files.read_dat(name, 2);
-    if (!file)
-        return ask_again(SessionPhase::ask_path_file, file.error().to_string());
+    Expected<DatText> read = m_files.read_dat_text(name, 2);
+    if (!read)
+        return ask_again(SessionPhase::ask_path_file, read.error().to_string());
+    const DatFile* file = &read->file;
     // A closed graphic's second path starts from the first path's values, as the thesis says.
     const bool closed_second = m_path == 1 && m_keys.key1.is_closed() && !m_points[0].empty();
     const StaffValues defaults = closed_second ? m_points[0].front().staff : m_settings.staff;
@@ -186,6 +187,7 @@ void Session::read_data_file(const std::string& name)
         return ask_again(SessionPhase::ask_path_file, name + ": " + *refused);
     // Accepting rewrites the file that was read, whatever case the name was typed in.
     m_path_names[static_cast<std::size_t>(m_path)] = m_files.name_read(name);
+    m_path_texts[static_cast<std::size_t>(m_path)] = std::move(read->text);
     m_points[static_cast<std::size_t>(m_path)] = std::move(*points);
     m_files.log("path " + name + ": " + std::to_string(file->point_count()) + " control points");
     m_first_slope.reset();
@@ -240,11 +242,22 @@ void Session::initial_graphics()
                                m_files);
 }
 
+// The path file as read, with its points replaced by the editor's in seven columns and its
+// comments kept.
+std::string Session::rewritten_path_file(const PathEditor& editor) const
+{
+    const std::string& text = m_path_texts[static_cast<std::size_t>(m_path)];
+    const Expected<DatFile> original = parse_dat(text, editor.path_name());
+    if (!original)
+        return format_dat(dat_from(editor.points()));
+    return format_path_file(text, *original, editor.points(), editor.point_origins());
+}
+
 // Step 5: the path accepted is written back with its staff values.
 void Session::accept_path(PathEditor& editor)
 {
     const auto index = static_cast<std::size_t>(m_path);
-    if (auto problem = write_file(editor.path_name(), format_dat(dat_from(editor.points()))))
+    if (auto problem = write_file(editor.path_name(), rewritten_path_file(editor)))
         return editor.show_problem(problem->to_string());
     record_written(editor.path_name());
     m_points[index] = editor.points();

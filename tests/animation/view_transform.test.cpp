@@ -67,3 +67,29 @@ TEST_CASE("a scene of one point is drawn at the centre", "[animation][view]")
     const ViewTransform view = ViewTransform::fit({30, 40}, scene, full_screen);
     REQUIRE(view.to_device({4, 4, 4}).rounded() == PixelPoint{360, 174});
 }
+
+TEST_CASE("the screen's axes in the world: right, up the screen and toward the viewer", "[animation][view]")
+{
+    const std::vector<Vec3> scene{{-1, -1, -1}, {1, 1, 1}};
+    for (const ViewAngles angles : {ViewAngles{30, 40}, ViewAngles{0, 90}, ViewAngles{-90, 0}, ViewAngles{200, 130}}) {
+        const ViewTransform view = ViewTransform::fit(angles, scene, full_screen);
+        const Vec3 point{0.2, -0.1, 0.3};
+        const DevicePoint at = view.to_device(point);
+        const EyePoint eye = view.to_eye(point);
+        const DevicePoint right = view.to_device(point + 0.1 * view.screen_right());
+        const DevicePoint up = view.to_device(point + 0.1 * view.screen_up());
+        const EyePoint nearer = view.to_eye(point + 0.1 * view.toward_viewer());
+        REQUIRE(right.x > at.x);
+        REQUIRE(right.y == Approx(at.y));
+        REQUIRE(up.y < at.y);
+        // Along an eye axis only that eye coordinate changes, by the distance moved.
+        const EyePoint eye_right = view.to_eye(point + 0.1 * view.screen_right());
+        REQUIRE(eye_right.x - eye.x == Approx(0.1));
+        REQUIRE(eye_right.y == Approx(eye.y));
+        REQUIRE(eye_right.z == Approx(eye.z));
+        REQUIRE(view.to_eye(point + 0.1 * view.screen_up()).y - eye.y == Approx(0.1));
+        REQUIRE(eye.z - nearer.z == Approx(0.1));
+        REQUIRE(nearer.x == Approx(eye.x));
+        REQUIRE(nearer.y == Approx(eye.y));
+    }
+}

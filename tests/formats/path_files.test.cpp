@@ -48,3 +48,53 @@ TEST_CASE("a path is checked against the ends of its own graphic point", "[forma
     REQUIRE(wrong_end.error().to_string() ==
             "way4.dat:2: the path ends at (0, 5, 1); expected the last graphic point's KEY2 position (0, 5, 0)");
 }
+
+namespace {
+
+ControlPoints points_of(const DatFile& file)
+{
+    return control_points_from(file, StaffValues{});
+}
+
+std::vector<std::size_t> identity_origins(std::size_t count)
+{
+    std::vector<std::size_t> origins(count);
+    for (std::size_t k = 0; k < count; ++k)
+        origins[k] = k;
+    return origins;
+}
+
+} // namespace
+
+TEST_CASE("a rewritten path file keeps its comments, blank lines and line-end comments where they were", "[formats][path-files]")
+{
+    const std::string text = "; way1: the N's first point\n\n0 0 0 ; KEY1\n; the bend\n3 -4 5\n0 0 10\n; end\n";
+    const DatFile file = *parse_dat(text, "way1.dat");
+    ControlPoints points = points_of(file);
+    points[1].staff.tension = 0.25;
+    REQUIRE(format_path_file(text, file, points, identity_origins(3)) ==
+            "; way1: the N's first point\n\n0 0 0 0 0 0 0 ; KEY1\n; the bend\n3 -4 5 0.25 0 0 0\n0 0 10 0 0 0 0\n; end\n");
+}
+
+TEST_CASE("an inserted point gets a line after the point before it; a deleted one's comments stay", "[formats][path-files]")
+{
+    const std::string text = "0 0 0\n; before the bend\n3 -4 5\n; before the end\n0 0 10\n";
+    const DatFile file = *parse_dat(text, "way1.dat");
+    const ControlPoints read = points_of(file);
+    const ControlPoints points{read[0], {{1, 1, 1}, {}}, read[2]};
+    // Point 1 (3 -4 5) deleted, a new point inserted after the first.
+    REQUIRE(format_path_file(text, file, points, std::vector<std::size_t>{0, new_point, 2}) ==
+            "0 0 0 0 0 0 0\n1 1 1 0 0 0 0\n; before the bend\n; before the end\n0 0 10 0 0 0 0\n");
+}
+
+TEST_CASE("a CRLF path file stays CRLF; one without comments is exactly format_dat's text", "[formats][path-files]")
+{
+    const std::string crlf = "; header\r\n0 0 0\r\n0 0 10\r\n";
+    const DatFile crlf_file = *parse_dat(crlf, "a.dat");
+    REQUIRE(format_path_file(crlf, crlf_file, points_of(crlf_file), identity_origins(2)) ==
+            "; header\r\n0 0 0 0 0 0 0\r\n0 0 10 0 0 0 0\r\n");
+    const std::string plain = "0 0 0\n3 -4 5 0.1 0.2 0.3 0.4\n0 0 10";
+    const DatFile plain_file = *parse_dat(plain, "b.dat");
+    REQUIRE(format_path_file(plain, plain_file, points_of(plain_file), identity_origins(3)) ==
+            format_dat(dat_from(points_of(plain_file))));
+}

@@ -1,20 +1,20 @@
 #include "apcs/session/animation_player.h"
 #include "apcs/session/path_editor.h"
 
+#include "support/session_keys.h"
+
 #include <catch2/catch.hpp>
 
 #include <string>
 #include <vector>
 
 using namespace apcs;
+using apcs::test::apply;
+using apcs::test::LogLines;
+using apcs::test::message_of;
 namespace cmd = apcs::command;
 
 namespace {
-
-struct LogLines final : SessionLog {
-    std::vector<std::string> lines;
-    void log(const std::string& line) override { lines.push_back(line); }
-};
 
 PathEditor::Setup four_point_path()
 {
@@ -24,20 +24,6 @@ PathEditor::Setup four_point_path()
         setup.points.push_back({position, {}});
     setup.settings = {{1, 1}, 8, 5, Spacing::nearest};
     return setup;
-}
-
-std::string message_of(const GraphicsScreen& screen)
-{
-    for (const TextLine& line : screen.text)
-        if (line.row == 18)
-            return line.text;
-    return {};
-}
-
-void apply(PathEditor& editor, std::initializer_list<Command> commands)
-{
-    for (const Command& command : commands)
-        REQUIRE(editor.update(command) == PathEditor::Outcome::editing);
 }
 
 } // namespace

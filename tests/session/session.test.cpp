@@ -8,20 +8,16 @@
 #include "support/png_pixels.h"
 #include "support/xml_elements.h"
 
+#include "support/session_keys.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 
 using namespace apcs;
+using apcs::test::type;
 
 namespace {
-
-void type(Session& session, const std::string& line)
-{
-    for (const char c : line)
-        session.handle(c == ' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(static_cast<char32_t>(c)));
-    session.handle(KeyEvent::of(Key::enter));
-}
 
 void press(Session& session, std::initializer_list<KeyEvent> keys)
 {
@@ -458,7 +454,7 @@ TEST_CASE("a path of two control points says that t, c and b act at interior poi
     type(session, ""); // ani1.dat, as split wrote it: two control points
     type(session, "");
     press(session, {ch('8')});
-    REQUIRE(graphics_message(session) == "TENSION acts at interior control points: add waypoints (manual 4)");
+    REQUIRE(graphics_message(session) == "TENSION acts at interior control points: add one with W at the 8/2 choice");
     press(session, {enter, enter, enter});
     REQUIRE(graphics_message(session).starts_with("ani1.dat: ACCELERATION  control points 1 to 2 of 2"));
 }

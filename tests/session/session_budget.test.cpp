@@ -1,20 +1,16 @@
 #include "apcs/session/session.h"
 #include "apcs/session/session_files.h"
 
+#include "support/session_keys.h"
+
 #include <catch2/catch.hpp>
 
 #include <string>
 
 using namespace apcs;
+using apcs::test::type;
 
 namespace {
-
-void type(Session& session, const std::string& line)
-{
-    for (const char c : line)
-        session.handle(c == ' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(static_cast<char32_t>(c)));
-    session.handle(KeyEvent::of(Key::enter));
-}
 
 std::string without_blanks(std::string text)
 {

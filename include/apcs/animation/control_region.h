@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 
 #include <cstddef>
+#include <vector>
 
 namespace apcs {
 
@@ -23,5 +24,16 @@ struct ControlRegion {
 // point keeps its own: it starts the span after the region, unless the region is the whole path.
 // Values are clamped to [-1, 1]; a region outside the path changes only the points inside it.
 void apply_staff_to_region(ControlPoints& points, ControlRegion region, const StaffValues& staff);
+
+// The staff values of a region's control points, run-length encoded (a run of equal values is one
+// entry), so that undoing a key on a whole path of 10^6 points of one value keeps one entry.
+struct StaffRun {
+    std::size_t count = 0;
+    StaffValues staff;
+    friend bool operator==(const StaffRun&, const StaffRun&) = default;
+};
+std::vector<StaffRun> staff_runs(const ControlPoints& points, ControlRegion region);
+// Gives the region's control points back the values `runs` holds (staff_runs of the same region).
+void restore_staff_runs(ControlPoints& points, ControlRegion region, const std::vector<StaffRun>& runs);
 
 } // namespace apcs

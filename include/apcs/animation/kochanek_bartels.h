@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/hermite.h"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -23,5 +24,14 @@ Vec3 outgoing_tangent(const Vec3& previous, const Vec3& current, const Vec3& nex
 // each slope clamped to [0, 1] (limits::end_slope); interior tangents clamp t, c, b as above.
 // Fewer than two control points give no segments.
 std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, EndSlopes slopes);
+
+// The tangents at control point `point` of a path made of `segments` (kb_segments): DS, the
+// incoming one, is segment point−1's end tangent; DD, the outgoing one, segment point's start
+// tangent. The first control point has no DS, the last no DD; a point past the end has neither.
+struct PointTangents {
+    std::optional<Vec3> incoming; // DS_k
+    std::optional<Vec3> outgoing; // DD_k
+};
+PointTangents tangents_at(std::span<const HermiteSegment> segments, std::size_t point);
 
 } // namespace apcs

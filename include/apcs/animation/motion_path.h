@@ -45,12 +45,25 @@ struct Inbetween {
     std::size_t sample_index = 0;
 };
 
+// How one acceleration span shares the path's time and length: where it starts and how long it
+// is, as fractions of the whole path in the measure of the spacing (chord length for `nearest`,
+// arc length for `exact`), and which in-betweens fall in it.
+struct SpanTiming {
+    AccelerationSpan span;
+    double start_fraction = 0.0;
+    double length_fraction = 0.0;
+    std::size_t first_inbetween = 0;
+    std::size_t inbetween_count = 0;
+};
+
 // One graphic point's path, evaluated: the KB segments, the sampled curve and the shown
 // in-betweens (thesis DRAW, Cal_tangent_vector, Cal_INBETWEENS, Decide_Show_Inbetween).
 struct EvaluatedPath {
     std::vector<HermiteSegment> segments;
     SampledCurve curve;
     std::vector<Inbetween> inbetweens;
+    // The spans in path order (empty for a path of zero length or of fewer than two points).
+    std::vector<SpanTiming> span_timings;
     // Some frames repeat ("freeze"): with nearest spacing two in-betweens fall on the same sample
     // (more in-betweens than samples, or a strong acceleration on a short span). Exact spacing
     // never repeats a position on a path of some length.

@@ -54,6 +54,12 @@ public:
     EyePoint to_eye(const Vec3& world) const;
     DevicePoint to_device(const Vec3& world) const;
 
+    // Unit vectors in world coordinates along the screen's right and up, and toward the viewer:
+    // a point moved along them moves right, up the screen, and nearer the eye (smaller z_e).
+    Vec3 screen_right() const;
+    Vec3 screen_up() const;
+    Vec3 toward_viewer() const;
+
     double viewer_distance() const { return m_viewer_distance; }
     double focus() const { return m_focus; }
     Vec3 centre() const { return m_centre; }

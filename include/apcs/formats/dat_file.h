@@ -50,6 +50,10 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 // values get all seven columns.
 std::string format_dat(const DatFile& file);
 
+// One point line as format_dat writes it (three columns, or seven with staff values), without
+// its line end.
+void append_point_line(std::string& text, const Vec3& position, const std::optional<StaffValues>& staff);
+
 // A graphic with the parts of `structure` and the point sequence `points` (as many as the parts
 // hold), formatted like format_dat; no copy of the points is made.
 std::string format_graphic(const Graphic& structure, std::span<const Vec3> points);

@@ -4,11 +4,14 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/animation/waypoint_change.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/diagnostic.h"
 
 #include <filesystem>
 #include <optional>
+#include <span>
+#include <string_view>
 #include <string>
 #include <vector>
 
@@ -65,6 +68,15 @@ enum class PathEnd { first, last };
 // A path file's control points with their staff values, as written back after adjusting (all
 // seven columns).
 DatFile dat_from(const ControlPoints& points);
+
+// A path file rewritten after adjusting: `original_text` (parsed as `original`) with its point
+// lines replaced by `points` in seven columns; every other line (comments, blank lines, PART
+// lines) stays where it was among the points. `origins` runs parallel to `points`: each point's
+// index among the original's points, or new_point (waypoint_change.h) for an inserted one, which
+// gets a line of its own after the point before it. The comments before a deleted point stay,
+// before the next point kept. CRLF line ends stay CRLF.
+std::string format_path_file(std::string_view original_text, const DatFile& original, const ControlPoints& points,
+                             std::span<const std::size_t> origins);
 
 // "(x, y, z)" with the shortest exact numbers, for messages.
 std::string describe_point(const Vec3& point);

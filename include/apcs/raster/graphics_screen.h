@@ -25,6 +25,7 @@ enum class MarkKind {
     inbetween,     // `*` in ascii, `•` elsewhere; pixels: a 3x3 square (Draw_Ani_Path)
     arrow,         // `>` in ascii, `→` elsewhere, in the cell left of `at`; pixels: an arrow
     staff_value,   // `O`; pixels: two short vertical lines around the value
+    tangent_end,   // `+`: the free end of a tangent arrow (the handle); pixels: a plus of 5x5
 };
 
 // A mark at a raster pixel. A reverse-styled control point is one of the picked region: reverse

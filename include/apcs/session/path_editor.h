@@ -8,11 +8,15 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
 #include "apcs/session/key_map.h"
+#include "apcs/session/path_screen.h"
 #include "apcs/session/session_log.h"
 #include "apcs/session/session_phase.h"
+#include "apcs/session/value_field.h"
+#include "apcs/session/waypoint_editor.h"
 
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace apcs {
@@ -22,6 +26,10 @@ namespace apcs {
 // (Scan_Control_Point), the four-line staff (Scan_Parameters, one Scan_*_Value per line, one
 // tnextpixel per key) and the question whether to adjust again (Ask_Adjusting). It owns the path
 // being shaped; the session takes it back when the animator accepts it.
+//
+// Beyond the 1989 screen (thesis Ch. 6's future work): the tangents (T) and the law of the span (G)
+// drawn over the path, a typed value on a staff line (=), the waypoint editor (W), a region of one
+// control point, and undo (U) of every change since the path was opened.
 class PathEditor {
 public:
     struct Setup {
@@ -42,7 +50,7 @@ public:
     Outcome update(const Command& command);
     GraphicsScreen view() const;
 
-    SessionPhase phase() const { return m_phase; }
+    SessionPhase phase() const;
     KeyContext key_context() const;
     const std::string& path_name() const { return m_setup.path_name; }
     const ControlPoints& points() const { return m_setup.points; }
@@ -54,23 +62,50 @@ public:
     void show_problem(const std::string& message);
 
 private:
+    // A key on the staff: the staff, the region and the line as they were, and the region's
+    // points' values before it.
+    struct StaffChange {
+        ControlRegion region;
+        StaffLine line = StaffLine::tension;
+        StaffValues staff;
+        double line_start_value = 0.0;
+        std::vector<StaffRun> points_before;
+    };
+    using Change = std::variant<StaffChange, WaypointChange>;
+
+    bool update_views(const Command& command);
     void check_global_or_local_control(const Command& command);
     void scan_control_point(const Command& command);
     void scan_parameters(const Command& command);
+    void accept_staff_line(bool keep);
     Outcome ask_adjusting(const Command& command);
     void start_staff(ControlRegion region);
     void set_staff_value(double value);
+    void update_value_field(const Command& command);
+    void open_waypoints();
+    void update_waypoints(const Command& command);
+    void undo();
+    void undo_change(const StaffChange& change);
+    void undo_change(const WaypointChange& change);
+    void fit_view();
+    bool single_point_region() const { return m_region.first == m_region.last; }
+    std::size_t law_point() const;
     std::string message() const;
     std::string staff_message() const;
+    PathScreenContent screen_content() const;
 
     Setup m_setup;
     std::vector<std::size_t> m_origins;
     SessionLog& m_log;
     EvaluatedPath m_evaluated;
     ViewTransform m_view;
+    // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
+    double m_tangent_scale;
     SessionPhase m_phase = SessionPhase::choose_control;
     bool m_show_key_frames = false;
     std::string m_problem;
+    // What the last key did, said once on the message line (an undo, a clamped value).
+    std::string m_notice;
 
     // Scan_Control_Point: the arrow waits at the top-left until moved; the region's first point
     // once picked.
@@ -83,6 +118,15 @@ private:
     StaffValues m_staff;
     StaffLine m_line = StaffLine::tension;
     double m_line_start_value = 0.0;
+    std::optional<ValueField> m_field;
+
+    bool m_show_tangents = false;
+    std::size_t m_tangent_point = 1;
+    bool m_show_law = false;
+
+    std::optional<WaypointEditor> m_waypoints;
+    // Every change since the path was opened, oldest first: U takes back the last.
+    std::vector<Change> m_history;
 };
 
 } // namespace apcs

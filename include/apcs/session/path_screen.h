@@ -28,6 +28,10 @@ struct PathScreenContent {
     bool arrow_home = false;
     // Key frames drawn beside the path (thesis Ch. 6, item 2), dim: dotted.
     std::vector<std::vector<Vec3>> key_frame_polylines;
+    // T: the tangents at every control point, drawn as tangent x this scale (path_overlays.h).
+    std::optional<double> tangent_scale;
+    // G: the inset graph of this acceleration span's law.
+    std::optional<std::size_t> law_span;
     std::string message;
     std::string key_help;
 };

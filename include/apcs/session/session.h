@@ -141,6 +141,7 @@ private:
     void predefine_ends_slope(const std::string& line);
     void initial_graphics();
     void accept_path(PathEditor& editor);
+    std::string rewritten_path_file(const PathEditor& editor) const;
     void adjust_next_path(const std::string&);
     void surface_fitting(const std::string&);
     void showing_animation(const std::string&);
@@ -175,6 +176,8 @@ private:
     // The path being asked for or shaped: 0, the first graphic point's; 1, the last's.
     int m_path = 0;
     std::array<std::string, 2> m_path_names;
+    // The path files' text as read: accepting rewrites it with its comments.
+    std::array<std::string, 2> m_path_texts;
     std::array<ControlPoints, 2> m_points;
     std::array<EndSlopes, 2> m_slopes;
     // DS[0] typed alone on its line, waiting for DD[N] (fig. 4.2.3).

@@ -17,9 +17,19 @@ namespace apcs {
 
 // The session's only door to files, so that its steps stay free of I/O and can be driven in tests
 // with any store. Names are as typed at the prompts; diagnostics name them the same way.
+// A .dat file as read: its points, and its text, whose comments a rewrite keeps.
+struct DatText {
+    DatFile file;
+    std::string text;
+};
+
 class SessionFiles : public SessionLog {
 public:
-    [[nodiscard]] virtual Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) = 0;
+    // The whole text of a file (a regular file; FILE: reason otherwise).
+    [[nodiscard]] virtual Expected<std::string> read_text(const std::string& name) = 0;
+    // The file parsed as .dat (FILE:LINE: reason when it is not one).
+    [[nodiscard]] Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points);
+    [[nodiscard]] Expected<DatText> read_dat_text(const std::string& name, std::size_t minimum_points);
     // Whether anything has the name (a new picture takes a name that nothing has).
     [[nodiscard]] virtual bool exists(const std::string& name) const = 0;
     // The name of the file that read_dat(name) reads: another case of `name` where only that
@@ -58,7 +68,7 @@ public:
     FolderFiles(const FolderFiles&) = delete;
     FolderFiles& operator=(const FolderFiles&) = delete;
 
-    Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    Expected<std::string> read_text(const std::string& name) override;
     bool exists(const std::string& name) const override;
     std::string name_read(const std::string& name) const override;
     bool lies_in_folder(const std::string& name) const override;
@@ -92,7 +102,7 @@ public:
     int batches_begun = 0;
     int batches_ended = 0;
 
-    Expected<DatFile> read_dat(const std::string& name, std::size_t minimum_points) override;
+    Expected<std::string> read_text(const std::string& name) override;
     bool exists(const std::string& name) const override { return files.count(name) > 0; }
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(name); }
     void protect_key_file(const std::string& name) override;

@@ -15,6 +15,7 @@ enum class SessionPhase {
     pick_region_first,
     pick_region_last,
     staff,
+    waypoints, // the waypoint editor, opened with W at the choice of control
     ask_again,
     ask_next_path,
     ask_stop,

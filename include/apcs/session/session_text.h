@@ -37,6 +37,6 @@ inline constexpr std::string_view overlay_done = "Press any key to end APCS";
 inline constexpr std::string_view frames_freeze = "frames will freeze";
 inline constexpr std::string_view quit_question = "Quit without saving this path ? (Y/N)";
 // After a staff line's name, for a path of two control points.
-inline constexpr std::string_view no_interior_points = " acts at interior control points: add waypoints (manual 4)";
+inline constexpr std::string_view no_interior_points = " acts at interior control points: add one with W at the 8/2 choice";
 
 } // namespace apcs::session_text

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "apcs/session/command.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// The field "=" opens on the message line of a staff line: the animator types the value instead of
+// stepping to it. Every printable key is typed text; Enter reads it as a number.
+class ValueField {
+public:
+    enum class Outcome { editing, set, closed };
+
+    // Typing, Backspace, Enter (a number sets; anything else says why and keeps the field open with
+    // its text), Esc (ClearLine) closes.
+    Outcome update(const Command& command);
+    // The number read by the Enter that gave Outcome::set, clamped to [-1, 1].
+    double value() const { return m_value; }
+    // What the number typed was, when clamping changed it.
+    std::optional<double> unclamped() const { return m_unclamped; }
+    // The message line: "TENSION = 0.35_  a value from -1 to 1", or why the last Enter was refused.
+    std::string message(std::string_view line_name) const;
+
+private:
+    std::string m_text;
+    std::string m_problem;
+    double m_value = 0.0;
+    std::optional<double> m_unclamped;
+};
+
+} // namespace apcs

@@ -1,0 +1,62 @@
+#include "apcs/session/value_field.h"
+
+#include "apcs/animation/input_limits.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/raster/cell_grid.h"
+
+#include <cmath>
+
+namespace apcs {
+
+namespace {
+
+// Backspace takes the last character, not its last byte.
+void erase_last_character(std::string& text)
+{
+    while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+        text.pop_back();
+    if (!text.empty())
+        text.pop_back();
+}
+
+// Wider than any number worth typing; the message line stays one line.
+constexpr std::size_t longest_text = 24;
+
+} // namespace
+
+ValueField::Outcome ValueField::update(const Command& command)
+{
+    if (const auto* typed = std::get_if<command::TypeCharacter>(&command)) {
+        m_problem.clear();
+        if (m_text.size() < longest_text)
+            append_utf8(m_text, typed->character);
+    } else if (std::holds_alternative<command::EraseCharacter>(command)) {
+        m_problem.clear();
+        erase_last_character(m_text);
+    } else if (std::holds_alternative<command::ClearLine>(command)) {
+        return Outcome::closed;
+    } else if (std::holds_alternative<command::SubmitLine>(command)) {
+        if (m_text.empty()) {
+            m_problem = "Type a value from -1 to 1 first, then Enter (Esc closes the field)";
+            return Outcome::editing;
+        }
+        const std::optional<double> number = parse_number(m_text);
+        if (!number || !std::isfinite(*number)) {
+            m_problem = "'" + m_text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
+            return Outcome::editing;
+        }
+        m_value = limits::staff_value.clamp(*number);
+        m_unclamped = m_value == *number ? std::nullopt : number;
+        return Outcome::set;
+    }
+    return Outcome::editing;
+}
+
+std::string ValueField::message(std::string_view line_name) const
+{
+    if (!m_problem.empty())
+        return m_problem;
+    return std::string(line_name) + " = " + m_text + "_  a value from -1 to 1, Enter sets it";
+}
+
+} // namespace apcs

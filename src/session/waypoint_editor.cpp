@@ -1,0 +1,148 @@
+#include "apcs/session/waypoint_editor.h"
+
+#include "apcs/animation/arc_length.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+
+namespace apcs {
+
+WaypointEditor::WaypointEditor(Setup setup)
+    : m_setup(std::move(setup))
+    , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
+{
+    assert(m_setup.points.size() >= 2 && m_setup.origins.size() == m_setup.points.size());
+}
+
+WaypointEditor::Outcome WaypointEditor::update(const Command& command)
+{
+    m_problem.clear();
+    if (const auto* choose = std::get_if<command::ChoosePoint>(&command)) {
+        const auto count = static_cast<long long>(m_setup.points.size());
+        m_chosen = static_cast<std::size_t>(((static_cast<long long>(m_chosen) + choose->by) % count + count) % count);
+    } else if (const auto* move = std::get_if<command::MovePoint>(&command)) {
+        move_point(*move);
+    } else if (std::holds_alternative<command::InsertPoint>(command)) {
+        insert_point();
+    } else if (std::holds_alternative<command::DeletePoint>(command)) {
+        delete_point();
+    } else if (std::holds_alternative<command::Undo>(command)) {
+        undo();
+    } else if (std::holds_alternative<command::Accept>(command)) {
+        return Outcome::kept;
+    } else if (std::holds_alternative<command::Back>(command)) {
+        for (auto change = m_changes.rbegin(); change != m_changes.rend(); ++change)
+            revert_change(m_setup.points, m_setup.origins, *change);
+        m_changes.clear();
+        m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+        return Outcome::discarded;
+    }
+    return Outcome::editing;
+}
+
+void WaypointEditor::apply(const WaypointChange& change)
+{
+    apply_change(m_setup.points, m_setup.origins, change);
+    m_changes.push_back(change);
+    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+}
+
+bool WaypointEditor::is_key_frame_point(std::size_t index)
+{
+    const bool first = index == 0;
+    if (!first && index + 1 != m_setup.points.size())
+        return false;
+    m_problem = "Control point " + std::to_string(index + 1) + " is " + (first ? "KEY1" : "KEY2") +
+                "'s point: it is never moved or deleted";
+    return true;
+}
+
+// Halfway to the neighbour after the chosen point, or before it when the last is chosen.
+void WaypointEditor::insert_point()
+{
+    const bool last = m_chosen + 1 == m_setup.points.size();
+    const std::size_t from = last ? m_chosen - 1 : m_chosen;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::insert;
+    change.index = from + 1;
+    change.point = {halfway_along(m_evaluated.segments, from), m_setup.points[m_chosen].staff};
+    apply(change);
+    m_chosen = change.index;
+}
+
+void WaypointEditor::delete_point()
+{
+    if (is_key_frame_point(m_chosen))
+        return;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::remove;
+    change.index = m_chosen;
+    change.point = m_setup.points[m_chosen];
+    change.origin = m_setup.origins[m_chosen];
+    apply(change);
+    m_chosen = std::min(m_chosen, m_setup.points.size() - 2);
+}
+
+void WaypointEditor::move_point(const command::MovePoint& move)
+{
+    if (is_key_frame_point(m_chosen))
+        return;
+    const ViewTransform& view = m_setup.view;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::move;
+    change.index = m_chosen;
+    change.offset = m_setup.step * (move.right * view.screen_right() + move.up * view.screen_up() +
+                                    move.toward * view.toward_viewer());
+    apply(change);
+}
+
+void WaypointEditor::undo()
+{
+    if (m_changes.empty()) {
+        m_problem = "Nothing to undo in the waypoint editor";
+        return;
+    }
+    const WaypointChange change = m_changes.back();
+    m_changes.pop_back();
+    revert_change(m_setup.points, m_setup.origins, change);
+    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    m_chosen = std::min(change.index, m_setup.points.size() - 1);
+}
+
+std::string WaypointEditor::message() const
+{
+    if (!m_problem.empty())
+        return m_problem;
+    const Vec3 from_centre = m_setup.points[m_chosen].position - m_setup.view.centre();
+    const double depth = dot(from_centre, m_setup.view.toward_viewer());
+    char depth_text[40];
+    std::snprintf(depth_text, sizeof depth_text, "%+.2f", std::abs(depth) < 0.005 ? 0.0 : depth);
+    return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(m_setup.points.size()) +
+           "  depth " + depth_text;
+}
+
+double waypoint_step(std::span<const Vec3> shown)
+{
+    if (shown.empty())
+        return 0.01;
+    Vec3 low = shown.front();
+    Vec3 high = shown.front();
+    for (const Vec3& point : shown) {
+        low = {std::min(low.x, point.x), std::min(low.y, point.y), std::min(low.z, point.z)};
+        high = {std::max(high.x, point.x), std::max(high.y, point.y), std::max(high.z, point.z)};
+    }
+    const double diagonal = length(high - low);
+    // A scene that is one point still needs a step that moves something.
+    return diagonal > 0.0 ? diagonal / 100.0 : 0.01;
+}
+
+Vec3 halfway_along(std::span<const HermiteSegment> segments, std::size_t from)
+{
+    assert(from < segments.size());
+    const ArcLengthTable table(segments.subspan(from, 1));
+    return table.point_at(table.parameter_at(table.total_length() / 2.0));
+}
+
+} // namespace apcs

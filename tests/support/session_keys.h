@@ -1,0 +1,43 @@
+#pragma once
+
+#include "apcs/session/session.h"
+#include "apcs/session/session_log.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+namespace apcs::test {
+
+// Types an answer at a text prompt and presses Enter.
+inline void type(Session& session, const std::string& line)
+{
+    for (const char c : line)
+        session.handle(c == ' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(static_cast<char32_t>(c)));
+    session.handle(KeyEvent::of(Key::enter));
+}
+
+// What a step logs, kept for the test to read.
+struct LogLines final : SessionLog {
+    std::vector<std::string> lines;
+    void log(const std::string& line) override { lines.push_back(line); }
+};
+
+// The message line of a graphics screen (text row 18).
+inline std::string message_of(const GraphicsScreen& screen)
+{
+    for (const TextLine& line : screen.text)
+        if (line.row == 18)
+            return line.text;
+    return {};
+}
+
+// Commands for a path editor that each leave it editing.
+inline void apply(PathEditor& editor, std::initializer_list<Command> commands)
+{
+    for (const Command& command : commands)
+        REQUIRE(editor.update(command) == PathEditor::Outcome::editing);
+}
+
+} // namespace apcs::test
