@@ -47,9 +47,9 @@ std::vector<KeyBinding> make_bindings()
     const Row key_frames{Pattern::letter(U'K'), cmd::ToggleKeyFrames{}, "K/T/G show",
                          "show or hide both key frames, dotted, beside the path"};
     const Row tangents{Pattern::letter(U'T'), cmd::ToggleTangents{}, "K/T/G show",
-                       "show or hide the tangents: DD leaving each control point (solid), DS arriving (dashed)"};
+                       "tangents on/off: DD leaving (solid), DS arriving (dashed)"};
     const Row law_graph{Pattern::letter(U'G'), cmd::ToggleLawGraph{}, "K/T/G show",
-                        "show or hide the graph of distance against frame of the span's acceleration"};
+                        "law graph on/off: distance against frame in the span"};
     // The same key without words on the key line, where the line is full.
     const auto unlabelled = [](Row row) {
         row.help = "";
@@ -90,7 +90,7 @@ std::vector<KeyBinding> make_bindings()
          Row{Pattern::of(Key::down), cmd::ChooseLocal{}, "", "local control: pick a region of control points"},
          Row{Pattern::letter(U'W'), cmd::OpenWaypoints{}, "W waypoints",
              "the waypoint editor: insert, delete and move control points"},
-         undo, key_frames, tangents, law_graph, tangent_next, tangent_previous});
+         undo, key_frames, tangents, law_graph});
     add_graphics_rows(Context::control_choice, quit_path);
 
     // Scan_Control_Point: the message line says what 4/6 and Enter do.
@@ -134,18 +134,18 @@ std::vector<KeyBinding> make_bindings()
         {choose_next, choose_previous,
          Row{Pattern::exactly(U']'), cmd::ChoosePoint{+1}, "", "choose the next control point"},
          Row{Pattern::exactly(U'['), cmd::ChoosePoint{-1}, "", "choose the previous control point"},
-         Row{Pattern::exactly(U'4'), cmd::MovePoint{-1, 0, 0}, "2468 +- move", "move the point one step left"},
-         Row{Pattern::of(Key::left), cmd::MovePoint{-1, 0, 0}, "", "move the point one step left"},
-         Row{Pattern::exactly(U'6'), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
-         Row{Pattern::of(Key::right), cmd::MovePoint{+1, 0, 0}, "", "move the point one step right"},
-         Row{Pattern::exactly(U'8'), cmd::MovePoint{0, +1, 0}, "", "move the point one step up"},
-         Row{Pattern::of(Key::up), cmd::MovePoint{0, +1, 0}, "", "move the point one step up"},
-         Row{Pattern::exactly(U'2'), cmd::MovePoint{0, -1, 0}, "", "move the point one step down"},
-         Row{Pattern::of(Key::down), cmd::MovePoint{0, -1, 0}, "", "move the point one step down"},
-         Row{Pattern::letter(U'J'), cmd::MovePoint{-3, 0, 0}, "", "move the point three steps left (Shift-J)"},
-         Row{Pattern::letter(U'L'), cmd::MovePoint{+3, 0, 0}, "", "move the point three steps right (Shift-L)"},
-         Row{Pattern::exactly(U'+'), cmd::MovePoint{0, 0, +1}, "", "move the point toward the viewer"},
-         Row{Pattern::exactly(U'-'), cmd::MovePoint{0, 0, -1}, "", "move the point away from the viewer"},
+         Row{Pattern::exactly(U'4'), cmd::MovePoint{-1, 0, 0}, "2468 +- move", "move the point one step left, right"},
+         Row{Pattern::of(Key::left), cmd::MovePoint{-1, 0, 0}, "", "move the point one step left, right"},
+         Row{Pattern::exactly(U'6'), cmd::MovePoint{+1, 0, 0}, "", "move the point one step left, right"},
+         Row{Pattern::of(Key::right), cmd::MovePoint{+1, 0, 0}, "", "move the point one step left, right"},
+         Row{Pattern::exactly(U'8'), cmd::MovePoint{0, +1, 0}, "", "move the point one step up, down the screen"},
+         Row{Pattern::of(Key::up), cmd::MovePoint{0, +1, 0}, "", "move the point one step up, down the screen"},
+         Row{Pattern::exactly(U'2'), cmd::MovePoint{0, -1, 0}, "", "move the point one step up, down the screen"},
+         Row{Pattern::of(Key::down), cmd::MovePoint{0, -1, 0}, "", "move the point one step up, down the screen"},
+         Row{Pattern::letter(U'J'), cmd::MovePoint{-3, 0, 0}, "", "three steps left, right (Shift-J, Shift-L)"},
+         Row{Pattern::letter(U'L'), cmd::MovePoint{+3, 0, 0}, "", "three steps left, right (Shift-J, Shift-L)"},
+         Row{Pattern::exactly(U'+'), cmd::MovePoint{0, 0, +1}, "", "one step toward, away from the viewer"},
+         Row{Pattern::exactly(U'-'), cmd::MovePoint{0, 0, -1}, "", "one step toward, away from the viewer"},
          Row{Pattern::letter(U'I'), cmd::InsertPoint{}, "I/D ins/del", "insert a control point after the chosen one"},
          Row{Pattern::letter(U'D'), cmd::DeletePoint{}, "", "delete the chosen control point"},
          Row{Pattern::letter(U'U'), cmd::Undo{}, "U undo", "undo the last change in the editor"},
@@ -159,7 +159,7 @@ std::vector<KeyBinding> make_bindings()
         {Row{Pattern::letter(U'Y'), cmd::Yes{}, "", "adjust the path again"},
          Row{Pattern::letter(U'N'), cmd::No{}, "", "accept the path: it is written back with its values"},
          Row{Pattern::of(Key::enter), cmd::No{}, "", "accept the path: it is written back with its values"},
-         undo, key_frames, tangents, law_graph, tangent_next, tangent_previous});
+         undo, key_frames, tangents, law_graph});
     add_graphics_rows(Context::adjust_again, quit_path);
 
     // Showing_Animation.

@@ -36,8 +36,7 @@ std::string PathEditor::staff_message() const
     const std::string of = " of " + std::to_string(m_setup.points.size());
     std::string message = m_setup.path_name + ": " + line;
     if (single_point_region())
-        message += "  control point " + std::to_string(m_region.first + 1) + of + " (one point has no span: " +
-                   "no ACCELERATION)";
+        message += "  control point " + std::to_string(m_region.first + 1) + of + " (no span, no ACCELERATION)";
     else
         message += "  control points " + std::to_string(m_region.first + 1) + " to " +
                    std::to_string(m_region.last + 1) + of;

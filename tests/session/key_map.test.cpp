@@ -134,8 +134,22 @@ TEST_CASE("the help screen lists every key of a step with what it means, keys of
     for (const KeyContext context : {KeyContext::text_line, KeyContext::yes_to_go_on, KeyContext::enter_to_go_on,
                                      KeyContext::any_key, KeyContext::any_key_graphics, KeyContext::control_choice,
                                      KeyContext::region_pick, KeyContext::staff, KeyContext::adjust_again,
-                                     KeyContext::animation, KeyContext::quit_question})
+                                     KeyContext::animation, KeyContext::quit_question, KeyContext::value_field,
+                                     KeyContext::waypoints})
         REQUIRE_FALSE(key_help_lines(context).empty());
+}
+
+TEST_CASE("every help screen fits the 80x24 console: lines of at most 79 columns, rows 2 to 20", "[session][keys]")
+{
+    for (const KeyBinding& binding : key_bindings()) {
+        const std::vector<std::string> lines = key_help_lines(binding.context);
+        REQUIRE(lines.size() <= 19);
+        for (const std::string& line : lines)
+            REQUIRE(line.size() <= 79);
+    }
+    const std::vector<std::string> waypoints = key_help_lines(KeyContext::waypoints);
+    REQUIRE(std::find(waypoints.begin(), waypoints.end(), "  4, Left, 6, Right  move the point one step left, right") !=
+            waypoints.end());
 }
 
 TEST_CASE("no key map row is hidden behind an earlier row of its context", "[session][keys]")

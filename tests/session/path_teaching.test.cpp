@@ -213,7 +213,7 @@ TEST_CASE("Enter twice on one control point adjusts it alone and skips ACCELERAT
     apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::Accept{}, cmd::Accept{}});
     REQUIRE(editor.phase() == SessionPhase::staff);
     REQUIRE(log.lines.back() == "local control: control point 2");
-    REQUIRE(message_of(editor.view()) == "way1.dat: TENSION  control point 2 of 4 (one point has no span: no ACCELERATION)");
+    REQUIRE(message_of(editor.view()) == "way1.dat: TENSION  control point 2 of 4 (no span, no ACCELERATION)");
     apply(editor, {cmd::StaffStep{+3}, cmd::StaffStep{+3}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{-1}});
     REQUIRE(staff_line_label(editor.view()) == "BIAS");
     apply(editor, {cmd::Accept{}});
@@ -257,14 +257,41 @@ TEST_CASE("U takes every change back, in reverse, to the staff line it was made 
         REQUIRE(editor.points()[k].staff == setup.points[k].staff);
 }
 
-TEST_CASE("the teaching overlays on the path screen match their approved cells in each glyph set", "[session][teaching]")
+TEST_CASE("the teaching screens match their approved cells in each glyph set", "[session][teaching]")
 {
+    const auto check = [](const std::string& name, const GraphicsScreen& screen) {
+        for (const auto& [glyphs, set] : {std::pair{GlyphSet::ascii, "ascii"}, std::pair{GlyphSet::braille, "braille"},
+                                          std::pair{GlyphSet::blocks, "blocks"}})
+            test::check_golden(name + "_" + set + ".txt", render_cells(screen, {80, 24}, glyphs).to_text());
+    };
     LogLines log;
-    PathEditor editor(zigzag(), log);
-    apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{+3}, cmd::ToggleTangents{},
-                   cmd::ToggleLawGraph{}});
-    const GraphicsScreen screen = editor.view();
-    for (const auto& [glyphs, name] : {std::pair{GlyphSet::ascii, "ascii"}, std::pair{GlyphSet::braille, "braille"},
-                                       std::pair{GlyphSet::blocks, "blocks"}})
-        test::check_golden(std::string("path_teaching_") + name + ".txt", render_cells(screen, {80, 24}, glyphs).to_text());
+    SECTION("tangents and the law graph")
+    {
+        PathEditor editor(zigzag(), log);
+        apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{+3}, cmd::ToggleTangents{},
+                       cmd::ToggleLawGraph{}});
+        check("path_teaching", editor.view());
+    }
+    SECTION("the value field")
+    {
+        PathEditor editor(zigzag(), log);
+        apply(editor, {cmd::ChooseGlobal{}, cmd::OpenValueField{}});
+        type(editor, "-0.35");
+        check("path_value_field", editor.view());
+    }
+    SECTION("the waypoint editor, a point inserted and moved")
+    {
+        PathEditor editor(zigzag(), log);
+        apply(editor, {cmd::OpenWaypoints{}, cmd::ChoosePoint{+1}, cmd::InsertPoint{}, cmd::MovePoint{0, 1, 0},
+                       cmd::MovePoint{0, 1, 0}, cmd::MovePoint{+3, 0, 0}});
+        REQUIRE(editor.phase() == SessionPhase::waypoints);
+        check("path_waypoints", editor.view());
+    }
+    SECTION("a region of one control point")
+    {
+        PathEditor editor(zigzag(), log);
+        apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::Accept{},
+                       cmd::Accept{}, cmd::StaffStep{-3}});
+        check("path_one_point", editor.view());
+    }
 }
