@@ -28,7 +28,7 @@ _apcs_options()
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
-        *) echo "$staff $curve $view --delay --glyphs --step $pictures --workdir --keys --record --help --version" ;;
+        *) echo "$staff $curve $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
     esac
 }
 
@@ -42,6 +42,7 @@ _apcs()
         --glyphs) _apcs_words "ascii braille blocks" "$current"; return ;;
         --spacing) _apcs_words "nearest exact" "$current"; return ;;
         --view) _apcs_words "front side top" "$current"; return ;;
+        --pace) _apcs_words "step 500 1000 2000" "$current"; return ;;
         --law) _apcs_words "linear sqrt square ease-in ease-out ease-in-out" "$current"; return ;;
         --pad) _apcs_words "apcs start end middle midpoint" "$current"; return ;;
         --keys | --record) _apcs_files keys "$current"; return ;;

@@ -252,6 +252,30 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
         ->type_name("DIR");
     app.add_option("--keys", options.keys, "replay the keystrokes of FILE")->type_name("FILE");
     app.add_option("--record", options.record, "record the keystrokes to FILE")->type_name("FILE");
+    app.add_option_function<std::string>(
+           "--pace",
+           [&options](const std::string& text) {
+               options.pace = text == "step" ? ReplayPace{ReplayPace::Kind::on_space, 0}
+                                             : ReplayPace{ReplayPace::Kind::every, std::stoi(text)};
+           },
+           "play the --keys script one key every MS milliseconds, " + whole_range_text(limits::pace_ms) +
+               ", or one key per Space ('step'), with its ;; captions")
+        ->check(CLI::Validator(
+            [](std::string& text) -> std::string {
+                if (text == "step")
+                    return {};
+                const std::string expected = "expected milliseconds in " + whole_range_text(limits::pace_ms) +
+                                             " or 'step', found ";
+                const std::optional<std::size_t> value = parse_count_value(text);
+                if (!value)
+                    return expected + quote_field(text);
+                if (!limits::pace_ms.contains(static_cast<double>(*value)))
+                    return expected + text;
+                text = std::to_string(*value);
+                return {};
+            },
+            ""))
+        ->type_name("MS|step");
 }
 
 void add_path_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)

@@ -30,11 +30,6 @@ std::string screen_text(const Session& session, GlyphSet glyphs)
     return text;
 }
 
-void print_step(const Session& session, GlyphSet glyphs, std::ostream& out)
-{
-    out << "--- " << phase_name(session.phase()) << '\n' << screen_text(session, glyphs);
-}
-
 std::string_view glyph_set_name(GlyphSet glyphs)
 {
     switch (glyphs) {
@@ -113,33 +108,48 @@ SessionSettings session_settings(const CommonOptions& options)
     return settings;
 }
 
-std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
+// Each step's screen as the step ends (its last key played), under the step's name; a caption
+// of the script as ";; TEXT" where the replay reaches it.
+std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
                                            std::ostream& out)
 {
+    std::string shown = screen_text(session, glyphs);
+    SessionPhase shown_phase = session.phase();
+    const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
+    std::size_t next_caption = 0;
+    const auto print_captions = [&](std::size_t played) {
+        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= played;
+             ++next_caption)
+            out << ";; " << script.captions[next_caption].text << '\n';
+    };
     std::size_t handled = 0;
-    print_step(session, glyphs, out);
-    for (const KeyEvent& key : keys) {
+    for (const KeyEvent& key : script.events) {
         if (session.finished())
             break;
-        const SessionPhase before = session.phase();
+        print_captions(handled);
         ++handled;
         session.handle(key);
         // Nobody can press Esc: the split runs to its end.
         while (session.busy())
             session.work();
-        if (session.phase() == SessionPhase::animating && session.phase() != before)
-            print_step(session, glyphs, out);
-        while (session.animating())
+        if (session.phase() != shown_phase)
+            print_shown();
+        // The animation's last frame ends its step.
+        while (session.animating()) {
+            shown_phase = session.phase();
+            shown = screen_text(session, glyphs);
             session.tick();
-        if (session.phase() != before)
-            print_step(session, glyphs, out);
+            if (session.phase() != shown_phase)
+                print_shown();
+        }
+        shown = screen_text(session, glyphs);
+        shown_phase = session.phase();
     }
-    // A script that ends mid-step (a step asked again, say after a failed write) shows where it
-    // stopped and why.
-    if (!session.finished())
-        print_step(session, glyphs, out);
+    print_captions(handled);
+    // The last step: the end, or where a script that ends mid-step stopped and why.
+    print_shown();
     // The keys handled are the script's first ones: one copy of exactly their size.
-    return {keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(handled)};
+    return {script.events.begin(), script.events.begin() + static_cast<std::ptrdiff_t>(handled)};
 }
 
 ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
@@ -156,7 +166,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         err << limit.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
-    std::vector<KeyEvent> scripted;
+    KeyScript script;
     if (options.keys) {
         // The terminal session reads its keys from standard input: a script cannot come from there too.
         if (*options.keys == "-" && ::isatty(STDIN_FILENO)) {
@@ -166,15 +176,24 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         const Expected<std::string> text = read_script_text(*options.keys, max_key_script_bytes);
         if (!text)
             return report_bad_input(text.error(), err);
-        Expected<std::vector<KeyEvent>> script = parse_key_script(*text, options.keys->string());
-        if (!script)
-            return report_bad_input(script.error(), err);
-        scripted = std::move(*script);
+        Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
+        if (!parsed)
+            return report_bad_input(parsed.error(), err);
+        script = std::move(*parsed);
+    }
+    const bool paced = options.pace.kind != ReplayPace::Kind::at_once;
+    if (paced && !options.keys) {
+        err << "apcs: --pace paces a --keys replay; give --keys FILE\n";
+        return ExitStatus::bad_usage;
     }
     const bool headless = !::isatty(STDIN_FILENO) || !terminal;
     if (headless && !options.keys) {
         err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
         return ExitStatus::terminal_problem;
+    }
+    if (paced && headless) {
+        err << "apcs: --pace paces a replay on a terminal; without one the script plays at once (leave --pace out)\n";
+        return ExitStatus::bad_usage;
     }
     GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
     if (!headless) {
@@ -193,7 +212,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     std::vector<KeyEvent> recorded;
     ExitStatus status = ExitStatus::success;
     if (headless) {
-        recorded = run_headless_session(session, scripted, glyphs, out);
+        recorded = run_headless_session(session, script, glyphs, out);
         if (!session.finished())
             err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
         // Nobody watched the screen: a file that could not be written is the run's failure.
@@ -203,7 +222,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         }
     } else {
         Diagnostic problem;
-        status = terminal(session, scripted, glyphs, recorded, problem);
+        status = terminal(session, script, options.pace, glyphs, recorded, problem);
         if (status == ExitStatus::terminal_problem) {
             err << problem.to_string() << '\n';
             return ExitStatus::terminal_problem;

@@ -26,9 +26,22 @@ constexpr std::array<std::pair<std::string_view, Key>, 12> key_names{{
     {"CTRL-L", Key::redraw},
 }};
 
-} // namespace
+// The caption of a line's comment, if it starts with ";;": its text without the marks and the
+// blanks around it.
+std::optional<std::string> caption_of(std::string_view comment)
+{
+    if (!comment.starts_with(";;"))
+        return std::nullopt;
+    comment.remove_prefix(2);
+    const std::size_t first = comment.find_first_not_of(" \t");
+    if (first == std::string_view::npos)
+        return std::string();
+    const std::size_t last = comment.find_last_not_of(" \t");
+    return std::string(comment.substr(first, last - first + 1));
+}
 
-Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
+Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name,
+                                             std::vector<ScriptCaption>* captions)
 {
     // Every event takes at least one byte of the script: one allocation, never a doubling.
     std::vector<KeyEvent> events;
@@ -47,7 +60,10 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
                 events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
             continue;
         }
-        line = line.substr(0, line.find(';'));
+        const std::size_t comment = line.find(';');
+        const std::optional<std::string> caption =
+            comment == std::string_view::npos ? std::nullopt : caption_of(line.substr(comment));
+        line = line.substr(0, comment);
         bool stop = false;
         for_each_field(line, [&](std::string_view token) {
             if (stop)
@@ -69,11 +85,39 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
         });
         if (stop)
             return *problem;
+        if (caption && captions != nullptr)
+            captions->push_back({events.size(), *caption});
     }
     // Keys named by words (ENTER) take many bytes each: give back what they left unused.
     if (events.size() < events.capacity() / 2)
         events.shrink_to_fit();
     return events;
+}
+
+} // namespace
+
+Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
+{
+    return parse_script(text, file_name, nullptr);
+}
+
+Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name)
+{
+    KeyScript script;
+    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script.captions);
+    if (!events)
+        return events.error();
+    script.events = std::move(*events);
+    return script;
+}
+
+const ScriptCaption* caption_at(const KeyScript& script, std::size_t played)
+{
+    const ScriptCaption* shown = nullptr;
+    for (const ScriptCaption& caption : script.captions)
+        if (caption.before_event <= played)
+            shown = &caption;
+    return shown;
 }
 
 std::string format_key_script(const std::vector<KeyEvent>& events)

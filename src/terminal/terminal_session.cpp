@@ -1,12 +1,15 @@
 #include "apcs/terminal/terminal_session.h"
 
+#include "apcs/session/replay_caption.h"
 #include "apcs/terminal/terminal.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 
 namespace apcs {
@@ -27,12 +30,13 @@ CellGrid too_small_grid(TerminalSize size)
     return grid;
 }
 
-CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
+CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
+                  std::string_view caption)
 {
     const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
     if (!area)
         return too_small_grid(size);
-    const SessionScreen screen = session.screen();
+    const SessionScreen screen = with_caption(session.screen(), caption);
     if (screen.graphics)
         return render_cells(screen.picture, *area, glyphs, cache);
     return screen.text;
@@ -49,9 +53,61 @@ void work_a_while(Session& session)
     while (session.busy() && std::chrono::steady_clock::now() - start < slice);
 }
 
+// A script played into the terminal session: how far, and at what pace.
+class Replay {
+public:
+    Replay(const KeyScript& script, ReplayPace pace) : m_script(script), m_pace(pace) {}
+
+    bool playing() const { return m_played < m_script.events.size(); }
+    ReplayPace::Kind pace() const { return m_pace.kind; }
+    int pace_ms() const { return m_pace.milliseconds; }
+    KeyEvent next() { return m_script.events[m_played++]; }
+    // Esc during a paced replay: the keyboard takes over.
+    void stop() { m_played = m_script.events.size(); }
+    void key_typed() { m_typed_after = !playing(); }
+    // The caption reached, until a key is typed after the replay.
+    std::string_view caption() const
+    {
+        const ScriptCaption* caption = caption_at(m_script, m_played);
+        return caption == nullptr || m_typed_after ? std::string_view{} : std::string_view(caption->text);
+    }
+
+private:
+    const KeyScript& m_script;
+    ReplayPace m_pace;
+    std::size_t m_played = 0;
+    bool m_typed_after = false;
+};
+
+// The next input of a replay that waits to play a key: the script's key at its pace (`scripted`
+// set), or what the terminal reported meanwhile. A key typed during a paced replay is dropped
+// (Esc ends the replay); nullopt means there is nothing to act on this time round.
+std::optional<TerminalInput> replay_input(Terminal& terminal, Replay& replay, KeyEvent& key)
+{
+    if (replay.pace() == ReplayPace::Kind::at_once) {
+        key = replay.next();
+        return TerminalInput::key;
+    }
+    const bool timed = replay.pace() == ReplayPace::Kind::every;
+    const TerminalInput input = terminal.read_key(timed ? replay.pace_ms() : -1, key);
+    if (input == TerminalInput::timeout && timed) {
+        key = replay.next();
+        return TerminalInput::key;
+    }
+    if (input != TerminalInput::key)
+        return input;
+    if (key.key == Key::escape)
+        replay.stop();
+    else if (!timed && key.key == Key::space) {
+        key = replay.next();
+        return TerminalInput::key;
+    }
+    return std::nullopt;
+}
+
 } // namespace
 
-ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
@@ -60,18 +116,21 @@ ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& s
         return ExitStatus::terminal_problem;
     }
     const std::unique_ptr<Terminal> terminal = std::move(*opened);
-    std::size_t next_scripted = 0;
+    Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {
-        terminal->show(grid_for(session, terminal->size(), glyphs, cache));
+        terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.caption()));
         KeyEvent key;
-        TerminalInput input = TerminalInput::key;
+        std::optional<TerminalInput> input;
         // A scripted key waits for the split, as a typed one would (Esc would stop it).
-        if (next_scripted < scripted.size() && !session.animating() && !session.busy())
-            key = scripted[next_scripted++];
+        const bool scripted = replay.playing() && !session.animating() && !session.busy();
+        if (scripted)
+            input = replay_input(*terminal, replay, key);
         else
             input = terminal->read_key(session.busy() ? 0 : session.animating() ? session.delay_ms() : -1, key);
-        switch (input) {
+        if (!input)
+            continue;
+        switch (*input) {
         case TerminalInput::stop:
             return ExitStatus::stopped;
         case TerminalInput::resize:
@@ -90,6 +149,8 @@ ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& s
             // Keys typed at the too-small screen would act on a session nobody can see.
             if (!fit_cell_area(terminal->size().columns, terminal->size().rows))
                 break;
+            if (!scripted)
+                replay.key_typed();
             recorded.push_back(key);
             session.handle(key);
             break;

@@ -240,3 +240,46 @@ TEST_CASE("Enter at the session's prompts takes --theta, --phi, --delay and --sl
     CHECK(log.find("view: theta 10, phi 20, delay 50 ms") != std::string::npos);
     CHECK(log.find("slopes DS[0] 0.5, DD[N] 0.25") != std::string::npos);
 }
+
+TEST_CASE("the pace of a replay (--pace) takes milliseconds from 1 to 60000 or 'step', and needs --keys and a terminal", "[cli][pace]")
+{
+    for (const auto& [value, expected] :
+         {std::pair{"0", "apcs: --pace: expected milliseconds in [1, 60000] or 'step', found 0"},
+          std::pair{"fast", "apcs: --pace: expected milliseconds in [1, 60000] or 'step', found 'fast'"},
+          std::pair{"60001", "apcs: --pace: expected milliseconds in [1, 60000] or 'step', found 60001"}}) {
+        const auto result = test::run_apcs({"--pace", value});
+        REQUIRE(result.status == 2);
+        REQUIRE(result.err.starts_with(std::string(expected) + "\n"));
+    }
+    const auto no_keys = test::run_apcs({"--pace", "step"});
+    REQUIRE(no_keys.status == 2);
+    REQUIRE(no_keys.err == "apcs: --pace paces a --keys replay; give --keys FILE\n");
+    const test::TempFolder folder;
+    const auto script = folder.write("class.keys", ";; Step 1\nENTER\n");
+    // The tests run without a terminal: the script would play at once, so --pace is refused.
+    const auto headless = test::run_apcs({"--keys", script.string(), "--pace", "500", "--workdir", folder.path().string()});
+    REQUIRE(headless.status == 2);
+    REQUIRE(headless.err ==
+            "apcs: --pace paces a replay on a terminal; without one the script plays at once (leave --pace out)\n");
+    REQUIRE(test::run_apcs({"path", "x.dat", "--pace", "5"}).err.starts_with("apcs: --pace is not an option of 'apcs path'"));
+}
+
+TEST_CASE("a headless replay prints each step's final screen and the captions where it reaches them", "[cli][pace]")
+{
+    const test::TempFolder folder;
+    folder.write("key1.dat", "0 0 0\n0 6 0\n");
+    folder.write("key2.dat", "0 0 10\n0 6 10\n");
+    const auto script = folder.write("class.keys", ";; Step 1: the key frames\nENTER\nENTER\n;; Step 2: the view\n"
+                                                   "TEXT 0 90 100\nENTER\n");
+    const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string(), "--glyphs", "ascii"});
+    REQUIRE(result.status == 0);
+    const std::string& out = result.out;
+    const auto at = [&](const std::string& text) { return out.find(text); };
+    REQUIRE(at(";; Step 1: the key frames\n") == 0);
+    REQUIRE(at("--- step 1: KEY1 file\n") < at("--- step 1: KEY2 file\n"));
+    REQUIRE(at("--- step 1: KEY2 file\n") < at(";; Step 2: the view\n"));
+    // The view step's final screen shows its answer typed, before Enter took it.
+    const std::size_t view = at("--- step 2: view and delay\n");
+    REQUIRE(view != std::string::npos);
+    REQUIRE(out.find("0 90 100_", view) != std::string::npos);
+}

@@ -19,13 +19,11 @@ cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
 
 source "$(dirname "$0")/tmux_lib.sh"
 
-# A session NAME at 80x24 running COMMAND in the work folder, then reporting its exit status.
-start() { tmux -L "$socket" new-session -d -s "$1" -x 80 -y 24 -c "$work" "$2; echo EXITED=\$?; sleep 60"; }
-# Keys (tmux key names) to session $1, then a moment for the screen to follow.
-keys() { local name=$1; shift; tmux -L "$socket" send-keys -t "$name" "$@"; sleep 0.2; }
+start() { start_80x24 "$@"; }
+keys() { keys_to "$@"; }
 # Bytes sent as they are, no pause after.
 bytes() { tmux -L "$socket" send-keys -t "$1" -l "$2"; }
-fail() { echo "FAILED: $1"; [ $# -lt 2 ] || { echo "--- screen:"; screen "$2"; }; exit 1; }
+fail() { fail_showing "$@"; }
 # The screen of session $1 with wrapped lines joined, for messages longer than 80 columns.
 joined() { tmux -L "$socket" capture-pane -p -J -t "$1"; }
 # Line $2 (1-based) of session $1's screen.

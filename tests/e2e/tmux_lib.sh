@@ -11,3 +11,10 @@ wait_for() {
   done
   echo "timed out waiting for: $2"; echo "--- screen:"; screen "$1"; exit 1
 }
+
+# A session NAME at 80x24 running COMMAND in $work, then reporting its exit status.
+start_80x24() { tmux -L "$socket" new-session -d -s "$1" -x 80 -y 24 -c "$work" "$2; echo EXITED=\$?; sleep 60"; }
+# Keys (tmux key names) to session $1, then a moment for the screen to follow.
+keys_to() { local name=$1; shift; tmux -L "$socket" send-keys -t "$name" "$@"; sleep 0.2; }
+# Fails with a message, and the screen of session $2 when named.
+fail_showing() { echo "FAILED: $1"; [ $# -lt 2 ] || { echo "--- screen:"; screen "$2"; }; exit 1; }

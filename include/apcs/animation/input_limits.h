@@ -22,6 +22,8 @@ inline constexpr Range end_slope{0.0, 1.0};
 inline constexpr Range view_degrees{-1e6, 1e6};
 // Milliseconds between animation frames.
 inline constexpr Range delay_ms{0, 60000};
+// Milliseconds between the keys of a paced replay (--pace).
+inline constexpr Range pace_ms{1, 60000};
 // Curve samples per KB segment.
 inline constexpr Range samples_per_segment{1, 100000};
 // In-between frames M.

@@ -4,6 +4,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/glyph_mapper.h"
+#include "apcs/session/key_event.h"
 
 #include <cstdint>
 #include <filesystem>
@@ -33,6 +34,7 @@ struct CommonOptions {
     double step = 0.05;
     std::optional<std::filesystem::path> keys;
     std::optional<std::filesystem::path> record;
+    ReplayPace pace; // --pace: how a --keys replay plays on a terminal
     std::optional<std::filesystem::path> png;     // as the monitor showed it, 720x522
     std::optional<std::filesystem::path> png_raw; // the bare 720x348 raster
     std::optional<std::filesystem::path> svg;     // the same drawing as vector lines

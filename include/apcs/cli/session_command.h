@@ -18,7 +18,7 @@ namespace apcs {
 // ncurses); see run_terminal_session. Returns success, stopped, or terminal_problem with
 // `problem` set.
 using TerminalSessionRunner =
-    std::function<ExitStatus(Session&, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+    std::function<ExitStatus(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                              std::vector<KeyEvent>& recorded, Diagnostic& problem)>;
 
 // Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
@@ -42,10 +42,11 @@ GlyphSet default_glyphs(std::string_view codeset, std::string_view term);
 // relative name is taken from the current folder, also with --workdir).
 SessionSettings session_settings(const CommonOptions& options);
 
-// Runs the session headless: every key of the script, the animation untimed, and the screen after
-// each change of step to `out` (a line "--- STEP", then the 80x24 screen, trailing blanks
-// removed). Returns the keys handled.
-std::vector<KeyEvent> run_headless_session(Session& session, const std::vector<KeyEvent>& keys, GlyphSet glyphs,
+// Runs the session headless: every key of the script, the animation untimed, and each step's
+// final screen (after its last key) to `out`: a line "--- STEP", then the 80x24 screen, trailing
+// blanks removed; the script's captions as lines ";; TEXT" where the replay reaches them.
+// Returns the keys handled.
+std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
                                            std::ostream& out);
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +33,34 @@ struct KeyEvent {
 inline constexpr std::uintmax_t max_key_script_bytes = 16ull << 20;
 
 [[nodiscard]] Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name);
+
+// A comment that starts with ";;" is a caption for a class: shown when a replay has played the
+// keys before it (`before_event` of them), until the next caption.
+struct ScriptCaption {
+    std::size_t before_event = 0;
+    std::string text;
+    bool operator==(const ScriptCaption&) const = default;
+};
+
+// A script with its captions, in order.
+struct KeyScript {
+    std::vector<KeyEvent> events;
+    std::vector<ScriptCaption> captions;
+};
+
+// parse_key_script, keeping the captions.
+[[nodiscard]] Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name);
+
+// The caption shown once `played` keys of `script` are played: the last one reached, or none.
+const ScriptCaption* caption_at(const KeyScript& script, std::size_t played);
+
+// How a replay on a terminal plays its script (--pace): at once, one key every `milliseconds`,
+// or one key each time the presenter presses Space.
+struct ReplayPace {
+    enum class Kind { at_once, every, on_space };
+    Kind kind = Kind::at_once;
+    int milliseconds = 0;
+};
 
 // Writes events as a script that parse_key_script reads back to the same events: runs of
 // printable characters typed in a line become TEXT lines.

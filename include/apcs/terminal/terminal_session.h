@@ -10,14 +10,16 @@
 
 namespace apcs {
 
-// Runs the session in the terminal: the scripted keys first, as if typed, then the keyboard, the
+// Runs the session in the terminal: the script's keys first, as if typed, at `pace` (at once; one
+// key every N ms; one key per Space) with its captions on the message line, then the keyboard, the
 // graphics screen in `glyphs` (already chosen: not GlyphSet::automatic). Every key handled is
 // appended to `recorded`; Ctrl-L (Key::redraw) also repaints the whole terminal. Below the least
 // size (text_screen_columns x text_screen_rows) the screen says how large it must be. Returns
 // success when the session ended, stopped when stopped by a signal or a lost terminal,
 // terminal_problem with `problem` set ("apcs: PROBLEM") when there is no usable terminal. The
 // terminal is given back on every way out, exceptions included.
-ExitStatus run_terminal_session(Session& session, const std::vector<KeyEvent>& scripted, GlyphSet glyphs,
+// While a paced replay plays, Esc ends it (the keyboard takes over) and other keys are ignored.
+ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem);
 
 } // namespace apcs

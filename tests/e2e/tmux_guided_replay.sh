@@ -1,0 +1,65 @@
+#!/usr/bin/env bash
+# A guided replay for a class (issue 13 item 7): --pace MS plays a captioned key script one key
+# every MS milliseconds with its ";;" captions on the screen; --pace step plays one key per Space,
+# and Esc hands the keyboard over. At 80x24, in a real terminal (tmux).
+# Usage: tmux_guided_replay.sh APCS DATA_FOLDER
+set -euo pipefail
+apcs=$1
+data=$2
+command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
+
+work=$(mktemp -d)
+socket="apcs-guided-$$"
+cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
+trap cleanup EXIT
+cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
+source "$(dirname "$0")/tmux_lib.sh"
+
+start() { start_80x24 "$@"; }
+keys() { keys_to "$@"; }
+fail() { fail_showing "$@"; }
+
+cat > "$work/class.keys" <<'KEYS'
+;; Step 1: KEY1 and KEY2 are the two key frames
+ENTER ENTER
+;; Step 2: the viewer's direction, face-on
+TEXT 0 90 100
+ENTER
+;; Step 3: the first point's path, with waypoints
+TEXT way1.dat
+ENTER ENTER
+;; Step 3: 8 takes global control
+8
+;; Step 4: tension up: the curve tightens
+6 6 6
+KEYS
+
+# --pace 50: the whole script plays by itself, each caption shown when reached; the last stays.
+start paced "$apcs --keys class.keys --pace 50 --glyphs ascii"
+wait_for paced "Step 4: tension up: the curve tightens"
+wait_for paced "+0.15"
+screen paced | grep -q "^ Step 4" || screen paced | grep -q "Step 4: tension up" || fail "caption not on the screen" paced
+
+# --pace step: nothing plays until Space; each Space plays one key.
+start stepped "$apcs --keys class.keys --pace step --glyphs ascii"
+wait_for stepped "Step 1: KEY1 and KEY2 are the two key frames"
+sleep 0.5
+screen stepped | grep -q "Please keyin the KEY2 filename" && fail "a key played without Space" stepped
+keys stepped Space
+wait_for stepped "Please keyin the KEY2 filename"
+keys stepped Space
+wait_for stepped "Step 2: the viewer's direction, face-on"
+# A key other than Space or Esc is not played, nor typed into the prompt.
+keys stepped x
+screen stepped | grep -q "THETA ,PHI & delay-time value.*x" && fail "a typed key reached the prompt" stepped
+keys stepped Space
+wait_for stepped "0_"
+# Esc ends the replay: the keyboard types, the caption goes at the first key.
+keys stepped Escape
+keys stepped BSpace
+keys stepped "0 90 100" Enter
+wait_for stepped "Please keyin the anix.dat filename"
+screen stepped | grep -q "Step 2: the viewer" && fail "the caption stayed after the keyboard took over" stepped
+keys stepped C-c
+wait_for stepped "EXITED=130"
+echo "passed: paced replay with captions, stepped replay by Space, Esc hands over"
