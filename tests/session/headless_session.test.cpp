@@ -201,3 +201,19 @@ TEST_CASE("the shipped sessions walk a class through the thesis' six steps in ca
         REQUIRE(steps.size() >= 5);
     }
 }
+
+TEST_CASE("the N to L lesson (T, G, =, W, U) replays headless to its approved screens in each glyph set",
+          "[session][headless][teaching]")
+{
+    for (const char* glyphs : {"ascii", "braille", "blocks"}) {
+        const test::TempFolder folder;
+        copy_example("n-to-l", folder);
+        const auto result = test::run_apcs({"--keys", (folder / "lesson.keys").string(), "--workdir",
+                                            folder.path().string(), "--glyphs", glyphs});
+        REQUIRE(result.status == 0);
+        REQUIRE(result.err == "apcs: the key script ended at step 5: next path\n");
+        test::check_golden(std::string("lesson/screens-") + glyphs + ".txt", result.out);
+        // The waypoint inserted and moved 12 steps left is in the file, with the typed staff values.
+        test::check_golden("lesson/ani1.dat", test::read_all(folder / "ani1.dat"));
+    }
+}
