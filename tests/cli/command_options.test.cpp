@@ -34,7 +34,7 @@ std::set<std::string> joined(std::initializer_list<std::set<std::string>> sets)
 std::vector<CommandOptions> commands()
 {
     return {
-        {{}, joined({staff, curve, view, pictures, {"--delay", "--glyphs", "--step", "--workdir", "--keys", "--record"}})},
+        {{}, joined({staff, curve, view, pictures, {"--delay", "--glyphs", "--step", "--workdir", "--keys", "--pace", "--record"}})},
         {{"path", "a.dat"}, joined({staff, curve, view, pictures, {"--print"}})},
         {{"fit", "a", "b", "c", "d"}, joined({staff, curve, view, pictures, {"--gif", "--delay", "--print", "--out"}})},
         {{"inbetween", "a", "b"},
