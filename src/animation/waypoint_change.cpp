@@ -1,6 +1,7 @@
 #include "apcs/animation/waypoint_change.h"
 
 #include <cassert>
+#include <numeric>
 
 namespace apcs {
 
@@ -30,6 +31,20 @@ void move_point(ControlPoints& points, std::size_t index, const Vec3& offset)
 }
 
 } // namespace
+
+std::vector<std::size_t> file_origins(std::size_t point_count)
+{
+    std::vector<std::size_t> origins(point_count);
+    std::iota(origins.begin(), origins.end(), std::size_t{0});
+    return origins;
+}
+
+std::size_t wrapped_point(std::size_t index, int by, std::size_t count)
+{
+    assert(count > 0);
+    const auto n = static_cast<long long>(count);
+    return static_cast<std::size_t>(((static_cast<long long>(index) + by) % n + n) % n);
+}
 
 void apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change)
 {

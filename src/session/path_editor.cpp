@@ -3,48 +3,39 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/session/path_overlays.h"
 #include "apcs/session/screen_layout.h"
-#include "apcs/session/session_text.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <numeric>
 
 namespace apcs {
-
-namespace text = session_text;
 
 namespace {
 
 // Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
 double snapped(double value) { return limits::staff_value.clamp(std::round(value * 1e9) / 1e9); }
 
-std::vector<std::size_t> origins_of(std::size_t point_count)
+// What the view keeps in sight: the path, its control points and both key frames.
+ViewScene shown_scene(const PathEditor::Setup& setup, const EvaluatedPath& path)
 {
-    std::vector<std::size_t> origins(point_count);
-    std::iota(origins.begin(), origins.end(), std::size_t{0});
-    return origins;
-}
-
-// Tab past the last control point comes back to the first.
-std::size_t wrapped(std::size_t index, int by, std::size_t count)
-{
-    const auto n = static_cast<long long>(count);
-    return static_cast<std::size_t>(((static_cast<long long>(index) + by) % n + n) % n);
+    PathScreenContent shown = path_screen_content(setup.points, path);
+    shown.key_frame_polylines = setup.key_frame_polylines;
+    return path_screen_scene(shown);
 }
 
 ViewTransform fitted_view(const PathEditor::Setup& setup, const EvaluatedPath& path)
 {
-    PathScreenContent shown = path_screen_content(setup.points, path);
-    shown.key_frame_polylines = setup.key_frame_polylines;
-    return path_screen_scene(shown).fit(setup.view_angles, layout::view_area);
+    return shown_scene(setup, path).fit(setup.view_angles, layout::view_area);
 }
+
+// "1 change", "3 changes".
+std::string changes_text(std::size_t count) { return std::to_string(count) + (count == 1 ? " change" : " changes"); }
 
 } // namespace
 
 PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
-    , m_origins(origins_of(m_setup.points.size()))
+    , m_origins(file_origins(m_setup.points.size()))
     , m_log(log)
     , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
     , m_view(fitted_view(m_setup, m_evaluated))
@@ -121,7 +112,7 @@ bool PathEditor::update_views(const Command& command)
     else if (std::holds_alternative<command::ToggleLawGraph>(command))
         m_show_law = !m_show_law;
     else if (const auto* choose = std::get_if<command::ChoosePoint>(&command); choose != nullptr && !m_waypoints)
-        m_tangent_point = wrapped(m_tangent_point, choose->by, m_setup.points.size());
+        m_tangent_point = wrapped_point(m_tangent_point, choose->by, m_setup.points.size());
     else
         return false;
     return true;
@@ -232,7 +223,7 @@ void PathEditor::update_value_field(const Command& command)
     if (outcome == ValueField::Outcome::set) {
         set_staff_value(m_field->value());
         m_log.log(std::string(staff_line_name(m_line)) + " typed " + format_staff_value(m_staff[m_line]));
-        if (const std::optional<double> typed = m_field->unclamped())
+        if (m_field->clamped())
             m_notice = std::string(staff_line_name(m_line)) + " set to " + format_staff_value(m_staff[m_line]) +
                        ": the staff runs from -1 to 1";
     }
@@ -259,8 +250,7 @@ void PathEditor::undo()
     m_problem.clear();
     std::visit([this](const auto& last) { undo_change(last); }, change);
     m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
-    m_notice += "; " + std::to_string(m_history.size()) + (m_history.size() == 1 ? " change" : " changes") +
-                " left to undo";
+    m_notice += "; " + changes_text(m_history.size()) + " left to undo";
     m_log.log(m_notice);
 }
 
@@ -293,10 +283,8 @@ void PathEditor::undo_change(const WaypointChange& change)
 
 void PathEditor::open_waypoints()
 {
-    PathScreenContent shown = path_screen_content(m_setup.points, m_evaluated);
-    shown.key_frame_polylines = m_setup.key_frame_polylines;
     m_waypoints.emplace(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
-                                              waypoint_step(path_screen_scene(shown).points())});
+                                              waypoint_step(shown_scene(m_setup, m_evaluated).points())});
     m_log.log("waypoint editor");
 }
 
@@ -311,10 +299,10 @@ void PathEditor::update_waypoints(const Command& command)
         m_setup.points = m_waypoints->points();
         m_origins = m_waypoints->origins();
         m_evaluated = m_waypoints->evaluated();
-        m_notice = "Waypoints: " + std::to_string(changes) + (changes == 1 ? " change" : " changes") + " kept, " +
-                   std::to_string(m_setup.points.size()) + " control points";
+        m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
+                   " control points";
     } else {
-        m_notice = "Waypoints: " + std::to_string(changes) + (changes == 1 ? " change" : " changes") + " undone";
+        m_notice = "Waypoints: " + changes_text(changes) + " undone";
     }
     m_log.log(m_notice);
     m_waypoints.reset();

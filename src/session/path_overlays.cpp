@@ -2,10 +2,10 @@
 
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
+#include "apcs/session/path_screen.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <tuple>
 
 namespace apcs {
@@ -43,14 +43,7 @@ void world_arrow(Painter& painter, const ViewTransform& view, const Vec3& from, 
 
 std::string vector_text(const Vec3& vector)
 {
-    std::string text;
-    for (const double value : {vector.x, vector.y, vector.z}) {
-        char field[32];
-        const double shown = std::round(value * 100.0) / 100.0;
-        std::snprintf(field, sizeof field, "%s%.2f", text.empty() ? "" : " ", shown == 0.0 ? 0.0 : shown);
-        text += field;
-    }
-    return text;
+    return format_two_decimals(vector.x) + " " + format_two_decimals(vector.y) + " " + format_two_decimals(vector.z);
 }
 
 } // namespace
@@ -189,9 +182,7 @@ void clear_box(GraphicsScreen& screen, const PixelRect& box)
 
 std::string inset_title(const SpanTiming& timing, std::size_t span, std::size_t span_count)
 {
-    char title[64];
-    std::snprintf(title, sizeof title, "law a %+.2f", timing.span.acceleration == 0.0 ? 0.0 : timing.span.acceleration);
-    std::string text = title;
+    std::string text = "law a " + format_staff_value(timing.span.acceleration);
     if (span_count > 1)
         text += "  span " + std::to_string(span + 1) + "/" + std::to_string(span_count);
     return text;
@@ -235,12 +226,14 @@ PixelRect draw_law_inset(GraphicsScreen& screen, const EvaluatedPath& path, std:
     if (span >= path.span_timings.size())
         return {};
     const std::vector<LawInset> candidates = insets();
-    const auto least_hidden = std::min_element(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
-        return hidden_by(screen, a.box) < hidden_by(screen, b.box);
-    });
-    clear_box(screen, least_hidden->box);
-    draw_law(screen, *least_hidden, path, span);
-    return least_hidden->box;
+    std::vector<std::tuple<std::size_t, std::size_t, std::size_t>> hidden;
+    for (const LawInset& candidate : candidates)
+        hidden.push_back(hidden_by(screen, candidate.box));
+    const LawInset& least_hidden =
+        candidates[static_cast<std::size_t>(std::min_element(hidden.begin(), hidden.end()) - hidden.begin())];
+    clear_box(screen, least_hidden.box);
+    draw_law(screen, least_hidden, path, span);
+    return least_hidden.box;
 }
 
 } // namespace apcs

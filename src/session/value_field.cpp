@@ -46,7 +46,7 @@ ValueField::Outcome ValueField::update(const Command& command)
             return Outcome::editing;
         }
         m_value = limits::staff_value.clamp(*number);
-        m_unclamped = m_value == *number ? std::nullopt : number;
+        m_clamped = m_value != *number;
         return Outcome::set;
     }
     return Outcome::editing;

@@ -20,8 +20,7 @@ WaypointEditor::Outcome WaypointEditor::update(const Command& command)
 {
     m_problem.clear();
     if (const auto* choose = std::get_if<command::ChoosePoint>(&command)) {
-        const auto count = static_cast<long long>(m_setup.points.size());
-        m_chosen = static_cast<std::size_t>(((static_cast<long long>(m_chosen) + choose->by) % count + count) % count);
+        m_chosen = wrapped_point(m_chosen, choose->by, m_setup.points.size());
     } else if (const auto* move = std::get_if<command::MovePoint>(&command)) {
         move_point(*move);
     } else if (std::holds_alternative<command::InsertPoint>(command)) {

@@ -11,13 +11,9 @@ data=$2
 part=${3:-core}
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
-work=$(mktemp -d)
-socket="apcs-80x24-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
-cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
-
 source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder 80x24
+cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
 
 start() { start_80x24 "$@"; }
 keys() { keys_to "$@"; }

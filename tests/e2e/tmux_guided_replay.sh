@@ -8,12 +8,9 @@ apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
-work=$(mktemp -d)
-socket="apcs-guided-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
-cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
 source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder guided
+cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
 
 start() { start_80x24 "$@"; }
 keys() { keys_to "$@"; }

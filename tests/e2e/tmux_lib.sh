@@ -1,4 +1,12 @@
-# Helpers for the tmux end-to-end tests; source it after setting $socket (the tmux server).
+# Helpers for the tmux end-to-end tests; source it, then call tmux_test_folder NAME.
+
+# A fresh work folder ($work) and a tmux server of the test's own ($socket, after NAME), both
+# removed when the test ends.
+tmux_test_folder() {
+  work=$(mktemp -d)
+  socket="apcs-$1-$$"
+  trap 'tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"' EXIT
+}
 
 # The text on the screen of tmux session $1.
 screen() { tmux -L "$socket" capture-pane -p -t "$1"; }

@@ -14,11 +14,8 @@ if ! (ulimit -v "$limit_kib" && "$apcs" --version) >/dev/null 2>&1; then
   exit 77
 fi
 
-work=$(mktemp -d)
-socket="apcs-oom-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
 source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder oom
 
 # Two-point keys, and a path of 1000 control points from KEY1's first point to KEY2's: with
 # --samples 100000 its curve takes 999 x 100000 samples, over 3 GB.

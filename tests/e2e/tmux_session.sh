@@ -6,13 +6,10 @@ apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
-work=$(mktemp -d)
-socket="apcs-e2e-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
+source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder e2e
 cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$data"/way4.dat "$work"/
 
-source "$(dirname "$0")/tmux_lib.sh"
 keys() { tmux -L "$socket" send-keys -t apcs "$@"; sleep 0.15; }
 
 tmux -L "$socket" new-session -d -s apcs -x 80 -y 25 -c "$work" \

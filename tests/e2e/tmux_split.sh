@@ -7,12 +7,9 @@ set -euo pipefail
 apcs=$1
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
-work=$(mktemp -d)
-socket="apcs-split-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
-
 source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder split
+
 fail() { echo "FAILED: $1"; [ $# -lt 2 ] || { echo "--- screen:"; screen "$2"; }; exit 1; }
 
 total=200000

@@ -6,12 +6,9 @@ apcs=$1
 data=${2:-$(dirname "$0")/../../data/n-to-l}
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
-work=$(mktemp -d)
-socket="apcs-faults-$$"
-cleanup() { tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"; }
-trap cleanup EXIT
-
 source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder faults
+
 report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
 
 # Fails unless the pane of session $1 reports exit 130 and a terminal with echo and icanon back.

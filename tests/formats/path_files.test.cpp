@@ -56,14 +56,6 @@ ControlPoints points_of(const DatFile& file)
     return control_points_from(file, StaffValues{});
 }
 
-std::vector<std::size_t> identity_origins(std::size_t count)
-{
-    std::vector<std::size_t> origins(count);
-    for (std::size_t k = 0; k < count; ++k)
-        origins[k] = k;
-    return origins;
-}
-
 } // namespace
 
 TEST_CASE("a rewritten path file keeps its comments, blank lines and line-end comments where they were", "[formats][path-files]")
@@ -72,7 +64,7 @@ TEST_CASE("a rewritten path file keeps its comments, blank lines and line-end co
     const DatFile file = *parse_dat(text, "way1.dat");
     ControlPoints points = points_of(file);
     points[1].staff.tension = 0.25;
-    REQUIRE(format_path_file(text, file, points, identity_origins(3)) ==
+    REQUIRE(format_path_file(text, file, points, file_origins(3)) ==
             "; way1: the N's first point\n\n0 0 0 0 0 0 0 ; KEY1\n; the bend\n3 -4 5 0.25 0 0 0\n0 0 10 0 0 0 0\n; end\n");
 }
 
@@ -91,10 +83,10 @@ TEST_CASE("a CRLF path file stays CRLF; one without comments is exactly format_d
 {
     const std::string crlf = "; header\r\n0 0 0\r\n0 0 10\r\n";
     const DatFile crlf_file = *parse_dat(crlf, "a.dat");
-    REQUIRE(format_path_file(crlf, crlf_file, points_of(crlf_file), identity_origins(2)) ==
+    REQUIRE(format_path_file(crlf, crlf_file, points_of(crlf_file), file_origins(2)) ==
             "; header\r\n0 0 0 0 0 0 0\r\n0 0 10 0 0 0 0\r\n");
     const std::string plain = "0 0 0\n3 -4 5 0.1 0.2 0.3 0.4\n0 0 10";
     const DatFile plain_file = *parse_dat(plain, "b.dat");
-    REQUIRE(format_path_file(plain, plain_file, points_of(plain_file), identity_origins(3)) ==
+    REQUIRE(format_path_file(plain, plain_file, points_of(plain_file), file_origins(3)) ==
             format_dat(dat_from(points_of(plain_file))));
 }

@@ -11,6 +11,13 @@ namespace apcs {
 // new_point for one the waypoint editor inserted. The file's comments stay with their points.
 inline constexpr std::size_t new_point = static_cast<std::size_t>(-1);
 
+// The origins of a path as read: point k is the file's point k.
+std::vector<std::size_t> file_origins(std::size_t point_count);
+
+// Choosing `by` control points on from `index` among `count` (Tab, Shift-Tab): past the last comes
+// the first, before the first the last.
+std::size_t wrapped_point(std::size_t index, int by, std::size_t count);
+
 // One edit of a path's control points in the waypoint editor. Each can be reverted exactly, so
 // that undo (U) and leaving the editor with Esc take changes back in reverse order.
 struct WaypointChange {

@@ -49,5 +49,7 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
 
 // "+0.05", "-1.00": a staff value as the staff shows it.
 std::string format_staff_value(double value);
+// "0.05", "-1.00": a number of the message line, never "-0.00".
+std::string format_two_decimals(double value);
 
 } // namespace apcs

@@ -2,7 +2,6 @@
 
 #include "apcs/session/command.h"
 
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,8 +18,8 @@ public:
     Outcome update(const Command& command);
     // The number read by the Enter that gave Outcome::set, clamped to [-1, 1].
     double value() const { return m_value; }
-    // What the number typed was, when clamping changed it.
-    std::optional<double> unclamped() const { return m_unclamped; }
+    // Whether the number typed lay outside [-1, 1] and was clamped.
+    bool clamped() const { return m_clamped; }
     // The message line: "TENSION = 0.35_  a value from -1 to 1", or why the last Enter was refused.
     std::string message(std::string_view line_name) const;
 
@@ -28,7 +27,7 @@ private:
     std::string m_text;
     std::string m_problem;
     double m_value = 0.0;
-    std::optional<double> m_unclamped;
+    bool m_clamped = false;
 };
 
 } // namespace apcs
