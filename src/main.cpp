@@ -1,6 +1,7 @@
 #include "apcs/cli/command_line.h"
 #include "apcs/formats/unfinished_files.h"
 #include "apcs/session/exit_status.h"
+#include "apcs/terminal/terminal_player.h"
 #include "apcs/terminal/terminal_session.h"
 
 #include <clocale>
@@ -47,7 +48,8 @@ int main(int argc, char** argv)
         // the heap, so peak memory is what is in use at once.
         mallopt(M_MMAP_THRESHOLD, 256 * 1024);
         const apcs::TerminalSessionRunner terminal = apcs::run_terminal_session;
-        return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal));
+        const apcs::TerminalPlayerRunner player = apcs::run_terminal_player;
+        return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal, player));
     } catch (const std::bad_alloc&) {
         std::cerr << "apcs: out of memory\n";
     } catch (const std::exception& error) {

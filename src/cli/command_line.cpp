@@ -7,6 +7,7 @@
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
+#include "apcs/cli/play_command.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/version.h"
@@ -179,7 +180,12 @@ std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::
         return *std::move(line);
     if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr && command.get_parent() == nullptr &&
         !command.remaining().empty() && !command.remaining().front().starts_with("-"))
-        return "unknown command '" + command.remaining().front() + "' (the commands: path, inbetween, fit, draw, figures)";
+    {
+        std::string names;
+        for (const CLI::App* known : app.get_subcommands({}))
+            names += (names.empty() ? "" : ", ") + known->get_name();
+        return "unknown command '" + command.remaining().front() + "' (the commands: " + names + ")";
+    }
     return error.what();
 }
 
@@ -254,7 +260,7 @@ int usage_error(const std::string& line, const CLI::App* command, std::ostream& 
 }
 
 int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                  const TerminalSessionRunner& terminal)
+                  const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
 {
     CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
                  "Without a command, the interactive session of the thesis (manual.txt, section 4).",
@@ -291,6 +297,11 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
         ->type_name("");
     add_draw_command_options(*draw, options);
 
+    PlayRequest play_request;
+    CLI::App* play = app.add_subcommand("play", "play a scene of several objects and actors (.scn)");
+    play->add_option("SCENE", play_request.scene, "the scene file (.scn)")->required()->type_name("");
+    add_play_command_options(*play, options, slopes, play_request.tree);
+
     CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures and examples as PNG");
     add_figures_command_options(*figures, options, slopes);
 
@@ -313,6 +324,7 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     inputs.insert(inputs.end(), fit_files.begin(), fit_files.end());
     inputs.insert(inputs.end(), draw_files.begin(), draw_files.end());
     inputs.push_back(path_file);
+    inputs.push_back(play_request.scene);
     const CLI::App* chosen = app.get_subcommands().empty() ? &app : app.get_subcommands().front();
     if (const auto clash = standard_stream_clash(options, inputs, chosen == &app))
         return usage_error(*clash, chosen, err);
@@ -342,6 +354,10 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
             return usage_error("apcs draw writes a picture: give --png, --png-raw or --svg", draw, err);
         return to_int(run_draw_command(draw_files, options, out, err));
     }
+    if (play->parsed()) {
+        play_request.spacing_given = given_count(app, "--spacing") > 0;
+        return to_int(run_play_command(play_request, options, player, out, err));
+    }
     if (figures->parsed())
         return to_int(run_figures_command(options, out, err));
     return to_int(run_session_command(options, terminal, out, err));
@@ -350,7 +366,7 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
 } // namespace
 
 int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                     const TerminalSessionRunner& terminal)
+                     const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
 {
     // Output that never arrived (a full disk, /dev/full, a closed pipe with SIGPIPE ignored) is a
     // failure, not a success. Standard output is buffered, so the failure may show only at the
@@ -359,7 +375,7 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     int status = 0;
     {
         const ReplacedBuffer replaced(out, &recorder);
-        status = parse_and_run(argc, argv, out, err, terminal);
+        status = parse_and_run(argc, argv, out, err, terminal, player);
         out.flush();
     }
     if (out.fail() || recorder.first_error() != 0) {

@@ -40,12 +40,6 @@ std::optional<Diagnostic> write_overlay_pictures(const FrameSequence& frames, co
     return write_pictures(frames_overlay_screen(frames, structure, options.view, caption), options, out);
 }
 
-// The batch commands keep no session log.
-class UnloggedSteps : public SessionLog {
-public:
-    void log(const std::string&) override {}
-};
-
 // --gif: every frame as the session's animation shows it (KEY1, the in-betweens, KEY2).
 std::optional<Diagnostic> write_animation_gif(const FrameSequence& frames, const Graphic& structure,
                                               const CommonOptions& options,
@@ -56,20 +50,25 @@ std::optional<Diagnostic> write_animation_gif(const FrameSequence& frames, const
     UnloggedSteps log;
     AnimationPlayer player(frames, structure, {key_files.front().filename().string(), key_files.back().filename().string()},
                            options.view, options.delay_ms, log);
+    return write_player_gif(player, frames.frame_count(), *options.gif, options.delay_ms, out);
+}
+
+} // namespace
+
+std::optional<Diagnostic> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
+                                           const std::filesystem::path& target, int delay_ms, std::ostream& out)
+{
     std::size_t shown = 0;
     const auto frame_at = [&](std::size_t k) {
         for (; shown < k; ++shown)
             player.tick();
         return render_raster(player.view());
     };
-    const std::optional<std::string> gif =
-        encode_gif(frames.frame_count(), frame_at, gif_delay_centiseconds(options.delay_ms));
+    const std::optional<std::string> gif = encode_gif(frame_count, frame_at, gif_delay_centiseconds(delay_ms));
     if (!gif)
-        return Diagnostic{options.gif->string(), 0, "cannot encode the GIF image"};
-    return write_picture_bytes(*options.gif, *gif, out);
+        return Diagnostic{target.string(), 0, "cannot encode the GIF image"};
+    return write_picture_bytes(target, *gif, out);
 }
-
-} // namespace
 
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err)

@@ -119,7 +119,9 @@ void add_staff(CLI::App& command, CommonOptions& options)
     command.add_option("--accel", options.staff.acceleration, "acceleration" + range)->check(staff)->type_name("A");
 }
 
-void add_curve(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)
+void add_curve(CLI::App& command, CommonOptions& options, std::vector<double>& slopes,
+               const std::string& spacing_help = "in-betweens at the sample nearest each distance (the thesis, default) "
+                                                 "or exactly on it")
 {
     command
         .add_option("--slopes", slopes,
@@ -139,7 +141,7 @@ void add_curve(CLI::App& command, CommonOptions& options, std::vector<double>& s
             [&options](const std::string& name) {
                 options.path.spacing = name == "exact" ? Spacing::exact : Spacing::nearest;
             },
-            "in-betweens at the sample nearest each distance (the thesis, default) or exactly on it")
+            spacing_help)
         ->check(one_of(spacings))
         ->type_name(alternatives(spacings));
 }
@@ -224,6 +226,20 @@ void add_out(CLI::App& command, CommonOptions& options, const std::string& what)
     command.add_option("--out", options.out, "folder " + what + " go to, default the current one")->type_name("DIR");
 }
 
+void add_glyphs(CLI::App& command, CommonOptions& options)
+{
+    const std::vector<std::string> glyphs{"ascii", "braille", "blocks"};
+    command.add_option_function<std::string>(
+           "--glyphs",
+           [&options](const std::string& name) {
+               options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
+           },
+           "characters that draw the raster; default braille in a UTF-8 locale on a terminal that shows it, "
+           "else ascii")
+        ->check(one_of(glyphs))
+        ->type_name(alternatives(glyphs));
+}
+
 } // namespace
 
 void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
@@ -233,16 +249,7 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     add_inbetween_count(app, options);
     add_view(app, options);
     add_delay(app, options);
-    const std::vector<std::string> glyphs{"ascii", "braille", "blocks"};
-    app.add_option_function<std::string>(
-           "--glyphs",
-           [&options](const std::string& name) {
-               options.glyphs = name == "ascii" ? GlyphSet::ascii : name == "braille" ? GlyphSet::braille : GlyphSet::blocks;
-           },
-           "characters that draw the raster; default braille in a UTF-8 locale on a terminal that shows it, "
-           "else ascii")
-        ->check(one_of(glyphs))
-        ->type_name(alternatives(glyphs));
+    add_glyphs(app, options);
     app.add_option("--step", options.step,
                    "staff step per key, " + range_text(limits::staff_step) + ", default 0.05")
         ->check(number_in(limits::staff_step))
@@ -333,6 +340,20 @@ void add_draw_command_options(CLI::App& command, CommonOptions& options)
 {
     add_view(command, options);
     add_pictures(command, options, "the drawing");
+}
+
+void add_play_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes, bool& tree)
+{
+    add_staff(command, options);
+    add_curve(command, options, slopes, "frames at the sample nearest each distance (the thesis) or exactly on it "
+                                        "(default for scenes)");
+    add_view(command, options);
+    add_glyphs(command, options);
+    add_pictures(command, options, "all frames overlaid");
+    add_animation(command, options);
+    add_print(command, options);
+    command.add_option("--out", options.out, "folder to write the frames to as frm000.dat ...")->type_name("DIR");
+    command.add_flag("--tree", tree, "print the scene's data-structure tree (thesis fig. 3.3.2) and stop");
 }
 
 void add_figures_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes)

@@ -27,6 +27,7 @@ void add_path_command_options(CLI::App& command, CommonOptions& options, std::ve
 void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
 void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings);
 void add_draw_command_options(CLI::App& command, CommonOptions& options);
+void add_play_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes, bool& tree);
 void add_figures_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
 
 } // namespace apcs

@@ -152,6 +152,11 @@ std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& sc
     return {script.events.begin(), script.events.begin() + static_cast<std::ptrdiff_t>(handled)};
 }
 
+Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)
+{
+    return terminal_glyphs(asked, nl_langinfo(CODESET), term_of_environment());
+}
+
 ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
                                std::ostream& err)
 {
@@ -197,7 +202,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     }
     GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
     if (!headless) {
-        const Expected<GlyphSet> shown = terminal_glyphs(options.glyphs, nl_langinfo(CODESET), term_of_environment());
+        const Expected<GlyphSet> shown = terminal_glyphs_here(options.glyphs);
         if (!shown) {
             err << shown.error().to_string() << '\n';
             return ExitStatus::bad_usage;

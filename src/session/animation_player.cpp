@@ -85,6 +85,9 @@ AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
 
 std::string AnimationPlayer::frame_label() const
 {
+    if (!m_scene_name.empty())
+        return "Frame " + std::to_string(m_frame) + " of " + std::to_string(m_frames.frame_count() - 1) + ": " +
+               m_scene_name;
     if (m_frame == 0)
         return "KEY1: " + m_key_names[0];
     const std::size_t inbetweens = m_frames.frame_count() - 2;

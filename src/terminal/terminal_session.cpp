@@ -16,20 +16,6 @@ namespace apcs {
 
 namespace {
 
-CellGrid too_small_grid(TerminalSize size)
-{
-    CellGrid grid(size.columns, size.rows);
-    // The least fit_cell_area accepts: the character screen of graphics mode.
-    const std::string message = "The terminal must be at least " + std::to_string(text_screen_columns) + "x" +
-                                std::to_string(text_screen_rows) + " (it is " + std::to_string(size.columns) + "x" +
-                                std::to_string(size.rows) + ")";
-    const std::string keys = "Keys are ignored until it is larger; Ctrl-C quits";
-    const int column = std::max(0, (size.columns - static_cast<int>(message.size())) / 2);
-    grid.put_text(column, size.rows / 2, message);
-    grid.put_text(std::max(0, (size.columns - static_cast<int>(keys.size())) / 2), size.rows / 2 + 1, keys);
-    return grid;
-}
-
 CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
                   std::string_view caption)
 {
@@ -106,6 +92,20 @@ std::optional<TerminalInput> replay_input(Terminal& terminal, Replay& replay, Ke
 }
 
 } // namespace
+
+CellGrid too_small_grid(TerminalSize size)
+{
+    CellGrid grid(size.columns, size.rows);
+    // The least fit_cell_area accepts: the character screen of graphics mode.
+    const std::string message = "The terminal must be at least " + std::to_string(text_screen_columns) + "x" +
+                                std::to_string(text_screen_rows) + " (it is " + std::to_string(size.columns) + "x" +
+                                std::to_string(size.rows) + ")";
+    const std::string keys = "Keys are ignored until it is larger; Ctrl-C quits";
+    const int column = std::max(0, (size.columns - static_cast<int>(message.size())) / 2);
+    grid.put_text(column, size.rows / 2, message);
+    grid.put_text(std::max(0, (size.columns - static_cast<int>(keys.size())) / 2), size.rows / 2 + 1, keys);
+    return grid;
+}
 
 ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem)

@@ -47,14 +47,16 @@ TEST_CASE("bad usage is exit 2 with one line of reason and where help is", "[cli
              {"path", "a.dat", "--glyphs", "emoji"},
              {"path"},
              {"fit", "a.dat"},
-             {"play", "robot.scn"},
+             {"dance", "robot.scn"},
+             {"play", "robot.scn", "--delay", "-1"},
+             {"play"},
          }) {
         const auto result = run_apcs(arguments);
         CAPTURE(arguments);
         REQUIRE(result.status == 2);
         REQUIRE(result.out.empty());
         REQUIRE(result.err.starts_with("apcs: "));
-        const std::string command = arguments.front().starts_with("-") || arguments.front() == "play"
+        const std::string command = arguments.front().starts_with("-") || arguments.front() == "dance"
                                         ? "apcs"
                                         : "apcs " + arguments.front();
         const std::string try_help = "Try '" + command + " --help' for more information.\n";
@@ -75,11 +77,13 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"path", "a.dat", "--samples", "0"}, "apcs: --samples: expected a whole number in [1, 100000], found 0"},
         {{"path", "a.dat", "--spacing", "wobbly"}, "apcs: --spacing: expected one of nearest, exact, found 'wobbly'"},
         {{"--frobnicate"}, "apcs: unknown option --frobnicate"},
-        {{"play", "robot.scn"}, "apcs: unknown command 'play' (the commands: path, inbetween, fit, draw, figures)"},
+        {{"dance", "robot.scn"}, "apcs: unknown command 'dance' (the commands: path, inbetween, fit, draw, play, figures)"},
+        {{"play", "robot.scn", "--inbetweens", "3"}, "apcs: --inbetweens is not an option of 'apcs play' (it is one of 'apcs', 'apcs path', 'apcs inbetween', 'apcs fit', 'apcs figures')"},
         {{"fit", "a", "b", "c", "d", "--keys", "x.keys"}, "apcs: --keys is not an option of 'apcs fit' (it is one of 'apcs')"},
-        {{"--glyphs", "ascii", "path", "a.dat"}, "apcs: --glyphs is not an option of 'apcs path' (it is one of 'apcs')"},
+        {{"--glyphs", "ascii", "path", "a.dat"}, "apcs: --glyphs is not an option of 'apcs path' (it is one of 'apcs', 'apcs play')"},
         {{"--out", "x", "path", "a.dat"},
-         "apcs: --out is not an option of 'apcs path' (it is one of 'apcs inbetween', 'apcs fit', 'apcs figures')"},
+         "apcs: --out is not an option of 'apcs path' (it is one of 'apcs inbetween', 'apcs fit', 'apcs play', "
+         "'apcs figures')"},
         {{"--print", "path", "a.dat"}, "apcs: --print goes after the command: apcs path ... --print"},
         {{"--png", "a.png", "path", "a.dat", "--png", "b.png"}, "apcs: --png is given twice, before and after 'path'"},
         {{"draw", "a.dat", "--png", "x.png", "--png-raw", "x.png"},

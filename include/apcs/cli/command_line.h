@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/cli/play_command.h"
 #include "apcs/cli/session_command.h"
 
 #include <iosfwd>
@@ -11,6 +12,6 @@ namespace apcs {
 // and the usage on `err`), 3 a terminal problem.
 // `terminal` runs the interactive session in a terminal; without it only headless sessions run.
 int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                     const TerminalSessionRunner& terminal = {});
+                     const TerminalSessionRunner& terminal = {}, const TerminalPlayerRunner& player = {});
 
 } // namespace apcs

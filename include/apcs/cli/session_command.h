@@ -36,6 +36,9 @@ GlyphSet default_glyphs(std::string_view codeset, std::string_view term);
 // ascii", since curses would show their characters as escapes.
 [[nodiscard]] Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term);
 
+// terminal_glyphs for this process's locale and TERM.
+[[nodiscard]] Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked);
+
 // What the session takes from the command line: samples, in-betweens, spacing, step; the staff
 // values that seed path files of three columns (default 0); the answers an empty line takes
 // (--theta, --phi, --delay, --slopes) only where given; and where the overlay PNG goes (--png; a

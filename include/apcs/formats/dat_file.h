@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/formats/diagnostic.h"
+#include "apcs/formats/text_lines.h"
 #include "apcs/geometry/vec3.h"
 
 #include <cstddef>
@@ -37,7 +38,7 @@ struct DatFile {
 
 // Limits of SPEC §2.1, checked while reading, before memory for the points is reserved.
 inline constexpr std::size_t max_dat_points = 1'000'000;
-inline constexpr std::size_t max_dat_line_bytes = 4096;
+inline constexpr std::size_t max_dat_line_bytes = max_text_line_bytes;
 inline constexpr double max_dat_magnitude = 1e9;
 
 // Parses `text` (the whole file) read from `file_name`. Accepts CRLF, a trailing Ctrl-Z, a UTF-8

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace apcs {
 
@@ -37,13 +38,16 @@ public:
     KeyContext key_context() const;
 
     // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
-    // inb003.dat", "KEY2: key2.dat".
+    // inb003.dat", "KEY2: key2.dat"; for a scene (name_frames_by_scene) "Frame 3 of 60: car.scn".
     std::string frame_label() const;
+    // The frames are a scene's 0 … N (apcs play), named by their number and the scene's file.
+    void name_frames_by_scene(std::string scene_name) { m_scene_name = std::move(scene_name); }
 
 private:
     FrameSequence m_frames;
     Graphic m_structure;
     std::array<std::string, 2> m_key_names;
+    std::string m_scene_name;
     ViewTransform m_view;
     SessionLog& m_log;
     SessionPhase m_phase = SessionPhase::animating;

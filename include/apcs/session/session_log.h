@@ -11,4 +11,10 @@ public:
     virtual void log(const std::string& line) = 0;
 };
 
+// The batch commands and apcs play keep no session log.
+class UnloggedSteps : public SessionLog {
+public:
+    void log(const std::string&) override {}
+};
+
 } // namespace apcs

@@ -5,6 +5,7 @@
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/session.h"
+#include "apcs/terminal/terminal.h"
 
 #include <vector>
 
@@ -19,6 +20,9 @@ namespace apcs {
 // terminal_problem with `problem` set ("apcs: PROBLEM") when there is no usable terminal. The
 // terminal is given back on every way out, exceptions included.
 // While a paced replay plays, Esc ends it (the keyboard takes over) and other keys are ignored.
+// The screen of a terminal smaller than the graphics mode's least size: how large it must be.
+CellGrid too_small_grid(TerminalSize size);
+
 ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem);
 

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "apcs/cli/options.h"
+#include "apcs/formats/diagnostic.h"
+#include "apcs/raster/glyph_mapper.h"
+#include "apcs/session/animation_player.h"
+#include "apcs/session/exit_status.h"
+
+#include <filesystem>
+#include <functional>
+#include <iosfwd>
+
+namespace apcs {
+
+// The terminal shell of apcs play, supplied by the executable (run_terminal_player): the player,
+// its delay and glyphs; success, stopped, or terminal_problem with `problem` set.
+using TerminalPlayerRunner = std::function<ExitStatus(AnimationPlayer&, int delay_ms, GlyphSet, Diagnostic& problem)>;
+
+struct PlayRequest {
+    std::filesystem::path scene;
+    bool tree = false;          // --tree: print the data-structure tree (fig. 3.3.2) only
+    bool spacing_given = false; // --spacing given; else a scene's paths use exact spacing
+};
+
+// `apcs play SCENE` (SPEC §8.3): reads the scene (exit 1 with FILE:LINE on a problem) and prints its
+// tree (--tree), its frames' numbers (--print), writes frm000.dat … (--out), the overlay (--png,
+// --png-raw, --svg) and the animation (--gif); with none of these it plays on the terminal (exit 3
+// without one).
+ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& options,
+                            const TerminalPlayerRunner& terminal, std::ostream& out, std::ostream& err);
+
+// "frm000.dat" … "frm060.dat": frame `frame` of a scene whose last frame is `last_frame`, the
+// number as wide as the last needs, at least 3 digits.
+std::string scene_frame_file_name(int frame, int last_frame);
+
+} // namespace apcs

@@ -1,0 +1,91 @@
+#pragma once
+
+#include "apcs/animation/add_points.h"
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/geometry/affine.h"
+#include "apcs/geometry/vec3.h"
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// Frames FROM … TO of a behaviour or of a KEYS animation (0 ≤ from ≤ to ≤ the scene's last frame).
+struct FrameSpan {
+    int from = 0;
+    int to = 0;
+};
+
+// MOVE (SPEC §8.1): along a KB path, by P(s(f)) − P_0.
+struct SceneMove {
+    ControlPoints path; // three-column files take the object's staff values
+    // TIMES: the frame at which each control point is reached; empty: spread over `frames`.
+    std::vector<int> times;
+    FrameSpan frames; // TIMES' first and last, or FROM/TO
+    bool loop = false;
+};
+
+// ROTATE: degrees_per_frame × (f − from) about +axis through `about` (default: the object's centre).
+struct SceneRotate {
+    double degrees_per_frame = 0.0;
+    Axis axis = Axis::x;
+    std::optional<Vec3> about;
+    FrameSpan frames;
+};
+
+// SCALE: factor^(f − from) about `about` (default: the object's centre).
+struct SceneScale {
+    double factor = 1.0;
+    std::optional<Vec3> about;
+    FrameSpan frames;
+};
+
+// JOINT: a key point (thesis Ch. 3.3), point `point` (0-based) of the object's drawing.
+struct SceneJoint {
+    std::string name;
+    std::size_t point = 0;
+    std::optional<double> tolerance; // unset: 0.001 × the diagonal of all frame-0 drawings
+    int line = 0;
+};
+
+// KEYS: KEY1 up to frame `frames.from`, the in-betweens fitted along the paths of the first and
+// last graphic point, KEY2 from frame `frames.to`.
+struct SceneKeys {
+    EqualisedKeys keys;
+    ControlPoints first_path;
+    ControlPoints last_path;
+    FrameSpan frames;
+};
+
+// One OBJECT line and what follows it: a part when it has a parent.
+struct SceneObject {
+    std::string name;
+    int line = 0; // the OBJECT line
+    std::optional<std::size_t> parent; // index of an object declared before
+    std::optional<Graphic> shape;
+    std::optional<SceneKeys> keys;
+    StaffValues staff;       // its own STAFF, or its parent's, or the command line's
+    bool own_staff = false;  // STAFF given on this object
+    std::optional<SceneMove> move;
+    std::optional<SceneRotate> rotate;
+    std::optional<SceneScale> scale;
+    std::vector<SceneJoint> joints;
+
+    bool has_drawing() const { return shape.has_value() || keys.has_value(); }
+    // Its drawing at frame 0 (SHAPE, or KEY1 after adding points); a group has none.
+    const Graphic* first_drawing() const { return shape ? &*shape : keys ? &keys->keys.key1 : nullptr; }
+};
+
+// A .scn file read and checked (SPEC §8): frames 0 … last_frame, objects in file order, every
+// parent before its children.
+struct Scene {
+    int last_frame = 0;
+    std::optional<ViewAngles> view; // VIEW THETA PHI
+    std::vector<SceneObject> objects;
+};
+
+} // namespace apcs

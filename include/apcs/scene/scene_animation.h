@@ -1,0 +1,76 @@
+#pragma once
+
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/geometry/affine.h"
+#include "apcs/scene/scene.h"
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// Where an object's points sit in a frame of the whole scene (a group has none).
+struct ObjectPoints {
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
+// A scene's frames, one at a time (SPEC §8.2): each object's transform
+// W_f = W_f(parent) ∘ translation(MOVE) ∘ ROTATE about its centre ∘ SCALE about its centre, applied
+// to its frame-f drawing (SHAPE, or the KEYS frame); then each joint that is more than its
+// tolerance apart moves the part and its descendants by the separation. What every frame needs
+// (the KEYS frames, the MOVE offsets) is computed once, here; `scene` must outlive this.
+class SceneAnimation {
+public:
+    // `settings` give the KB sampling, the end slopes and the spacing of MOVE and KEYS paths;
+    // their in-between counts come from the frames of each behaviour.
+    SceneAnimation(const Scene& scene, const PathSettings& settings);
+
+    int last_frame() const { return m_scene.last_frame; }
+    std::size_t frame_count() const { return static_cast<std::size_t>(m_scene.last_frame) + 1; }
+    std::size_t points_per_frame() const { return m_points_per_frame; }
+    // Every object's world points at frame f, laid out as object_points() says.
+    void frame(int f, std::span<Vec3> points) const;
+    std::vector<Vec3> frame(int f) const;
+    // The transform W_f of object `index`, without joint corrections.
+    Affine transform(std::size_t index, int f) const;
+    std::span<const ObjectPoints> object_points() const { return m_object_points; }
+    // The parts of all objects' drawings in file order, each named "OBJECT/PART" ("OBJECT/P1" … for
+    // parts without a name): the structure that draws a frame.
+    const Graphic& structure() const { return m_structure; }
+    // All frames 0 … N, for the player and the pictures.
+    FrameSequence all_frames() const;
+    // The centre an object's ROTATE and SCALE default to: the middle of its frame-0 drawing's box,
+    // or of its descendants' drawings for a group.
+    const Vec3& centre(std::size_t index) const { return m_centres[index]; }
+
+private:
+    struct JointLink {
+        std::size_t point;        // in this object's drawing
+        std::size_t parent_point; // in the parent's drawing
+        double tolerance;
+    };
+    Vec3 move_offset(std::size_t index, int f) const;
+    std::span<const Vec3> drawing_at(std::size_t index, int f) const;
+
+    const Scene& m_scene;
+    std::vector<Vec3> m_centres;
+    std::vector<FrameSequence> m_key_frames;       // per object: its KEYS frames FROM … TO
+    std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points
+    std::vector<std::vector<Vec3>> m_move_offsets;  // per object: MOVE offset at FROM … TO
+    std::vector<std::vector<JointLink>> m_joints;   // per object: its joints with its parent
+    std::vector<ObjectPoints> m_object_points;
+    std::size_t m_points_per_frame = 0;
+    Graphic m_structure;
+};
+
+// The MOVE offsets P(s(f)) − P_0 for frames move.frames.from … move.frames.to (SPEC §8.1): by
+// TIMES through TimedDistance on the true arc length, else each span's share of the frames in
+// proportion to its length and its distances by its acceleration law (evaluate_path).
+std::vector<Vec3> move_offsets(const SceneMove& move, const PathSettings& settings);
+
+} // namespace apcs

@@ -1,0 +1,15 @@
+#pragma once
+
+#include "apcs/formats/diagnostic.h"
+#include "apcs/raster/glyph_mapper.h"
+#include "apcs/session/animation_player.h"
+#include "apcs/session/exit_status.h"
+
+namespace apcs {
+
+// Plays `player` in the terminal (apcs play): a frame every `delay_ms` while it plays, Esc, Space
+// and R as in the session's animation, then all frames overlaid until a key ends it. Returns
+// success, stopped (a signal or a lost terminal), or terminal_problem with `problem` set.
+ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs, Diagnostic& problem);
+
+} // namespace apcs

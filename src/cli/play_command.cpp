@@ -1,0 +1,199 @@
+#include "apcs/cli/play_command.h"
+
+#include "apcs/animation/memory_budget.h"
+#include "apcs/cli/frame_output.h"
+#include "apcs/cli/memory_limit.h"
+#include "apcs/cli/path_command.h"
+#include "apcs/cli/report.h"
+#include "apcs/cli/session_command.h"
+#include "apcs/formats/dat_file.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/parallel_work.h"
+#include "apcs/formats/print_format.h"
+#include "apcs/scene/scene_animation.h"
+#include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_tree.h"
+#include "apcs/session/session_log.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <ostream>
+#include <string>
+#include <thread>
+#include <utility>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+// What the scene holds while it plays: the KEYS frames and MOVE offsets, and all frames when
+// they are drawn or played (not when only printed or written, one frame at a time).
+std::uint64_t scene_bytes(const Scene& scene, const PathSettings& settings, bool all_frames)
+{
+    std::uint64_t bytes = 0;
+    std::size_t points = 0;
+    const auto path = [&settings](const ControlPoints& control, const FrameSpan& frames) {
+        const int inbetweens = std::max(0, frames.to - frames.from - 1);
+        return memory::path_bytes({control.size(), settings.samples_per_segment, inbetweens, false});
+    };
+    for (const SceneObject& object : scene.objects) {
+        if (const Graphic* drawing = object.first_drawing())
+            points += drawing->point_count();
+        if (object.keys) {
+            const std::size_t frames = static_cast<std::size_t>(object.keys->frames.to - object.keys->frames.from) + 1;
+            bytes = memory::saturating_sum(bytes, memory::frames_bytes({frames, object.keys->keys.key1.point_count(), false}));
+            bytes = memory::saturating_sum(bytes, path(object.keys->first_path, object.keys->frames));
+            bytes = memory::saturating_sum(bytes, path(object.keys->last_path, object.keys->frames));
+        }
+        if (object.move)
+            bytes = memory::saturating_sum(bytes, path(object.move->path, object.move->frames));
+    }
+    const std::size_t frame_count = static_cast<std::size_t>(scene.last_frame) + 1;
+    return memory::saturating_sum(bytes, memory::frames_bytes({all_frames ? frame_count : 1, points, false}));
+}
+
+void print_frames(const SceneAnimation& animation, const Scene& scene, std::ostream& out)
+{
+    std::vector<Vec3> points(animation.points_per_frame());
+    std::string text;
+    for (int f = 0; f <= animation.last_frame(); ++f) {
+        animation.frame(f, points);
+        text = "# frame " + std::to_string(f) + "\n";
+        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+            const ObjectPoints place = animation.object_points()[i];
+            append_print_section(text, "object " + scene.objects[i].name,
+                                 std::span<const Vec3>(points).subspan(place.first, place.count));
+        }
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    }
+}
+
+// frm000.dat … into `folder`, one frame computed, formatted and written at a time on each core.
+std::optional<Diagnostic> write_frame_files(const SceneAnimation& animation, const std::filesystem::path& folder,
+                                            const KeyFileGuard& guard)
+{
+    std::error_code error;
+    if (!std::filesystem::is_directory(folder, error))
+        return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the frame files"};
+    const std::size_t count = animation.frame_count();
+    std::vector<std::filesystem::path> targets;
+    for (std::size_t f = 0; f < count; ++f) {
+        targets.push_back(folder / scene_frame_file_name(static_cast<int>(f), animation.last_frame()));
+        if (std::optional<Diagnostic> refusal = guard.refuse(targets.back()))
+            return refusal;
+    }
+    std::vector<std::optional<Diagnostic>> problems(count);
+    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
+    for_each_index_in_parallel(count, workers, [&](std::size_t f) {
+        const std::vector<Vec3> points = animation.frame(static_cast<int>(f));
+        const std::string text = "; APCS scene frame " + std::to_string(f) + " of " +
+                                 std::to_string(animation.last_frame()) + "\n" +
+                                 format_graphic(animation.structure(), points);
+        const Expected<WriteResult> written = write_file_atomically(targets[f], text, &guard);
+        if (!written)
+            problems[f] = written.error();
+    });
+    for (std::optional<Diagnostic>& problem : problems)
+        if (problem)
+            return problem;
+    return std::nullopt;
+}
+
+ViewAngles view_of(const Scene& scene, const CommonOptions& options)
+{
+    ViewAngles view = scene.view.value_or(ViewAngles{});
+    if (options.given.theta)
+        view.theta_degrees = options.view.theta_degrees;
+    if (options.given.phi)
+        view.phi_degrees = options.view.phi_degrees;
+    return view;
+}
+
+ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& options,
+                            const TerminalPlayerRunner& terminal, std::ostream& err)
+{
+    if (!terminal || !::isatty(STDIN_FILENO)) {
+        err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg or --gif to play a "
+               "scene without one\n";
+        return ExitStatus::terminal_problem;
+    }
+    const Expected<GlyphSet> glyphs = terminal_glyphs_here(options.glyphs);
+    if (!glyphs) {
+        err << glyphs.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
+    Diagnostic problem;
+    const ExitStatus status = terminal(player, options.delay_ms, *glyphs, problem);
+    if (status == ExitStatus::terminal_problem)
+        err << problem.to_string() << '\n';
+    return status;
+}
+
+} // namespace
+
+std::string scene_frame_file_name(int frame, int last_frame)
+{
+    const std::size_t width = std::max<std::size_t>(3, std::to_string(last_frame).size());
+    std::string number = std::to_string(frame);
+    number.insert(0, width - std::min(width, number.size()), '0');
+    return "frm" + number + ".dat";
+}
+
+ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& options,
+                            const TerminalPlayerRunner& terminal, std::ostream& out, std::ostream& err)
+{
+    std::vector<std::filesystem::path> inputs;
+    const Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
+    if (!scene)
+        return report_bad_input(scene.error(), err);
+    const std::string scene_name = request.scene.filename().string();
+    if (request.tree) {
+        out << format_scene_tree(*scene, scene_name);
+        return ExitStatus::success;
+    }
+    PathSettings settings = options.path;
+    if (!request.spacing_given)
+        settings.spacing = Spacing::exact;
+    const bool played = !options.print && !options.out && !pictures_asked(options);
+    const bool all_frames = played || pictures_asked(options);
+    if (const auto refused = refuse_over_budget("the scene " + scene_name, scene_bytes(*scene, settings, all_frames),
+                                                options, "use fewer FRAMES or drawings of fewer points", err))
+        return *refused;
+    const SceneAnimation animation(*scene, settings);
+    if (options.print)
+        print_frames(animation, *scene, out);
+    if (options.out) {
+        KeyFileGuard guard;
+        for (const std::filesystem::path& input : inputs)
+            guard.protect(input);
+        if (auto problem = write_frame_files(animation, *options.out, guard))
+            return report_bad_input(*problem, err);
+    }
+    if (!all_frames)
+        return ExitStatus::success;
+    CommonOptions shown = options;
+    shown.view = view_of(*scene, options);
+    FrameSequence frames = animation.all_frames();
+    const std::size_t frame_count = frames.frame_count();
+    if (pictures_asked(options) && (options.png || options.png_raw || options.svg)) {
+        const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
+        if (auto problem = write_pictures(frames_overlay_screen(frames, animation.structure(), shown.view, caption),
+                                          shown, out))
+            return report_bad_input(*problem, err);
+    }
+    UnloggedSteps log;
+    AnimationPlayer player(std::move(frames), animation.structure(), {scene_name, scene_name}, shown.view,
+                           options.delay_ms, log);
+    player.name_frames_by_scene(scene_name);
+    if (options.gif)
+        if (auto problem = write_player_gif(player, frame_count, *options.gif, options.delay_ms, out))
+            return report_bad_input(*problem, err);
+    if (!played)
+        return ExitStatus::success;
+    return play_on_terminal(player, shown, terminal, err);
+}
+
+} // namespace apcs

@@ -1,0 +1,200 @@
+#include "apcs/scene/scene_animation.h"
+
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/animation/surface_fit.h"
+#include "apcs/geometry/bounding_box.h"
+#include "apcs/scene/scene_file.h"
+#include "apcs/scene/timed_distance.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace apcs {
+
+namespace {
+
+PathSettings spread_over(const PathSettings& settings, const FrameSpan& frames)
+{
+    PathSettings spread = settings;
+    spread.inbetween_count = std::max(0, frames.to - frames.from - 1);
+    return spread;
+}
+
+std::vector<Vec3> timed_offsets(const SceneMove& move, const PathSettings& settings)
+{
+    const ArcLengthTable table(kb_segments(move.path, settings.slopes));
+    std::vector<double> distances(move.path.size());
+    for (std::size_t k = 0; k < move.path.size(); ++k)
+        distances[k] = table.length_to_segment_start(k);
+    const TimedDistance distance(move.times, distances);
+    const Vec3 start = move.path.front().position;
+    std::vector<Vec3> offsets;
+    offsets.reserve(static_cast<std::size_t>(move.frames.to - move.frames.from) + 1);
+    std::size_t next_key = 0;
+    for (int f = move.frames.from; f <= move.frames.to; ++f) {
+        // At its frame a control point is reached exactly, not to the arc length's precision.
+        if (f == move.times[next_key]) {
+            offsets.push_back(move.path[next_key++].position - start);
+            continue;
+        }
+        offsets.push_back(table.point_at(table.parameter_at(distance.at(f))) - start);
+    }
+    return offsets;
+}
+
+// Frame f of a behaviour over `frames`: 0 before it, held after it.
+int elapsed(const FrameSpan& frames, int f) { return std::clamp(f, frames.from, frames.to) - frames.from; }
+
+} // namespace
+
+std::vector<Vec3> move_offsets(const SceneMove& move, const PathSettings& settings)
+{
+    if (!move.times.empty())
+        return timed_offsets(move, settings);
+    const Vec3 start = move.path.front().position;
+    const Vec3 end = move.path.back().position;
+    if (move.frames.to == move.frames.from)
+        return {end - start};
+    const EvaluatedPath path = evaluate_path(move.path, spread_over(settings, move.frames));
+    std::vector<Vec3> offsets{Vec3{}};
+    offsets.reserve(path.inbetweens.size() + 2);
+    for (const Inbetween& inbetween : path.inbetweens)
+        offsets.push_back(inbetween.position - start);
+    offsets.push_back(end - start);
+    return offsets;
+}
+
+SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings)
+    : m_scene(scene)
+    , m_centres(scene.objects.size())
+    , m_key_frames(scene.objects.size())
+    , m_drawings(scene.objects.size())
+    , m_move_offsets(scene.objects.size())
+    , m_joints(scene.objects.size())
+    , m_object_points(scene.objects.size())
+{
+    std::vector<BoundingBox> boxes(scene.objects.size());
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (const Graphic* drawing = object.first_drawing()) {
+            m_drawings[i] = drawing->all_points();
+            for (std::optional<std::size_t> owner = i; owner; owner = scene.objects[*owner].parent)
+                boxes[*owner].add(m_drawings[i]);
+            m_object_points[i] = {m_points_per_frame, m_drawings[i].size()};
+            m_points_per_frame += m_drawings[i].size();
+            for (std::size_t p = 0; p < drawing->parts.size(); ++p) {
+                GraphicPart part = drawing->parts[p];
+                part.name = object.name + "/" + (part.name.empty() ? "P" + std::to_string(p + 1) : part.name);
+                m_structure.parts.push_back(std::move(part));
+            }
+        }
+        if (object.keys) {
+            const SceneKeys& keys = *object.keys;
+            const PathSettings spread = spread_over(settings, keys.frames);
+            m_key_frames[i] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, spread),
+                                             evaluate_path(keys.last_path, spread));
+        }
+        if (object.move)
+            m_move_offsets[i] = move_offsets(*object.move, settings);
+    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
+    const double default_tolerance = default_joint_tolerance(scene);
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const SceneObject& object = scene.objects[i];
+        if (!object.parent)
+            continue;
+        for (const SceneJoint& joint : object.joints)
+            for (const SceneJoint& partner : scene.objects[*object.parent].joints)
+                if (partner.name == joint.name)
+                    m_joints[i].push_back({joint.point, partner.point,
+                                           joint.tolerance.value_or(partner.tolerance.value_or(default_tolerance))});
+    }
+}
+
+Vec3 SceneAnimation::move_offset(std::size_t index, int f) const
+{
+    const std::optional<SceneMove>& move = m_scene.objects[index].move;
+    if (!move || f < move->frames.from)
+        return {};
+    const std::vector<Vec3>& offsets = m_move_offsets[index];
+    const int lap = move->frames.to - move->frames.from;
+    if (f >= move->frames.to) {
+        if (!move->loop || lap == 0)
+            return offsets.back();
+        // Every lap starts again at P_0: frame FROM + k·lap shows the path's start.
+        return offsets[static_cast<std::size_t>((f - move->frames.from) % lap)];
+    }
+    return offsets[static_cast<std::size_t>(f - move->frames.from)];
+}
+
+Affine SceneAnimation::transform(std::size_t index, int f) const
+{
+    const SceneObject& object = m_scene.objects[index];
+    Affine own = Affine::translation(move_offset(index, f));
+    if (object.rotate) {
+        const SceneRotate& rotate = *object.rotate;
+        own = own * Affine::rotation_about(rotate.degrees_per_frame * elapsed(rotate.frames, f), rotate.axis,
+                                           rotate.about.value_or(m_centres[index]));
+    }
+    if (object.scale) {
+        const SceneScale& scale = *object.scale;
+        own = own * Affine::scale_about(std::pow(scale.factor, elapsed(scale.frames, f)),
+                                        scale.about.value_or(m_centres[index]));
+    }
+    return object.parent ? transform(*object.parent, f) * own : own;
+}
+
+std::span<const Vec3> SceneAnimation::drawing_at(std::size_t index, int f) const
+{
+    const std::optional<SceneKeys>& keys = m_scene.objects[index].keys;
+    if (!keys)
+        return m_drawings[index];
+    const int last = keys->frames.to - keys->frames.from;
+    return m_key_frames[index].frame(static_cast<std::size_t>(std::clamp(f - keys->frames.from, 0, last)));
+}
+
+void SceneAnimation::frame(int f, std::span<Vec3> points) const
+{
+    std::vector<Vec3> correction(m_scene.objects.size());
+    for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+        const SceneObject& object = m_scene.objects[i];
+        if (object.parent)
+            correction[i] = correction[*object.parent];
+        const ObjectPoints place = m_object_points[i];
+        const std::span<Vec3> own = points.subspan(place.first, place.count);
+        const Affine world = transform(i, f);
+        const std::span<const Vec3> drawing = drawing_at(i, f);
+        for (std::size_t p = 0; p < own.size(); ++p)
+            own[p] = world(drawing[p]) + correction[i];
+        // A joint the transforms do not keep moves the part (and, through `correction`, its
+        // descendants) onto its parent's key point.
+        for (const JointLink& joint : m_joints[i]) {
+            const Vec3 target = points[m_object_points[*object.parent].first + joint.parent_point];
+            const Vec3 separation = target - own[joint.point];
+            if (length(separation) <= joint.tolerance)
+                continue;
+            correction[i] += separation;
+            for (Vec3& point : own)
+                point += separation;
+        }
+    }
+}
+
+std::vector<Vec3> SceneAnimation::frame(int f) const
+{
+    std::vector<Vec3> points(m_points_per_frame);
+    frame(f, points);
+    return points;
+}
+
+FrameSequence SceneAnimation::all_frames() const
+{
+    FrameSequence frames(frame_count(), m_points_per_frame);
+    for (int f = 0; f <= m_scene.last_frame; ++f)
+        frame(f, frames.frame(static_cast<std::size_t>(f)));
+    return frames;
+}
+
+} // namespace apcs

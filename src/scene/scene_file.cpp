@@ -1,0 +1,654 @@
+#include "apcs/scene/scene_file.h"
+
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/path_files.h"
+#include "apcs/formats/text_fields.h"
+#include "apcs/formats/text_lines.h"
+#include "apcs/geometry/bounding_box.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+using Fields = std::vector<std::string_view>;
+using Problem = std::optional<Diagnostic>;
+
+// The scene's largest scale: a SCALE whose power over its frames leaves 1e-6 … 1e6 is refused.
+constexpr double most_scale_growth = 1e6;
+
+Fields split(std::string_view content)
+{
+    Fields fields;
+    for_each_field(content, [&](std::string_view field) { fields.push_back(field); });
+    return fields;
+}
+
+// A path file, kept until the object's staff values are known.
+struct PendingPath {
+    DatFile file;
+    std::string name;
+    int line = 0;
+};
+
+// What an object's lines said that needs the whole object (its STAFF may come last).
+struct PendingObject {
+    std::optional<PendingPath> move_path;
+    std::optional<std::array<PendingPath, 2>> paths;
+    int keys_line = 0;
+};
+
+// The optional clauses after a keyword's own fields: FROM F, TO G, AXIS A, ABOUT X Y Z, TIMES …,
+// LOOP, TOLERANCE D; each at most once.
+class Clauses {
+public:
+    Clauses(const Fields& fields, std::size_t first) : m_fields(fields), m_next(first) {}
+    bool done() const { return m_next >= m_fields.size(); }
+    std::string_view take() { return m_fields[m_next++]; }
+    std::size_t left() const { return m_fields.size() - m_next; }
+    bool seen(std::string_view keyword)
+    {
+        const std::string lower = ascii_lower_case(keyword);
+        if (std::find(m_seen.begin(), m_seen.end(), lower) != m_seen.end())
+            return true;
+        m_seen.push_back(lower);
+        return false;
+    }
+
+private:
+    const Fields& m_fields;
+    std::size_t m_next;
+    std::vector<std::string> m_seen;
+};
+
+class SceneParser {
+public:
+    SceneParser(const std::string& file_name, const SceneFileReader& read, const StaffValues& defaults)
+        : m_file_name(file_name)
+        , m_read(read)
+        , m_defaults(defaults)
+    {
+    }
+
+    Expected<Scene> parse(std::string_view text);
+
+private:
+    Problem parse_line(const Fields& fields);
+    Problem parse_frames(const Fields& fields);
+    Problem parse_view(const Fields& fields);
+    Problem parse_object(const Fields& fields);
+    Problem parse_shape(const Fields& fields);
+    Problem parse_keys(const Fields& fields);
+    Problem parse_paths(const Fields& fields);
+    Problem parse_staff(const Fields& fields);
+    Problem parse_move(const Fields& fields);
+    Problem parse_rotate(const Fields& fields);
+    Problem parse_scale(const Fields& fields);
+    Problem parse_joint(const Fields& fields);
+    Problem finish_object();
+    Problem finish_joints();
+
+    Problem read_file(std::string_view name, DatFile& file, std::size_t minimum_points = 2);
+    Problem number(std::string_view field, const std::string& what, double& value) const;
+    Problem frame(std::string_view field, const std::string& what, int& value) const;
+    Problem span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const;
+    Problem point_clause(Clauses& clauses, std::optional<Vec3>& point) const;
+    Problem check_span(const FrameSpan& span, std::string_view keyword) const;
+    Problem once(bool already, std::string_view what) const;
+    SceneObject& object() { return m_scene.objects.back(); }
+    Diagnostic error(std::string message, int line = 0) const
+    {
+        return {m_file_name, line == 0 ? m_line : line, std::move(message)};
+    }
+
+    const std::string& m_file_name;
+    const SceneFileReader& m_read;
+    StaffValues m_defaults;
+    Scene m_scene;
+    bool m_frames_seen = false;
+    int m_line = 0;
+    PendingObject m_pending;
+};
+
+Expected<Scene> SceneParser::parse(std::string_view text)
+{
+    const Problem problem = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) -> Problem {
+        m_line = line;
+        const Fields fields = split(content);
+        return fields.empty() ? std::nullopt : parse_line(fields);
+    });
+    if (problem)
+        return *problem;
+    if (!m_frames_seen)
+        return error("expected 'FRAMES N' as the first data line; the file has none", 0);
+    if (m_scene.objects.empty())
+        return error("expected at least one OBJECT line; the file has none", 0);
+    if (auto unfinished = finish_object())
+        return *unfinished;
+    if (auto joints = finish_joints())
+        return *joints;
+    return std::move(m_scene);
+}
+
+Problem SceneParser::parse_line(const Fields& fields)
+{
+    const std::string keyword = ascii_lower_case(fields[0]);
+    if (!m_frames_seen) {
+        if (keyword != "frames")
+            return error("expected 'FRAMES N' as the first data line, found " + quote_field(fields[0]));
+        return parse_frames(fields);
+    }
+    using Parse = Problem (SceneParser::*)(const Fields&);
+    static const std::map<std::string, Parse> object_keywords{
+        {"shape", &SceneParser::parse_shape}, {"keys", &SceneParser::parse_keys},
+        {"paths", &SceneParser::parse_paths}, {"staff", &SceneParser::parse_staff},
+        {"move", &SceneParser::parse_move},   {"rotate", &SceneParser::parse_rotate},
+        {"scale", &SceneParser::parse_scale}, {"joint", &SceneParser::parse_joint}};
+    if (keyword == "object")
+        return parse_object(fields);
+    if (keyword == "view")
+        return parse_view(fields);
+    if (keyword == "frames")
+        return error("a second FRAMES line; the scene's frames are given once, on the first data line");
+    const auto found = object_keywords.find(keyword);
+    if (found == object_keywords.end())
+        return error("unknown keyword " + quote_field(fields[0]) +
+                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT or VIEW");
+    if (m_scene.objects.empty())
+        return error(std::string(fields[0]) + " before the first OBJECT line; expected 'OBJECT NAME' first");
+    return (this->*found->second)(fields);
+}
+
+Problem SceneParser::parse_frames(const Fields& fields)
+{
+    m_frames_seen = true;
+    const std::optional<std::size_t> count = fields.size() == 2 ? parse_count_value(fields[1]) : std::nullopt;
+    if (!count || *count < 1 || *count > static_cast<std::size_t>(max_scene_frames))
+        return error("expected 'FRAMES N' with N a whole number from 1 to " + std::to_string(max_scene_frames));
+    m_scene.last_frame = static_cast<int>(*count);
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_view(const Fields& fields)
+{
+    if (!m_scene.objects.empty())
+        return error("VIEW after an OBJECT line; expected it before the first OBJECT");
+    if (m_scene.view)
+        return error("a second VIEW line; expected one at most");
+    if (fields.size() != 3)
+        return error("expected 'VIEW THETA PHI' (degrees)");
+    ViewAngles view;
+    if (auto problem = number(fields[1], "THETA", view.theta_degrees))
+        return problem;
+    if (auto problem = number(fields[2], "PHI", view.phi_degrees))
+        return problem;
+    m_scene.view = view;
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_object(const Fields& fields)
+{
+    if (!m_scene.objects.empty())
+        if (auto problem = finish_object())
+            return problem;
+    const bool with_parent = fields.size() == 4 && equals_ignoring_case(fields[2], "PARENT");
+    if (fields.size() != 2 && !with_parent)
+        return error("expected 'OBJECT NAME' or 'OBJECT NAME PARENT NAME'");
+    if (m_scene.objects.size() == max_scene_objects)
+        return error("more than " + std::to_string(max_scene_objects) + " objects; expected at most that many");
+    const auto named = [&](std::string_view name) {
+        return std::find_if(m_scene.objects.begin(), m_scene.objects.end(),
+                            [&](const SceneObject& o) { return o.name == name; });
+    };
+    if (const auto same = named(fields[1]); same != m_scene.objects.end())
+        return error("object " + quote_field(fields[1]) + " is declared again; its first OBJECT line is line " +
+                     std::to_string(same->line) + " (names are unique)");
+    SceneObject declared;
+    declared.name = std::string(fields[1]);
+    declared.line = m_line;
+    declared.staff = m_defaults;
+    if (with_parent) {
+        const auto parent = named(fields[3]);
+        if (parent == m_scene.objects.end())
+            return error("parent " + quote_field(fields[3]) +
+                         " is not an object declared above; a parent is declared before its parts");
+        declared.parent = static_cast<std::size_t>(parent - m_scene.objects.begin());
+        declared.staff = parent->staff;
+    }
+    m_scene.objects.push_back(std::move(declared));
+    m_pending = {};
+    return std::nullopt;
+}
+
+Problem SceneParser::once(bool already, std::string_view what) const
+{
+    if (!already)
+        return std::nullopt;
+    return error("a second " + std::string(what) + " for object '" + m_scene.objects.back().name +
+                 "'; expected one at most");
+}
+
+Problem SceneParser::read_file(std::string_view name, DatFile& file, std::size_t minimum_points)
+{
+    Expected<DatFile> read = m_read(std::string(name));
+    if (!read)
+        return error("cannot use " + quote_field(name) + ": " + read.error().to_string());
+    if (read->point_count() < minimum_points)
+        return error("cannot use " + quote_field(name) + ": expected at least " + std::to_string(minimum_points) +
+                     " points");
+    file = std::move(*read);
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_shape(const Fields& fields)
+{
+    if (auto problem = once(object().has_drawing(), "SHAPE or KEYS"))
+        return problem;
+    if (fields.size() != 2)
+        return error("expected 'SHAPE FILE.dat'");
+    DatFile file;
+    if (auto problem = read_file(fields[1], file, 1))
+        return problem;
+    object().shape = graphic_from(file);
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_keys(const Fields& fields)
+{
+    if (auto problem = once(object().has_drawing(), "SHAPE or KEYS"))
+        return problem;
+    if (fields.size() < 3)
+        return error("expected 'KEYS KEY1.dat KEY2.dat [FROM F TO G]'");
+    DatFile key1;
+    DatFile key2;
+    if (auto problem = read_file(fields[1], key1))
+        return problem;
+    if (auto problem = read_file(fields[2], key2))
+        return problem;
+    SceneKeys keys{equalise_key_frames(graphic_from(key1), graphic_from(key2)), {}, {}, {0, m_scene.last_frame}};
+    Clauses clauses(fields, 3);
+    while (!clauses.done())
+        if (auto problem = span_clause(clauses, "KEYS", keys.frames))
+            return problem;
+    if (auto problem = check_span(keys.frames, "KEYS"))
+        return problem;
+    if (keys.frames.from == keys.frames.to)
+        return error("KEYS FROM " + std::to_string(keys.frames.from) + " TO " + std::to_string(keys.frames.to) +
+                     ": expected FROM before TO (KEY1 at FROM, KEY2 at TO)");
+    object().keys = std::move(keys);
+    m_pending.keys_line = m_line;
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_paths(const Fields& fields)
+{
+    if (auto problem = once(m_pending.paths.has_value(), "PATHS"))
+        return problem;
+    if (fields.size() != 3)
+        return error("expected 'PATHS FIRST.dat LAST.dat'");
+    std::array<PendingPath, 2> paths;
+    for (std::size_t i = 0; i < 2; ++i) {
+        if (auto problem = read_file(fields[1 + i], paths[i].file))
+            return problem;
+        paths[i].name = std::string(fields[1 + i]);
+        paths[i].line = m_line;
+    }
+    m_pending.paths = std::move(paths);
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_staff(const Fields& fields)
+{
+    if (auto problem = once(object().own_staff, "STAFF"))
+        return problem;
+    if (fields.size() != 5)
+        return error("expected 'STAFF T C B A' (four values from -1 to 1)");
+    StaffValues staff;
+    for (std::size_t i = 0; i < staff_lines.size(); ++i) {
+        const std::string what = ascii_lower_case(staff_line_name(staff_lines[i]));
+        if (auto problem = number(fields[1 + i], what, staff[staff_lines[i]]))
+            return problem;
+        if (!limits::staff_value.contains(staff[staff_lines[i]]))
+            return error(what + " " + quote_field(fields[1 + i]) + " is outside " + range_text(limits::staff_value));
+    }
+    object().staff = staff;
+    object().own_staff = true;
+    // Parts declared later inherit it (parse_object copies the parent's values).
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_move(const Fields& fields)
+{
+    if (auto problem = once(object().move.has_value(), "MOVE"))
+        return problem;
+    if (fields.size() < 2)
+        return error("expected 'MOVE PATH.dat [TIMES F0 F1 ... | FROM F TO G] [LOOP]'");
+    PendingPath path{{}, std::string(fields[1]), m_line};
+    if (auto problem = read_file(fields[1], path.file))
+        return problem;
+    SceneMove move;
+    move.frames = {0, m_scene.last_frame};
+    bool span_given = false;
+    Clauses clauses(fields, 2);
+    while (!clauses.done()) {
+        const std::string_view clause = fields[fields.size() - clauses.left()];
+        if (equals_ignoring_case(clause, "LOOP")) {
+            clauses.take();
+            if (clauses.seen("LOOP"))
+                return error("LOOP is given twice; expected it once");
+            move.loop = true;
+        } else if (equals_ignoring_case(clause, "TIMES")) {
+            clauses.take();
+            if (clauses.seen("TIMES"))
+                return error("TIMES is given twice; expected it once");
+            while (!clauses.done() && !equals_ignoring_case(fields[fields.size() - clauses.left()], "LOOP")) {
+                int time = 0;
+                if (auto problem = frame(clauses.take(), "TIMES", time))
+                    return problem;
+                if (!move.times.empty() && time <= move.times.back())
+                    return error("TIMES " + std::to_string(time) + " after " + std::to_string(move.times.back()) +
+                                 ": expected increasing frames, one per control point");
+                move.times.push_back(time);
+            }
+        } else {
+            span_given = true;
+            if (auto problem = span_clause(clauses, "MOVE", move.frames))
+                return problem;
+        }
+    }
+    if (!move.times.empty() && span_given)
+        return error("MOVE with both TIMES and FROM/TO; expected one of them (TIMES gives every control point's frame)");
+    if (!move.times.empty()) {
+        if (move.times.size() != path.file.point_count())
+            return error("TIMES gives " + std::to_string(move.times.size()) + " frames but " + quote_field(fields[1]) +
+                         " has " + std::to_string(path.file.point_count()) +
+                         " control points; expected one frame per control point");
+        move.frames = {move.times.front(), move.times.back()};
+    }
+    if (auto problem = check_span(move.frames, "MOVE"))
+        return problem;
+    object().move = std::move(move);
+    m_pending.move_path = std::move(path);
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_rotate(const Fields& fields)
+{
+    if (auto problem = once(object().rotate.has_value(), "ROTATE"))
+        return problem;
+    if (fields.size() < 2)
+        return error("expected 'ROTATE DEG [AXIS x|y|z] [ABOUT X Y Z] [FROM F TO G]'");
+    SceneRotate rotate;
+    rotate.frames = {0, m_scene.last_frame};
+    if (auto problem = number(fields[1], "the degrees per frame", rotate.degrees_per_frame))
+        return problem;
+    Clauses clauses(fields, 2);
+    while (!clauses.done()) {
+        const std::string_view clause = fields[fields.size() - clauses.left()];
+        if (equals_ignoring_case(clause, "AXIS")) {
+            clauses.take();
+            if (clauses.seen("AXIS") || clauses.done())
+                return error("expected 'AXIS x', 'AXIS y' or 'AXIS z' once");
+            const std::string axis = ascii_lower_case(clauses.take());
+            if (axis != "x" && axis != "y" && axis != "z")
+                return error("unknown AXIS " + quote_field(axis) + "; expected x, y or z");
+            rotate.axis = axis == "x" ? Axis::x : axis == "y" ? Axis::y : Axis::z;
+        } else if (equals_ignoring_case(clause, "ABOUT")) {
+            if (auto problem = point_clause(clauses, rotate.about))
+                return problem;
+        } else if (auto problem = span_clause(clauses, "ROTATE", rotate.frames)) {
+            return problem;
+        }
+    }
+    if (auto problem = check_span(rotate.frames, "ROTATE"))
+        return problem;
+    object().rotate = rotate;
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_scale(const Fields& fields)
+{
+    if (auto problem = once(object().scale.has_value(), "SCALE"))
+        return problem;
+    if (fields.size() < 2)
+        return error("expected 'SCALE FACTOR [ABOUT X Y Z] [FROM F TO G]'");
+    SceneScale scale;
+    scale.frames = {0, m_scene.last_frame};
+    if (auto problem = number(fields[1], "FACTOR", scale.factor))
+        return problem;
+    if (scale.factor <= 0.0)
+        return error("SCALE FACTOR " + quote_field(fields[1]) + " is not above 0; expected a factor > 0");
+    Clauses clauses(fields, 2);
+    while (!clauses.done()) {
+        const std::string_view clause = fields[fields.size() - clauses.left()];
+        if (equals_ignoring_case(clause, "ABOUT")) {
+            if (auto problem = point_clause(clauses, scale.about))
+                return problem;
+        } else if (auto problem = span_clause(clauses, "SCALE", scale.frames)) {
+            return problem;
+        }
+    }
+    if (auto problem = check_span(scale.frames, "SCALE"))
+        return problem;
+    const double growth = std::abs(std::log(scale.factor)) * (scale.frames.to - scale.frames.from);
+    if (growth > std::log(most_scale_growth))
+        return error("SCALE " + quote_field(fields[1]) + " over " + std::to_string(scale.frames.to - scale.frames.from) +
+                     " frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)");
+    object().scale = scale;
+    return std::nullopt;
+}
+
+Problem SceneParser::parse_joint(const Fields& fields)
+{
+    if (fields.size() != 3 && fields.size() != 5)
+        return error("expected 'JOINT NAME INDEX [TOLERANCE D]'");
+    SceneJoint joint;
+    joint.name = std::string(fields[1]);
+    joint.line = m_line;
+    const std::optional<std::size_t> index = parse_count_value(fields[2]);
+    if (!index || *index == 0)
+        return error("expected the joint's point INDEX, a whole number from 1, found " + quote_field(fields[2]));
+    joint.point = *index - 1;
+    if (fields.size() == 5) {
+        if (!equals_ignoring_case(fields[3], "TOLERANCE"))
+            return error("expected TOLERANCE D after the index, found " + quote_field(fields[3]));
+        double tolerance = 0.0;
+        if (auto problem = number(fields[4], "TOLERANCE", tolerance))
+            return problem;
+        if (tolerance < 0.0)
+            return error("TOLERANCE " + quote_field(fields[4]) + " is negative; expected a distance >= 0");
+        joint.tolerance = tolerance;
+    }
+    for (const SceneJoint& other : object().joints)
+        if (other.name == joint.name)
+            return error("joint " + quote_field(joint.name) + " is named twice in object '" + object().name +
+                         "' (line " + std::to_string(other.line) + "); a joint joins a part and its parent");
+    object().joints.push_back(std::move(joint));
+    return std::nullopt;
+}
+
+Problem SceneParser::number(std::string_view field, const std::string& what, double& value) const
+{
+    const std::optional<double> parsed = parse_number(field);
+    if (!parsed || !std::isfinite(*parsed) || std::abs(*parsed) > max_dat_magnitude)
+        return error("expected a number with |value| <= 1e9 for " + what + ", found " + quote_field(field));
+    value = *parsed;
+    return std::nullopt;
+}
+
+Problem SceneParser::frame(std::string_view field, const std::string& what, int& value) const
+{
+    const std::optional<std::size_t> parsed = parse_count_value(field);
+    if (!parsed || *parsed > static_cast<std::size_t>(m_scene.last_frame))
+        return error("expected a frame from 0 to " + std::to_string(m_scene.last_frame) + " after " + what +
+                     ", found " + quote_field(field));
+    value = static_cast<int>(*parsed);
+    return std::nullopt;
+}
+
+Problem SceneParser::span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const
+{
+    const std::string_view clause = clauses.take();
+    const bool from = equals_ignoring_case(clause, "FROM");
+    if (!from && !equals_ignoring_case(clause, "TO"))
+        return error("unexpected " + quote_field(clause) + " in " + std::string(keyword) +
+                     "; expected its optional clauses (FROM F, TO G" +
+                     (keyword == "ROTATE" ? ", AXIS, ABOUT" : keyword == "SCALE" ? ", ABOUT" : keyword == "MOVE" ? ", TIMES, LOOP" : "") + ")");
+    if (clauses.seen(clause))
+        return error(std::string(from ? "FROM" : "TO") + " is given twice; expected it once");
+    if (clauses.done())
+        return error("expected a frame after " + std::string(from ? "FROM" : "TO"));
+    return frame(clauses.take(), from ? "FROM" : "TO", from ? span.from : span.to);
+}
+
+Problem SceneParser::point_clause(Clauses& clauses, std::optional<Vec3>& point) const
+{
+    clauses.take();
+    if (clauses.seen("ABOUT") || clauses.left() < 3)
+        return error("expected 'ABOUT X Y Z' once");
+    Vec3 centre;
+    for (double* coordinate : {&centre.x, &centre.y, &centre.z})
+        if (auto problem = number(clauses.take(), "ABOUT", *coordinate))
+            return problem;
+    point = centre;
+    return std::nullopt;
+}
+
+Problem SceneParser::check_span(const FrameSpan& span, std::string_view keyword) const
+{
+    if (span.from <= span.to)
+        return std::nullopt;
+    return error(std::string(keyword) + " FROM " + std::to_string(span.from) + " TO " + std::to_string(span.to) +
+                 ": expected FROM <= TO");
+}
+
+// What needs the whole object: the paths of KEYS and MOVE take its staff values; every joint's
+// point lies in its drawing.
+Problem SceneParser::finish_object()
+{
+    SceneObject& current = object();
+    if (m_pending.paths && !current.keys)
+        return error("PATHS without KEYS in object '" + current.name + "'; expected KEYS KEY1.dat KEY2.dat",
+                     m_pending.paths->front().line);
+    if (current.keys) {
+        const EqualisedKeys& keys = current.keys->keys;
+        if (m_pending.paths) {
+            const std::array<PathEnd, 2> ends{PathEnd::first, PathEnd::last};
+            std::array<ControlPoints, 2> paths;
+            for (std::size_t i = 0; i < 2; ++i) {
+                const PendingPath& path = (*m_pending.paths)[i];
+                Expected<ControlPoints> points =
+                    i == 1 && keys.key1.is_closed()
+                        ? Expected<ControlPoints>(control_points_from(path.file, current.staff))
+                        : point_path_from(path.file, path.name, ends[i], keys, current.staff);
+                if (!points)
+                    return error("cannot use " + quote_field(path.name) + ": " + points.error().to_string(), path.line);
+                paths[i] = std::move(*points);
+            }
+            current.keys->first_path = std::move(paths[0]);
+            current.keys->last_path = std::move(paths[1]);
+        } else {
+            current.keys->first_path = {{keys.key1.first_point(), current.staff}, {keys.key2.first_point(), current.staff}};
+            current.keys->last_path = {{keys.key1.last_point(), current.staff}, {keys.key2.last_point(), current.staff}};
+        }
+    }
+    if (m_pending.move_path)
+        current.move->path = control_points_from(m_pending.move_path->file, current.staff);
+    const Graphic* drawing = current.first_drawing();
+    const std::size_t points = drawing == nullptr ? 0 : drawing->point_count();
+    for (const SceneJoint& joint : current.joints)
+        if (joint.point >= points)
+            return error("joint " + quote_field(joint.name) + " names point " + std::to_string(joint.point + 1) +
+                             " of object '" + current.name + "', whose drawing has " + std::to_string(points) +
+                             " points" + (current.keys ? " (after adding points)" : ""),
+                         joint.line);
+    return std::nullopt;
+}
+
+// Every joint name is used exactly twice, by a part and its parent, and its two points meet
+// within the tolerance in frame 0.
+Problem SceneParser::finish_joints()
+{
+    struct Use {
+        std::size_t object;
+        const SceneJoint* joint;
+    };
+    std::map<std::string, std::vector<Use>> uses;
+    for (std::size_t i = 0; i < m_scene.objects.size(); ++i)
+        for (const SceneJoint& joint : m_scene.objects[i].joints)
+            uses[joint.name].push_back({i, &joint});
+    const double default_tolerance = default_joint_tolerance(m_scene);
+    for (const auto& [name, list] : uses) {
+        const Use& first = list.front();
+        if (list.size() != 2)
+            return error("joint " + quote_field(name) + " is used " + std::to_string(list.size()) +
+                             " time(s); expected exactly twice, in a part and its parent",
+                         list.back().joint->line);
+        const Use& second = list[1];
+        const SceneObject& a = m_scene.objects[first.object];
+        const SceneObject& b = m_scene.objects[second.object];
+        if (b.parent != first.object && a.parent != second.object)
+            return error("joint " + quote_field(name) + " joins '" + a.name + "' (line " +
+                             std::to_string(first.joint->line) + ") and '" + b.name +
+                             "', which is not its part or its parent; expected a part and its parent",
+                         second.joint->line);
+        const Vec3 pa = a.first_drawing()->all_points()[first.joint->point];
+        const Vec3 pb = b.first_drawing()->all_points()[second.joint->point];
+        const double tolerance =
+            second.joint->tolerance.value_or(first.joint->tolerance.value_or(default_tolerance));
+        if (distance(pa, pb) > tolerance)
+            return error("joint " + quote_field(name) + ": point " + std::to_string(first.joint->point + 1) + " of '" +
+                             a.name + "' (line " + std::to_string(first.joint->line) + ") " + describe_point(pa) +
+                             " and point " + std::to_string(second.joint->point + 1) + " of '" + b.name + "' " +
+                             describe_point(pb) + " are " + shortest_number(distance(pa, pb)) +
+                             " apart in frame 0; expected at most " + shortest_number(tolerance),
+                         second.joint->line);
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+double default_joint_tolerance(const Scene& scene)
+{
+    BoundingBox box;
+    for (const SceneObject& object : scene.objects)
+        if (const Graphic* drawing = object.first_drawing())
+            for (const GraphicPart& part : drawing->parts)
+                box.add(part.points);
+    return box.empty() ? 0.0 : 0.001 * length(box.high() - box.low());
+}
+
+Expected<Scene> parse_scene(std::string_view text, const std::string& file_name, const SceneFileReader& read,
+                            const StaffValues& default_staff)
+{
+    return SceneParser(file_name, read, default_staff).parse(text);
+}
+
+Expected<Scene> read_scene_file(const std::filesystem::path& name, const StaffValues& default_staff,
+                                std::vector<std::filesystem::path>* inputs)
+{
+    Expected<std::string> text = read_text_file(name);
+    if (!text)
+        return text.error();
+    if (inputs != nullptr)
+        inputs->push_back(name);
+    const std::filesystem::path folder = name.parent_path();
+    const SceneFileReader read = [&folder, inputs](const std::string& file) {
+        const std::filesystem::path relative(file);
+        const std::filesystem::path path = relative.is_absolute() ? relative : folder / relative;
+        if (inputs != nullptr)
+            inputs->push_back(path);
+        return read_dat_file(path, 1);
+    };
+    return parse_scene(*text, name.string(), read, default_staff);
+}
+
+} // namespace apcs

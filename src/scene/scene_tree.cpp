@@ -1,0 +1,66 @@
+#include "apcs/scene/scene_tree.h"
+
+#include "apcs/formats/number_text.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+std::string signed_value(double value)
+{
+    char text[16];
+    std::snprintf(text, sizeof text, "%+.2f", value == 0.0 ? 0.0 : value);
+    return text;
+}
+
+std::string node_line(const Scene& scene, std::size_t index, std::size_t parts)
+{
+    const SceneObject& object = scene.objects[index];
+    std::string line = object.name + "  t c b a " + signed_value(object.staff.tension) + " " +
+                       signed_value(object.staff.continuity) + " " + signed_value(object.staff.bias) + " " +
+                       signed_value(object.staff.acceleration) + (object.own_staff ? "" : " (inherited)") +
+                       "  N=" + std::to_string(parts);
+    if (object.shape)
+        line += "  SHAPE " + std::to_string(object.shape->point_count()) + " points";
+    if (object.keys)
+        line += "  KEYS " + std::to_string(object.keys->keys.key1.point_count()) + " points, frames " +
+                std::to_string(object.keys->frames.from) + "-" + std::to_string(object.keys->frames.to);
+    if (object.move)
+        line += std::string("  MOVE") + (object.move->times.empty() ? "" : " TIMES") + (object.move->loop ? " LOOP" : "");
+    if (object.rotate)
+        line += "  ROTATE " + shortest_number(object.rotate->degrees_per_frame);
+    if (object.scale)
+        line += "  SCALE " + shortest_number(object.scale->factor);
+    for (const SceneJoint& joint : object.joints)
+        line += "  JOINT " + joint.name;
+    return line;
+}
+
+void append_subtree(std::string& text, const Scene& scene, const std::vector<std::vector<std::size_t>>& children,
+                    std::size_t index, const std::string& indent, bool last)
+{
+    text += indent + (last ? "`-- " : "|-- ") + node_line(scene, index, children[index].size()) + "\n";
+    const std::string deeper = indent + (last ? "    " : "|   ");
+    for (std::size_t k = 0; k < children[index].size(); ++k)
+        append_subtree(text, scene, children, children[index][k], deeper, k + 1 == children[index].size());
+}
+
+} // namespace
+
+std::string format_scene_tree(const Scene& scene, const std::string& scene_name)
+{
+    std::vector<std::vector<std::size_t>> children(scene.objects.size());
+    std::vector<std::size_t> roots;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        (scene.objects[i].parent ? children[*scene.objects[i].parent] : roots).push_back(i);
+    std::string text = scene_name + ": frames 0-" + std::to_string(scene.last_frame) + ", " +
+                       std::to_string(scene.objects.size()) + " objects\n";
+    for (std::size_t k = 0; k < roots.size(); ++k)
+        append_subtree(text, scene, children, roots[k], "", k + 1 == roots.size());
+    return text;
+}
+
+} // namespace apcs
