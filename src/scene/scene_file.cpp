@@ -127,9 +127,9 @@ Expected<Scene> SceneParser::parse(std::string_view text)
     if (problem)
         return *problem;
     if (!m_frames_seen)
-        return error("expected 'FRAMES N' as the first data line; the file has none", 0);
+        return Diagnostic{m_file_name, 0, "expected 'FRAMES N' as the first data line; the file has none"};
     if (m_scene.objects.empty())
-        return error("expected at least one OBJECT line; the file has none", 0);
+        return Diagnostic{m_file_name, 0, "expected at least one OBJECT line; the file has none"};
     if (auto unfinished = finish_object())
         return *unfinished;
     if (auto joints = finish_joints())
@@ -348,7 +348,8 @@ Problem SceneParser::parse_move(const Fields& fields)
             clauses.take();
             if (clauses.seen("TIMES"))
                 return error("TIMES is given twice; expected it once");
-            while (!clauses.done() && !equals_ignoring_case(fields[fields.size() - clauses.left()], "LOOP")) {
+            // The frames run to the first field that is not a whole number (LOOP, FROM, ...).
+            while (!clauses.done() && parse_count_value(fields[fields.size() - clauses.left()])) {
                 int time = 0;
                 if (auto problem = frame(clauses.take(), "TIMES", time))
                     return problem;

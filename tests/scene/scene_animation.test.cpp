@@ -1,0 +1,212 @@
+#include "scene/scene_test_support.h"
+
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/geometry/bounding_box.h"
+#include "apcs/scene/scene_animation.h"
+#include "apcs/scene/timed_distance.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using namespace apcs;
+using apcs::test::DatFiles;
+using apcs::test::scene_from;
+
+namespace {
+
+constexpr double tolerance = 1e-9;
+
+bool near(const Vec3& a, const Vec3& b, double within = tolerance) { return distance(a, b) <= within; }
+
+PathSettings exact_settings()
+{
+    PathSettings settings;
+    settings.spacing = Spacing::exact;
+    return settings;
+}
+
+Vec3 middle(std::span<const Vec3> points)
+{
+    BoundingBox box;
+    box.add(points);
+    return box.centre();
+}
+
+} // namespace
+
+TEST_CASE("frame 0 shows every drawing as it is given", "[scene]")
+{
+    DatFiles files;
+    files.texts["a.dat"] = "0 0 0\n0 1 0\n0 1 1\n";
+    files.texts["p.dat"] = "0 0 0\n0 4 1\n0 8 0\n";
+    const Scene scene = scene_from("FRAMES 6\nOBJECT a\nSHAPE a.dat\nMOVE p.dat\nROTATE 30\nSCALE 1.5\n", files);
+    const SceneAnimation animation(scene, exact_settings());
+    const std::vector<Vec3> frame = animation.frame(0);
+    REQUIRE(frame == std::vector<Vec3>{{0, 0, 0}, {0, 1, 0}, {0, 1, 1}});
+}
+
+TEST_CASE("a wheel point's angle about the wheel's moving centre is rate x frames (seed 003 section 3)", "[scene]")
+{
+    DatFiles files;
+    files.texts["wheel.dat"] = "0 3 1\n0 2 2\n0 1 1\n0 2 0\n"; // a square 'rim' about (0, 2, 1)
+    files.texts["bump.dat"] = "0 0 0\n0 5 0\n0 7 1.5\n0 9 0\n";
+    const Scene scene = scene_from("FRAMES 40\nOBJECT bicycle\nMOVE bump.dat\n"
+                                   "OBJECT wheel PARENT bicycle\nSHAPE wheel.dat\nROTATE -7\n",
+                                   files);
+    const SceneAnimation animation(scene, exact_settings());
+    REQUIRE(near(animation.centre(1), {0, 2, 1}));
+    for (int f = 0; f <= 40; ++f) {
+        const std::vector<Vec3> points = animation.frame(f);
+        const Vec3 centre = animation.transform(1, f)(Vec3{0, 2, 1});
+        // The centre moves with the bicycle only: the path's offset.
+        REQUIRE(near(centre - Vec3{0, 2, 1}, animation.transform(0, f)(Vec3{})));
+        const Vec3 arm = points[0] - centre; // the point that started at angle 0 (along +y)
+        const double angle = std::atan2(arm.z, arm.y) * 180.0 / std::numbers::pi;
+        const double expected = std::remainder(-7.0 * f, 360.0);
+        CAPTURE(f);
+        REQUIRE(std::abs(std::remainder(angle - expected, 360.0)) < 1e-9);
+        REQUIRE(std::abs(length(arm) - 1.0) < 1e-12);
+    }
+}
+
+TEST_CASE("a scale about a centre other than the object's moves it by (1-F)(S-C) per frame (seed 003 2.1 (2))",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["box.dat"] = "0 0 0\n0 2 0\n0 2 2\n0 0 2\n"; // centre C = (0, 1, 1)
+    const Scene scene = scene_from("FRAMES 8\nOBJECT box\nSHAPE box.dat\nSCALE 0.8 ABOUT 0 5 -3\n", files);
+    const SceneAnimation animation(scene, exact_settings());
+    const Vec3 about{0, 5, -3};
+    const double factor = 0.8;
+    Vec3 centre = middle(animation.frame(0));
+    for (int f = 1; f <= 8; ++f) {
+        const Vec3 next = middle(animation.frame(f));
+        // The seed's dx = (1 − F)(S − C), C the centre before this frame's change.
+        REQUIRE(near(next - centre, (about - centre) * (1.0 - factor)));
+        centre = next;
+    }
+}
+
+TEST_CASE("a child's change is its parent's followed by its own", "[scene]")
+{
+    DatFiles files;
+    files.texts["dot.dat"] = "0 2 0\n0 3 0\n";
+    files.texts["line.dat"] = "0 0 0\n0 10 0\n";
+    const Scene scene = scene_from("FRAMES 10\nOBJECT parent\nMOVE line.dat\nROTATE 90 ABOUT 0 0 0\n"
+                                   "OBJECT child PARENT parent\nSHAPE dot.dat\nROTATE 90 ABOUT 0 2 0\n",
+                                   files);
+    const SceneAnimation animation(scene, exact_settings());
+    const std::vector<Vec3> frame1 = animation.frame(1);
+    // Own: (0,2,0) stays (the centre), (0,3,0) turns to (0,2,1). The parent's turn about x
+    // through the origin: (y, z) → (−z, y); then its move of one tenth of the line, (0, 1, 0).
+    REQUIRE(near(frame1[0], {0, 1, 2}));
+    REQUIRE(near(frame1[1], {0, 0, 2}));
+    // Frame 2: own turn 180° (0,3,0) → (0,1,0); parent's 180° → (0,−1,0); move (0,2,0) → (0,1,0).
+    REQUIRE(near(animation.frame(2)[1], {0, 1, 0}));
+}
+
+TEST_CASE("MOVE without TIMES spreads the path over FROM ... TO by its acceleration law; LOOP starts each lap at P0",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["dot.dat"] = "0 0 0\n";
+    files.texts["line.dat"] = "0 0 0\n0 10 0\n";
+    const Scene scene = scene_from("FRAMES 20\nOBJECT a\nSHAPE dot.dat\nMOVE line.dat FROM 2 TO 7 LOOP\n", files);
+    const SceneAnimation animation(scene, exact_settings());
+    const double expected[] = {0, 0, 0, 2, 4, 6, 8, 0, 2, 4, 6, 8, 0, 2, 4, 6, 8, 0, 2, 4, 6};
+    for (int f = 0; f <= 20; ++f) {
+        CAPTURE(f);
+        REQUIRE(std::abs(animation.frame(f)[0].y - expected[f]) < 1e-6);
+    }
+    const Scene held = scene_from("FRAMES 9\nOBJECT a\nSHAPE dot.dat\nMOVE line.dat TO 5\n", files);
+    const SceneAnimation held_animation(held, exact_settings());
+    REQUIRE(held_animation.frame(9)[0] == Vec3{0, 10, 0});
+    // Acceleration +1 (ease-in) in the path's 7th column: the first step is the law's 1 − cos(π/2 · 1/5).
+    files.texts["fast.dat"] = "0 0 0 0 0 0 1\n0 10 0 0 0 0 1\n";
+    const Scene eased = scene_from("FRAMES 5\nOBJECT a\nSHAPE dot.dat\nMOVE fast.dat\n", files);
+    const SceneAnimation eased_animation(eased, exact_settings());
+    REQUIRE(std::abs(eased_animation.frame(1)[0].y - 10 * (1 - std::cos(std::numbers::pi / 10))) < 1e-6);
+}
+
+TEST_CASE("timed waypoints: each control point at its frame, never running back, no jump of speed at a key",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["dot.dat"] = "0 0 0\n";
+    files.texts["road.dat"] = "0 0 0\n0 10 3\n0 25 0\n0 40 2\n";
+    const Scene scene = scene_from("FRAMES 70\nOBJECT car\nSHAPE dot.dat\nMOVE road.dat TIMES 0 10 35 60\n", files);
+    const SceneAnimation animation(scene, exact_settings());
+    const ControlPoints& road = scene.objects[0].move->path;
+    const int times[] = {0, 10, 35, 60};
+    for (std::size_t k = 0; k < 4; ++k)
+        REQUIRE(animation.frame(times[k])[0] == road[k].position);
+    REQUIRE(animation.frame(70)[0] == road.back().position);
+    // Distance along the curve: the arc length at each frame's position never decreases.
+    const ArcLengthTable table(kb_segments(road, EndSlopes{}));
+    std::vector<double> step(61);
+    for (int f = 1; f <= 60; ++f)
+        step[static_cast<std::size_t>(f)] = distance(animation.frame(f - 1)[0], animation.frame(f)[0]);
+    for (int f = 1; f <= 60; ++f)
+        REQUIRE(step[static_cast<std::size_t>(f)] > 0.0);
+    for (const int key : {10, 35}) {
+        CAPTURE(key);
+        const double before = step[static_cast<std::size_t>(key)];
+        const double after = step[static_cast<std::size_t>(key + 1)];
+        REQUIRE(std::abs(after - before) <= 0.2 * before);
+    }
+}
+
+TEST_CASE("the distance-time function is monotone with a continuous slope; piecewise-even spacing would jump",
+          "[scene]")
+{
+    const int frames[] = {0, 10, 35, 60};
+    const double distances[] = {0, 10, 35, 45};
+    const TimedDistance distance(frames, distances);
+    for (std::size_t k = 0; k < 4; ++k)
+        REQUIRE(distance.at(frames[k]) == distances[k]);
+    for (double f = 0; f < 60; f += 0.25)
+        REQUIRE(distance.at(f + 0.25) >= distance.at(f));
+    // Average speeds 1, 1 and 0.4: at frame 35 the ratio is 2.5, the largest the contract allows.
+    const double before = distance.at(35) - distance.at(34);
+    const double after = distance.at(36) - distance.at(35);
+    REQUIRE(std::abs(after - before) <= 0.2 * before);
+    REQUIRE(std::abs(after - 0.4) > 0.2 * 0.4); // not the next span's even step
+    // A span that does not move holds still: slope 0 at both its ends, no overshoot.
+    const double flat[] = {0, 5, 5, 9};
+    const TimedDistance stop(frames, flat);
+    REQUIRE(stop.slope_at_key(1) == 0.0);
+    REQUIRE(stop.slope_at_key(2) == 0.0);
+    for (double f = 10; f <= 35; f += 0.5)
+        REQUIRE(stop.at(f) == Approx(5.0));
+}
+
+TEST_CASE("a joint the key frames would break moves the part, and its parts, with its parent", "[scene]")
+{
+    DatFiles files;
+    files.texts["upper1.dat"] = "0 0 4\n0 0 2\n";
+    files.texts["upper2.dat"] = "0 0 4\n0 2 4\n";
+    files.texts["lower1.dat"] = "0 0 2\n0 0 0\n";
+    files.texts["lower2.dat"] = "0 2 4\n0 4 4\n";
+    files.texts["foot.dat"] = "0 0 0\n0 1 0\n";
+    files.texts["hip.dat"] = "0 0 4\n0 0 4\n";
+    // The knee swings on a circle about the hip; the lower limb's own knee runs straight.
+    files.texts["knee.dat"] = "0 0 2\n0 1.4142135623730951 2.585786437626905\n0 2 4\n";
+    const Scene scene = scene_from("FRAMES 8\nOBJECT upper\nKEYS upper1.dat upper2.dat\nPATHS hip.dat knee.dat\n"
+                                   "JOINT knee 2\nOBJECT lower PARENT upper\nKEYS lower1.dat lower2.dat\nJOINT knee 1\n"
+                                   "JOINT ankle 2\nOBJECT foot PARENT lower\nSHAPE foot.dat\nJOINT ankle 1\n",
+                                   files);
+    const SceneAnimation animation(scene, exact_settings());
+    const double joint_tolerance = default_joint_tolerance(scene);
+    bool moved = false;
+    for (int f = 0; f <= 8; ++f) {
+        const std::vector<Vec3> points = animation.frame(f);
+        CAPTURE(f);
+        REQUIRE(distance(points[1], points[2]) <= joint_tolerance); // the knee
+        REQUIRE(distance(points[3], points[4]) <= joint_tolerance); // the ankle
+        moved = moved || !near(points[2], animation.transform(1, f)(scene.objects[1].keys->keys.key1.all_points()[0]), 1e-6);
+    }
+    REQUIRE(moved);
+}

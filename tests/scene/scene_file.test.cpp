@@ -1,0 +1,161 @@
+#include "scene/scene_test_support.h"
+
+#include "apcs/scene/scene_tree.h"
+
+#include <catch2/catch.hpp>
+
+using namespace apcs;
+using apcs::test::DatFiles;
+using apcs::test::scene_from;
+
+namespace {
+
+DatFiles example_files()
+{
+    DatFiles files;
+    files.texts["square.dat"] = "PART sq CLOSED\n0 0 0\n0 1 0\n0 1 1\n0 0 1\n";
+    files.texts["stick.dat"] = "0 0 1\n0 0 2\n";
+    files.texts["path.dat"] = "0 0 0\n0 5 0\n0 10 0\n";
+    files.texts["path7.dat"] = "0 0 0 0 0 0 0.5\n0 5 0 0 0 0 0\n";
+    files.texts["k1.dat"] = "0 0 0\n0 1 0\n";
+    files.texts["k2.dat"] = "0 0 2\n0 1 2\n0 2 2\n";
+    return files;
+}
+
+} // namespace
+
+TEST_CASE("a scene file gives its objects, parents, drawings and behaviours", "[scene]")
+{
+    const Scene scene = scene_from("; a comment\r\nFRAMES 20\r\nview 0 90\r\n"
+                                   "OBJECT body\nSHAPE square.dat\nMOVE path.dat FROM 2 TO 12 LOOP\n"
+                                   "staff 0.5 0 0 0\n"
+                                   "object arm parent body\nshape stick.dat\nROTATE 15 AXIS z ABOUT 1 2 3 TO 4\n"
+                                   "SCALE 2 FROM 1 TO 3\n\x1a",
+                                   example_files());
+    REQUIRE(scene.last_frame == 20);
+    REQUIRE(scene.view->theta_degrees == 0.0);
+    REQUIRE(scene.objects.size() == 2);
+    const SceneObject& body = scene.objects[0];
+    REQUIRE(body.shape->point_count() == 4);
+    REQUIRE(body.move->frames.from == 2);
+    REQUIRE(body.move->frames.to == 12);
+    REQUIRE(body.move->loop);
+    // The body's STAFF came after its MOVE: the three-column path still takes it.
+    REQUIRE(body.move->path[1].staff.tension == 0.5);
+    const SceneObject& arm = scene.objects[1];
+    REQUIRE(arm.parent == 0u);
+    REQUIRE(arm.staff.tension == 0.5); // inherited from its parent (Ch. 3.3)
+    REQUIRE_FALSE(arm.own_staff);
+    REQUIRE(arm.rotate->axis == Axis::z);
+    REQUIRE(arm.rotate->about == Vec3{1, 2, 3});
+    REQUIRE(arm.rotate->frames.from == 0);
+    REQUIRE(arm.rotate->frames.to == 4);
+    REQUIRE(arm.scale->factor == 2.0);
+    REQUIRE(arm.scale->frames.to == 3);
+}
+
+TEST_CASE("a part's own STAFF replaces its parent's; seven-column paths keep their own values", "[scene]")
+{
+    const Scene scene = scene_from("FRAMES 10\nOBJECT a\nSTAFF 0.5 0.5 0.5 0.5\nOBJECT b PARENT a\n"
+                                   "STAFF -0.25 0 0 0\nMOVE path.dat\nOBJECT c PARENT a\nMOVE path7.dat\n",
+                                   example_files(), StaffValues{0.1, 0.1, 0.1, 0.1});
+    REQUIRE(scene.objects[0].staff.tension == 0.5);
+    REQUIRE(scene.objects[1].move->path[0].staff == StaffValues{-0.25, 0, 0, 0});
+    REQUIRE(scene.objects[2].move->path[0].staff == StaffValues{0, 0, 0, 0.5});
+    const Scene defaults = scene_from("FRAMES 10\nOBJECT a\nMOVE path.dat\n", example_files(), StaffValues{0.1, 0, 0, 0});
+    REQUIRE(defaults.objects[0].move->path[0].staff.tension == 0.1);
+}
+
+TEST_CASE("KEYS equalise the key frames, and their paths default to straight lines", "[scene]")
+{
+    const Scene scene = scene_from("FRAMES 10\nOBJECT a\nKEYS k1.dat k2.dat FROM 2 TO 8\n", example_files());
+    const SceneKeys& keys = *scene.objects[0].keys;
+    REQUIRE(keys.keys.key1.point_count() == 3); // points added to KEY1 (SPEC 5.1)
+    REQUIRE(keys.frames.from == 2);
+    REQUIRE(keys.frames.to == 8);
+    REQUIRE(keys.first_path.size() == 2);
+    REQUIRE(keys.first_path[1].position == Vec3{0, 0, 2});
+    REQUIRE(keys.last_path[1].position == Vec3{0, 2, 2});
+}
+
+TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
+{
+    struct Row {
+        std::string text;
+        std::string message;
+    };
+    const std::string head = "FRAMES 10\nOBJECT a\nSHAPE square.dat\n";
+    const std::string joints = head + "JOINT j 1\nOBJECT b PARENT a\nSHAPE square.dat\n";
+    const std::string joined = joints + "JOINT j 1\n";
+    const Row rows[] = {
+        {"OBJECT a\n", "t.scn:1: expected 'FRAMES N' as the first data line, found 'OBJECT'"},
+        {"FRAMES 0\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
+        {"FRAMES 100001\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
+        {"FRAMES 5\n", "t.scn: expected at least one OBJECT line; the file has none"},
+        {"FRAMES 5\nSHAPE square.dat\n", "t.scn:2: SHAPE before the first OBJECT line; expected 'OBJECT NAME' first"},
+        {head + "WIGGLE 3\n",
+         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT or VIEW"},
+        {head + "OBJECT a\n", "t.scn:4: object 'a' is declared again; its first OBJECT line is line 2 (names are unique)"},
+        {head + "OBJECT b PARENT c\nOBJECT c\n",
+         "t.scn:4: parent 'c' is not an object declared above; a parent is declared before its parts"},
+        {head + "OBJECT b PARENT b\n",
+         "t.scn:4: parent 'b' is not an object declared above; a parent is declared before its parts"},
+        {head + "SHAPE square.dat\n", "t.scn:4: a second SHAPE or KEYS for object 'a'; expected one at most"},
+        {head + "KEYS k1.dat k2.dat\n", "t.scn:4: a second SHAPE or KEYS for object 'a'; expected one at most"},
+        {head + "ROTATE 1\nROTATE 2\n", "t.scn:5: a second ROTATE for object 'a'; expected one at most"},
+        {head + "MOVE path.dat\nMOVE path.dat\n", "t.scn:5: a second MOVE for object 'a'; expected one at most"},
+        {head + "JOINT j 5\n", "t.scn:4: joint 'j' names point 5 of object 'a', whose drawing has 4 points"},
+        {head + "JOINT j 1\n", "t.scn:4: joint 'j' is used 1 time(s); expected exactly twice, in a part and its parent"},
+        {joints + "JOINT j 2\n",
+         "t.scn:7: joint 'j': point 1 of 'a' (line 4) (0, 0, 0) and point 2 of 'b' (0, 1, 0) are 1 apart in frame 0; "
+         "expected at most 0.0014142135623730952"},
+        {joined + "OBJECT c\nSHAPE square.dat\nJOINT k 1\nOBJECT d PARENT a\nSHAPE square.dat\nJOINT k 1\n",
+         "t.scn:13: joint 'k' joins 'c' (line 10) and 'd', which is not its part or its parent; expected a part and its "
+         "parent"},
+        {head + "MOVE path.dat TIMES 0 5\n",
+         "t.scn:4: TIMES gives 2 frames but 'path.dat' has 3 control points; expected one frame per control point"},
+        {head + "MOVE path.dat TIMES 0 5 5\n",
+         "t.scn:4: TIMES 5 after 5: expected increasing frames, one per control point"},
+        {head + "MOVE path.dat TIMES 0 5 9 FROM 1\n",
+         "t.scn:4: MOVE with both TIMES and FROM/TO; expected one of them (TIMES gives every control point's frame)"},
+        {head + "MOVE path.dat FROM 6 TO 3\n", "t.scn:4: MOVE FROM 6 TO 3: expected FROM <= TO"},
+        {head + "ROTATE 5 FROM 11\n", "t.scn:4: expected a frame from 0 to 10 after FROM, found '11'"},
+        {head + "ROTATE 5 AXIS w\n", "t.scn:4: unknown AXIS 'w'; expected x, y or z"},
+        {head + "SCALE 0\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},
+        {head + "SCALE -2\n", "t.scn:4: SCALE FACTOR '-2' is not above 0; expected a factor > 0"},
+        {head + "SCALE 1e9\n",
+         "t.scn:4: SCALE '1e9' over 10 frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)"},
+        {head + "ROTATE nan\n", "t.scn:4: expected a number with |value| <= 1e9 for the degrees per frame, found 'nan'"},
+        {head + "STAFF 2 0 0 0\n", "t.scn:4: tension '2' is outside [-1, 1]"},
+        {"FRAMES 10\nOBJECT a\nSHAPE missing.dat\n", "t.scn:3: cannot use 'missing.dat': missing.dat: no such file"},
+        {"FRAMES 10\nOBJECT a\nPATHS k1.dat k2.dat\n",
+         "t.scn:3: PATHS without KEYS in object 'a'; expected KEYS KEY1.dat KEY2.dat"},
+        {"FRAMES 10\nOBJECT a\nKEYS k1.dat k2.dat\nPATHS path.dat path.dat\n",
+         "t.scn:4: cannot use 'path.dat': path.dat:3: the path ends at (0, 10, 0); expected the first graphic "
+         "point's KEY2 position (0, 0, 2)"},
+        {"FRAMES 10\nOBJECT a\nKEYS k1.dat k2.dat FROM 4 TO 4\n",
+         "t.scn:3: KEYS FROM 4 TO 4: expected FROM before TO (KEY1 at FROM, KEY2 at TO)"},
+        {"FRAMES 10\nVIEW 1 2\nVIEW 1 2\n", "t.scn:3: a second VIEW line; expected one at most"},
+        {std::string("FRAMES 10\nOBJECT a\x00\n", 20), "t.scn:2: NUL byte; expected a text file"},
+    };
+    const DatFiles files = example_files();
+    for (const Row& row : rows) {
+        CAPTURE(row.text);
+        const Expected<Scene> scene = parse_scene(row.text, "t.scn", files.reader(), {});
+        REQUIRE_FALSE(scene.has_value());
+        CHECK(scene.error().to_string() == row.message);
+    }
+}
+
+TEST_CASE("--tree prints the scene as the thesis' data structure, parts under their parent", "[scene]")
+{
+    const Scene scene = scene_from("FRAMES 4\nOBJECT robot\nSTAFF 0.5 0 0 0\nOBJECT head PARENT robot\n"
+                                   "SHAPE square.dat\nOBJECT hand PARENT robot\nOBJECT arm PARENT hand\nSHAPE stick.dat\n",
+                                   example_files());
+    REQUIRE(format_scene_tree(scene, "r.scn") ==
+            "r.scn: frames 0-4, 4 objects\n"
+            "`-- robot  t c b a +0.50 +0.00 +0.00 +0.00  N=2\n"
+            "    |-- head  t c b a +0.50 +0.00 +0.00 +0.00 (inherited)  N=0  SHAPE 4 points\n"
+            "    `-- hand  t c b a +0.50 +0.00 +0.00 +0.00 (inherited)  N=1\n"
+            "        `-- arm  t c b a +0.50 +0.00 +0.00 +0.00 (inherited)  N=0  SHAPE 2 points\n");
+}
