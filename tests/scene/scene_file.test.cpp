@@ -147,7 +147,7 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
     }
 }
 
-TEST_CASE("--tree prints the scene as the thesis' data structure, parts under their parent", "[scene]")
+TEST_CASE("the scene tree (--tree) prints the scene as the thesis' data structure, parts under their parent", "[scene]")
 {
     const Scene scene = scene_from("FRAMES 4\nOBJECT robot\nSTAFF 0.5 0 0 0\nOBJECT head PARENT robot\n"
                                    "SHAPE square.dat\nOBJECT hand PARENT robot\nOBJECT arm PARENT hand\nSHAPE stick.dat\n",
