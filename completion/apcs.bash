@@ -27,6 +27,7 @@ _apcs_options()
         fit) echo "$staff $curve $view $pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures --help" ;;
+        play) echo "$staff --slopes --samples --spacing $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
         *) echo "$staff $curve $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
     esac
@@ -56,13 +57,15 @@ _apcs()
 
     local command="" word
     for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
-        case $word in path | inbetween | fit | draw | figures) command=$word; break ;; esac
+        case $word in path | inbetween | fit | draw | play | figures) command=$word; break ;; esac
     done
 
     if [[ $current == -* ]]; then
         _apcs_words "$(_apcs_options "$command")" "$current"
     elif [[ -z $command ]]; then
-        _apcs_words "path inbetween fit draw figures" "$current"
+        _apcs_words "path inbetween fit draw play figures" "$current"
+    elif [[ $command == play ]]; then
+        _apcs_files scn "$current"
     elif [[ $command != figures ]]; then
         _apcs_files dat "$current"
     fi

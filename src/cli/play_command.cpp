@@ -159,7 +159,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         settings.spacing = Spacing::exact;
     const bool played = !options.print && !options.out && !pictures_asked(options);
     const bool all_frames = played || pictures_asked(options);
-    if (const auto refused = refuse_over_budget("the scene " + scene_name, scene_bytes(*scene, settings, all_frames),
+    if (const auto refused = refuse_over_budget("the frames of " + scene_name, scene_bytes(*scene, settings, all_frames),
                                                 options, "use fewer FRAMES or drawings of fewer points", err))
         return *refused;
     const SceneAnimation animation(*scene, settings);
