@@ -5,6 +5,7 @@
 #include "apcs/terminal/terminal_session.h"
 
 #include <memory>
+#include <variant>
 
 namespace apcs {
 
@@ -38,9 +39,12 @@ ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet g
             }
             if (!area)
                 break;
-            if (const std::optional<Command> command = command_for(player.key_context(), key))
+            if (const std::optional<Command> command = command_for(player.key_context(), key)) {
+                if (std::holds_alternative<command::Quit>(*command))
+                    return ExitStatus::success;
                 if (player.update(*command) == AnimationPlayer::Outcome::finished)
                     return ExitStatus::success;
+            }
             break;
         }
     }

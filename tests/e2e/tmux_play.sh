@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# apcs play on a real terminal (tmux, 80x24, ascii): the frames play with their number on the
+# message line; Space pauses; Esc stops; a key shows all frames overlaid; another ends it; q quits
+# at once. Usage: tmux_play.sh APCS DATA_FOLDER
+set -euo pipefail
+apcs=$1
+data=$2
+command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
+
+source "$(dirname "$0")/tmux_lib.sh"
+tmux_test_folder play
+
+start_80x24 bike "$apcs play $data/bicycle/bicycle.scn --glyphs ascii --delay 60"
+wait_for bike "of 72: bicycle.scn"
+keys_to bike Space
+wait_for bike "(paused)"
+paused=$(screen bike | grep -o "Frame [0-9]* of 72")
+sleep 0.5
+[ "$(screen bike | grep -o "Frame [0-9]* of 72")" = "$paused" ] || fail_showing "the frame moved while paused" bike
+keys_to bike Escape
+wait_for bike "Press any key to see all frames"
+keys_to bike x
+wait_for bike "Press any key to end APCS"
+keys_to bike x
+wait_for bike "EXITED=0"
+
+start_80x24 car "$apcs play $data/car/car.scn --glyphs ascii"
+wait_for car "Frame "
+keys_to car q
+wait_for car "EXITED=0"
+echo "tmux_play: plays, pauses, stops, overlays and quits"
