@@ -9,7 +9,7 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
-#include "apcs/formats/parallel_work.h"
+#include "apcs/formats/numbered_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
@@ -20,8 +20,8 @@
 
 #include <algorithm>
 #include <ostream>
+#include <sstream>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -75,30 +75,17 @@ void print_frames(const SceneAnimation& animation, const Scene& scene, std::ostr
 std::optional<Diagnostic> write_frame_files(const SceneAnimation& animation, const std::filesystem::path& folder,
                                             const KeyFileGuard& guard)
 {
-    std::error_code error;
-    if (!std::filesystem::is_directory(folder, error))
-        return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the frame files"};
-    const std::size_t count = animation.frame_count();
-    std::vector<std::filesystem::path> targets;
-    for (std::size_t f = 0; f < count; ++f) {
-        targets.push_back(folder / scene_frame_file_name(static_cast<int>(f), animation.last_frame()));
-        if (std::optional<Diagnostic> refusal = guard.refuse(targets.back()))
-            return refusal;
-    }
-    std::vector<std::optional<Diagnostic>> problems(count);
-    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
-    for_each_index_in_parallel(count, workers, [&](std::size_t f) {
-        const std::vector<Vec3> points = animation.frame(static_cast<int>(f));
-        const std::string text = "; APCS scene frame " + std::to_string(f) + " of " +
-                                 std::to_string(animation.last_frame()) + "\n" +
-                                 format_graphic(animation.structure(), points);
-        const Expected<WriteResult> written = write_file_atomically(targets[f], text, &guard);
-        if (!written)
-            problems[f] = written.error();
-    });
-    for (std::optional<Diagnostic>& problem : problems)
-        if (problem)
-            return problem;
+    const int last = animation.last_frame();
+    const auto written = write_numbered_files(
+        folder, animation.frame_count(),
+        [last](std::size_t f) { return scene_frame_file_name(static_cast<int>(f), last); },
+        [&animation, last](std::size_t f) {
+            return "; APCS scene frame " + std::to_string(f) + " of " + std::to_string(last) + "\n" +
+                   format_graphic(animation.structure(), animation.frame(static_cast<int>(f)));
+        },
+        guard, "the frame files");
+    if (!written)
+        return written.error();
     return std::nullopt;
 }
 
@@ -126,13 +113,28 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
         return ExitStatus::bad_usage;
     }
     Diagnostic problem;
-    const ExitStatus status = terminal(player, options.delay_ms, *glyphs, problem);
+    const ExitStatus status = terminal(player, options.delay_ms, *glyphs, save_screen_picture, problem);
     if (status == ExitStatus::terminal_problem)
         err << problem.to_string() << '\n';
     return status;
 }
 
 } // namespace
+
+std::string save_screen_picture(const GraphicsScreen& screen)
+{
+    for (int number = 1; number <= most_pictures; ++number) {
+        const std::string name = picture_file_name(number);
+        std::error_code error;
+        if (std::filesystem::exists(std::filesystem::symlink_status(name, error)))
+            continue;
+        std::ostringstream unused;
+        if (const std::optional<Diagnostic> problem = write_png_file(name, screen, PngShape::monitor, unused))
+            return problem->to_string();
+        return "wrote " + name;
+    }
+    return "apcs001.png … apcs999.png all exist; move some away";
+}
 
 std::string scene_frame_file_name(int frame, int last_frame)
 {
@@ -145,6 +147,10 @@ std::string scene_frame_file_name(int frame, int last_frame)
 ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& options,
                             const TerminalPlayerRunner& terminal, std::ostream& out, std::ostream& err)
 {
+    if (request.tree && (options.print || options.out || pictures_asked(options))) {
+        err << "apcs: --tree prints the scene's tree and nothing else; give --print, --out and the pictures without it\n";
+        return ExitStatus::bad_usage;
+    }
     std::vector<std::filesystem::path> inputs;
     const Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
     if (!scene)
@@ -178,7 +184,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     shown.view = view_of(*scene, options);
     FrameSequence frames = animation.all_frames();
     const std::size_t frame_count = frames.frame_count();
-    if (pictures_asked(options) && (options.png || options.png_raw || options.svg)) {
+    if (options.png || options.png_raw || options.svg) {
         const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
         if (auto problem = write_pictures(frames_overlay_screen(frames, animation.structure(), shown.view, caption),
                                           shown, out))

@@ -1,15 +1,12 @@
 #include "apcs/formats/inbetween_files.h"
 
-#include "apcs/formats/file_io.h"
-#include "apcs/formats/parallel_work.h"
+#include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/text_fields.h"
 
 #include <algorithm>
-#include <atomic>
 #include <optional>
-#include <thread>
 
 namespace apcs {
 
@@ -17,30 +14,10 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
                                                                    const std::filesystem::path& folder,
                                                                    const KeyFileGuard& guard)
 {
-    std::error_code error;
-    if (!std::filesystem::is_directory(folder, error))
-        return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for the in-between files"};
-    const std::size_t count = inbetween_count(frames);
-    std::vector<std::filesystem::path> targets;
-    targets.reserve(count);
-    for (std::size_t number = 1; number <= count; ++number) {
-        targets.push_back(folder / inbetween_file_name(number));
-        if (std::optional<Diagnostic> refusal = guard.refuse(targets.back()))
-            return *std::move(refusal);
-    }
-    // The files are independent: formatting and flushing them to disk is shared among the cores.
-    std::vector<std::optional<Diagnostic>> problems(count);
-    const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
-    for_each_index_in_parallel(count, workers, [&](std::size_t index) {
-        const NamedText file = inbetween_file(frames, structure, index + 1);
-        const Expected<WriteResult> result = write_file_atomically(targets[index], file.content, &guard);
-        if (!result)
-            problems[index] = result.error();
-    });
-    for (const std::optional<Diagnostic>& problem : problems)
-        if (problem)
-            return *problem;
-    return targets;
+    return write_numbered_files(
+        folder, inbetween_count(frames), [](std::size_t index) { return inbetween_file_name(index + 1); },
+        [&](std::size_t index) { return inbetween_file(frames, structure, index + 1).content; }, guard,
+        "the in-between files");
 }
 
 namespace {

@@ -78,11 +78,14 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings)
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
         if (const Graphic* drawing = object.first_drawing()) {
-            m_drawings[i] = drawing->all_points();
+            std::vector<Vec3> points = drawing->all_points();
             for (std::optional<std::size_t> owner = i; owner; owner = scene.objects[*owner].parent)
-                boxes[*owner].add(m_drawings[i]);
-            m_object_points[i] = {m_points_per_frame, m_drawings[i].size()};
-            m_points_per_frame += m_drawings[i].size();
+                boxes[*owner].add(points);
+            m_object_points[i] = {m_points_per_frame, points.size()};
+            m_points_per_frame += points.size();
+            // A KEYS object draws its fitted frames instead.
+            if (object.shape)
+                m_drawings[i] = std::move(points);
             for (std::size_t p = 0; p < drawing->parts.size(); ++p) {
                 GraphicPart part = drawing->parts[p];
                 part.name = object.name + "/" + (part.name.empty() ? "P" + std::to_string(p + 1) : part.name);
@@ -131,6 +134,12 @@ Vec3 SceneAnimation::move_offset(std::size_t index, int f) const
 
 Affine SceneAnimation::transform(std::size_t index, int f) const
 {
+    const std::optional<std::size_t> parent = m_scene.objects[index].parent;
+    return parent ? transform(*parent, f) * own_transform(index, f) : own_transform(index, f);
+}
+
+Affine SceneAnimation::own_transform(std::size_t index, int f) const
+{
     const SceneObject& object = m_scene.objects[index];
     Affine own = Affine::translation(move_offset(index, f));
     if (object.rotate) {
@@ -143,7 +152,7 @@ Affine SceneAnimation::transform(std::size_t index, int f) const
         own = own * Affine::scale_about(std::pow(scale.factor, elapsed(scale.frames, f)),
                                         scale.about.value_or(m_centres[index]));
     }
-    return object.parent ? transform(*object.parent, f) * own : own;
+    return own;
 }
 
 std::span<const Vec3> SceneAnimation::drawing_at(std::size_t index, int f) const
@@ -157,14 +166,18 @@ std::span<const Vec3> SceneAnimation::drawing_at(std::size_t index, int f) const
 
 void SceneAnimation::frame(int f, std::span<Vec3> points) const
 {
+    // Parents come first in the file: each object's world transform and joint correction start
+    // from its parent's, computed once per frame.
+    std::vector<Affine> world_of(m_scene.objects.size());
     std::vector<Vec3> correction(m_scene.objects.size());
     for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
         const SceneObject& object = m_scene.objects[i];
+        world_of[i] = object.parent ? world_of[*object.parent] * own_transform(i, f) : own_transform(i, f);
         if (object.parent)
             correction[i] = correction[*object.parent];
         const ObjectPoints place = m_object_points[i];
         const std::span<Vec3> own = points.subspan(place.first, place.count);
-        const Affine world = transform(i, f);
+        const Affine& world = world_of[i];
         const std::span<const Vec3> drawing = drawing_at(i, f);
         for (std::size_t p = 0; p < own.size(); ++p)
             own[p] = world(drawing[p]) + correction[i];

@@ -31,6 +31,17 @@ Fields split(std::string_view content)
     return fields;
 }
 
+// Point `index` of a drawing, its parts' points counted in order (the index is in range).
+Vec3 point_of(const Graphic& drawing, std::size_t index)
+{
+    for (const GraphicPart& part : drawing.parts) {
+        if (index < part.points.size())
+            return part.points[index];
+        index -= part.points.size();
+    }
+    return {};
+}
+
 // A path file, kept until the object's staff values are known.
 struct PendingPath {
     DatFile file;
@@ -42,7 +53,6 @@ struct PendingPath {
 struct PendingObject {
     std::optional<PendingPath> move_path;
     std::optional<std::array<PendingPath, 2>> paths;
-    int keys_line = 0;
 };
 
 // The optional clauses after a keyword's own fields: FROM F, TO G, AXIS A, ABOUT X Y Z, TIMES …,
@@ -51,6 +61,7 @@ class Clauses {
 public:
     Clauses(const Fields& fields, std::size_t first) : m_fields(fields), m_next(first) {}
     bool done() const { return m_next >= m_fields.size(); }
+    std::string_view peek() const { return m_fields[m_next]; }
     std::string_view take() { return m_fields[m_next++]; }
     std::size_t left() const { return m_fields.size() - m_next; }
     bool seen(std::string_view keyword)
@@ -100,6 +111,8 @@ private:
     Problem frame(std::string_view field, const std::string& what, int& value) const;
     Problem span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const;
     Problem point_clause(Clauses& clauses, std::optional<Vec3>& point) const;
+    Problem turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about, FrameSpan& frames,
+                         Axis* axis) const;
     Problem check_span(const FrameSpan& span, std::string_view keyword) const;
     Problem once(bool already, std::string_view what) const;
     SceneObject& object() { return m_scene.objects.back(); }
@@ -283,7 +296,6 @@ Problem SceneParser::parse_keys(const Fields& fields)
         return error("KEYS FROM " + std::to_string(keys.frames.from) + " TO " + std::to_string(keys.frames.to) +
                      ": expected FROM before TO (KEY1 at FROM, KEY2 at TO)");
     object().keys = std::move(keys);
-    m_pending.keys_line = m_line;
     return std::nullopt;
 }
 
@@ -338,7 +350,7 @@ Problem SceneParser::parse_move(const Fields& fields)
     bool span_given = false;
     Clauses clauses(fields, 2);
     while (!clauses.done()) {
-        const std::string_view clause = fields[fields.size() - clauses.left()];
+        const std::string_view clause = clauses.peek();
         if (equals_ignoring_case(clause, "LOOP")) {
             clauses.take();
             if (clauses.seen("LOOP"))
@@ -349,7 +361,7 @@ Problem SceneParser::parse_move(const Fields& fields)
             if (clauses.seen("TIMES"))
                 return error("TIMES is given twice; expected it once");
             // The frames run to the first field that is not a whole number (LOOP, FROM, ...).
-            while (!clauses.done() && parse_count_value(fields[fields.size() - clauses.left()])) {
+            while (!clauses.done() && parse_count_value(clauses.peek())) {
                 int time = 0;
                 if (auto problem = frame(clauses.take(), "TIMES", time))
                     return problem;
@@ -391,24 +403,7 @@ Problem SceneParser::parse_rotate(const Fields& fields)
     if (auto problem = number(fields[1], "the degrees per frame", rotate.degrees_per_frame))
         return problem;
     Clauses clauses(fields, 2);
-    while (!clauses.done()) {
-        const std::string_view clause = fields[fields.size() - clauses.left()];
-        if (equals_ignoring_case(clause, "AXIS")) {
-            clauses.take();
-            if (clauses.seen("AXIS") || clauses.done())
-                return error("expected 'AXIS x', 'AXIS y' or 'AXIS z' once");
-            const std::string axis = ascii_lower_case(clauses.take());
-            if (axis != "x" && axis != "y" && axis != "z")
-                return error("unknown AXIS " + quote_field(axis) + "; expected x, y or z");
-            rotate.axis = axis == "x" ? Axis::x : axis == "y" ? Axis::y : Axis::z;
-        } else if (equals_ignoring_case(clause, "ABOUT")) {
-            if (auto problem = point_clause(clauses, rotate.about))
-                return problem;
-        } else if (auto problem = span_clause(clauses, "ROTATE", rotate.frames)) {
-            return problem;
-        }
-    }
-    if (auto problem = check_span(rotate.frames, "ROTATE"))
+    if (auto problem = turn_clauses(clauses, "ROTATE", rotate.about, rotate.frames, &rotate.axis))
         return problem;
     object().rotate = rotate;
     return std::nullopt;
@@ -427,16 +422,7 @@ Problem SceneParser::parse_scale(const Fields& fields)
     if (scale.factor <= 0.0)
         return error("SCALE FACTOR " + quote_field(fields[1]) + " is not above 0; expected a factor > 0");
     Clauses clauses(fields, 2);
-    while (!clauses.done()) {
-        const std::string_view clause = fields[fields.size() - clauses.left()];
-        if (equals_ignoring_case(clause, "ABOUT")) {
-            if (auto problem = point_clause(clauses, scale.about))
-                return problem;
-        } else if (auto problem = span_clause(clauses, "SCALE", scale.frames)) {
-            return problem;
-        }
-    }
-    if (auto problem = check_span(scale.frames, "SCALE"))
+    if (auto problem = turn_clauses(clauses, "SCALE", scale.about, scale.frames, nullptr))
         return problem;
     const double growth = std::abs(std::log(scale.factor)) * (scale.frames.to - scale.frames.from);
     if (growth > std::log(most_scale_growth))
@@ -507,6 +493,31 @@ Problem SceneParser::span_clause(Clauses& clauses, std::string_view keyword, Fra
     if (clauses.done())
         return error("expected a frame after " + std::string(from ? "FROM" : "TO"));
     return frame(clauses.take(), from ? "FROM" : "TO", from ? span.from : span.to);
+}
+
+// The clauses of ROTATE and SCALE after their number: ABOUT X Y Z, FROM F, TO G and, when `axis`
+// is given (ROTATE), AXIS x|y|z; then FROM <= TO.
+Problem SceneParser::turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
+                                  FrameSpan& frames, Axis* axis) const
+{
+    while (!clauses.done()) {
+        const std::string_view clause = clauses.peek();
+        if (axis != nullptr && equals_ignoring_case(clause, "AXIS")) {
+            clauses.take();
+            if (clauses.seen("AXIS") || clauses.done())
+                return error("expected 'AXIS x', 'AXIS y' or 'AXIS z' once");
+            const std::string name = ascii_lower_case(clauses.take());
+            if (name != "x" && name != "y" && name != "z")
+                return error("unknown AXIS " + quote_field(name) + "; expected x, y or z");
+            *axis = name == "x" ? Axis::x : name == "y" ? Axis::y : Axis::z;
+        } else if (equals_ignoring_case(clause, "ABOUT")) {
+            if (auto problem = point_clause(clauses, about))
+                return problem;
+        } else if (auto problem = span_clause(clauses, keyword, frames)) {
+            return problem;
+        }
+    }
+    return check_span(frames, keyword);
 }
 
 Problem SceneParser::point_clause(Clauses& clauses, std::optional<Vec3>& point) const
@@ -600,8 +611,8 @@ Problem SceneParser::finish_joints()
                              std::to_string(first.joint->line) + ") and '" + b.name +
                              "', which is not its part or its parent; expected a part and its parent",
                          second.joint->line);
-        const Vec3 pa = a.first_drawing()->all_points()[first.joint->point];
-        const Vec3 pb = b.first_drawing()->all_points()[second.joint->point];
+        const Vec3 pa = point_of(*a.first_drawing(), first.joint->point);
+        const Vec3 pb = point_of(*b.first_drawing(), second.joint->point);
         const double tolerance =
             second.joint->tolerance.value_or(first.joint->tolerance.value_or(default_tolerance));
         if (distance(pa, pb) > tolerance)

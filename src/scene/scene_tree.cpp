@@ -2,26 +2,18 @@
 
 #include "apcs/formats/number_text.h"
 
-#include <cstdio>
 #include <vector>
 
 namespace apcs {
 
 namespace {
 
-std::string signed_value(double value)
-{
-    char text[16];
-    std::snprintf(text, sizeof text, "%+.2f", value == 0.0 ? 0.0 : value);
-    return text;
-}
-
 std::string node_line(const Scene& scene, std::size_t index, std::size_t parts)
 {
     const SceneObject& object = scene.objects[index];
-    std::string line = object.name + "  t c b a " + signed_value(object.staff.tension) + " " +
-                       signed_value(object.staff.continuity) + " " + signed_value(object.staff.bias) + " " +
-                       signed_value(object.staff.acceleration) + (object.own_staff ? "" : " (inherited)") +
+    std::string line = object.name + "  t c b a " + format_staff_value(object.staff.tension) + " " +
+                       format_staff_value(object.staff.continuity) + " " + format_staff_value(object.staff.bias) + " " +
+                       format_staff_value(object.staff.acceleration) + (object.own_staff ? "" : " (inherited)") +
                        "  N=" + std::to_string(parts);
     if (object.shape)
         line += "  SHAPE " + std::to_string(object.shape->point_count()) + " points";

@@ -62,6 +62,7 @@ KeyContext AnimationPlayer::key_context() const
 
 AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
 {
+    m_notice.clear();
     switch (m_phase) {
     case SessionPhase::animating:
         if (std::holds_alternative<command::StopAnimation>(command)) {
@@ -115,7 +116,9 @@ GraphicsScreen AnimationPlayer::view() const
     const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
     GraphicsScreen screen = draw_frames(m_frames, m_structure, m_view, first, last);
     std::string message;
-    if (m_phase == SessionPhase::animating)
+    if (!m_notice.empty())
+        message = m_notice;
+    else if (m_phase == SessionPhase::animating)
         message = frame_label() + (m_paused ? "  (paused)" : "");
     else if (m_phase == SessionPhase::animation_done)
         message = std::string(text::animation_done);

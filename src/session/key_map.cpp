@@ -1,6 +1,7 @@
 #include "apcs/session/key_map.h"
 
 #include "apcs/raster/cell_grid.h"
+#include "apcs/raster/glyph_mapper.h"
 
 #include <algorithm>
 #include <array>
@@ -284,6 +285,20 @@ std::vector<std::string> key_help_lines(KeyContext context)
         text.push_back(line + std::string(meaning));
     }
     return text;
+}
+
+CellGrid key_help_screen(std::string_view what, KeyContext context)
+{
+    constexpr int rows = text_screen_rows;
+    CellGrid grid(text_screen_columns, rows);
+    grid.put_text(0, 0, "APCS help - the keys of " + std::string(what));
+    int row = 2;
+    for (const std::string& line : key_help_lines(context))
+        if (row < rows - 3)
+            grid.put_text(0, row++, line);
+    grid.put_text(0, rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (files written stay whole).");
+    grid.put_text(0, rows - 1, "Any key closes this help.");
+    return grid;
 }
 
 } // namespace apcs

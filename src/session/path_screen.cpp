@@ -7,34 +7,8 @@
 #include "apcs/session/world_drawing.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace apcs {
-
-namespace {
-
-// Rounded to 2 decimals before printing, so that a value just below 0 shows "0.00", not "-0.00".
-double shown_in_two_decimals(double value)
-{
-    const double shown = std::round(value * 100.0) / 100.0;
-    return shown == 0.0 ? 0.0 : shown;
-}
-
-} // namespace
-
-std::string format_staff_value(double value)
-{
-    char text[40];
-    std::snprintf(text, sizeof text, "%+.2f", shown_in_two_decimals(value));
-    return text;
-}
-
-std::string format_two_decimals(double value)
-{
-    char text[40];
-    std::snprintf(text, sizeof text, "%.2f", shown_in_two_decimals(value));
-    return text;
-}
 
 PathScreenContent path_screen_content(std::span<const ControlPoint> points, const EvaluatedPath& path)
 {

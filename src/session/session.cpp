@@ -1,5 +1,6 @@
 #include "apcs/session/session.h"
 
+#include "apcs/formats/numbered_files.h"
 #include "apcs/raster/painter.h"
 #include "apcs/raster/png_encoder.h"
 #include "apcs/raster/svg_encoder.h"
@@ -8,7 +9,6 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cstdio>
 #include <utility>
 
 namespace apcs {
@@ -247,15 +247,7 @@ SessionScreen Session::screen() const
 
 CellGrid Session::help_screen() const
 {
-    CellGrid grid(TextConsole::columns, TextConsole::rows);
-    grid.put_text(0, 0, std::string("APCS help - the keys of ") + phase_name(phase()));
-    int row = 2;
-    for (const std::string& line : key_help_lines(*m_help_for))
-        if (row < TextConsole::rows - 3)
-            grid.put_text(0, row++, line);
-    grid.put_text(0, TextConsole::rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (files written stay whole).");
-    grid.put_text(0, TextConsole::rows - 1, "Any key closes this help.");
-    return grid;
+    return key_help_screen(phase_name(phase()), *m_help_for);
 }
 
 void Session::save_picture()
@@ -265,11 +257,10 @@ void Session::save_picture()
         m_notice = "P writes a picture in graphics mode only";
         return;
     }
-    for (int number = 1; number <= 999; ++number) {
-        char name[32];
-        std::snprintf(name, sizeof name, "apcs%03d.png", number);
+    for (int number = 1; number <= most_pictures; ++number) {
+        const std::string name = picture_file_name(number);
         if (!m_files.exists(name))
-            return write_picture(name, shown.picture, PngShape::monitor, "picture " + std::string(name));
+            return write_picture(name, shown.picture, PngShape::monitor, "picture " + name);
     }
     m_notice = "apcs001.png … apcs999.png all exist; move some away";
 }

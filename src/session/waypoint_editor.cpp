@@ -1,11 +1,11 @@
 #include "apcs/session/waypoint_editor.h"
 
 #include "apcs/animation/arc_length.h"
+#include "apcs/formats/number_text.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
-#include <cstdio>
 
 namespace apcs {
 
@@ -116,10 +116,8 @@ std::string WaypointEditor::message() const
         return m_problem;
     const Vec3 from_centre = m_setup.points[m_chosen].position - m_setup.view.centre();
     const double depth = dot(from_centre, m_setup.view.toward_viewer());
-    char depth_text[40];
-    std::snprintf(depth_text, sizeof depth_text, "%+.2f", std::abs(depth) < 0.005 ? 0.0 : depth);
     return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(m_setup.points.size()) +
-           "  depth " + depth_text;
+           "  depth " + format_staff_value(depth);
 }
 
 double waypoint_step(std::span<const Vec3> shown)

@@ -9,21 +9,24 @@
 
 namespace apcs {
 
-ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs, Diagnostic& problem)
+ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs, const PictureSaver& save_picture,
+                               Diagnostic& problem)
 {
-    Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
-    if (!opened) {
-        problem = opened.error();
+    const std::unique_ptr<Terminal> terminal = open_terminal(problem);
+    if (!terminal)
         return ExitStatus::terminal_problem;
-    }
-    const std::unique_ptr<Terminal> terminal = std::move(*opened);
     AsciiGlyphCache cache;
+    // ? shows the keys; the frames wait until a key closes the help.
+    bool help = false;
     while (true) {
         const TerminalSize size = terminal->size();
-        const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
-        terminal->show(area ? render_cells(player.view(), *area, glyphs, cache) : too_small_grid(size));
+        const bool fits = fit_cell_area(size.columns, size.rows).has_value();
+        if (help && fits)
+            terminal->show(key_help_screen("playing a scene", player.key_context()));
+        else
+            terminal->show(graphics_grid(player.view(), size, glyphs, cache));
         KeyEvent key;
-        switch (terminal->read_key(player.playing() ? delay_ms : -1, key)) {
+        switch (terminal->read_key(player.playing() && !help ? delay_ms : -1, key)) {
         case TerminalInput::stop:
             return ExitStatus::stopped;
         case TerminalInput::resize:
@@ -37,11 +40,24 @@ ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet g
                 terminal->redraw();
                 break;
             }
-            if (!area)
+            // Keys typed at the too-small screen would act on a player nobody can see.
+            if (!fits)
                 break;
+            if (help) {
+                help = false;
+                break;
+            }
             if (const std::optional<Command> command = command_for(player.key_context(), key)) {
                 if (std::holds_alternative<command::Quit>(*command))
                     return ExitStatus::success;
+                if (std::holds_alternative<command::ShowHelp>(*command)) {
+                    help = true;
+                    break;
+                }
+                if (std::holds_alternative<command::SavePicture>(*command)) {
+                    player.show_notice(save_picture(player.view()));
+                    break;
+                }
                 if (player.update(*command) == AnimationPlayer::Outcome::finished)
                     return ExitStatus::success;
             }

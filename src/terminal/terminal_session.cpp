@@ -19,13 +19,10 @@ namespace {
 CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
                   std::string_view caption)
 {
-    const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
-    if (!area)
-        return too_small_grid(size);
     const SessionScreen screen = with_caption(session.screen(), caption);
     if (screen.graphics)
-        return render_cells(screen.picture, *area, glyphs, cache);
-    return screen.text;
+        return graphics_grid(screen.picture, size, glyphs, cache);
+    return fit_cell_area(size.columns, size.rows) ? screen.text : too_small_grid(size);
 }
 
 // The session's work (the split) for about a frame's time, then back to the keys: Esc or Ctrl-C
@@ -107,15 +104,28 @@ CellGrid too_small_grid(TerminalSize size)
     return grid;
 }
 
-ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                std::vector<KeyEvent>& recorded, Diagnostic& problem)
+CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
+{
+    const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
+    return area ? render_cells(screen, *area, glyphs, cache) : too_small_grid(size);
+}
+
+std::unique_ptr<Terminal> open_terminal(Diagnostic& problem)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
     if (!opened) {
         problem = opened.error();
-        return ExitStatus::terminal_problem;
+        return nullptr;
     }
-    const std::unique_ptr<Terminal> terminal = std::move(*opened);
+    return std::move(*opened);
+}
+
+ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
+                                std::vector<KeyEvent>& recorded, Diagnostic& problem)
+{
+    const std::unique_ptr<Terminal> terminal = open_terminal(problem);
+    if (!terminal)
+        return ExitStatus::terminal_problem;
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # apcs play on a real terminal (tmux, 80x24, ascii): the frames play with their number on the
-# message line; Space pauses; Esc stops; a key shows all frames overlaid; another ends it; q quits
-# at once. Usage: tmux_play.sh APCS DATA_FOLDER
+# message line; Space pauses; ? shows the keys until a key; P writes apcs001.png (never through a
+# name that is taken, even by a dangling link); Esc stops; a key shows all frames overlaid; another
+# ends it; q quits at once. Usage: tmux_play.sh APCS DATA_FOLDER
 set -euo pipefail
 apcs=$1
 data=$2
@@ -17,6 +18,15 @@ wait_for bike "(paused)"
 paused=$(screen bike | grep -o "Frame [0-9]* of 72")
 sleep 0.5
 [ "$(screen bike | grep -o "Frame [0-9]* of 72")" = "$paused" ] || fail_showing "the frame moved while paused" bike
+keys_to bike '?'
+wait_for bike "APCS help - the keys of playing a scene"
+keys_to bike x
+wait_for bike "(paused)"
+ln -s "$work/nowhere" "$work/apcs001.png"
+keys_to bike P
+wait_for bike "wrote apcs002.png"
+[ -L "$work/apcs001.png" ] && [ ! -e "$work/nowhere" ] || fail_showing "P wrote through a link" bike
+[ "$(head -c 4 "$work/apcs002.png" | tail -c 3)" = PNG ] || fail_showing "apcs002.png is not a PNG" bike
 keys_to bike Escape
 wait_for bike "Press any key to see all frames"
 keys_to bike x

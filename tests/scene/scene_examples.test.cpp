@@ -65,7 +65,6 @@ TEST_CASE("apcs play prints, writes and draws a scene; without a terminal it say
     REQUIRE(printed.out.starts_with("# frame 0\n# object road\n"));
     REQUIRE(printed.out.find("# frame 60\n# object road\n") != std::string::npos);
     REQUIRE(printed.out.find("# frame 61\n") == std::string::npos);
-    // Frame 10: the car's underside middle, (0,0,0) in car.dat, is at B.
     REQUIRE(run_apcs({"play", car, "--print"}).out == printed.out); // deterministic
 
     apcs::test::TempFolder folder;
@@ -104,6 +103,9 @@ TEST_CASE("apcs play --tree prints the robot as fig. 3.3.2's data structure", "[
     const auto tree = run_apcs({"play", (data_folder / "robot/robot.scn").string(), "--tree"});
     REQUIRE(tree.status == 0);
     REQUIRE(tree.out.starts_with("robot.scn: frames 0-12, 15 objects\n`-- robot  t c b a +0.00 +0.00 +0.00 +0.00  N=1  MOVE\n"));
+    const auto tree_and_print = run_apcs({"play", (data_folder / "robot/robot.scn").string(), "--tree", "--print"});
+    REQUIRE(tree_and_print.status == 2);
+    REQUIRE(tree_and_print.out.empty());
     for (const char* part : {"head", "torso", "arm-l", "palm-l", "fingers-l", "thigh-r", "calf-r", "sole-r"})
         REQUIRE(tree.out.find(std::string("-- ") + part + "  ") != std::string::npos);
 }

@@ -18,12 +18,8 @@ namespace {
 
 PathEditor::Setup four_point_path()
 {
-    PathEditor::Setup setup;
-    setup.path_name = "way1.dat";
-    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{3, -4, 5}, Vec3{1, 1, 7}, Vec3{0, 0, 10}})
-        setup.points.push_back({position, {}});
-    setup.settings = {{1, 1}, 8, 5, Spacing::nearest};
-    return setup;
+    return apcs::test::path_setup({Vec3{0, 0, 0}, Vec3{3, -4, 5}, Vec3{1, 1, 7}, Vec3{0, 0, 10}},
+                                  {{1, 1}, 8, 5, Spacing::nearest});
 }
 
 } // namespace

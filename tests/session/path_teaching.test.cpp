@@ -25,11 +25,8 @@ namespace {
 // A zigzag in the x-y plane: chords (2,0,0), (0,2,0), (2,0,0).
 PathEditor::Setup zigzag()
 {
-    PathEditor::Setup setup;
-    setup.path_name = "way1.dat";
-    for (const Vec3& position : {Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{2, 2, 0}, Vec3{4, 2, 0}})
-        setup.points.push_back({position, {}});
-    setup.settings = {{1, 1}, 16, 5, Spacing::exact};
+    PathEditor::Setup setup = apcs::test::path_setup({Vec3{0, 0, 0}, Vec3{2, 0, 0}, Vec3{2, 2, 0}, Vec3{4, 2, 0}},
+                                                     {{1, 1}, 16, 5, Spacing::exact});
     setup.view_angles = {-90.0, 0.0}; // top: x right, y up
     return setup;
 }

@@ -33,6 +33,17 @@ inline std::string message_of(const GraphicsScreen& screen)
     return {};
 }
 
+// A path editor's setup for path file way1.dat with control points at `positions` (staff values 0).
+inline PathEditor::Setup path_setup(std::initializer_list<Vec3> positions, const PathSettings& settings)
+{
+    PathEditor::Setup setup;
+    setup.path_name = "way1.dat";
+    for (const Vec3& position : positions)
+        setup.points.push_back({position, {}});
+    setup.settings = settings;
+    return setup;
+}
+
 // Commands for a path editor that each leave it editing.
 inline void apply(PathEditor& editor, std::initializer_list<Command> commands)
 {

@@ -29,6 +29,13 @@ std::string range_text(const limits::Range& range);
 // `value` with exactly six decimals (SPEC §7.4); −0.000000 is written as 0.000000.
 std::string fixed_six(double value);
 
+// "+0.05", "-1.00": a staff value as the staff shows it (also the --tree of a scene, the depth of
+// the waypoint editor), never "-0.00".
+std::string format_staff_value(double value);
+
+// "0.05", "-1.00": a number of the message line, never "-0.00".
+std::string format_two_decimals(double value);
+
 // A field for an error message: in single quotes, at most 24 characters, control and non-ASCII
 // bytes as \xNN.
 std::string quote_field(std::string_view field);

@@ -30,8 +30,7 @@ struct Affine {
         for (std::size_t i = 0; i < 3; ++i)
             for (std::size_t j = 0; j < 3; ++j)
                 c.m[i][j] = a.m[i][0] * b.m[0][j] + a.m[i][1] * b.m[1][j] + a.m[i][2] * b.m[2][j];
-        const Vec3 moved = a(b.t);
-        c.t = moved;
+        c.t = a(b.t);
         return c;
     }
 

@@ -55,12 +55,14 @@ private:
         double tolerance;
     };
     Vec3 move_offset(std::size_t index, int f) const;
+    // T_f of the object alone: its MOVE, ROTATE and SCALE, without its parents'.
+    Affine own_transform(std::size_t index, int f) const;
     std::span<const Vec3> drawing_at(std::size_t index, int f) const;
 
     const Scene& m_scene;
     std::vector<Vec3> m_centres;
     std::vector<FrameSequence> m_key_frames;       // per object: its KEYS frames FROM … TO
-    std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points
+    std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points (empty for KEYS)
     std::vector<std::vector<Vec3>> m_move_offsets;  // per object: MOVE offset at FROM … TO
     std::vector<std::vector<JointLink>> m_joints;   // per object: its joints with its parent
     std::vector<ObjectPoints> m_object_points;

@@ -42,12 +42,16 @@ public:
     std::string frame_label() const;
     // The frames are a scene's 0 … N (apcs play), named by their number and the scene's file.
     void name_frames_by_scene(std::string scene_name) { m_scene_name = std::move(scene_name); }
+    // A line shown on the message line instead of the frame's name until the next key (P's
+    // "wrote apcs001.png" in apcs play).
+    void show_notice(std::string notice) { m_notice = std::move(notice); }
 
 private:
     FrameSequence m_frames;
     Graphic m_structure;
     std::array<std::string, 2> m_key_names;
     std::string m_scene_name;
+    std::string m_notice;
     ViewTransform m_view;
     SessionLog& m_log;
     SessionPhase m_phase = SessionPhase::animating;

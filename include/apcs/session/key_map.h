@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/raster/cell_grid.h"
 #include "apcs/session/command.h"
 #include "apcs/session/key_event.h"
 
@@ -77,5 +78,9 @@ std::string key_label(const KeyPattern& pattern);
 // The help screen's lines for a context: every key and what it means, keys of the same meaning on
 // one line ("4, Left    one step to the left").
 std::vector<std::string> key_help_lines(KeyContext context);
+
+// The help screen (80x24 text): "APCS help - the keys of WHAT", the key_help_lines of `context`,
+// and how to close it.
+CellGrid key_help_screen(std::string_view what, KeyContext context);
 
 } // namespace apcs

@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
+#include "apcs/formats/number_text.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/world_drawing.h"
 
@@ -46,10 +47,5 @@ ViewScene path_screen_scene(const PathScreenContent& content);
 // Draws the path screen: boundary, curve, x at every control point, a dot at every shown
 // in-between, the four-line staff with its values, the message and key lines.
 GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view);
-
-// "+0.05", "-1.00": a staff value as the staff shows it.
-std::string format_staff_value(double value);
-// "0.05", "-1.00": a number of the message line, never "-0.00".
-std::string format_two_decimals(double value);
 
 } // namespace apcs

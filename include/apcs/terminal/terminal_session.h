@@ -7,6 +7,7 @@
 #include "apcs/session/session.h"
 #include "apcs/terminal/terminal.h"
 
+#include <memory>
 #include <vector>
 
 namespace apcs {
@@ -22,6 +23,12 @@ namespace apcs {
 // While a paced replay plays, Esc ends it (the keyboard takes over) and other keys are ignored.
 // The screen of a terminal smaller than the graphics mode's least size: how large it must be.
 CellGrid too_small_grid(TerminalSize size);
+
+// `screen` in the cells of a terminal of `size`, or too_small_grid below the least size.
+CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache);
+
+// The terminal, or nullptr with `problem` set ("apcs: PROBLEM") when there is no usable one.
+std::unique_ptr<Terminal> open_terminal(Diagnostic& problem);
 
 ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem);
