@@ -207,25 +207,18 @@ std::optional<std::string> session_option_before_command(const CLI::App& app, co
     return std::nullopt;
 }
 
-// A picture is never written over an input of the run (through a link, another case, a name
-// without extension), and two pictures never go to one file, where one would be lost silently.
+// A picture is never written over an input of the run (picture_over_input), and two pictures
+// never go to one file, where one would be lost silently.
 std::optional<Diagnostic> picture_target_clash(const CommonOptions& options,
                                                std::span<const std::filesystem::path> inputs, bool& usage)
 {
+    if (auto over_input = picture_over_input(options, inputs))
+        return over_input;
     const std::filesystem::path dash(standard_stream_name);
-    KeyFileGuard read;
-    for (const std::filesystem::path& input : inputs)
-        if (!input.empty() && input != dash)
-            read.protect(input);
     KeyFileGuard pictures;
-    const std::pair<const char*, const std::optional<std::filesystem::path>*> targets[] = {
-        {"--png", &options.png}, {"--png-raw", &options.png_raw}, {"--svg", &options.svg}, {"--gif", &options.gif}};
-    for (const auto& [option, target] : targets) {
+    for (const auto& [option, target] : picture_targets(options)) {
         if (!*target || **target == dash)
             continue;
-        if (read.guards(**target))
-            return Diagnostic{(*target)->string(), 0, "is an input of this run; " + std::string(option) +
-                                                          " never writes over an input"};
         if (pictures.guards(**target)) {
             usage = true;
             return Diagnostic{"apcs", 0, std::string(option) + " names a file another picture option names: " +

@@ -4,6 +4,7 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/png_encoder.h"
@@ -52,6 +53,26 @@ std::optional<Diagnostic> write_svg_file(const std::filesystem::path& target, co
                                          std::ostream& out)
 {
     return write_picture_bytes(target, encode_svg(screen), out);
+}
+
+std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
+picture_targets(const CommonOptions& options)
+{
+    return {{{"--png", &options.png}, {"--png-raw", &options.png_raw}, {"--svg", &options.svg}, {"--gif", &options.gif}}};
+}
+
+std::optional<Diagnostic> picture_over_input(const CommonOptions& options, std::span<const std::filesystem::path> inputs)
+{
+    const std::filesystem::path dash(standard_stream_name);
+    KeyFileGuard read;
+    for (const std::filesystem::path& input : inputs)
+        if (!input.empty() && input != dash)
+            read.protect(input);
+    for (const auto& [option, target] : picture_targets(options))
+        if (*target && **target != dash && read.guards(**target))
+            return Diagnostic{(*target)->string(), 0, "is an input of this run; " + std::string(option) +
+                                                          " never writes over an input"};
+    return std::nullopt;
 }
 
 std::optional<Diagnostic> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out)

@@ -155,6 +155,9 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     const Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
     if (!scene)
         return report_bad_input(scene.error(), err);
+    // The .dat files a scene reads are known only now; the command line checked the scene file.
+    if (auto clash = picture_over_input(options, inputs))
+        return report_bad_input(*clash, err);
     const std::string scene_name = request.scene.filename().string();
     if (request.tree) {
         out << format_scene_tree(*scene, scene_name);

@@ -41,6 +41,9 @@ std::vector<CommandOptions> commands()
          joined({view, pictures, {"--gif", "--delay", "--inbetweens", "--frames", "--law", "--pad", "--print", "--out"}})},
         {{"draw", "a.dat"}, joined({view, pictures})},
         {{"figures"}, joined({staff, curve, {"--workdir", "--out"}})},
+        {{"play", "a.scn"},
+         joined({staff, view, pictures, {"--slopes", "--samples", "--spacing", "--glyphs", "--gif", "--delay", "--print",
+                                         "--out", "--tree"}})},
     };
 }
 
@@ -98,6 +101,8 @@ TEST_CASE("a picture is never written over an input of the run, by a link or a n
     folder.write("key1.dat", key);
     folder.write("key2.dat", "0 5 0\n0 5 10\n");
     folder.write("k1", key);
+    // A scene's drawing, known as an input only once the scene is read.
+    folder.write("scene.scn", "FRAMES 2\nOBJECT a\nSHAPE key1.dat\n");
     std::filesystem::create_symlink(folder / "key1.dat", folder / "k.png");
     struct Row {
         std::vector<std::string> arguments;
@@ -109,6 +114,8 @@ TEST_CASE("a picture is never written over an input of the run, by a link or a n
          folder / "key1.dat", (folder / "k.png").string() + ": is an input of this run; --png never writes over an input\n"},
         {{"draw", (folder / "k1").string(), "--svg", (folder / "k1").string()}, folder / "k1",
          (folder / "k1").string() + ": is an input of this run; --svg never writes over an input\n"},
+        {{"play", (folder / "scene.scn").string(), "--png", (folder / "k.png").string()}, folder / "key1.dat",
+         (folder / "k.png").string() + ": is an input of this run; --png never writes over an input\n"},
     };
     for (const Row& row : rows) {
         CAPTURE(row.arguments);

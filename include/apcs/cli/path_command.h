@@ -6,7 +6,10 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/png_encoder.h"
 
+#include <array>
 #include <filesystem>
+#include <utility>
+#include <span>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -32,6 +35,15 @@ inline constexpr std::string_view standard_stream_name = "-";
 // Writes the screen as an SVG (encode_svg), atomically; to `out` when `target` is "-".
 [[nodiscard]] std::optional<Diagnostic> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
                                                        std::ostream& out);
+
+// The picture options and where each writes: --png, --png-raw, --svg, --gif.
+std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
+picture_targets(const CommonOptions& options);
+
+// "TARGET: is an input of this run; --png never writes over an input" when a picture option names
+// one of `inputs` (through a link, in another case, without an extension); else nothing.
+[[nodiscard]] std::optional<Diagnostic> picture_over_input(const CommonOptions& options,
+                                                           std::span<const std::filesystem::path> inputs);
 
 // Every picture `options` asks for (--png, --png-raw, --svg) of `screen`; the first problem.
 [[nodiscard]] std::optional<Diagnostic> write_pictures(const GraphicsScreen& screen, const CommonOptions& options,
