@@ -28,7 +28,7 @@ std::filesystem::path canonical_or_empty(const std::filesystem::path& path)
 Expected<std::filesystem::path> choose_data_folder(const DataFolderClues& clues,
                                                    const std::function<bool(const std::filesystem::path&)>& is_folder)
 {
-    const std::string expected = "expected the folder that holds the examples n-to-l/, stick/ and snake-apple/";
+    const std::string expected = "expected the folder that holds the examples n-to-l/, stick/, snake-apple/ and robot/";
     if (!clues.environment.empty()) {
         if (is_folder(clues.environment))
             return clues.environment;
@@ -48,7 +48,7 @@ Expected<std::filesystem::path> choose_data_folder(const DataFolderClues& clues,
     }
     return Diagnostic{"apcs", 0,
                       "the examples are not installed (looked in " + (looked_in.empty() ? "no folder" : looked_in) +
-                          "); set APCS_DATA to the folder that holds n-to-l/, stick/ and snake-apple/, or give --workdir"};
+                          "); set APCS_DATA to the folder that holds n-to-l/, stick/, snake-apple/ and robot/, or give --workdir"};
 }
 
 DataFolderClues running_program_clues()

@@ -6,6 +6,9 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/scene/scene_animation.h"
+#include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_joints.h"
 #include "apcs/session/figures.h"
 
 #include <ostream>
@@ -64,6 +67,36 @@ Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::f
     return draw_frames_figure(example.title, frames, keys.key1, example.view, still);
 }
 
+// "neck: torso point 7 = head point 1" (points numbered from 1, as in the .scn file).
+std::string joint_legend(const Scene& scene, const std::string& name, const JointEnds& ends)
+{
+    return name + ": " + scene.objects[ends.parent].name + " point " + std::to_string(ends.parent_point + 1) + " = " +
+           scene.objects[ends.part].name + " point " + std::to_string(ends.part_point + 1);
+}
+
+// Fig. 3.3.3: the robot of data/robot standing at frame 0, its neck joint A and wrist joint B marked.
+Expected<GraphicsScreen> draw_robot_figure(const std::filesystem::path& data_folder, const CommonOptions& options)
+{
+    const std::filesystem::path file = data_folder / "robot" / "robot.scn";
+    const Expected<Scene> scene = read_scene_file(file, options.staff);
+    if (!scene)
+        return scene.error();
+    PathSettings settings = options.path;
+    settings.spacing = Spacing::exact;
+    const SceneAnimation animation(*scene, settings);
+    const std::vector<Vec3> points = animation.frame(0);
+    std::vector<FigureMark> marks;
+    for (const auto& [label, joint] : {std::pair{"A", "neck"}, std::pair{"B", "wrist-r"}}) {
+        const std::optional<JointEnds> ends = find_joint(*scene, joint);
+        if (!ends)
+            return Diagnostic{file.string(), 0, std::string("has no joint ") + joint + "; fig. 3.3.3 marks the neck and a wrist"};
+        const Vec3 position = points[animation.object_points()[ends->parent].first + ends->parent_point];
+        marks.push_back({label, position, joint_legend(*scene, joint, *ends)});
+    }
+    return draw_marked_frame_figure("Fig. 3.3.3  The robot: key points A (neck) and B (wrist)", points,
+                                    animation.structure(), scene->view.value_or(ViewAngles{0, 90}), marks);
+}
+
 } // namespace
 
 ExitStatus run_figures_command(const CommonOptions& options, const std::filesystem::path& data_folder, std::ostream& out,
@@ -87,6 +120,10 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
             return report_bad_input(screen.error(), err);
         pictures.emplace_back(example.file_name, std::move(*screen));
     }
+    Expected<GraphicsScreen> robot = draw_robot_figure(examples, options);
+    if (!robot)
+        return report_bad_input(robot.error(), err);
+    pictures.emplace_back("fig-3-3-3.png", std::move(*robot));
     for (const auto& [name, screen] : pictures) {
         if (auto problem = write_png_file(target / name, screen, PngShape::monitor, out))
             return report_bad_input(*problem, err);

@@ -109,4 +109,25 @@ GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence&
     return screen;
 }
 
+GraphicsScreen draw_marked_frame_figure(const std::string& title, std::span<const Vec3> points,
+                                        const Graphic& structure, ViewAngles angles,
+                                        std::span<const FigureMark> marks)
+{
+    const ViewTransform view = ViewScene().add(points).fit(angles, figure_area);
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    for (const std::vector<Vec3>& polyline : structure.polylines(points))
+        draw_world_polyline(painter, polyline, view);
+    int row = legend_row;
+    for (const FigureMark& mark : marks) {
+        const PixelPoint at = view.to_device(mark.position).rounded();
+        painter.rectangle({at.x - 4, at.y - 4, at.x + 5, at.y + 5}); // 9x9, centred
+        // The letter sits right of the box and a little above it, where the thesis writes A and B.
+        painter.text({at.x + 7, at.y - 16}, mark.label);
+        screen.text.push_back({1, row++, mark.label + "  " + mark.legend});
+    }
+    screen.text.push_back({1, 0, title});
+    return screen;
+}
+
 } // namespace apcs

@@ -59,8 +59,8 @@ TEST_CASE("an APCS_DATA that is no folder is said, not passed over", "[cli][inst
     DataFolderClues clues = installed_clues();
     clues.environment = "/nowhere";
     CHECK(chosen(clues, {"/usr/local/share/apcs"}) ==
-          "error: APCS_DATA: /nowhere is not a folder; expected the folder that holds the examples n-to-l/, stick/ "
-          "and snake-apple/");
+          "error: APCS_DATA: /nowhere is not a folder; expected the folder that holds the examples n-to-l/, stick/, "
+          "snake-apple/ and robot/");
 }
 
 TEST_CASE("without its own path the program looks only where APCS_DATA says", "[cli][install]")

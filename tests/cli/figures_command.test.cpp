@@ -20,7 +20,8 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
     REQUIRE(result.status == 0);
     const std::vector<std::string> names{"fig-3-1-1.png",          "fig-3-1-2.png",          "fig-3-1-3.png",
                                          "fig-3-1-4.png",          "example-1-n-to-l-a.png", "example-1-n-to-l-b.png",
-                                         "example-2-stick-a.png",  "example-2-stick-b.png",  "example-3-snake-apple.png"};
+                                         "example-2-stick-a.png",  "example-2-stick-b.png",  "example-3-snake-apple.png",
+                                         "fig-3-3-3.png"};
     for (const std::string& name : names) {
         CAPTURE(name);
         const std::string written = test::read_all(folder / name);
@@ -76,4 +77,17 @@ TEST_CASE("each example's session replays headless to its approved in-between fi
             test::check_golden("examples/" + example + "/" + name, test::read_all(folder / name));
         }
     }
+}
+
+TEST_CASE("apcs figures without the robot's scene names it and writes no picture", "[cli][figures]")
+{
+    const test::TempFolder folder;
+    const std::filesystem::path data = folder / "data";
+    std::filesystem::copy(std::filesystem::path(APCS_SOURCE_DIR) / "data", data, std::filesystem::copy_options::recursive);
+    std::filesystem::remove(data / "robot" / "robot.scn");
+    const auto result = test::run_apcs({"figures", "--workdir", data.string(), "--out", folder.path().string()});
+    CHECK(result.status == 1);
+    CHECK(result.err.find("robot.scn") != std::string::npos);
+    CHECK(result.out.empty());
+    CHECK_FALSE(std::filesystem::exists(folder / "fig-3-1-1.png"));
 }

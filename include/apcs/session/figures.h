@@ -39,4 +39,17 @@ GraphicsScreen draw_curve_figure(const CurveFigure& figure);
 GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
                                   ViewAngles angles, std::span<const Graphic> still = {});
 
+// A key point a figure marks: a box around it, `label` beside it, and a legend line saying what it is.
+struct FigureMark {
+    std::string label; // e.g. "A"
+    Vec3 position;
+    std::string legend;
+};
+
+// One frame of a scene drawn solid, its key points marked and explained under it (the look of the
+// thesis' fig. 3.3.3, the robot with its neck A and wrist B).
+GraphicsScreen draw_marked_frame_figure(const std::string& title, std::span<const Vec3> points,
+                                        const Graphic& structure, ViewAngles angles,
+                                        std::span<const FigureMark> marks);
+
 } // namespace apcs
