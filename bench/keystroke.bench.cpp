@@ -1,6 +1,8 @@
 // One staff keystroke, end to end below the terminal: recompute the path (10 control points,
 // 32 samples per segment, 12 in-betweens), redraw the path screen's raster, map it to cells and
 // diff the cells against the previous grid, at 80x24 and 200x60, for each glyph set.
+#include "cell_diff.h"
+
 #include "apcs/session/path_screen.h"
 #include "apcs/session/screen_layout.h"
 
@@ -18,15 +20,6 @@ ControlPoints ten_points()
     for (int k = 0; k < 10; ++k)
         points.push_back({{std::sin(k * 0.9) * 3.0, k * 2.0, std::cos(k * 0.7) * 4.0}, {}});
     return points;
-}
-
-std::size_t changed_cells(const CellGrid& before, const CellGrid& after)
-{
-    std::size_t changed = 0;
-    for (int row = 0; row < after.rows(); ++row)
-        for (int column = 0; column < after.columns(); ++column)
-            changed += before.at(column, row) != after.at(column, row) ? 1u : 0u;
-    return changed;
 }
 
 void staff_keystroke(benchmark::State& state)
@@ -51,7 +44,7 @@ void staff_keystroke(benchmark::State& state)
         content.staff.tension = tension;
         content.active_line = StaffLine::tension;
         const CellGrid grid = render_cells(draw_path_screen(content, view), area, glyphs, cache);
-        benchmark::DoNotOptimize(changed_cells(previous, grid));
+        benchmark::DoNotOptimize(bench::changed_cells(previous, grid));
         previous = grid;
     }
 }

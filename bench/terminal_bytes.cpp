@@ -1,13 +1,14 @@
 // Counts the bytes APCS sends to an 80x24 terminal for each staff keystroke: the real program in
 // a pseudo-terminal, a 6-point path, 20 presses of 6 on TENSION, for each glyph set.
 // Usage: terminal_bytes PATH_TO_APCS
+#include "pty_reading.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <poll.h>
 #include <pty.h>
 #include <string>
 #include <sys/wait.h>
@@ -16,26 +17,10 @@
 
 namespace {
 
-// Reads everything the program writes until it has been quiet for `quiet_ms`.
-std::size_t drain(int terminal, int quiet_ms)
-{
-    std::size_t total = 0;
-    char buffer[65536];
-    while (true) {
-        pollfd ready{terminal, POLLIN, 0};
-        if (poll(&ready, 1, quiet_ms) <= 0)
-            return total;
-        const ssize_t got = read(terminal, buffer, sizeof buffer);
-        if (got <= 0)
-            return total;
-        total += static_cast<std::size_t>(got);
-    }
-}
-
 void type(int terminal, const std::string& keys, int quiet_ms = 150)
 {
     (void)!write(terminal, keys.data(), keys.size());
-    drain(terminal, quiet_ms);
+    apcs::bench::drain(terminal, quiet_ms);
 }
 
 std::vector<std::size_t> measure(const std::string& apcs, const std::filesystem::path& folder, const char* glyphs)
@@ -49,7 +34,7 @@ std::vector<std::size_t> measure(const std::string& apcs, const std::filesystem:
         execl(apcs.c_str(), apcs.c_str(), "--workdir", folder.c_str(), "--glyphs", glyphs, static_cast<char*>(nullptr));
         _exit(127);
     }
-    drain(terminal, 300);
+    apcs::bench::drain(terminal, 300);
     type(terminal, "\r");             // key1.dat
     type(terminal, "\r");             // key2.dat
     type(terminal, "0 90 0\r");       // view
@@ -59,10 +44,10 @@ std::vector<std::size_t> measure(const std::string& apcs, const std::filesystem:
     std::vector<std::size_t> bytes;
     for (int press = 0; press < 20; ++press) {
         (void)!write(terminal, "6", 1);
-        bytes.push_back(drain(terminal, 150));
+        bytes.push_back(apcs::bench::drain(terminal, 150).bytes);
     }
     kill(child, SIGTERM);
-    drain(terminal, 100);
+    apcs::bench::drain(terminal, 100);
     waitpid(child, nullptr, 0);
     close(terminal);
     return bytes;
@@ -86,7 +71,7 @@ int main(int argc, char** argv)
         std::vector<std::size_t> bytes = measure(argv[1], folder, glyphs);
         std::vector<std::size_t> sorted = bytes;
         std::sort(sorted.begin(), sorted.end());
-        const double median = (sorted[9] + sorted[10]) / 2.0;
+        const double median = static_cast<double>(sorted[9] + sorted[10]) / 2.0;
         std::printf("%-8s %6.0f %4zu %4zu  ", glyphs, median, sorted.front(), sorted.back());
         for (const std::size_t count : bytes)
             std::printf(" %zu", count);
