@@ -1,0 +1,48 @@
+#pragma once
+
+// Any bytes as a .scn file whose .dat files are a few small ones held in memory (any other name is
+// missing): shared by the libFuzzer harness and the Catch test that replays its corpus.
+
+#include "apcs/formats/dat_file.h"
+#include "apcs/scene/scene_animation.h"
+#include "apcs/scene/scene_file.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+#include <string_view>
+
+namespace apcs::fuzzing {
+
+enum class SceneOutcome { refused, played, read_not_played, broken };
+
+inline SceneOutcome read_and_play_scene(std::string_view text)
+{
+    static const std::map<std::string, std::string> dat_files{
+        {"a.dat", "PART sq CLOSED\n0 0 0\n0 1 0\n0 1 1\n0 0 1\n"},
+        {"b.dat", "0 0 0\n0 1 0\n"},
+        {"c.dat", "0 0 2\n0 1 2\n0 2 2\n"},
+        {"p.dat", "0 0 0\n0 5 1\n0 10 0\n"},
+        {"q.dat", "0 0 0 0.5 0 0 1\n0 3 0 0 0 0 -1\n"},
+    };
+    const SceneFileReader read = [](const std::string& name) -> Expected<DatFile> {
+        const auto found = dat_files.find(name);
+        if (found == dat_files.end())
+            return Diagnostic{name, 0, "no such file"};
+        return parse_dat(found->second, name, 1);
+    };
+    const Expected<Scene> scene = parse_scene(text, "fuzz.scn", read, {});
+    if (!scene)
+        return scene.error().message.empty() ? SceneOutcome::broken : SceneOutcome::refused;
+    // Long scenes are read, not played: the frames' cost is the benchmark's business.
+    if (scene->last_frame > 500)
+        return SceneOutcome::read_not_played;
+    const SceneAnimation animation(*scene, {});
+    for (int f = 0; f <= animation.last_frame(); ++f)
+        for (const Vec3& point : animation.frame(f))
+            if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+                return SceneOutcome::broken;
+    return SceneOutcome::played;
+}
+
+} // namespace apcs::fuzzing
