@@ -167,7 +167,7 @@ std::vector<KeyBinding> make_bindings()
     add(Context::animation,
         {Row{Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop", "stop the animation"},
          Row{Pattern::of(Key::space), cmd::Pause{}, "Space pause", "pause, or go on"},
-         Row{Pattern::letter(U'R'), cmd::Replay{}, "R replay", "replay from KEY1"}});
+         Row{Pattern::letter(U'R'), cmd::Replay{}, "R replay", "replay from the first frame (KEY1, or a scene's frame 0)"}});
     add_graphics_rows(Context::animation, "end APCS; every file written so far stays");
 
     add(Context::quit_question,
