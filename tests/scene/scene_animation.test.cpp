@@ -131,6 +131,23 @@ TEST_CASE("MOVE without TIMES spreads the path over FROM ... TO by its accelerat
     REQUIRE(std::abs(eased_animation.frame(1)[0].y - 10 * (1 - std::cos(std::numbers::pi / 10))) < 1e-6);
 }
 
+TEST_CASE("a part without STAFF moves by its parent's four-line values, one with STAFF by its own (Ch. 3.3)",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["dot.dat"] = "0 0 0\n";
+    files.texts["line.dat"] = "0 0 0\n0 10 0\n"; // three columns: the part's staff values apply
+    const auto first_step = [&files](const std::string& part_staff) {
+        const Scene scene = scene_from("FRAMES 5\nOBJECT body\nSTAFF 0 0 0 1\nOBJECT dot PARENT body\n" + part_staff +
+                                           "SHAPE dot.dat\nMOVE line.dat\n",
+                                       files);
+        return SceneAnimation(scene, exact_settings()).frame(1)[0].y;
+    };
+    // Inherited acceleration +1 (ease-in): the law's 1 − cos(π/2 · 1/5) of the span, not the even 1/5.
+    CHECK(std::abs(first_step("") - 10 * (1 - std::cos(std::numbers::pi / 10))) < 1e-6);
+    CHECK(std::abs(first_step("STAFF 0 0 0 0\n") - 2.0) < 1e-6);
+}
+
 TEST_CASE("timed waypoints: each control point at its frame, never running back, no jump of speed at a key",
           "[scene]")
 {
