@@ -105,6 +105,9 @@ def main():
     g1, g2 = 2 * v**3 - 3 * v**2 + 1, -2 * v**3 + 3 * v**2
     shape1 = key1 - np.outer(g1, key1[0]) - np.outer(g2, key1[-1])
     shape2 = key2 - np.outer(g1, key2[0]) - np.outer(g2, key2[-1])
+    # apcs' in-between format: fixed decimals, 9 - floor(log10 of the keys' largest coordinate).
+    size = max(np.abs(key1).max(), np.abs(key2).max())
+    decimals = max(0, 9 - int(np.floor(np.log10(size)))) if size > 0 else 9
     for k in range(count):
         w = (w0[k] + w1[k]) / 2
         frame = (np.outer(g1, e0[k]) + np.outer(g2, e1[k]) + (2 * w**3 - 3 * w**2 + 1) * shape1
@@ -112,7 +115,7 @@ def main():
         frame[0], frame[-1] = e0[k], e1[k]
         with open(f"{out}/inb{k + 1:03d}.dat", "w") as f:
             f.write(f"; APCS in-between {k + 1} of {count}\n")
-            np.savetxt(f, frame, fmt="%.17g")
+            np.savetxt(f, frame, fmt=f"%.{decimals}f")
 
 
 if __name__ == "__main__":

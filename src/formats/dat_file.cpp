@@ -261,7 +261,7 @@ void append_point_line(std::string& text, const Vec3& position, const std::optio
     }
 }
 
-std::string format_graphic(const Graphic& structure, std::span<const Vec3> points)
+std::string format_graphic(const Graphic& structure, std::span<const Vec3> points, int decimals)
 {
     std::string text;
     // Three shortest numbers are at most 72 bytes; typical ones about 55: one allocation.
@@ -274,7 +274,11 @@ std::string format_graphic(const Graphic& structure, std::span<const Vec3> point
         if (part_lines)
             append_part_line(text, part.name, part.closure, i);
         for (std::size_t k = 0; k < part.points.size() && next < points.size(); ++k, ++next) {
-            append_xyz(text, points[next]);
+            append_fixed(text, points[next].x, decimals);
+            text += ' ';
+            append_fixed(text, points[next].y, decimals);
+            text += ' ';
+            append_fixed(text, points[next].z, decimals);
             text += '\n';
         }
     }

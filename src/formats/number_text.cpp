@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 namespace apcs {
@@ -102,6 +103,71 @@ void append_shortest(std::string& text, double value)
     std::array<char, 32> buffer{};
     const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     text.append(buffer.data(), result.ptr);
+}
+
+int decimals_for_size(double size)
+{
+    if (!(size > 0.0) || !std::isfinite(size))
+        return 9;
+    const int decimals = 9 - static_cast<int>(std::floor(std::log10(size)));
+    if (decimals > 18)
+        return -1; // 10^19 does not fit the digits' 64 bits
+    return std::max(decimals, 0);
+}
+
+namespace {
+
+constexpr char digit_pairs[] = "00010203040506070809101112131415161718192021222324252627282930313233343536373839"
+                               "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
+                               "8081828384858687888990919293949596979899";
+
+// The decimal digits of `number`, written ending at `end`; returns where they start.
+char* digits_ending_at(char* end, std::uint64_t number, int at_least)
+{
+    char* start = end;
+    while (number >= 100 || at_least > 2) {
+        start -= 2;
+        std::memcpy(start, digit_pairs + (number % 100) * 2, 2);
+        number /= 100;
+        at_least -= 2;
+    }
+    if (number >= 10 || at_least == 2) {
+        start -= 2;
+        std::memcpy(start, digit_pairs + number * 2, 2);
+    } else {
+        *--start = static_cast<char>('0' + number);
+    }
+    return start;
+}
+
+} // namespace
+
+void append_fixed(std::string& text, double value, int decimals)
+{
+    static constexpr std::array<double, 19> powers{1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8, 1e9,
+                                                   1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18};
+    if (decimals < 0 || decimals > 18 || !std::isfinite(value)) {
+        append_shortest(text, value);
+        return;
+    }
+    const double scaled = std::fabs(value) * powers[static_cast<std::size_t>(decimals)] + 0.5;
+    if (scaled >= 9.2e18) {
+        append_shortest(text, value);
+        return;
+    }
+    const auto units = static_cast<std::uint64_t>(scaled);
+    const auto unit = static_cast<std::uint64_t>(powers[static_cast<std::size_t>(decimals)]);
+    std::array<char, 48> buffer{};
+    char* const end = buffer.data() + buffer.size();
+    char* start = end;
+    if (decimals > 0) {
+        start = digits_ending_at(end, units % unit, decimals);
+        *--start = '.';
+    }
+    start = digits_ending_at(start, units / unit, 1);
+    if (value < 0.0 && units != 0)
+        *--start = '-';
+    text.append(start, end);
 }
 
 std::string range_text(const limits::Range& range)

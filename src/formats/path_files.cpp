@@ -41,11 +41,21 @@ std::size_t inbetween_count(const FrameSequence& frames)
     return frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
 }
 
+int inbetween_decimals(const FrameSequence& frames)
+{
+    double size = 0.0;
+    if (frames.frame_count() > 0)
+        for (const std::size_t key : {std::size_t{0}, frames.frame_count() - 1})
+            for (const Vec3& point : frames.frame(key))
+                size = std::max({size, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+    return decimals_for_size(size);
+}
+
 NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number)
 {
     return {inbetween_file_name(number), "; APCS in-between " + std::to_string(number) + " of " +
                                              std::to_string(inbetween_count(frames)) + "\n" +
-                                             format_graphic(structure, frames.frame(number))};
+                                             format_graphic(structure, frames.frame(number), inbetween_decimals(frames))};
 }
 
 std::string describe_point(const Vec3& point)

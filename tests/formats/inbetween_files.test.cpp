@@ -39,7 +39,8 @@ TEST_CASE("the in-betweens are written as inb001.dat … and returned in order",
     const auto written = write_inbetween_files(four_steps(), one_point(), folder.path(), KeyFileGuard{});
     REQUIRE(written.has_value());
     REQUIRE(*written == std::vector<std::filesystem::path>{folder / "inb001.dat", folder / "inb002.dat", folder / "inb003.dat"});
-    REQUIRE(read_all(folder / "inb002.dat") == "; APCS in-between 2 of 3\n2 0 0\n");
+    // The keys' largest coordinate is 4: 9 − ⌊log10 4⌋ = 9 decimals.
+    REQUIRE(read_all(folder / "inb002.dat") == "; APCS in-between 2 of 3\n2.000000000 0.000000000 0.000000000\n");
     REQUIRE_FALSE(std::filesystem::exists(folder / "inb004.dat"));
 }
 

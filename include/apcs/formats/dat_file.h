@@ -56,8 +56,9 @@ std::string format_dat(const DatFile& file);
 void append_point_line(std::string& text, const Vec3& position, const std::optional<StaffValues>& staff);
 
 // A graphic with the parts of `structure` and the point sequence `points` (as many as the parts
-// hold), formatted like format_dat; no copy of the points is made.
-std::string format_graphic(const Graphic& structure, std::span<const Vec3> points);
+// hold), formatted like format_dat, or with `decimals` fixed decimals (append_fixed); no copy of
+// the points is made.
+std::string format_graphic(const Graphic& structure, std::span<const Vec3> points, int decimals = -1);
 
 // The key-frame model of a file (staff columns are dropped).
 Graphic graphic_from(const DatFile& file);

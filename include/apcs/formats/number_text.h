@@ -23,6 +23,16 @@ std::string shortest_number(double value);
 // Appends shortest_number(value) to `text` without a temporary string.
 void append_shortest(std::string& text, double value);
 
+// The decimals that keep every coordinate of a drawing within 0.5e-9 × `size` when read back
+// (`size`: its largest absolute coordinate): 9 − ⌊log10 size⌋, at least 0 (9 for size 0). Below
+// 1e-9 no fixed count does: −1, meaning the shortest form.
+int decimals_for_size(double size);
+
+// `value` with exactly `decimals` decimals (printf's "%.*f", rounded half away from zero), −0 as
+// 0; the shortest form when `decimals` is −1, when the value is not finite or when its digits
+// would pass 19 (|value| · 10^decimals ≥ 2^63). Several times faster than the shortest form.
+void append_fixed(std::string& text, double value, int decimals);
+
 // "[MIN, MAX]" with the shortest numbers, as messages and help texts write a range: "[-1, 1]".
 std::string range_text(const limits::Range& range);
 

@@ -40,9 +40,14 @@ std::string inbetween_file_name(std::size_t number);
 // How many in-between files a frame sequence gives: every frame but the first and the last.
 std::size_t inbetween_count(const FrameSequence& frames);
 
+// The decimals of in-between files: decimals_for_size of the largest absolute coordinate of the
+// key frames (the first and the last frame), so that every number reads back within 0.5e-9 of
+// the keys' size.
+int inbetween_decimals(const FrameSequence& frames);
+
 // In-between file `number` (1 … inbetween_count): frame `number`, the whole graphic with the
-// parts of `structure`, headed by "; APCS in-between k of M". Made one at a time, so that only
-// one file's text is ever in memory.
+// parts of `structure`, headed by "; APCS in-between k of M", its numbers with
+// inbetween_decimals. Made one at a time, so that only one file's text is ever in memory.
 NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number);
 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
