@@ -48,6 +48,11 @@ public:
     FileDescriptor& operator=(const FileDescriptor&) = delete;
     ~FileDescriptor() { close(); }
     int get() const { return m_descriptor; }
+    void reset(int descriptor)
+    {
+        close();
+        m_descriptor = descriptor;
+    }
     int close()
     {
         const int result = m_descriptor >= 0 ? ::close(m_descriptor) : 0;
@@ -69,29 +74,6 @@ bool write_all(int descriptor, std::string_view content)
             return false;
         }
         content.remove_prefix(static_cast<std::size_t>(written));
-    }
-    return true;
-}
-
-// Whether the file, of `size` bytes, holds exactly `content`, compared chunk by chunk so that no
-// copy of a large file is held in memory.
-bool holds_exactly(const fs::path& file, off_t size, std::string_view content)
-{
-    if (size < 0 || static_cast<std::size_t>(size) != content.size())
-        return false;
-    FileDescriptor input(::open(file.c_str(), O_RDONLY | O_CLOEXEC));
-    if (input.get() < 0)
-        return false;
-    char buffer[1 << 16];
-    std::size_t compared = 0;
-    while (compared < content.size()) {
-        const ssize_t got = ::read(input.get(), buffer, sizeof buffer);
-        if (got < 0 && errno == EINTR)
-            continue;
-        if (got <= 0 || static_cast<std::size_t>(got) > content.size() - compared ||
-            content.compare(compared, static_cast<std::size_t>(got), buffer, static_cast<std::size_t>(got)) != 0)
-            return false;
-        compared += static_cast<std::size_t>(got);
     }
     return true;
 }
@@ -335,95 +317,242 @@ fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
     return {}; // .bak and .b01 … .b99 are all inputs: there is nowhere to keep the old file
 }
 
-Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content,
-                                            const KeyFileGuard* inputs, Durability durability)
+namespace {
+
+// A file write_file_atomically may replace: the regular file `requested` names (through a
+// symbolic link), or a name not taken yet.
+struct ReplaceableTarget {
+    fs::path path;
+    bool exists = false;
+    struct stat status {};
+};
+
+Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const std::string& shown)
 {
-    const std::string shown = requested.string();
     // Only regular files are ever replaced. A symbolic link is written through to the file it
     // names (replaced in its own folder; the link stays) when that is a regular file; a device, a
     // FIFO, a socket or a directory, named or linked to, is refused and left as it is.
-    fs::path target = requested;
-    struct stat status {};
-    bool exists = false;
-    if (::lstat(requested.c_str(), &status) == 0) {
-        if (S_ISLNK(status.st_mode)) {
-            std::error_code error;
-            const fs::path named = fs::read_symlink(requested, error);
-            const std::string link_to = "is a symbolic link to " + (error ? std::string("a file") : named.string());
-            if (::stat(requested.c_str(), &status) != 0)
-                return Diagnostic{shown, 0, link_to + ", which does not exist (" + system_reason(errno) + "); APCS writes only regular files"};
-            if (!S_ISREG(status.st_mode))
-                return Diagnostic{shown, 0, link_to + ", which " + not_regular(status.st_mode) + "; APCS writes only regular files"};
-            target = fs::canonical(requested, error);
-            if (error)
-                return Diagnostic{shown, 0, link_to + ", which cannot be followed: " + error.message()};
-        } else if (S_ISDIR(status.st_mode)) {
-            return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
-        } else if (!S_ISREG(status.st_mode)) {
-            return Diagnostic{shown, 0, not_regular(status.st_mode) + "; APCS writes only regular files"};
-        }
-        exists = true;
-    }
-    if (exists && holds_exactly(target, status.st_size, content))
-        return WriteResult{WriteOutcome::unchanged, {}};
-    if (exists && is_read_only(target, status))
-        return Diagnostic{shown, 0, "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
-    if (exists)
-        if (auto problem = backup_refusal(backup_path_for(target, inputs), shown))
-            return *problem;
-    // A new file is 0644; a replaced one keeps its mode, and its owner and group where allowed.
-    const mode_t mode = exists ? (status.st_mode & 07777) : 0644;
-    const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
-    std::string temporary = (folder / temporary_name_for(folder, target.filename().string())).string();
-    FileDescriptor file(::mkstemp(temporary.data()));
-    if (file.get() < 0)
-        return Diagnostic{shown, 0, "cannot create a temporary file in " + folder.string() + ": " + system_reason(errno)};
-    // Known until this function returns, renamed or removed: a signal meanwhile removes it.
-    const UnfinishedFile unfinished(temporary);
-    const auto abandon = [&](const std::string& what) {
-        const int reason = errno;
-        file.close();
-        ::unlink(temporary.c_str());
-        return Diagnostic{shown, 0, what + ": " + system_reason(reason)};
-    };
-    if (!write_all(file.get(), content))
-        return abandon("cannot write");
-    if (durability == Durability::each_file && ::fsync(file.get()) != 0)
-        return abandon("cannot flush to disk");
-    if (exists && (status.st_uid != ::geteuid() || status.st_gid != ::getegid())) {
-        // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes the
-        // user's, as any new file would.
-        [[maybe_unused]] const int ignored = ::fchown(file.get(), status.st_uid, status.st_gid);
-    }
-    if (::fchmod(file.get(), mode) != 0)
-        return abandon("cannot set permissions");
-    if (file.close() != 0)
-        return abandon("cannot close");
-
-    WriteResult result{exists ? WriteOutcome::replaced : WriteOutcome::created, {}};
-    if (exists) {
-        // A hard link keeps the old content as .bak while the target itself stays in place until
-        // the rename replaces it, so no moment exists without the user's file.
-        const fs::path backup = backup_path_for(target, inputs);
-        if (backup.empty()) {
-            file.close();
-            ::unlink(temporary.c_str());
-            return Diagnostic{shown, 0, "cannot keep the old file: its .bak and .b01 … .b99 are all key files"};
-        }
-        ::unlink(backup.c_str());
+    ReplaceableTarget target{requested, false, {}};
+    if (::lstat(requested.c_str(), &target.status) != 0)
+        return target;
+    if (S_ISLNK(target.status.st_mode)) {
         std::error_code error;
-        if (::link(target.c_str(), backup.c_str()) != 0) {
-            fs::copy_file(target, backup, fs::copy_options::overwrite_existing, error);
+        const fs::path named = fs::read_symlink(requested, error);
+        const std::string link_to = "is a symbolic link to " + (error ? std::string("a file") : named.string());
+        if (::stat(requested.c_str(), &target.status) != 0)
+            return Diagnostic{shown, 0, link_to + ", which does not exist (" + system_reason(errno) + "); APCS writes only regular files"};
+        if (!S_ISREG(target.status.st_mode))
+            return Diagnostic{shown, 0, link_to + ", which " + not_regular(target.status.st_mode) + "; APCS writes only regular files"};
+        target.path = fs::canonical(requested, error);
+        if (error)
+            return Diagnostic{shown, 0, link_to + ", which cannot be followed: " + error.message()};
+    } else if (S_ISDIR(target.status.st_mode)) {
+        return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
+    } else if (!S_ISREG(target.status.st_mode)) {
+        return Diagnostic{shown, 0, not_regular(target.status.st_mode) + "; APCS writes only regular files"};
+    }
+    target.exists = true;
+    return target;
+}
+
+// The new content of a file, taken chunk by chunk. While it equals the old file's it is only
+// compared; at the first difference the temporary file is made and the equal part copied into it
+// from the old file. So content that does not change writes nothing, and no whole file is ever
+// held in memory.
+class Replacement {
+public:
+    Replacement(const ReplaceableTarget& target, std::string shown, const KeyFileGuard* inputs)
+        : m_target(target)
+        , m_shown(std::move(shown))
+        , m_inputs(inputs)
+        , m_old(target.exists ? ::open(target.path.c_str(), O_RDONLY | O_CLOEXEC) : -1)
+        , m_differs(!target.exists || m_old.get() < 0)
+    {
+    }
+    Replacement(const Replacement&) = delete;
+    Replacement& operator=(const Replacement&) = delete;
+    ~Replacement()
+    {
+        if (!m_temporary.empty()) {
+            m_file.close();
+            ::unlink(m_temporary.c_str());
+        }
+    }
+
+    bool add(std::string_view chunk)
+    {
+        if (m_problem)
+            return false;
+        if (!m_differs) {
+            if (old_continues_with(chunk)) {
+                m_same += chunk.size();
+                return true;
+            }
+            m_differs = true;
+        }
+        if (m_temporary.empty() && !start_temporary())
+            return false;
+        return write_all(m_file.get(), chunk) || abandon("cannot write");
+    }
+
+    Expected<WriteResult> finish(Durability durability)
+    {
+        if (!m_problem && !m_differs && static_cast<std::uintmax_t>(m_target.status.st_size) == m_same)
+            return WriteResult{WriteOutcome::unchanged, {}};
+        if (!m_problem && m_temporary.empty())
+            start_temporary();
+        if (!m_problem && durability == Durability::each_file && ::fsync(m_file.get()) != 0)
+            abandon("cannot flush to disk");
+        if (!m_problem && m_target.exists &&
+            (m_target.status.st_uid != ::geteuid() || m_target.status.st_gid != ::getegid())) {
+            // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes
+            // the user's, as any new file would.
+            [[maybe_unused]] const int ignored = ::fchown(m_file.get(), m_target.status.st_uid, m_target.status.st_gid);
+        }
+        // A new file is 0644; a replaced one keeps its mode.
+        const mode_t mode = m_target.exists ? (m_target.status.st_mode & 07777) : 0644;
+        if (!m_problem && ::fchmod(m_file.get(), mode) != 0)
+            abandon("cannot set permissions");
+        if (!m_problem && m_file.close() != 0)
+            abandon("cannot close");
+        if (m_problem)
+            return *m_problem;
+        WriteResult result{m_target.exists ? WriteOutcome::replaced : WriteOutcome::created, {}};
+        if (m_target.exists && !keep_old_file(result.backup))
+            return *m_problem;
+        if (::rename(m_temporary.c_str(), m_target.path.c_str()) != 0) {
+            abandon("cannot replace the file");
+            return *m_problem;
+        }
+        m_temporary.clear();
+        return result;
+    }
+
+private:
+    // Whether the old file's next bytes are `chunk`; reads them in pieces, never the whole file.
+    bool old_continues_with(std::string_view chunk)
+    {
+        if (static_cast<std::uintmax_t>(m_target.status.st_size) < m_same + chunk.size())
+            return false;
+        char buffer[1 << 16];
+        while (!chunk.empty()) {
+            const ssize_t got = ::read(m_old.get(), buffer, std::min(sizeof buffer, chunk.size()));
+            if (got < 0 && errno == EINTR)
+                continue;
+            if (got <= 0 || std::memcmp(buffer, chunk.data(), static_cast<std::size_t>(got)) != 0)
+                return false;
+            chunk.remove_prefix(static_cast<std::size_t>(got));
+        }
+        return true;
+    }
+
+    bool start_temporary()
+    {
+        if (m_target.exists && is_read_only(m_target.path, m_target.status))
+            return refuse("is read-only (mode " + octal_mode(m_target.status.st_mode) + "); not replaced");
+        if (m_target.exists)
+            if (auto problem = backup_refusal(backup_path_for(m_target.path, m_inputs), m_shown)) {
+                m_problem = std::move(problem);
+                return false;
+            }
+        const fs::path folder = m_target.path.has_parent_path() ? m_target.path.parent_path() : fs::path(".");
+        std::string temporary = (folder / temporary_name_for(folder, m_target.path.filename().string())).string();
+        const int descriptor = ::mkstemp(temporary.data());
+        if (descriptor < 0)
+            return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
+        m_file.reset(descriptor);
+        m_temporary = std::move(temporary);
+        // Known until it is renamed or removed: a signal meanwhile removes it.
+        m_unfinished.emplace(m_temporary);
+        return copy_same_part();
+    }
+
+    // The part of the old file the new content began with, copied into the temporary file.
+    bool copy_same_part()
+    {
+        char buffer[1 << 16];
+        std::uintmax_t copied = 0;
+        while (copied < m_same) {
+            const ssize_t got = ::pread(m_old.get(), buffer, static_cast<std::size_t>(std::min<std::uintmax_t>(sizeof buffer, m_same - copied)),
+                                        static_cast<off_t>(copied));
+            if (got < 0 && errno == EINTR)
+                continue;
+            if (got <= 0 || !write_all(m_file.get(), {buffer, static_cast<std::size_t>(got)}))
+                return abandon("cannot write");
+            copied += static_cast<std::uintmax_t>(got);
+        }
+        m_old.close();
+        return true;
+    }
+
+    // A hard link keeps the old content as .bak while the target itself stays in place until the
+    // rename replaces it, so no moment exists without the user's file.
+    bool keep_old_file(fs::path& kept)
+    {
+        const fs::path backup = backup_path_for(m_target.path, m_inputs);
+        if (backup.empty())
+            return refuse("cannot keep the old file: its .bak and .b01 … .b99 are all key files");
+        ::unlink(backup.c_str());
+        if (::link(m_target.path.c_str(), backup.c_str()) != 0) {
+            std::error_code error;
+            fs::copy_file(m_target.path, backup, fs::copy_options::overwrite_existing, error);
             if (error) {
                 errno = error.value();
                 return abandon("cannot keep the old file as " + backup.string());
             }
         }
-        result.backup = backup;
+        kept = backup;
+        return true;
     }
-    if (::rename(temporary.c_str(), target.c_str()) != 0)
-        return abandon("cannot replace the file");
-    return result;
+
+    bool refuse(const std::string& message)
+    {
+        m_problem = Diagnostic{m_shown, 0, message};
+        return false;
+    }
+
+    // The problem with the system's reason; the temporary file goes.
+    bool abandon(const std::string& what)
+    {
+        const int reason = errno;
+        m_file.close();
+        if (!m_temporary.empty())
+            ::unlink(m_temporary.c_str());
+        m_temporary.clear();
+        return refuse(what + ": " + system_reason(reason));
+    }
+
+    ReplaceableTarget m_target;
+    std::string m_shown;
+    const KeyFileGuard* m_inputs;
+    FileDescriptor m_old;
+    std::uintmax_t m_same = 0; // bytes of the new content equal to the old file's first bytes
+    bool m_differs;
+    FileDescriptor m_file{-1};
+    std::string m_temporary;
+    std::optional<UnfinishedFile> m_unfinished;
+    std::optional<Diagnostic> m_problem;
+};
+
+} // namespace
+
+Expected<WriteResult> write_file_atomically(const fs::path& requested, const ContentWriter& write_content,
+                                            const KeyFileGuard* inputs, Durability durability)
+{
+    const std::string shown = requested.string();
+    const Expected<ReplaceableTarget> target = replaceable_target(requested, shown);
+    if (!target)
+        return target.error();
+    Replacement replacement(*target, shown, inputs);
+    write_content([&replacement](std::string_view chunk) { return replacement.add(chunk); });
+    return replacement.finish(durability);
+}
+
+Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content,
+                                            const KeyFileGuard* inputs, Durability durability)
+{
+    return write_file_atomically(
+        requested, [content](const ContentSink& sink) { sink(content); }, inputs, durability);
 }
 
 std::optional<Diagnostic> flush_file_system(const fs::path& folder)

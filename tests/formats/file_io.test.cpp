@@ -9,9 +9,12 @@
 #include <cstring>
 #include <fcntl.h>
 #include <future>
+#include <thread>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <unistd.h>
+#include <string>
+#include <vector>
 
 using namespace apcs;
 using test::read_all;
@@ -73,6 +76,79 @@ TEST_CASE("an atomic write creates, keeps identical files untouched and backs up
     for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path()))
         ++entries;
     REQUIRE(entries == 2); // no temporary file left behind
+}
+
+namespace {
+
+// A content writer giving `chunks` one by one, as the streamed in-between files do.
+ContentWriter chunks_of(std::vector<std::string> chunks)
+{
+    return [chunks = std::move(chunks)](const ContentSink& sink) {
+        for (const std::string& chunk : chunks)
+            if (!sink(chunk))
+                return;
+    };
+}
+
+} // namespace
+
+TEST_CASE("content written chunk by chunk: the same is only compared, a difference anywhere replaces the file",
+          "[formats][files]")
+{
+    const TempFolder folder;
+    const auto target = folder / "inb001.dat";
+    // 200 000 bytes in chunks of 70 000: the comparison and the copy of the equal part cross the
+    // 64 KiB pieces they read in.
+    const std::string old_content(200000, 'a');
+    REQUIRE(write_file_atomically(target, chunks_of({old_content.substr(0, 70000), old_content.substr(70000)}))->outcome ==
+            WriteOutcome::created);
+    REQUIRE(read_all(target) == old_content);
+
+    struct stat before {};
+    REQUIRE(::stat(target.c_str(), &before) == 0);
+    REQUIRE(write_file_atomically(target, chunks_of({old_content.substr(0, 70000), old_content.substr(70000, 70000),
+                                                     old_content.substr(140000)}))
+                ->outcome == WriteOutcome::unchanged);
+    struct stat after {};
+    REQUIRE(::stat(target.c_str(), &after) == 0);
+    REQUIRE(after.st_ino == before.st_ino); // not even replaced by an equal copy
+
+    std::string changed = old_content;
+    changed[150000] = 'b'; // in the third chunk
+    const Expected<WriteResult> replaced = write_file_atomically(
+        target, chunks_of({changed.substr(0, 70000), changed.substr(70000, 70000), changed.substr(140000)}));
+    REQUIRE(replaced->outcome == WriteOutcome::replaced);
+    REQUIRE(read_all(target) == changed);
+    REQUIRE(read_all(folder / "inb001.bak") == old_content);
+
+    // The old content's beginning only, and the old content and more: both differ.
+    REQUIRE(write_file_atomically(target, chunks_of({changed.substr(0, 100000)}))->outcome == WriteOutcome::replaced);
+    REQUIRE(read_all(target) == changed.substr(0, 100000));
+    REQUIRE(write_file_atomically(target, chunks_of({changed.substr(0, 100000), "tail"}))->outcome ==
+            WriteOutcome::replaced);
+    REQUIRE(read_all(target) == changed.substr(0, 100000) + "tail");
+    std::size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(folder.path()))
+        ++entries;
+    REQUIRE(entries == 2); // the file and its .bak: no temporary file left behind
+}
+
+TEST_CASE("unchanged content chunk by chunk makes no temporary file: the folder is not touched", "[formats][files]")
+{
+    const TempFolder folder;
+    const auto target = folder.write("inb001.dat", "1 2 3\n");
+    struct stat before {};
+    REQUIRE(::stat(folder.path().c_str(), &before) == 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20)); // a made and removed file would show in the mtime
+    CHECK(write_file_atomically(target, chunks_of({"1 2", " 3\n"}))->outcome == WriteOutcome::unchanged);
+    struct stat after {};
+    REQUIRE(::stat(folder.path().c_str(), &after) == 0);
+    CHECK(after.st_mtim.tv_sec == before.st_mtim.tv_sec);
+    CHECK(after.st_mtim.tv_nsec == before.st_mtim.tv_nsec);
+    // A difference makes one, and the folder changes.
+    CHECK(write_file_atomically(target, chunks_of({"1 2", " 4\n"}))->outcome == WriteOutcome::replaced);
+    REQUIRE(::stat(folder.path().c_str(), &after) == 0);
+    CHECK((after.st_mtim.tv_sec != before.st_mtim.tv_sec || after.st_mtim.tv_nsec != before.st_mtim.tv_nsec));
 }
 
 TEST_CASE("names up to the file system's longest (255 bytes) are written, created and replaced", "[formats][files]")

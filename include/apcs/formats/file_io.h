@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -67,6 +68,17 @@ enum class Durability { each_file, at_barrier };
 // file of the run), the old file is kept as NAME.b01 (or the first of .b02 … .b99 that is free)
 // instead, so that a backup never replaces an input; WriteResult::backup names it.
 Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, std::string_view content,
+                                            const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+
+// A file's content in chunks: the writer calls the sink with each chunk in order and stops when
+// it says false (the write failed; the problem is in write_file_atomically's result).
+using ContentSink = std::function<bool(std::string_view chunk)>;
+using ContentWriter = std::function<void(const ContentSink& sink)>;
+
+// write_file_atomically for content made chunk by chunk, never whole in memory: while it equals
+// the existing file it is only compared; the temporary file is made at the first difference.
+Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, const ContentWriter& write_content,
                                             const KeyFileGuard* inputs = nullptr,
                                             Durability durability = Durability::each_file);
 
