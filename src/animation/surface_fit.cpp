@@ -51,68 +51,104 @@ std::vector<double> graphic_parameters(std::span<const Vec3> key1, std::span<con
     return parameters;
 }
 
+SurfaceFitter::SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure,
+                             EdgePath first_edge, EdgePath last_edge)
+    : m_closed(closure == Closure::closed)
+    , m_point_count(std::min(key1.size(), key2.size()))
+{
+    m_key1 = key1.first(m_point_count);
+    m_key2 = key2.first(m_point_count);
+    // A closed graphic's last point is its first (SPEC §5.3): both edges are the first path.
+    m_second_edge = m_closed ? first_edge : std::move(last_edge);
+    m_first_edge = std::move(first_edge);
+    m_frame_count = std::min(m_first_edge.positions.size(), m_second_edge.positions.size());
+    if (m_point_count == 0)
+        return;
+    // The blend across the graphic, F1(v_i) and F2(v_i), per point.
+    const std::vector<double> v = graphic_parameters(m_key1, m_key2, closure);
+    m_across.reserve(m_point_count);
+    for (const double place : v) {
+        const HermiteBasis weights = hermite_basis(place);
+        m_across.emplace_back(weights.f1, weights.f2);
+    }
+    m_last_follows_edge = !m_closed || (m_key1.back() == m_key1.front() && m_key2.back() == m_key2.front());
+}
+
+void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) const
+{
+    if (k == 0 || k + 1 == m_frame_count) {
+        // The key frames themselves, exactly, not as rounded blends.
+        const std::span<const Vec3> key = k == 0 ? m_key1 : m_key2;
+        std::copy_n(key.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+        return;
+    }
+    const Vec3 key1_first = m_key1.front();
+    const Vec3 key2_first = m_key2.front();
+    const Vec3 key1_last = m_closed ? key1_first : m_key1.back();
+    const Vec3 key2_last = m_closed ? key2_first : m_key2.back();
+    const Vec3 edge0 = m_first_edge.positions[k];
+    const Vec3 edge1 = m_second_edge.positions[k];
+    const double progress0 = m_first_edge.progress[k];
+    const double progress1 = m_second_edge.progress[k];
+    // How far each edge path bends off its chord at this frame.
+    const Vec3 bend0 = edge0 - lerp(key1_first, key2_first, progress0);
+    const Vec3 bend1 = edge1 - lerp(key1_last, key2_last, progress1);
+    for (std::size_t j = 0; j < out.size(); ++j) {
+        const std::size_t i = first + j;
+        const auto [f1, f2] = m_across[i];
+        const double progress = f1 * progress0 + f2 * progress1;
+        out[j] = lerp(m_key1[i], m_key2[i], progress) + f1 * bend0 + f2 * bend1;
+    }
+    // The edge points follow their paths exactly (for v = 0 and v = 1 the blend already does, up
+    // to rounding).
+    if (first == 0 && !out.empty())
+        out[0] = edge0;
+    if (m_last_follows_edge && first + out.size() == m_point_count && !out.empty())
+        out.back() = edge1;
+}
+
+namespace {
+
+FrameSequence all_frames(const SurfaceFitter& fitter)
+{
+    FrameSequence frames(fitter.frame_count(), fitter.point_count());
+    for (std::size_t k = 0; k < frames.frame_count(); ++k)
+        fitter.fit(k, 0, frames.frame(k));
+    return frames;
+}
+
+} // namespace
+
 FrameSequence fit_surface(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure,
                           const EdgePath& first_edge, const EdgePath& last_edge)
 {
-    const std::size_t point_count = std::min(key1.size(), key2.size());
-    const bool closed = closure == Closure::closed;
-    const EdgePath& second_edge = closed ? first_edge : last_edge;
-    const std::size_t frame_count = std::min(first_edge.positions.size(), second_edge.positions.size());
-    FrameSequence frames(frame_count, point_count);
-    if (point_count == 0 || frame_count == 0)
-        return frames;
+    return all_frames(SurfaceFitter(key1, key2, closure, first_edge, last_edge));
+}
 
-    // The blend across the graphic, F1(v_i) and F2(v_i), per point.
-    const std::vector<double> v = graphic_parameters(key1.first(point_count), key2.first(point_count), closure);
-    std::vector<HermiteBasis> across(point_count);
-    for (std::size_t i = 0; i < point_count; ++i)
-        across[i] = hermite_basis(v[i]);
-    // A closed graphic's last point is its first (SPEC §5.3): both edges are the first path.
-    const Vec3 key1_first = key1.front();
-    const Vec3 key2_first = key2.front();
-    const Vec3 key1_last = closed ? key1_first : key1[point_count - 1];
-    const Vec3 key2_last = closed ? key2_first : key2[point_count - 1];
+std::span<const Vec3> contiguous_points(const Graphic& graphic, std::vector<Vec3>& storage)
+{
+    if (graphic.parts.size() == 1)
+        return graphic.parts.front().points;
+    storage = graphic.all_points();
+    return storage;
+}
 
-    const std::size_t last_frame = frame_count - 1;
-    for (std::size_t k = 0; k < frame_count; ++k) {
-        std::span<Vec3> frame = frames.frame(k);
-        if (k == 0 || k == last_frame) {
-            // The key frames themselves, exactly, not as rounded blends.
-            const std::span<const Vec3> key = k == 0 ? key1 : key2;
-            std::copy_n(key.begin(), point_count, frame.begin());
-            continue;
-        }
-        const Vec3 edge0 = first_edge.positions[k];
-        const Vec3 edge1 = second_edge.positions[k];
-        const double progress0 = first_edge.progress[k];
-        const double progress1 = second_edge.progress[k];
-        // How far each edge path bends off its chord at this frame.
-        const Vec3 bend0 = edge0 - lerp(key1_first, key2_first, progress0);
-        const Vec3 bend1 = edge1 - lerp(key1_last, key2_last, progress1);
-        for (std::size_t i = 0; i < point_count; ++i) {
-            const HermiteBasis& weights = across[i];
-            const double progress = weights.f1 * progress0 + weights.f2 * progress1;
-            frame[i] = lerp(key1[i], key2[i], progress) + weights.f1 * bend0 + weights.f2 * bend1;
-        }
-        // The edge points follow their paths exactly (for v = 0 and v = 1 the blend already does,
-        // up to rounding).
-        frame[0] = edge0;
-        if (!closed || (key1[point_count - 1] == key1_first && key2[point_count - 1] == key2_first))
-            frame[point_count - 1] = edge1;
-    }
-    return frames;
+SurfaceFitter key_frames_fitter(const EqualisedKeys& keys, const EvaluatedPath& first_path,
+                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage)
+{
+    const std::span<const Vec3> key1 = contiguous_points(keys.key1, storage[0]);
+    const std::span<const Vec3> key2 = contiguous_points(keys.key2, storage[1]);
+    const Closure closure = keys.key1.is_closed() ? Closure::closed : Closure::open;
+    if (key1.empty() || key2.empty())
+        return SurfaceFitter(key1, key2, closure, {}, {});
+    return SurfaceFitter(key1, key2, closure, edge_path_from(first_path, key1.front(), key2.front()),
+                         edge_path_from(last_path, key1.back(), key2.back()));
 }
 
 FrameSequence fit_key_frames(const EqualisedKeys& keys, const EvaluatedPath& first_path, const EvaluatedPath& last_path)
 {
-    const std::vector<Vec3> key1 = keys.key1.all_points();
-    const std::vector<Vec3> key2 = keys.key2.all_points();
-    if (key1.empty() || key2.empty())
-        return {};
-    const Closure closure = keys.key1.is_closed() ? Closure::closed : Closure::open;
-    const EdgePath first_edge = edge_path_from(first_path, key1.front(), key2.front());
-    const EdgePath last_edge = edge_path_from(last_path, key1.back(), key2.back());
-    return fit_surface(key1, key2, closure, first_edge, last_edge);
+    std::array<std::vector<Vec3>, 2> storage;
+    return all_frames(key_frames_fitter(keys, first_path, last_path, storage));
 }
 
 } // namespace apcs

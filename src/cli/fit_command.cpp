@@ -7,6 +7,7 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/path_files.h"
 
 #include <array>
@@ -18,13 +19,18 @@ namespace apcs {
 
 namespace {
 
-// Surface fitting holds M + 2 frames of every point, and both edge paths while it fits.
+// Only --print and the pictures need every frame at once; in-between files alone are streamed.
+bool all_frames_needed(const CommonOptions& options) { return options.print || pictures_asked(options); }
+
+// Surface fitting holds M + 2 frames of every point when all frames are needed, else only the
+// keys, and both edge paths while it fits.
 std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, const ControlPoints& first,
                                                     const ControlPoints& last, const CommonOptions& options,
                                                     std::ostream& err)
 {
-    const memory::FramesRequest frames{static_cast<std::size_t>(options.path.inbetween_count) + 2,
-                                       keys.key1.point_count(), options.print};
+    const std::size_t frames_held =
+        all_frames_needed(options) ? static_cast<std::size_t>(options.path.inbetween_count) + 2 : 2;
+    const memory::FramesRequest frames{frames_held, keys.key1.point_count(), options.print};
     const auto path = [&options](const ControlPoints& points) {
         return memory::path_bytes({points.size(), options.path.samples_per_segment, options.path.inbetween_count, false});
     };
@@ -70,9 +76,18 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
     const EvaluatedPath first_path = evaluate_path(*first, options.path);
     const EvaluatedPath last_path = evaluate_path(*last, options.path);
     warn_if_frames_freeze(first_path.frames_freeze ? first_path : last_path, options.path.inbetween_count, err);
-    const FrameSequence frames = fit_key_frames(keys, first_path, last_path);
-
     const std::array<std::filesystem::path, 2> key_files{files.key1, files.key2};
+    if (!all_frames_needed(options)) {
+        // Each in-between is made, formatted and written a chunk at a time, a file per core.
+        std::array<std::vector<Vec3>, 2> storage;
+        const SurfaceFitter fitter = key_frames_fitter(keys, first_path, last_path, storage);
+        return deliver_inbetween_files(
+            [&](const std::filesystem::path& folder, const KeyFileGuard& guard) {
+                return write_inbetween_files(fitter, keys.key1, folder, guard);
+            },
+            options, key_files, err);
+    }
+    const FrameSequence frames = fit_key_frames(keys, first_path, last_path);
     return deliver_frames(frames, keys.key1, options, key_files, out, err);
 }
 

@@ -84,11 +84,21 @@ ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure,
     const bool files_asked = options.out || !(options.print || pictures_asked(options));
     if (!files_asked)
         return ExitStatus::success;
+    return deliver_inbetween_files(
+        [&](const std::filesystem::path& folder, const KeyFileGuard& guard) {
+            return write_inbetween_files(frames, structure, folder, guard);
+        },
+        options, key_files, err);
+}
+
+ExitStatus deliver_inbetween_files(const InbetweenWriter& write, const CommonOptions& options,
+                                   std::span<const std::filesystem::path> key_files, std::ostream& err)
+{
     KeyFileGuard guard;
     for (const std::filesystem::path& key_file : key_files)
         guard.protect(key_file);
     const std::filesystem::path folder = options.out.value_or(".");
-    const auto written = write_inbetween_files(frames, structure, folder, guard);
+    const auto written = write(folder, guard);
     if (!written)
         return report_bad_input(written.error(), err);
     std::vector<std::string> earlier = inbetweens_beyond(folder, written->size());

@@ -261,11 +261,14 @@ void append_point_line(std::string& text, const Vec3& position, const std::optio
     }
 }
 
-std::string format_graphic(const Graphic& structure, std::span<const Vec3> points, int decimals)
+bool format_graphic_in_chunks(const Graphic& structure, std::size_t point_count, const GraphicPoints& points_at,
+                              int decimals, const std::function<bool(std::string_view)>& sink)
 {
+    // About 4000 points a chunk: about 150 KB of text, small beside a frame of 10^5 points.
+    constexpr std::size_t chunk_points = 4096;
+    std::vector<Vec3> points(std::min(chunk_points, point_count));
     std::string text;
-    // Three shortest numbers are at most 72 bytes; typical ones about 55: one allocation.
-    text.reserve(points.size() * 64 + structure.parts.size() * 24);
+    text.reserve(points.size() * 64 + 64);
     const bool part_lines = !structure.parts.empty() &&
                             needs_part_lines(structure.parts.size(), structure.parts[0].name, structure.parts[0].closure);
     std::size_t next = 0;
@@ -273,15 +276,42 @@ std::string format_graphic(const Graphic& structure, std::span<const Vec3> point
         const GraphicPart& part = structure.parts[i];
         if (part_lines)
             append_part_line(text, part.name, part.closure, i);
-        for (std::size_t k = 0; k < part.points.size() && next < points.size(); ++k, ++next) {
-            append_fixed(text, points[next].x, decimals);
-            text += ' ';
-            append_fixed(text, points[next].y, decimals);
-            text += ' ';
-            append_fixed(text, points[next].z, decimals);
-            text += '\n';
+        for (std::size_t done = 0; done < part.points.size() && next < point_count;) {
+            const std::size_t run = std::min({chunk_points, part.points.size() - done, point_count - next});
+            const std::span<Vec3> chunk = std::span(points).first(run);
+            points_at(next, chunk);
+            for (const Vec3& point : chunk) {
+                append_fixed(text, point.x, decimals);
+                text += ' ';
+                append_fixed(text, point.y, decimals);
+                text += ' ';
+                append_fixed(text, point.z, decimals);
+                text += '\n';
+            }
+            done += run;
+            next += run;
+            if (text.size() >= chunk_points * 32) {
+                if (!sink(text))
+                    return false;
+                text.clear();
+            }
         }
     }
+    return text.empty() || sink(text);
+}
+
+std::string format_graphic(const Graphic& structure, std::span<const Vec3> points, int decimals)
+{
+    std::string text;
+    // Three shortest numbers are at most 72 bytes; typical ones about 55: one allocation.
+    text.reserve(points.size() * 64 + structure.parts.size() * 24);
+    const auto copy_points = [points](std::size_t first, std::span<Vec3> out) {
+        std::copy_n(points.begin() + static_cast<std::ptrdiff_t>(first), out.size(), out.begin());
+    };
+    format_graphic_in_chunks(structure, points.size(), copy_points, decimals, [&text](std::string_view chunk) {
+        text += chunk;
+        return true;
+    });
     return text;
 }
 

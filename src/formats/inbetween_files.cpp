@@ -1,5 +1,6 @@
 #include "apcs/formats/inbetween_files.h"
 
+#include "apcs/formats/dat_file.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/number_text.h"
@@ -17,6 +18,24 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSe
     return write_numbered_files(
         folder, inbetween_count(frames), [](std::size_t index) { return inbetween_file_name(index + 1); },
         [&](std::size_t index) { return inbetween_file(frames, structure, index + 1).content; }, guard,
+        "the in-between files");
+}
+
+Expected<std::vector<std::filesystem::path>> write_inbetween_files(const SurfaceFitter& fitter, const Graphic& structure,
+                                                                   const std::filesystem::path& folder,
+                                                                   const KeyFileGuard& guard)
+{
+    const std::size_t count = fitter.frame_count() < 2 ? 0 : fitter.frame_count() - 2;
+    const int decimals = inbetween_decimals(fitter.key1(), fitter.key2());
+    const auto write_frame = [&](std::size_t index, const ContentSink& sink) {
+        const std::size_t frame = index + 1;
+        if (!sink(inbetween_heading(frame, count)))
+            return;
+        const auto points_at = [&fitter, frame](std::size_t first, std::span<Vec3> out) { fitter.fit(frame, first, out); };
+        format_graphic_in_chunks(structure, fitter.point_count(), points_at, decimals, sink);
+    };
+    return write_numbered_files(
+        folder, count, [](std::size_t index) { return inbetween_file_name(index + 1); }, write_frame, guard,
         "the in-between files");
 }
 

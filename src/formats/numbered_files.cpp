@@ -13,7 +13,7 @@ namespace apcs {
 Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
-                     const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
+                     const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
                      std::string_view purpose)
 {
     std::error_code error;
@@ -28,16 +28,38 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
     }
     // The files are independent: making, formatting and flushing them is shared among the cores.
     std::vector<std::optional<Diagnostic>> problems(count);
+    std::vector<char> written(count, 0);
     const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
     for_each_index_in_parallel(count, workers, [&](std::size_t index) {
-        const Expected<WriteResult> result = write_file_atomically(targets[index], content_of(index), &guard);
+        const auto write_content = [&writer_of, index](const ContentSink& sink) { writer_of(index, sink); };
+        const Expected<WriteResult> result =
+            write_file_atomically(targets[index], write_content, &guard, Durability::at_barrier);
         if (!result)
             problems[index] = result.error();
+        else
+            written[index] = result->outcome != WriteOutcome::unchanged;
     });
+    // The files written are put on the disk even when another failed: they are whole and stay.
+    std::optional<Diagnostic> barrier_problem;
+    if (std::find(written.begin(), written.end(), 1) != written.end())
+        barrier_problem = flush_file_system(folder);
     for (const std::optional<Diagnostic>& problem : problems)
         if (problem)
             return *problem;
+    if (barrier_problem)
+        return *barrier_problem;
     return targets;
+}
+
+Expected<std::vector<std::filesystem::path>>
+write_numbered_files(const std::filesystem::path& folder, std::size_t count,
+                     const std::function<std::string(std::size_t)>& name_of,
+                     const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
+                     std::string_view purpose)
+{
+    return write_numbered_files(
+        folder, count, name_of, [&content_of](std::size_t index, const ContentSink& sink) { sink(content_of(index)); },
+        guard, purpose);
 }
 
 std::string picture_file_name(int number)

@@ -41,21 +41,32 @@ std::size_t inbetween_count(const FrameSequence& frames)
     return frames.frame_count() < 2 ? 0 : frames.frame_count() - 2;
 }
 
-int inbetween_decimals(const FrameSequence& frames)
+int inbetween_decimals(std::span<const Vec3> key1, std::span<const Vec3> key2)
 {
     double size = 0.0;
-    if (frames.frame_count() > 0)
-        for (const std::size_t key : {std::size_t{0}, frames.frame_count() - 1})
-            for (const Vec3& point : frames.frame(key))
-                size = std::max({size, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+    for (const std::span<const Vec3> key : {key1, key2})
+        for (const Vec3& point : key)
+            size = std::max({size, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
     return decimals_for_size(size);
+}
+
+int inbetween_decimals(const FrameSequence& frames)
+{
+    if (frames.frame_count() == 0)
+        return decimals_for_size(0.0);
+    return inbetween_decimals(frames.frame(0), frames.frame(frames.frame_count() - 1));
+}
+
+std::string inbetween_heading(std::size_t number, std::size_t count)
+{
+    return "; APCS in-between " + std::to_string(number) + " of " + std::to_string(count) + "\n";
 }
 
 NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number)
 {
-    return {inbetween_file_name(number), "; APCS in-between " + std::to_string(number) + " of " +
-                                             std::to_string(inbetween_count(frames)) + "\n" +
-                                             format_graphic(structure, frames.frame(number), inbetween_decimals(frames))};
+    return {inbetween_file_name(number),
+            inbetween_heading(number, inbetween_count(frames)) +
+                format_graphic(structure, frames.frame(number), inbetween_decimals(frames))};
 }
 
 std::string describe_point(const Vec3& point)

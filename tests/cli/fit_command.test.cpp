@@ -7,6 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <sstream>
+#include <string>
+#include <vector>
+
 using namespace apcs;
 using test::run_apcs;
 using test::TempFolder;
@@ -66,6 +70,44 @@ TEST_CASE("apcs fit writes inb001.dat … with the whole graphic and its parts",
         REQUIRE(frame->point_count() == 4);
     }
     REQUIRE_FALSE(std::filesystem::exists(folder / "inb004.dat"));
+}
+
+TEST_CASE("apcs fit streams the in-betweens it writes alone: the same files as with all frames held", "[cli][fit]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    std::filesystem::create_directory(folder / "streamed");
+    std::filesystem::create_directory(folder / "held");
+    const std::vector<std::string> inputs{(folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                          (folder / "way1.dat").string(), (folder / "way4.dat").string()};
+    const auto run = [&](const std::string& out, bool with_picture) {
+        std::vector<std::string> arguments{"fit"};
+        arguments.insert(arguments.end(), inputs.begin(), inputs.end());
+        for (const std::string extra : {"--inbetweens", "5", "--out", out.c_str()})
+            arguments.push_back(extra);
+        if (with_picture) { // a picture needs every frame: the frames are held, then written
+            arguments.push_back("--png");
+            arguments.push_back((folder / "all.png").string());
+        }
+        return run_apcs(arguments);
+    };
+    REQUIRE(run((folder / "streamed").string(), false).status == 0);
+    REQUIRE(run((folder / "held").string(), true).status == 0);
+    for (int k = 1; k <= 5; ++k) {
+        const std::string name = "inb00" + std::to_string(k) + ".dat";
+        CAPTURE(name);
+        REQUIRE(test::read_all(folder / "streamed" / name) == test::read_all(folder / "held" / name));
+    }
+    // The keys' largest coordinate is 10: 9 - 1 = 8 decimals in every number.
+    std::istringstream lines(test::read_all(folder / "streamed" / "inb001.dat"));
+    std::string line;
+    std::getline(lines, line); // the heading
+    int numbers = 0;
+    for (std::string field; lines >> field; ++numbers) {
+        CAPTURE(field);
+        REQUIRE(field.size() - field.find('.') == 9);
+    }
+    CHECK(numbers == 12);
 }
 
 TEST_CASE("a path that does not start at the graphic point is refused with the expected point", "[cli][fit]")

@@ -6,7 +6,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -81,4 +84,50 @@ TEST_CASE("in-between files numbered above this run's are found in number order 
     folder.write("inb004.dat", "0 0\n");
     folder.write("inb003.dat", "0 0\n");
     REQUIRE(inbetweens_beyond(folder.path(), 3) == std::vector<std::string>{"inb004.dat"});
+}
+
+TEST_CASE("streamed in-betweens are byte for byte the files of the whole frames, across chunks and parts",
+          "[formats][inbetween-files]")
+{
+    // Three parts of 5000, 3000 and 2001 points (the chunks are 4096): PART lines, and chunks that
+    // end inside a part and at its end.
+    Graphic structure;
+    std::vector<Vec3> key1;
+    std::vector<Vec3> key2;
+    for (const auto& [name, count] : {std::pair{"a", 5000}, std::pair{"b", 3000}, std::pair{"c", 2001}}) {
+        GraphicPart part{name, Closure::open, {}};
+        for (int i = 0; i < count; ++i) {
+            const double t = static_cast<double>(key1.size()) / 10001.0;
+            key1.push_back({0, 10 * t, std::sin(20 * t)});
+            key2.push_back({8, 10 * t + 1, std::cos(20 * t)});
+            part.points.push_back(key1.back());
+        }
+        structure.parts.push_back(std::move(part));
+    }
+    EdgePath first;
+    EdgePath last;
+    for (int k = 0; k <= 5; ++k) {
+        const double w = k / 5.0;
+        first.positions.push_back(lerp(key1.front(), key2.front(), w) + Vec3{0, 0, std::sin(w * 3.14159)});
+        first.progress.push_back(w);
+        last.positions.push_back(lerp(key1.back(), key2.back(), w * w));
+        last.progress.push_back(w * w);
+    }
+    first.positions.front() = key1.front();
+    first.positions.back() = key2.front();
+    last.positions.front() = key1.back();
+    last.positions.back() = key2.back();
+    const SurfaceFitter fitter(key1, key2, Closure::open, first, last);
+    const FrameSequence frames = fit_surface(key1, key2, Closure::open, first, last);
+
+    const TempFolder streamed;
+    const TempFolder whole;
+    REQUIRE(write_inbetween_files(fitter, structure, streamed.path(), KeyFileGuard{})->size() == 4);
+    REQUIRE(write_inbetween_files(frames, structure, whole.path(), KeyFileGuard{})->size() == 4);
+    for (const char* name : {"inb001.dat", "inb002.dat", "inb003.dat", "inb004.dat"}) {
+        CAPTURE(name);
+        const std::string text = read_all(streamed / name);
+        REQUIRE(text == read_all(whole / name));
+        REQUIRE(std::count(text.begin(), text.end(), '\n') == 1 + 3 + 10001); // heading, PART lines, points
+    }
 }

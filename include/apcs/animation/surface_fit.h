@@ -5,7 +5,9 @@
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/motion_path.h"
 
+#include <array>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -40,6 +42,41 @@ std::vector<double> graphic_parameters(std::span<const Vec3> key1, std::span<con
 // follow their edge paths exactly. Cost: O(points × frames).
 FrameSequence fit_surface(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure,
                           const EdgePath& first_edge, const EdgePath& last_edge);
+
+// fit_surface one run of points at a time: any points of any frame computed on their own, so that
+// frames are written as they are made, on several cores, and never held all at once. Holds the
+// keys' spans (which must outlive it), F1(v_i) and F2(v_i) per point, and the edges.
+class SurfaceFitter {
+public:
+    SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure, EdgePath first_edge,
+                  EdgePath last_edge);
+
+    std::size_t frame_count() const { return m_frame_count; }
+    std::size_t point_count() const { return m_point_count; }
+    std::span<const Vec3> key1() const { return m_key1; }
+    std::span<const Vec3> key2() const { return m_key2; }
+    // Points first … first + out.size() − 1 of frame k (both within the counts).
+    void fit(std::size_t k, std::size_t first, std::span<Vec3> out) const;
+
+private:
+    std::span<const Vec3> m_key1;
+    std::span<const Vec3> m_key2;
+    bool m_closed = false;
+    std::size_t m_point_count = 0;
+    std::size_t m_frame_count = 0;
+    EdgePath m_first_edge;
+    EdgePath m_second_edge;
+    std::vector<std::pair<double, double>> m_across; // F1(v_i), F2(v_i)
+    bool m_last_follows_edge = true;
+};
+
+// A graphic's points as one span: its only part's own, or all parts' copied into `storage`.
+std::span<const Vec3> contiguous_points(const Graphic& graphic, std::vector<Vec3>& storage);
+
+// The fitter of a key-frame pair (see fit_key_frames); it refers to the keys' points, or to
+// `storage` for keys of several parts, and must not outlive them.
+SurfaceFitter key_frames_fitter(const EqualisedKeys& keys, const EvaluatedPath& first_path,
+                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage);
 
 // All frames of a key-frame pair: the edges come from the evaluated paths of the first and last
 // graphic point (the last is ignored for a closed graphic), the keys must be equalised.

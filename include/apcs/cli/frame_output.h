@@ -3,15 +3,18 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/formats/diagnostic.h"
+#include "apcs/formats/key_file_guard.h"
 #include "apcs/session/animation_player.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/cli/options.h"
 
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace apcs {
 
@@ -30,5 +33,13 @@ std::string format_frames_print(const FrameSequence& frames);
 // `key_files` (KEY1, KEY2). Problems go to `err` as exit status 1.
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err);
+
+// Writes in-between files with `write` into --out (or the current folder), the key files guarded,
+// and notes in-betweens an earlier run left beyond them: the files part of deliver_frames, also
+// for frames streamed as they are made (apcs fit without pictures or --print).
+using InbetweenWriter = std::function<Expected<std::vector<std::filesystem::path>>(const std::filesystem::path& folder,
+                                                                                 const KeyFileGuard& guard)>;
+ExitStatus deliver_inbetween_files(const InbetweenWriter& write, const CommonOptions& options,
+                                   std::span<const std::filesystem::path> key_files, std::ostream& err);
 
 } // namespace apcs

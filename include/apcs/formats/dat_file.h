@@ -7,6 +7,7 @@
 #include "apcs/geometry/vec3.h"
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -59,6 +60,15 @@ void append_point_line(std::string& text, const Vec3& position, const std::optio
 // hold), formatted like format_dat, or with `decimals` fixed decimals (append_fixed); no copy of
 // the points is made.
 std::string format_graphic(const Graphic& structure, std::span<const Vec3> points, int decimals = -1);
+
+// Fills `out` with points first … first + out.size() − 1 of a graphic's point sequence.
+using GraphicPoints = std::function<void(std::size_t first, std::span<Vec3> out)>;
+
+// format_graphic for points made on demand: the text goes to `sink` in chunks of some thousand
+// points, the points asked of `points_at` a chunk at a time, so neither the points nor the text
+// is ever whole in memory. False when the sink said false (and nothing more was made).
+bool format_graphic_in_chunks(const Graphic& structure, std::size_t point_count, const GraphicPoints& points_at,
+                              int decimals, const std::function<bool(std::string_view)>& sink);
 
 // The key-frame model of a file (staff columns are dropped).
 Graphic graphic_from(const DatFile& file);

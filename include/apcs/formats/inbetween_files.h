@@ -2,6 +2,7 @@
 
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/animation/surface_fit.h"
 #include "apcs/formats/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
 
@@ -19,6 +20,15 @@ namespace apcs {
 // stops the whole writing. Returns the files written, or the first problem: a `folder` that is
 // not a folder, a key file, or a file that could not be written.
 [[nodiscard]] Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames,
+                                                                                 const Graphic& structure,
+                                                                                 const std::filesystem::path& folder,
+                                                                                 const KeyFileGuard& guard);
+
+// write_inbetween_files for frames made as they are written: each in-between of `fitter` (frames
+// 1 … frame_count − 2) is computed, formatted and written a chunk of points at a time, one file
+// per core, so that no frame is ever whole in memory (SPEC's streaming of issue 18: the keys and
+// a few chunks are all that is held).
+[[nodiscard]] Expected<std::vector<std::filesystem::path>> write_inbetween_files(const SurfaceFitter& fitter,
                                                                                  const Graphic& structure,
                                                                                  const std::filesystem::path& folder,
                                                                                  const KeyFileGuard& guard);

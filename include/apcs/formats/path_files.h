@@ -43,7 +43,11 @@ std::size_t inbetween_count(const FrameSequence& frames);
 // The decimals of in-between files: decimals_for_size of the largest absolute coordinate of the
 // key frames (the first and the last frame), so that every number reads back within 0.5e-9 of
 // the keys' size.
+int inbetween_decimals(std::span<const Vec3> key1, std::span<const Vec3> key2);
 int inbetween_decimals(const FrameSequence& frames);
+
+// The first line of in-between file `number` of `count`: "; APCS in-between 3 of 12".
+std::string inbetween_heading(std::size_t number, std::size_t count);
 
 // In-between file `number` (1 … inbetween_count): frame `number`, the whole graphic with the
 // parts of `structure`, headed by "; APCS in-between k of M", its numbers with
