@@ -5,7 +5,7 @@
 
 Keys of equal point count in one part (what the benchmark feeds both programs), path files of
 3 or 7 columns, KB tangents (thesis Eq. 3.1.4), end slopes 1 1, nearest-sample in-betweens with
-the acceleration law of SPEC 4.3, the Coons surface of SPEC 5.3; writes inb001.dat ... like apcs.
+the acceleration law of SPEC 4.3, the surface blend of SPEC 5.3; writes inb001.dat ... like apcs.
 """
 import math
 import sys
@@ -103,15 +103,17 @@ def main():
     e1, w1 = inbetweens(last, kb_curve(last, samples), samples, count)
     v = (parameters(key1) + parameters(key2)) / 2
     g1, g2 = 2 * v**3 - 3 * v**2 + 1, -2 * v**3 + 3 * v**2
-    shape1 = key1 - np.outer(g1, key1[0]) - np.outer(g2, key1[-1])
-    shape2 = key2 - np.outer(g1, key2[0]) - np.outer(g2, key2[-1])
+    change = key2 - key1
     # apcs' in-between format: fixed decimals, 9 - floor(log10 of the keys' largest coordinate).
     size = max(np.abs(key1).max(), np.abs(key2).max())
     decimals = max(0, 9 - int(np.floor(np.log10(size)))) if size > 0 else 9
     for k in range(count):
-        w = (w0[k] + w1[k]) / 2
-        frame = (np.outer(g1, e0[k]) + np.outer(g2, e1[k]) + (2 * w**3 - 3 * w**2 + 1) * shape1
-                 + (-2 * w**3 + 3 * w**2) * shape2)
+        # SPEC 5.3: each point's progress blends the edges' across the graphic; the edges' bends
+        # off their chords are added with the same weights.
+        w = g1 * w0[k] + g2 * w1[k]
+        bend0 = e0[k] - (key1[0] + (key2[0] - key1[0]) * w0[k])
+        bend1 = e1[k] - (key1[-1] + (key2[-1] - key1[-1]) * w1[k])
+        frame = key1 + change * w[:, None] + np.outer(g1, bend0) + np.outer(g2, bend1)
         frame[0], frame[-1] = e0[k], e1[k]
         with open(f"{out}/inb{k + 1:03d}.dat", "w") as f:
             f.write(f"; APCS in-between {k + 1} of {count}\n")

@@ -11,6 +11,7 @@
 #include "apcs/formats/path_files.h"
 
 #include <array>
+#include <future>
 #include <optional>
 #include <string>
 #include <ostream>
@@ -45,10 +46,12 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
 
 ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
 {
+    // The keys are read side by side, one per core: for large keys reading is much of the work.
+    std::future<Expected<Graphic>> reading_key2 = std::async(std::launch::async, read_key_frame, files.key2);
     Expected<Graphic> key1 = read_key_frame(files.key1);
+    Expected<Graphic> key2 = reading_key2.get();
     if (!key1)
         return report_bad_input(key1.error(), err);
-    Expected<Graphic> key2 = read_key_frame(files.key2);
     if (!key2)
         return report_bad_input(key2.error(), err);
     const EqualisedKeys keys = equalise_key_frames(std::move(*key1), std::move(*key2));

@@ -71,6 +71,7 @@ private:
         return {m_file_name, line, std::move(message)};
     }
     [[nodiscard]] Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
+    void end_part();
 
     const std::string& m_file_name;
     std::size_t m_minimum_points;
@@ -82,10 +83,14 @@ private:
     std::vector<int> m_part_lines;
     std::vector<bool> m_marked_closed;
     std::size_t m_points = 0;
+    std::size_t m_text_lines = 0;
 };
 
 Expected<DatFile> DatParser::parse(std::string_view text)
 {
+    // A part's points are reserved for the lines left, so that a large file's points are not
+    // copied again and again as they grow (end_part gives back what a part did not use).
+    m_text_lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
     const auto problem = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) {
         m_line = line;
         return parse_line(content);
@@ -141,6 +146,7 @@ std::optional<Diagnostic> DatParser::parse_part(const Fields& fields)
     if (!m_part_lines.empty() && m_file.parts.back().points.empty())
         return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
                      m_part_lines.back());
+    end_part();
     m_file.parts.push_back({std::string(fields[1]), Closure::open, {}});
     m_part_lines.push_back(m_line);
     m_marked_closed.push_back(closed);
@@ -183,13 +189,28 @@ std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
         m_part_lines.push_back(0);
         m_marked_closed.push_back(false);
     }
-    m_file.parts.back().points.push_back(point);
+    std::vector<DatPoint>& points = m_file.parts.back().points;
+    if (points.capacity() == 0) {
+        const std::size_t lines_left = m_text_lines - std::min(m_text_lines, static_cast<std::size_t>(m_line - 1));
+        points.reserve(std::min(lines_left, max_dat_points - m_points));
+    }
+    points.push_back(point);
     ++m_points;
     return std::nullopt;
 }
 
+void DatParser::end_part()
+{
+    if (m_file.parts.empty())
+        return;
+    std::vector<DatPoint>& points = m_file.parts.back().points;
+    if (points.capacity() > points.size() + points.size() / 8 + 16)
+        points.shrink_to_fit();
+}
+
 std::optional<Diagnostic> DatParser::finish()
 {
+    end_part();
     if (!m_file.parts.empty() && m_file.parts.back().points.empty())
         return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
                      m_part_lines.back());
