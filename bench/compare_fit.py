@@ -61,6 +61,10 @@ def main():
         inputs = [f"{folder}/key1.dat", f"{folder}/key2.dat", f"{folder}/first.dat", f"{folder}/last.dat"]
         ours, theirs = [], []
         for _ in range(rounds):
+            # Every round writes new files: an unchanged file is only compared by apcs, which
+            # would make its rounds after the first cheaper than the peer's.
+            for name in os.listdir(f"{folder}/apcs"):
+                os.remove(f"{folder}/apcs/{name}")
             ours.append(run([apcs, "fit", *inputs, "--inbetweens", "12", "--out", f"{folder}/apcs"]))
             theirs.append(run([sys.executable, f"{HERE}/peer_fit_numpy.py", *inputs, f"{folder}/peer",
                                "--inbetweens", "12"]))
