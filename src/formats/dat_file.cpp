@@ -52,13 +52,17 @@ Fields split_fields(std::string_view line)
 // Reads a file line by line and collects parts and points; the first problem ends the reading.
 class DatParser {
 public:
-    DatParser(const std::string& file_name, std::size_t minimum_points)
+    // `positions_only`: the points keep only their positions (a key frame's need, 24 bytes a point
+    // instead of a DatPoint's 72), for parse_graphic.
+    DatParser(const std::string& file_name, std::size_t minimum_points, bool positions_only = false)
         : m_file_name(file_name)
         , m_minimum_points(minimum_points)
+        , m_positions_only(positions_only)
     {
     }
 
     Expected<DatFile> parse(std::string_view text);
+    Expected<Graphic> parse_graphic(std::string_view text);
 
 private:
     [[nodiscard]] std::optional<Diagnostic> parse_line(std::string_view line);
@@ -72,9 +76,24 @@ private:
     }
     [[nodiscard]] Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
     void end_part();
+    std::optional<Diagnostic> parse_all(std::string_view text);
+    std::size_t part_size(std::size_t part) const
+    {
+        return m_positions_only ? m_positions[part].size() : m_file.parts[part].points.size();
+    }
+    const Vec3& part_end(std::size_t part, bool last) const
+    {
+        if (m_positions_only)
+            return last ? m_positions[part].back() : m_positions[part].front();
+        return last ? m_file.parts[part].points.back().position : m_file.parts[part].points.front().position;
+    }
+    template <typename Points>
+    void reserve_for_lines_left(Points& points) const;
 
     const std::string& m_file_name;
     std::size_t m_minimum_points;
+    bool m_positions_only;
+    std::vector<std::vector<Vec3>> m_positions; // per part, when positions only
     DatFile m_file;
     int m_line = 0;
     bool m_seen_data = false;
@@ -86,7 +105,7 @@ private:
     std::size_t m_text_lines = 0;
 };
 
-Expected<DatFile> DatParser::parse(std::string_view text)
+std::optional<Diagnostic> DatParser::parse_all(std::string_view text)
 {
     // A part's points are reserved for the lines left, so that a large file's points are not
     // copied again and again as they grow (end_part gives back what a part did not use).
@@ -96,10 +115,43 @@ Expected<DatFile> DatParser::parse(std::string_view text)
         return parse_line(content);
     });
     if (problem)
+        return problem;
+    return finish();
+}
+
+Expected<DatFile> DatParser::parse(std::string_view text)
+{
+    if (auto problem = parse_all(text))
         return *problem;
-    if (auto unfinished = finish())
-        return *unfinished;
     return std::move(m_file);
+}
+
+Expected<Graphic> DatParser::parse_graphic(std::string_view text)
+{
+    if (auto problem = parse_all(text))
+        return *problem;
+    Graphic graphic;
+    graphic.parts.reserve(m_file.parts.size());
+    for (std::size_t i = 0; i < m_file.parts.size(); ++i) {
+        DatPart& part = m_file.parts[i];
+        std::vector<Vec3> points;
+        if (m_positions_only) {
+            points = std::move(m_positions[i]);
+        } else {
+            points.reserve(part.points.size());
+            for (const DatPoint& point : part.points)
+                points.push_back(point.position);
+        }
+        graphic.parts.push_back({std::move(part.name), part.closure, std::move(points)});
+    }
+    return graphic;
+}
+
+template <typename Points>
+void DatParser::reserve_for_lines_left(Points& points) const
+{
+    const std::size_t lines_left = m_text_lines - std::min(m_text_lines, static_cast<std::size_t>(m_line - 1));
+    points.reserve(std::min(lines_left, max_dat_points - m_points));
 }
 
 std::optional<Diagnostic> DatParser::parse_line(std::string_view content)
@@ -143,11 +195,13 @@ std::optional<Diagnostic> DatParser::parse_part(const Fields& fields)
     }
     // Points before the first PART line form a part of their own; a PART line otherwise starts
     // the next part, and the part it ends must not be empty.
-    if (!m_part_lines.empty() && m_file.parts.back().points.empty())
+    if (!m_part_lines.empty() && part_size(m_file.parts.size() - 1) == 0)
         return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
                      m_part_lines.back());
     end_part();
     m_file.parts.push_back({std::string(fields[1]), Closure::open, {}});
+    if (m_positions_only)
+        m_positions.emplace_back();
     m_part_lines.push_back(m_line);
     m_marked_closed.push_back(closed);
     return std::nullopt;
@@ -188,30 +242,40 @@ std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
         m_file.parts.push_back({"", Closure::open, {}});
         m_part_lines.push_back(0);
         m_marked_closed.push_back(false);
+        if (m_positions_only)
+            m_positions.emplace_back();
+    }
+    ++m_points;
+    if (m_positions_only) {
+        std::vector<Vec3>& positions = m_positions.back();
+        if (positions.capacity() == 0)
+            reserve_for_lines_left(positions);
+        positions.push_back(point.position);
+        return std::nullopt;
     }
     std::vector<DatPoint>& points = m_file.parts.back().points;
-    if (points.capacity() == 0) {
-        const std::size_t lines_left = m_text_lines - std::min(m_text_lines, static_cast<std::size_t>(m_line - 1));
-        points.reserve(std::min(lines_left, max_dat_points - m_points));
-    }
+    if (points.capacity() == 0)
+        reserve_for_lines_left(points);
     points.push_back(point);
-    ++m_points;
     return std::nullopt;
 }
 
 void DatParser::end_part()
 {
-    if (m_file.parts.empty())
-        return;
-    std::vector<DatPoint>& points = m_file.parts.back().points;
-    if (points.capacity() > points.size() + points.size() / 8 + 16)
-        points.shrink_to_fit();
+    const auto give_back_room = [](auto& points) {
+        if (points.capacity() > points.size() + points.size() / 8 + 16)
+            points.shrink_to_fit();
+    };
+    if (m_positions_only && !m_positions.empty())
+        give_back_room(m_positions.back());
+    if (!m_file.parts.empty())
+        give_back_room(m_file.parts.back().points);
 }
 
 std::optional<Diagnostic> DatParser::finish()
 {
     end_part();
-    if (!m_file.parts.empty() && m_file.parts.back().points.empty())
+    if (!m_file.parts.empty() && part_size(m_file.parts.size() - 1) == 0)
         return error("part '" + m_file.parts.back().name + "' has no points; expected at least one",
                      m_part_lines.back());
     if (m_declared_count && *m_declared_count != m_points)
@@ -223,9 +287,8 @@ std::optional<Diagnostic> DatParser::finish()
                          std::to_string(m_points),
                      0);
     for (std::size_t i = 0; i < m_file.parts.size(); ++i) {
-        DatPart& part = m_file.parts[i];
-        const bool ends_meet = part.points.size() >= 3 && part.points.front().position == part.points.back().position;
-        part.closure = m_marked_closed[i] || ends_meet ? Closure::closed : Closure::open;
+        const bool ends_meet = part_size(i) >= 3 && part_end(i, false) == part_end(i, true);
+        m_file.parts[i].closure = m_marked_closed[i] || ends_meet ? Closure::closed : Closure::open;
     }
     return std::nullopt;
 }
@@ -250,6 +313,11 @@ bool needs_part_lines(std::size_t part_count, const std::string& first_name, Clo
 Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points)
 {
     return DatParser(file_name, minimum_points).parse(text);
+}
+
+Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file_name, std::size_t minimum_points)
+{
+    return DatParser(file_name, minimum_points, true).parse_graphic(text);
 }
 
 std::string format_dat(const DatFile& file)

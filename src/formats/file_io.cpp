@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <system_error>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -235,27 +236,34 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
     return content;
 }
 
-Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points)
+namespace {
+
+// A .dat file's text and the name its messages use; "-" is standard input, read like a keystroke
+// script: a pipe, once, to its end.
+Expected<std::pair<std::string, std::string>> dat_text(const fs::path& name)
 {
-    // "-" is standard input, read like a keystroke script: a pipe, once, to its end.
-    if (name == "-") {
-        Expected<std::string> piped = read_script_text(name);
-        if (!piped)
-            return piped.error();
-        return parse_dat(*piped, "standard input", minimum_points);
-    }
-    Expected<std::string> text = read_text_file(name);
+    Expected<std::string> text = name == "-" ? read_script_text(name) : read_text_file(name);
     if (!text)
         return text.error();
-    return parse_dat(*text, name.string(), minimum_points);
+    return std::pair{std::move(*text), name == "-" ? std::string("standard input") : name.string()};
+}
+
+} // namespace
+
+Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points)
+{
+    const Expected<std::pair<std::string, std::string>> text = dat_text(name);
+    if (!text)
+        return text.error();
+    return parse_dat(text->first, text->second, minimum_points);
 }
 
 Expected<Graphic> read_key_frame(const fs::path& name)
 {
-    const Expected<DatFile> file = read_dat_file(name);
-    if (!file)
-        return file.error();
-    return graphic_from(*file);
+    const Expected<std::pair<std::string, std::string>> text = dat_text(name);
+    if (!text)
+        return text.error();
+    return parse_key_frame(text->first, text->second);
 }
 
 namespace {
