@@ -63,6 +63,7 @@ public:
 
     Expected<DatFile> parse(std::string_view text);
     Expected<Graphic> parse_graphic(std::string_view text);
+    Expected<Graphic> parse_graphic_pieces(std::size_t line_count, const TextPieces& read);
 
 private:
     [[nodiscard]] std::optional<Diagnostic> parse_line(std::string_view line);
@@ -77,6 +78,7 @@ private:
     [[nodiscard]] Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
     void end_part();
     std::optional<Diagnostic> parse_all(std::string_view text);
+    std::optional<Diagnostic> parse_pieces(std::size_t line_count, const TextPieces& read);
     std::size_t part_size(std::size_t part) const
     {
         return m_positions_only ? m_positions[part].size() : m_file.parts[part].points.size();
@@ -107,14 +109,22 @@ private:
 
 std::optional<Diagnostic> DatParser::parse_all(std::string_view text)
 {
+    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+    return parse_pieces(lines, [text](const TextPieceSink& sink) { return sink(text); });
+}
+
+std::optional<Diagnostic> DatParser::parse_pieces(std::size_t line_count, const TextPieces& read)
+{
     // A part's points are reserved for the lines left, so that a large file's points are not
     // copied again and again as they grow (end_part gives back what a part did not use).
-    m_text_lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-    const auto problem = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) {
+    m_text_lines = line_count;
+    DataLineReader lines(m_file_name, [this](int line, std::string_view content) {
         m_line = line;
         return parse_line(content);
     });
-    if (problem)
+    if (auto problem = read([&lines](std::string_view piece) { return lines.feed(piece); }))
+        return problem;
+    if (auto problem = lines.finish())
         return problem;
     return finish();
 }
@@ -128,7 +138,13 @@ Expected<DatFile> DatParser::parse(std::string_view text)
 
 Expected<Graphic> DatParser::parse_graphic(std::string_view text)
 {
-    if (auto problem = parse_all(text))
+    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+    return parse_graphic_pieces(lines, [text](const TextPieceSink& sink) { return sink(text); });
+}
+
+Expected<Graphic> DatParser::parse_graphic_pieces(std::size_t line_count, const TextPieces& read)
+{
+    if (auto problem = parse_pieces(line_count, read))
         return *problem;
     Graphic graphic;
     graphic.parts.reserve(m_file.parts.size());
@@ -318,6 +334,12 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file_name, std::size_t minimum_points)
 {
     return DatParser(file_name, minimum_points, true).parse_graphic(text);
+}
+
+Expected<Graphic> parse_key_frame_pieces(const std::string& file_name, std::size_t line_count, const TextPieces& read,
+                                         std::size_t minimum_points)
+{
+    return DatParser(file_name, minimum_points, true).parse_graphic_pieces(line_count, read);
 }
 
 std::string format_dat(const DatFile& file)

@@ -31,13 +31,13 @@ Diagnostic too_large(const std::string& shown, std::uintmax_t bytes, std::uintma
 }
 
 // No text APCS reads holds a NUL byte: a binary file is refused at the first one, before the rest
-// of it is read. `read` is the text before `chunk`, for the line number.
-std::optional<Diagnostic> refuse_nul_byte(const std::string& shown, std::string_view read, std::string_view chunk)
+// of it is read. `lines_before` counts the LFs before `chunk`, for the line number.
+std::optional<Diagnostic> refuse_nul_byte(const std::string& shown, std::size_t lines_before, std::string_view chunk)
 {
     const std::size_t nul = chunk.find('\0');
     if (nul == std::string_view::npos)
         return std::nullopt;
-    const auto lines = std::count(read.begin(), read.end(), '\n') + std::count(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(nul), '\n');
+    const auto lines = lines_before + static_cast<std::size_t>(std::count(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
     return Diagnostic{shown, 1 + static_cast<int>(lines), "NUL byte; expected a text file"};
 }
 
@@ -185,7 +185,8 @@ fs::path resolve_input_path(const fs::path& name)
     return found ? *found : name;
 }
 
-Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_bytes)
+std::optional<Diagnostic> read_text_pieces(const fs::path& name, const TextPieceSink& consume, std::uintmax_t most_bytes,
+                                           std::uintmax_t* file_size)
 {
     const std::string shown = name.string();
     const Expected<fs::path> found = find_input_path(name);
@@ -212,7 +213,10 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
     // Refused by its size before a byte is read, so a huge file costs no time and no memory.
     if (static_cast<std::uintmax_t>(status.st_size) > most_bytes)
         return too_large(shown, static_cast<std::uintmax_t>(status.st_size), most_bytes);
-    std::string content;
+    if (file_size != nullptr)
+        *file_size = static_cast<std::uintmax_t>(status.st_size);
+    std::uintmax_t total = 0;
+    std::size_t lines = 0;
     char buffer[1 << 16];
     while (true) {
         const ssize_t got = ::read(file.get(), buffer, sizeof buffer);
@@ -222,17 +226,32 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
             return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
         }
         if (got == 0)
-            break;
+            return std::nullopt;
         const std::string_view chunk(buffer, static_cast<std::size_t>(got));
-        if (auto binary = refuse_nul_byte(shown, content, chunk))
-            return *std::move(binary);
+        if (auto binary = refuse_nul_byte(shown, lines, chunk))
+            return binary;
         // A file that grew while it was read.
-        if (content.size() + chunk.size() > most_bytes)
-            return too_large(shown, content.size() + chunk.size(), most_bytes);
-        if (content.empty())
-            content.reserve(static_cast<std::size_t>(status.st_size));
-        content.append(chunk);
+        if (total + chunk.size() > most_bytes)
+            return too_large(shown, total + chunk.size(), most_bytes);
+        total += chunk.size();
+        lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
+        if (auto problem = consume(chunk))
+            return problem;
     }
+}
+
+Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_bytes)
+{
+    std::string content;
+    std::uintmax_t size = 0;
+    const auto append = [&content, &size](std::string_view chunk) -> std::optional<Diagnostic> {
+        if (content.empty())
+            content.reserve(static_cast<std::size_t>(size));
+        content.append(chunk);
+        return std::nullopt;
+    };
+    if (auto problem = read_text_pieces(name, append, most_bytes, &size))
+        return *problem;
     return content;
 }
 
@@ -260,10 +279,23 @@ Expected<DatFile> read_dat_file(const fs::path& name, std::size_t minimum_points
 
 Expected<Graphic> read_key_frame(const fs::path& name)
 {
-    const Expected<std::pair<std::string, std::string>> text = dat_text(name);
-    if (!text)
-        return text.error();
-    return parse_key_frame(text->first, text->second);
+    if (name == "-") {
+        const Expected<std::pair<std::string, std::string>> text = dat_text(name);
+        if (!text)
+            return text.error();
+        return parse_key_frame(text->first, text->second);
+    }
+    // Read twice, a block at a time, never whole: first its lines are counted (to size the
+    // points once), then they are parsed as they come. A large key costs its points, not its text.
+    std::size_t lines = 1;
+    const auto count_lines = [&lines](std::string_view chunk) -> std::optional<Diagnostic> {
+        lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
+        return std::nullopt;
+    };
+    if (auto problem = read_text_pieces(name, count_lines))
+        return *problem;
+    return parse_key_frame_pieces(name.string(), lines,
+                                  [&name](const TextPieceSink& sink) { return read_text_pieces(name, sink); });
 }
 
 namespace {
@@ -272,6 +304,7 @@ namespace {
 Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown, std::uintmax_t most_bytes)
 {
     std::string content;
+    std::size_t lines = 0;
     char buffer[1 << 16];
     while (true) {
         const ssize_t got = ::read(descriptor, buffer, sizeof buffer);
@@ -283,10 +316,11 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
             return content;
         // A stream has no size to refuse up front: it is refused at its first NUL, as a file is.
         const std::string_view chunk(buffer, static_cast<std::size_t>(got));
-        if (auto binary = refuse_nul_byte(shown, content, chunk))
+        if (auto binary = refuse_nul_byte(shown, lines, chunk))
             return *std::move(binary);
         if (content.size() + chunk.size() > most_bytes)
             return too_large(shown, content.size() + chunk.size(), most_bytes);
+        lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
         content.append(chunk);
     }
 }

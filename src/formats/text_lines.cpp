@@ -11,67 +11,122 @@ namespace {
 constexpr std::string_view utf8_byte_order_mark = "\xEF\xBB\xBF";
 constexpr char dos_end_of_file = '\x1A';
 
-// Removes the first line from `text` and returns it without its end. A line ends with LF (Unix),
-// CR LF (DOS) or a lone CR (old Macintosh files), so each form numbers lines the same way.
-std::string_view take_line(std::string_view& text)
-{
-    const std::size_t end = text.find_first_of("\r\n");
-    const std::string_view line = text.substr(0, end);
-    if (end == std::string_view::npos) {
-        text = {};
-        return line;
-    }
-    const bool crlf = text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
-    text.remove_prefix(end + (crlf ? 2 : 1));
-    return line;
-}
-
-// The 1-based number of the line that holds byte `position` of `text`, with line ends as
-// take_line finds them.
-int line_number_at(std::string_view text, std::size_t position)
-{
-    int line = 1;
-    for (std::size_t i = 0; i < position && i < text.size(); ++i) {
-        const bool lone_cr = text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n');
-        if (text[i] == '\n' || lone_cr)
-            ++line;
-    }
-    return line;
-}
+bool is_trailer(char c) { return c == dos_end_of_file || c == '\r' || c == '\n' || is_field_blank(c); }
 
 } // namespace
+
+DataLineReader::DataLineReader(const std::string& file_name, DataLineHandler handle)
+    : m_file_name(file_name)
+    , m_handle(std::move(handle))
+{
+}
+
+std::optional<Diagnostic> DataLineReader::feed(std::string_view chunk)
+{
+    if (m_problem || chunk.empty())
+        return m_problem;
+    if (m_ended) {
+        check_trailer(chunk);
+        return m_problem;
+    }
+    if (!m_bom_decided && m_pending.empty() && chunk.size() >= utf8_byte_order_mark.size()) {
+        if (chunk.starts_with(utf8_byte_order_mark))
+            chunk.remove_prefix(utf8_byte_order_mark.size());
+        m_bom_decided = true;
+    }
+    if (m_pending.empty() && m_bom_decided) {
+        // Whole lines straight from the chunk; only an unfinished last line is kept.
+        const std::size_t used = take_lines(chunk, false);
+        if (!m_problem && !m_ended)
+            m_pending.assign(chunk.substr(used));
+        return m_problem;
+    }
+    m_pending.append(chunk);
+    if (!m_bom_decided) {
+        if (m_pending.size() < utf8_byte_order_mark.size())
+            return std::nullopt;
+        decide_bom();
+    }
+    const std::size_t used = take_lines(m_pending, false);
+    m_pending.erase(0, used);
+    return m_problem;
+}
+
+std::optional<Diagnostic> DataLineReader::finish()
+{
+    if (m_problem || m_ended)
+        return m_problem;
+    decide_bom();
+    const std::size_t used = take_lines(m_pending, true);
+    m_pending.erase(0, used);
+    return m_problem;
+}
+
+void DataLineReader::decide_bom()
+{
+    if (!m_bom_decided && std::string_view(m_pending).starts_with(utf8_byte_order_mark))
+        m_pending.erase(0, utf8_byte_order_mark.size());
+    m_bom_decided = true;
+}
+
+std::size_t DataLineReader::take_lines(std::string_view text, bool at_end)
+{
+    std::size_t start = 0;
+    while (!m_problem) {
+        const std::size_t end = text.find_first_of(std::string_view("\r\n\x1A", 3), start);
+        if (end == std::string_view::npos) {
+            if (!at_end || start == text.size())
+                return start;
+            handle_line(text.substr(start));
+            return text.size();
+        }
+        if (text[end] == dos_end_of_file) {
+            // DOS editors ended a file with Ctrl-Z: what stands before it on its line is the last
+            // line; after it only line ends and blanks may follow.
+            m_end_line = m_line + 1;
+            if (end > start)
+                handle_line(text.substr(start, end - start));
+            m_ended = true;
+            check_trailer(text.substr(end));
+            return text.size();
+        }
+        // A CR at the end of what has come may be the first half of a CR LF.
+        if (text[end] == '\r' && end + 1 == text.size() && !at_end)
+            return start;
+        const bool crlf = text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
+        handle_line(text.substr(start, end - start));
+        start = end + (crlf ? 2 : 1);
+    }
+    return start;
+}
+
+void DataLineReader::handle_line(std::string_view content)
+{
+    ++m_line;
+    if (content.size() > max_text_line_bytes)
+        m_problem = Diagnostic{m_file_name, m_line,
+                               "line is " + std::to_string(content.size()) + " bytes long; expected at most " +
+                                   std::to_string(max_text_line_bytes)};
+    else if (content.find('\0') != std::string_view::npos)
+        m_problem = Diagnostic{m_file_name, m_line, "NUL byte; expected a text file"};
+    else
+        m_problem = m_handle(m_line, content.substr(0, content.find_first_of(";#")));
+}
+
+void DataLineReader::check_trailer(std::string_view bytes)
+{
+    if (!m_problem && !std::all_of(bytes.begin(), bytes.end(), is_trailer))
+        m_problem = Diagnostic{m_file_name, m_end_line,
+                               "Ctrl-Z (end of file) followed by more data; expected it only at the end"};
+}
 
 std::optional<Diagnostic> for_each_data_line(std::string_view text, const std::string& file_name,
                                              const DataLineHandler& handle)
 {
-    if (text.starts_with(utf8_byte_order_mark))
-        text.remove_prefix(utf8_byte_order_mark.size());
-    // DOS editors ended a file with Ctrl-Z; anything but line ends after it is not a text file.
-    const std::size_t end_mark = text.find(dos_end_of_file);
-    if (end_mark != std::string_view::npos) {
-        const std::string_view rest = text.substr(end_mark);
-        const bool only_trailer = std::all_of(rest.begin(), rest.end(), [](char c) {
-            return c == dos_end_of_file || c == '\r' || c == '\n' || is_field_blank(c);
-        });
-        if (!only_trailer)
-            return Diagnostic{file_name, line_number_at(text, end_mark),
-                              "Ctrl-Z (end of file) followed by more data; expected it only at the end"};
-        text = text.substr(0, end_mark);
-    }
-    int line_number = 0;
-    while (!text.empty()) {
-        ++line_number;
-        std::string_view content = take_line(text);
-        if (content.size() > max_text_line_bytes)
-            return Diagnostic{file_name, line_number,
-                              "line is " + std::to_string(content.size()) + " bytes long; expected at most " +
-                                  std::to_string(max_text_line_bytes)};
-        if (content.find('\0') != std::string_view::npos)
-            return Diagnostic{file_name, line_number, "NUL byte; expected a text file"};
-        if (auto problem = handle(line_number, content.substr(0, content.find_first_of(";#"))))
-            return problem;
-    }
-    return std::nullopt;
+    DataLineReader reader(file_name, handle);
+    if (auto problem = reader.feed(text))
+        return problem;
+    return reader.finish();
 }
 
 } // namespace apcs

@@ -1,10 +1,16 @@
 #include "apcs/formats/dat_file.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/text_lines.h"
 
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace apcs;
 
@@ -40,6 +46,15 @@ TEST_CASE("a key frame read straight into positions is the graphic of the .dat f
         const Expected<DatFile> file = parse_dat(text, "k.dat", 2);
         const Expected<Graphic> graphic = parse_key_frame(text, "k.dat");
         REQUIRE(file.has_value() == graphic.has_value());
+        // The file read a block at a time and parsed as it comes: what reading it whole gives,
+        // error for error (a NUL byte is refused by the reading, before any line).
+        const Expected<Graphic> read = read_key_frame(entry.path());
+        const Expected<DatFile> read_whole = read_dat_file(entry.path());
+        REQUIRE(read.has_value() == read_whole.has_value());
+        if (read)
+            REQUIRE(read->point_count() == read_whole->point_count());
+        else
+            REQUIRE(read.error().to_string() == read_whole.error().to_string());
         if (!file) {
             REQUIRE(graphic.error().to_string() == file.error().to_string());
             continue;
@@ -54,4 +69,39 @@ TEST_CASE("a key frame read straight into positions is the graphic of the .dat f
         }
     }
     REQUIRE(accepted > 10);
+}
+
+TEST_CASE("text fed in pieces of any size gives the lines and the problem of the whole text", "[formats][fuzz]")
+{
+    using Seen = std::vector<std::pair<int, std::string>>;
+    const auto read_whole = [](std::string_view text, Seen& seen) {
+        return for_each_data_line(text, "t.dat", [&seen](int line, std::string_view content) -> std::optional<Diagnostic> {
+            seen.emplace_back(line, std::string(content));
+            return std::nullopt;
+        });
+    };
+    std::vector<std::string> texts{"\xEF\xBB\xBF" "1 2\r\n3 4\r", "a\r\r\nb\rc", "x\n\x1A\r\n", "x\ny\x1Az", "\xEF\xBB", ""};
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) / "tests/fuzz/dat_reader"))
+        texts.push_back(test::read_all(entry.path()));
+    for (const std::string& text : texts) {
+        Seen whole;
+        const std::optional<Diagnostic> whole_problem = read_whole(text, whole);
+        for (const std::size_t piece : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{7}, std::size_t{64}}) {
+            CAPTURE(text, piece);
+            Seen pieces;
+            DataLineReader reader("t.dat", [&pieces](int line, std::string_view content) -> std::optional<Diagnostic> {
+                pieces.emplace_back(line, std::string(content));
+                return std::nullopt;
+            });
+            std::optional<Diagnostic> problem;
+            for (std::size_t at = 0; at < text.size() && !problem; at += piece)
+                problem = reader.feed(std::string_view(text).substr(at, piece));
+            if (!problem)
+                problem = reader.finish();
+            REQUIRE(pieces == whole);
+            REQUIRE(problem.has_value() == whole_problem.has_value());
+            if (problem)
+                REQUIRE(problem->to_string() == whole_problem->to_string());
+        }
+    }
 }

@@ -78,4 +78,14 @@ Graphic graphic_from(const DatFile& file);
 // while it is read, not a DatPoint's 72 and then a copy.
 Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file_name, std::size_t minimum_points = 2);
 
+// A piece of text for a reader that takes text as it comes, and what hands the pieces over: it
+// calls the sink with each piece in order and returns the first problem, its own or the sink's.
+using TextPieceSink = std::function<std::optional<Diagnostic>(std::string_view piece)>;
+using TextPieces = std::function<std::optional<Diagnostic>(const TextPieceSink& sink)>;
+
+// parse_key_frame for text that comes in pieces (a file read a block at a time), never whole;
+// `line_count` (the text's LFs + 1) sizes the points once.
+Expected<Graphic> parse_key_frame_pieces(const std::string& file_name, std::size_t line_count, const TextPieces& read,
+                                         std::size_t minimum_points = 2);
+
 } // namespace apcs

@@ -30,6 +30,13 @@ std::filesystem::path resolve_input_path(const std::filesystem::path& name);
 inline constexpr std::uintmax_t max_input_bytes = 1ull << 30;
 Expected<std::string> read_text_file(const std::filesystem::path& name, std::uintmax_t most_bytes = max_input_bytes);
 
+// read_text_file's checks and messages for a file read a block at a time: each block goes to
+// `consume` (whose problem ends the reading), none is kept. `file_size`, when given, receives the
+// file's size before the first block.
+std::optional<Diagnostic> read_text_pieces(const std::filesystem::path& name, const TextPieceSink& consume,
+                                           std::uintmax_t most_bytes = max_input_bytes,
+                                           std::uintmax_t* file_size = nullptr);
+
 // A .dat file, or standard input when `name` is "-" (messages then say "standard input:LINE").
 Expected<DatFile> read_dat_file(const std::filesystem::path& name, std::size_t minimum_points = 2);
 

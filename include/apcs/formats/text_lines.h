@@ -21,7 +21,34 @@ using DataLineHandler = std::function<std::optional<Diagnostic>(int line_number,
 // starts a comment that runs to the line's end. `handle` gets every line's content before its
 // comment (blank lines too), numbered from 1; the first problem, its own or the handler's, ends
 // the reading and is returned as "FILE:LINE: message" for `file_name`.
+// The problem is the first in the file's order: a line before a misplaced Ctrl-Z is read first.
 [[nodiscard]] std::optional<Diagnostic> for_each_data_line(std::string_view text, const std::string& file_name,
                                                            const DataLineHandler& handle);
+
+// for_each_data_line for text that comes in pieces (a file read a block at a time): each line
+// goes to the handler as soon as it is whole, so only an unfinished line is ever held. feed()
+// and finish() return the first problem (and every later call returns it again).
+class DataLineReader {
+public:
+    DataLineReader(const std::string& file_name, DataLineHandler handle);
+    [[nodiscard]] std::optional<Diagnostic> feed(std::string_view chunk);
+    [[nodiscard]] std::optional<Diagnostic> finish();
+
+private:
+    void decide_bom();
+    // Handles the whole lines of `text` (all of it when at_end); returns how much it used.
+    std::size_t take_lines(std::string_view text, bool at_end);
+    void handle_line(std::string_view content);
+    void check_trailer(std::string_view bytes);
+
+    const std::string& m_file_name;
+    DataLineHandler m_handle;
+    std::string m_pending; // the unfinished line
+    bool m_bom_decided = false;
+    bool m_ended = false; // a Ctrl-Z was read
+    int m_end_line = 0;   // the line of the Ctrl-Z
+    int m_line = 0;
+    std::optional<Diagnostic> m_problem;
+};
 
 } // namespace apcs
