@@ -434,6 +434,7 @@ public:
         }
         if (m_temporary.empty() && !start_temporary())
             return false;
+        m_size += chunk.size();
         return write_all(m_file.get(), chunk) || abandon("cannot write");
     }
 
@@ -445,9 +446,10 @@ public:
             start_temporary();
         if (!m_problem && durability == Durability::each_file && ::fsync(m_file.get()) != 0)
             abandon("cannot flush to disk");
-        // At a barrier later: the disk starts on this file now, while the next ones are made, so
-        // the barrier finds little left to wait for (a hint: no error is possible that matters).
-        if (!m_problem && durability == Durability::at_barrier)
+        // At a barrier later: a large file's writeback starts now, while the next files are made,
+        // so the barrier finds little left to wait for (12 in-betweens of 6 MB: 25 → 3 ms). Not
+        // for small files: 10^5 of them (a split) would each cost a call and a small disk write.
+        if (!m_problem && durability == Durability::at_barrier && m_size >= (std::uintmax_t{1} << 20))
             ::sync_file_range(m_file.get(), 0, 0, SYNC_FILE_RANGE_WRITE);
         if (!m_problem && m_target.exists &&
             (m_target.status.st_uid != ::geteuid() || m_target.status.st_gid != ::getegid())) {
@@ -573,6 +575,7 @@ private:
     const KeyFileGuard* m_inputs;
     FileDescriptor m_old;
     std::uintmax_t m_same = 0; // bytes of the new content equal to the old file's first bytes
+    std::uintmax_t m_size = 0; // bytes of the new content written after them
     bool m_differs;
     FileDescriptor m_file{-1};
     std::string m_temporary;
