@@ -37,9 +37,13 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
     };
     const std::uint64_t needed = memory::saturating_sum(memory::frames_bytes(frames),
                                                         memory::saturating_sum(path(first), path(last)));
-    return refuse_over_budget(memory::describe(frames) + " (--inbetweens " +
-                                  std::to_string(options.path.inbetween_count) + ") and their paths",
-                              needed, options, "lower --inbetweens or --samples, or use key frames of fewer points", err);
+    const std::string inbetweens = "(--inbetweens " + std::to_string(options.path.inbetween_count) + ")";
+    const std::string asked = all_frames_needed(options)
+                                  ? memory::describe(frames) + " " + inbetweens + " and their paths"
+                                  : "the key frames (" + memory::describe(frames) +
+                                        "), the in-betweens made one at a time " + inbetweens + ", and their paths";
+    return refuse_over_budget(asked, needed, options, "lower --inbetweens or --samples, or use key frames of fewer points",
+                              err);
 }
 
 } // namespace

@@ -3,6 +3,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <string>
+#include <vector>
+
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -94,6 +97,36 @@ TEST_CASE("apcs fit over the memory limit is refused before fitting, exit 1", "[
     CHECK(refused.err == "apcs: 1002 frames of 4 points (--inbetweens 1000) and their paths need 433.9 KiB; the memory "
                          "limit is 400 KiB (APCS_MEMORY_LIMIT); lower --inbetweens or --samples, or use key frames of "
                          "fewer points\n");
+}
+
+TEST_CASE("apcs fit writing its in-betweens one at a time counts the keys, not every frame", "[cli][memory]")
+{
+    const TempFolder folder;
+    write_keys(folder);
+    const std::vector<std::string> fit{"fit",
+                                       (folder / "key1.dat").string(),
+                                       (folder / "key2.dat").string(),
+                                       (folder / "way1.dat").string(),
+                                       (folder / "way4.dat").string(),
+                                       "--inbetweens",
+                                       "1000",
+                                       "--out",
+                                       folder.path().string()};
+    {
+        // 2 x 4 x 24 + 4 x 608 for the keys, 2 x (65 x 56 + 1000 x 48 + 3 x 320) for the paths:
+        // 107824 bytes, where all 1002 frames held would need 433.9 KiB.
+        const MemoryLimitVariable limit("100K");
+        const auto refused = run_apcs(fit);
+        CHECK(refused.status == 1);
+        CHECK(refused.err == "apcs: the key frames (2 frames of 4 points), the in-betweens made one at a time "
+                             "(--inbetweens 1000), and their paths need 105.3 KiB; the memory limit is 100 KiB "
+                             "(APCS_MEMORY_LIMIT); lower --inbetweens or --samples, or use key frames of fewer points\n");
+        CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
+    }
+    const MemoryLimitVariable limit("106K");
+    const auto written = run_apcs(fit);
+    CHECK(written.status == 0);
+    CHECK(std::filesystem::exists(folder / "inb1000.dat"));
 }
 
 TEST_CASE("apcs inbetween over the memory limit writes no file, exit 1", "[cli][memory]")
