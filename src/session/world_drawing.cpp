@@ -36,12 +36,21 @@ ViewTransform ViewScene::fit(ViewAngles angles, PixelRect drawing_area) const
 
 void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view, LineStyle style)
 {
+    if (polyline.empty())
+        return;
+    PixelPoint from = view.to_device(polyline.front()).rounded();
     if (polyline.size() == 1)
-        painter.pixel(view.to_device(polyline.front()).rounded());
+        painter.pixel(from);
     int phase = 0;
-    for (std::size_t i = 1; i < polyline.size(); ++i)
-        painter.styled_line(view.to_device(polyline[i - 1]).rounded(), view.to_device(polyline[i]).rounded(), style,
-                            phase);
+    for (std::size_t i = 1; i < polyline.size(); ++i) {
+        const PixelPoint to = view.to_device(polyline[i]).rounded();
+        // A long path has many samples on one pixel: a segment that stays on the pixel where the
+        // last one ended draws nothing and moves no dash (after the first), so it is skipped.
+        if (to == from && phase > 0)
+            continue;
+        painter.styled_line(from, to, style, phase);
+        from = to;
+    }
 }
 
 } // namespace apcs
