@@ -86,10 +86,19 @@ std::vector<double> span_targets(double span_start, double span_length, int coun
 EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings)
 {
     EvaluatedPath path;
+    evaluate_path(points, settings, path);
+    return path;
+}
+
+void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
+{
     path.segments = kb_segments(points, settings.slopes);
-    path.curve = sample_curve(path.segments, settings.samples_per_segment);
+    sample_curve(path.segments, settings.samples_per_segment, path.curve);
+    path.inbetweens.clear();
+    path.span_timings.clear();
+    path.frames_freeze = false;
     if (path.segments.empty())
-        return path;
+        return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
     const std::size_t samples = static_cast<std::size_t>(path.curve.samples_per_segment);
 
@@ -113,7 +122,7 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
             path.inbetweens.push_back(
                 {path.curve.points.front(), acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
         }
-        return path;
+        return;
     }
 
     std::vector<double> span_lengths;
@@ -144,7 +153,6 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
     if (!exact)
         for (std::size_t j = 1; j < path.inbetweens.size(); ++j)
             path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
-    return path;
 }
 
 } // namespace apcs

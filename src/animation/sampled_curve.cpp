@@ -17,9 +17,17 @@ std::vector<HermiteBasis> hermite_basis_table(int samples_per_segment)
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment)
 {
     SampledCurve curve;
+    sample_curve(segments, samples_per_segment, curve);
+    return curve;
+}
+
+void sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment, SampledCurve& curve)
+{
     curve.samples_per_segment = std::max(samples_per_segment, 1);
+    curve.points.clear();
+    curve.chord_length.clear();
     if (segments.empty())
-        return curve;
+        return;
     const std::vector<HermiteBasis> table = hermite_basis_table(curve.samples_per_segment);
     const std::size_t count = segments.size() * static_cast<std::size_t>(curve.samples_per_segment) + 1;
     curve.points.reserve(count);
@@ -34,7 +42,6 @@ SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_
             curve.points.push_back(point);
         }
     }
-    return curve;
 }
 
 } // namespace apcs

@@ -183,7 +183,7 @@ void PathEditor::set_staff_value(double value)
     if (m_staff == change.staff && staff_runs(m_setup.points, m_region) == change.points_before)
         return;
     m_history.push_back(std::move(change));
-    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -249,7 +249,7 @@ void PathEditor::undo()
     m_history.pop_back();
     m_problem.clear();
     std::visit([this](const auto& last) { undo_change(last); }, change);
-    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
     m_notice += "; " + changes_text(m_history.size()) + " left to undo";
     m_log.log(m_notice);
 }

@@ -227,3 +227,27 @@ TEST_CASE("a path of zero length progresses by its first control point's acceler
     }
     REQUIRE(path.inbetweens[0].arc_fraction == Approx(0.125 + 0.5 * 0.07612046748871326).epsilon(1e-12));
 }
+
+TEST_CASE("a path evaluated into the arrays of an earlier one is the path evaluated afresh", "[animation][path]")
+{
+    ControlPoints long_path;
+    for (int k = 0; k < 40; ++k)
+        long_path.push_back({{std::sin(k * 0.9), k * 2.0, std::cos(k * 0.7)}, {0.2, 0, 0, 0.5}});
+    const ControlPoints short_path{{{0, 0, 0}, {}}, {{0, 3, 5}, {}}, {{0, 7, 1}, {-0.5, 0, 0, -1}}};
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        const PathSettings settings{{}, 16, 7, spacing};
+        EvaluatedPath reused;
+        evaluate_path(long_path, settings, reused); // large arrays first, then a short path into them
+        evaluate_path(short_path, settings, reused);
+        const EvaluatedPath fresh = evaluate_path(short_path, settings);
+        CHECK(reused.curve.points == fresh.curve.points);
+        CHECK(reused.curve.chord_length == fresh.curve.chord_length);
+        REQUIRE(reused.inbetweens.size() == fresh.inbetweens.size());
+        for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j) {
+            CHECK(reused.inbetweens[j].position == fresh.inbetweens[j].position);
+            CHECK(reused.inbetweens[j].sample_index == fresh.inbetweens[j].sample_index);
+        }
+        CHECK(reused.span_timings.size() == fresh.span_timings.size());
+        CHECK(reused.frames_freeze == fresh.frames_freeze);
+    }
+}

@@ -75,5 +75,8 @@ struct EvaluatedPath {
 // acceleration to [-1, 1] (limits::staff_value; see kb_segments and acceleration_spans), at least
 // one sample per segment, no negative in-between count.
 EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings);
+// The same into `path`, whose arrays keep their room: an editor that evaluates a long path at
+// every key neither allocates nor faults in the pages of millions of samples again.
+void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
 
 } // namespace apcs

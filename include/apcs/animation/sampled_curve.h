@@ -24,5 +24,7 @@ struct SampledCurve {
 
 // samples_per_segment is clamped to at least 1.
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment);
+// The same into `curve`, whose arrays keep their room.
+void sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment, SampledCurve& curve);
 
 } // namespace apcs
