@@ -104,7 +104,7 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
-        draw_world_polyline(inside, content.path->curve.points, view);
+        draw_world_curve(inside, content.path->segments, content.path->curve, view);
         draw_ani_path(screen, *content.path, view);
         if (content.tangent_scale) {
             draw_tangent_arrows(screen, inside, content.path->segments, view, *content.tangent_scale);

@@ -1,5 +1,8 @@
 #include "apcs/session/world_drawing.h"
 
+#include <algorithm>
+#include <array>
+
 namespace apcs {
 
 ViewScene& ViewScene::add(std::span<const Vec3> points)
@@ -50,6 +53,35 @@ void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const
             continue;
         painter.styled_line(from, to, style, phase);
         from = to;
+    }
+}
+
+void draw_world_curve(Painter& painter, std::span<const HermiteSegment> segments, const SampledCurve& curve,
+                      const ViewTransform& view, LineStyle style)
+{
+    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
+    if (segments.empty() || curve.points.size() != segments.size() * per_segment + 1) {
+        draw_world_polyline(painter, curve.points, view, style);
+        return;
+    }
+    PixelPoint from = view.to_device(curve.points.front()).rounded();
+    int phase = 0;
+    for (std::size_t s = 0; s < segments.size(); ++s) {
+        const HermiteSegment& segment = segments[s];
+        if (phase > 0) {
+            const std::array<Vec3, 4> hull{segment.start, segment.start + segment.start_tangent * (1.0 / 3.0),
+                                           segment.end - segment.end_tangent * (1.0 / 3.0), segment.end};
+            if (std::all_of(hull.begin(), hull.end(),
+                            [&](const Vec3& point) { return view.to_device(point).rounded() == from; }))
+                continue;
+        }
+        for (std::size_t j = 1; j <= per_segment; ++j) {
+            const PixelPoint to = view.to_device(curve.points[s * per_segment + j]).rounded();
+            if (to == from && phase > 0)
+                continue;
+            painter.styled_line(from, to, style, phase);
+            from = to;
+        }
     }
 }
 

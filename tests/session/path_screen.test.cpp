@@ -177,3 +177,31 @@ TEST_CASE("moving acceleration from 0 to +1 moves the in-between marks on screen
         moved += std::find(still.begin(), still.end(), cell) == still.end() ? 1 : 0;
     REQUIRE(moved >= static_cast<int>(still.size()) / 2);
 }
+
+TEST_CASE("a long curve drawn segment by segment is pixel for pixel its samples drawn as a polyline",
+          "[session][drawing]")
+{
+    // 3000 control points in a small space: most segments fall on a pixel or two, and are passed
+    // over by their hull; the picture must not change, dashes included.
+    ControlPoints points;
+    for (int k = 0; k < 3000; ++k)
+        points.push_back({{std::sin(k * 0.37) * 3.0, std::cos(k * 0.21) * 2.0 + k * 0.01, std::sin(k * 0.05)}, {}});
+    const EvaluatedPath path = evaluate_path(points, PathSettings{});
+    const ViewTransform view = ViewScene().add(path.curve.points).fit({30, 40}, layout::drawing_area);
+    for (const LineStyle style : {LineStyle::solid, LineStyle::dashed, LineStyle::dotted}) {
+        CAPTURE(static_cast<int>(style));
+        Bitmap by_samples;
+        Bitmap by_segments;
+        std::vector<Stroke> sample_strokes;
+        std::vector<Stroke> segment_strokes;
+        Painter samples_painter(by_samples);
+        samples_painter.record_into(sample_strokes);
+        Painter segments_painter(by_segments);
+        segments_painter.record_into(segment_strokes);
+        draw_world_polyline(samples_painter, path.curve.points, view, style);
+        draw_world_curve(segments_painter, path.segments, path.curve, view, style);
+        REQUIRE(by_segments == by_samples);
+        REQUIRE(by_samples.lit_count() > 1000);
+        REQUIRE(segment_strokes.size() == sample_strokes.size());
+    }
+}

@@ -2,6 +2,8 @@
 
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/hermite.h"
+#include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/painter.h"
 
@@ -29,5 +31,13 @@ private:
 // Projects a world polyline through `view` and strokes it; a polyline of one point is one pixel.
 void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view,
                          LineStyle style = LineStyle::solid);
+
+// A sampled KB curve, drawn as draw_world_polyline draws its samples, except that a segment whose
+// Bézier control points (P0, P0 + T0/3, P1 − T1/3, P1) all fall on the pixel where the line
+// stands is passed over without projecting its samples: the segment lies in their hull, a
+// perspective view keeps hulls, and a pixel is convex, so every sample would fall on that pixel
+// and draw nothing. The same picture; for a long path (many segments on one pixel) far less work.
+void draw_world_curve(Painter& painter, std::span<const HermiteSegment> segments, const SampledCurve& curve,
+                      const ViewTransform& view, LineStyle style = LineStyle::solid);
 
 } // namespace apcs
