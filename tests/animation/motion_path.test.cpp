@@ -1,5 +1,7 @@
 #include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/animation/sampled_curve.h"
 
 #include <catch2/catch.hpp>
 
@@ -250,4 +252,25 @@ TEST_CASE("a path evaluated into the arrays of an earlier one is the path evalua
         CHECK(reused.span_timings.size() == fresh.span_timings.size());
         CHECK(reused.frames_freeze == fresh.frames_freeze);
     }
+}
+
+TEST_CASE("a long curve sampled on two cores is the curve sampled in order, to the bit", "[animation][path]")
+{
+    // 10000 segments: past the two-core threshold (8192).
+    ControlPoints points;
+    for (int k = 0; k <= 10000; ++k)
+        points.push_back({{std::sin(k * 0.3), k * 0.5, std::cos(k * 0.11)}, {0.1, -0.2, 0.3, 0}});
+    const std::vector<HermiteSegment> segments = kb_segments(points, {});
+    const SampledCurve curve = sample_curve(segments, 8);
+    const std::vector<HermiteBasis> table = hermite_basis_table(8);
+    std::vector<Vec3> expected_points{segments.front().start};
+    std::vector<double> expected_lengths{0.0};
+    for (const HermiteSegment& segment : segments)
+        for (std::size_t j = 1; j < table.size(); ++j) {
+            const Vec3 point = j + 1 == table.size() ? segment.end : segment.apply(table[j]);
+            expected_lengths.push_back(expected_lengths.back() + distance(expected_points.back(), point));
+            expected_points.push_back(point);
+        }
+    REQUIRE(curve.points == expected_points);
+    REQUIRE(curve.chord_length == expected_lengths);
 }

@@ -41,7 +41,7 @@ private:
     void handle_line(std::string_view content);
     void check_trailer(std::string_view bytes);
 
-    const std::string& m_file_name;
+    std::string m_file_name; // a copy: a caller may pass a temporary
     DataLineHandler m_handle;
     std::string m_pending; // the unfinished line
     bool m_bom_decided = false;
