@@ -6,6 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include <array>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <cmath>
@@ -57,42 +59,42 @@ void fit_compute(benchmark::State& state)
     state.counters["points_x_frames"] = static_cast<double>(state.range(0) * 14);
 }
 
-void fit_and_write(benchmark::State& state)
+// Fits and writes the in-betweens of `state.range(0)` points each iteration into new files (an
+// unchanged file would only be compared) in a folder of its own, removed at the end.
+void fit_and_write_with(benchmark::State& state, const std::string& name,
+                        const std::function<void(const FitInputs&, const std::filesystem::path&)>& fit_and_write)
 {
     const FitInputs in = inputs(static_cast<std::size_t>(state.range(0)));
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("apcs-bench-" + std::to_string(::getpid()));
+    const std::filesystem::path folder = std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()));
     std::filesystem::create_directories(folder);
     for (auto _ : state) {
-        // New files every time: an unchanged file would only be compared.
         state.PauseTiming();
         for (const auto& entry : std::filesystem::directory_iterator(folder))
             std::filesystem::remove(entry.path());
         state.ResumeTiming();
-        const FrameSequence frames = fit_key_frames(in.keys, in.first, in.last);
-        benchmark::DoNotOptimize(write_inbetween_files(frames, in.keys.key1, folder, KeyFileGuard{}));
+        fit_and_write(in, folder);
     }
     std::filesystem::remove_all(folder);
     state.SetItemsProcessed(state.iterations() * state.range(0) * 14);
+}
+
+void fit_and_write(benchmark::State& state)
+{
+    fit_and_write_with(state, "apcs-bench-", [](const FitInputs& in, const std::filesystem::path& folder) {
+        const FrameSequence frames = fit_key_frames(in.keys, in.first, in.last);
+        benchmark::DoNotOptimize(write_inbetween_files(frames, in.keys.key1, folder, KeyFileGuard{}));
+    });
 }
 
 // What apcs fit does without --print or pictures: each in-between computed, formatted and
 // written a chunk at a time, no frame held.
 void fit_streamed_and_written(benchmark::State& state)
 {
-    const FitInputs in = inputs(static_cast<std::size_t>(state.range(0)));
-    const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("apcs-bench-s" + std::to_string(::getpid()));
-    std::filesystem::create_directories(folder);
-    for (auto _ : state) {
-        state.PauseTiming();
-        for (const auto& entry : std::filesystem::directory_iterator(folder))
-            std::filesystem::remove(entry.path());
-        state.ResumeTiming();
+    fit_and_write_with(state, "apcs-bench-s", [](const FitInputs& in, const std::filesystem::path& folder) {
         std::array<std::vector<Vec3>, 2> storage;
         const SurfaceFitter fitter = key_frames_fitter(in.keys, in.first, in.last, storage);
         benchmark::DoNotOptimize(write_inbetween_files(fitter, in.keys.key1, folder, KeyFileGuard{}));
-    }
-    std::filesystem::remove_all(folder);
-    state.SetItemsProcessed(state.iterations() * state.range(0) * 14);
+    });
 }
 
 } // namespace

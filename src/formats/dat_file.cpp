@@ -62,7 +62,7 @@ public:
     }
 
     Expected<DatFile> parse(std::string_view text);
-    Expected<Graphic> parse_graphic(std::string_view text);
+    // Only for a parser made with positions_only.
     Expected<Graphic> parse_graphic_pieces(std::size_t line_count, const TextPieces& read);
 
 private:
@@ -107,10 +107,20 @@ private:
     std::size_t m_text_lines = 0;
 };
 
+// A whole text as one piece, and the line count that sizes its points.
+std::size_t line_count_of(std::string_view text)
+{
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
+}
+
+TextPieces whole(std::string_view text)
+{
+    return [text](const TextPieceSink& sink) { return sink(text); };
+}
+
 std::optional<Diagnostic> DatParser::parse_all(std::string_view text)
 {
-    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-    return parse_pieces(lines, [text](const TextPieceSink& sink) { return sink(text); });
+    return parse_pieces(line_count_of(text), whole(text));
 }
 
 std::optional<Diagnostic> DatParser::parse_pieces(std::size_t line_count, const TextPieces& read)
@@ -136,30 +146,14 @@ Expected<DatFile> DatParser::parse(std::string_view text)
     return std::move(m_file);
 }
 
-Expected<Graphic> DatParser::parse_graphic(std::string_view text)
-{
-    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) + 1;
-    return parse_graphic_pieces(lines, [text](const TextPieceSink& sink) { return sink(text); });
-}
-
 Expected<Graphic> DatParser::parse_graphic_pieces(std::size_t line_count, const TextPieces& read)
 {
     if (auto problem = parse_pieces(line_count, read))
         return *problem;
     Graphic graphic;
     graphic.parts.reserve(m_file.parts.size());
-    for (std::size_t i = 0; i < m_file.parts.size(); ++i) {
-        DatPart& part = m_file.parts[i];
-        std::vector<Vec3> points;
-        if (m_positions_only) {
-            points = std::move(m_positions[i]);
-        } else {
-            points.reserve(part.points.size());
-            for (const DatPoint& point : part.points)
-                points.push_back(point.position);
-        }
-        graphic.parts.push_back({std::move(part.name), part.closure, std::move(points)});
-    }
+    for (std::size_t i = 0; i < m_file.parts.size(); ++i)
+        graphic.parts.push_back({std::move(m_file.parts[i].name), m_file.parts[i].closure, std::move(m_positions[i])});
     return graphic;
 }
 
@@ -333,7 +327,7 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 
 Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file_name, std::size_t minimum_points)
 {
-    return DatParser(file_name, minimum_points, true).parse_graphic(text);
+    return DatParser(file_name, minimum_points, true).parse_graphic_pieces(line_count_of(text), whole(text));
 }
 
 Expected<Graphic> parse_key_frame_pieces(const std::string& file_name, std::size_t line_count, const TextPieces& read,

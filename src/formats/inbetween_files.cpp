@@ -7,18 +7,44 @@
 #include "apcs/formats/text_fields.h"
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 
 namespace apcs {
+
+namespace {
+
+// In-betweens 1 … count, each made a chunk of points at a time by points_of(frame, first, out),
+// headed and formatted with `decimals`, written one file per core.
+Expected<std::vector<std::filesystem::path>>
+write_inbetweens(std::size_t count, std::size_t point_count, int decimals, const Graphic& structure,
+                 const std::function<void(std::size_t frame, std::size_t first, std::span<Vec3> out)>& points_of,
+                 const std::filesystem::path& folder, const KeyFileGuard& guard)
+{
+    const auto write_frame = [&](std::size_t index, const ContentSink& sink) {
+        const std::size_t frame = index + 1;
+        if (!sink(inbetween_heading(frame, count)))
+            return;
+        const auto points_at = [&points_of, frame](std::size_t first, std::span<Vec3> out) { points_of(frame, first, out); };
+        format_graphic_in_chunks(structure, point_count, points_at, decimals, sink);
+    };
+    return write_numbered_files(
+        folder, count, [](std::size_t index) { return inbetween_file_name(index + 1); }, write_frame, guard,
+        "the in-between files");
+}
+
+} // namespace
 
 Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames, const Graphic& structure,
                                                                    const std::filesystem::path& folder,
                                                                    const KeyFileGuard& guard)
 {
-    return write_numbered_files(
-        folder, inbetween_count(frames), [](std::size_t index) { return inbetween_file_name(index + 1); },
-        [&](std::size_t index) { return inbetween_file(frames, structure, index + 1).content; }, guard,
-        "the in-between files");
+    const auto copy_points = [&frames](std::size_t frame, std::size_t first, std::span<Vec3> out) {
+        const std::span<const Vec3> points = frames.frame(frame).subspan(first, out.size());
+        std::copy(points.begin(), points.end(), out.begin());
+    };
+    return write_inbetweens(inbetween_count(frames), frames.points_per_frame(), inbetween_decimals(frames), structure,
+                            copy_points, folder, guard);
 }
 
 Expected<std::vector<std::filesystem::path>> write_inbetween_files(const SurfaceFitter& fitter, const Graphic& structure,
@@ -26,17 +52,11 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const Surface
                                                                    const KeyFileGuard& guard)
 {
     const std::size_t count = fitter.frame_count() < 2 ? 0 : fitter.frame_count() - 2;
-    const int decimals = inbetween_decimals(fitter.key1(), fitter.key2());
-    const auto write_frame = [&](std::size_t index, const ContentSink& sink) {
-        const std::size_t frame = index + 1;
-        if (!sink(inbetween_heading(frame, count)))
-            return;
-        const auto points_at = [&fitter, frame](std::size_t first, std::span<Vec3> out) { fitter.fit(frame, first, out); };
-        format_graphic_in_chunks(structure, fitter.point_count(), points_at, decimals, sink);
+    const auto fit_points = [&fitter](std::size_t frame, std::size_t first, std::span<Vec3> out) {
+        fitter.fit(frame, first, out);
     };
-    return write_numbered_files(
-        folder, count, [](std::size_t index) { return inbetween_file_name(index + 1); }, write_frame, guard,
-        "the in-between files");
+    return write_inbetweens(count, fitter.point_count(), inbetween_decimals(fitter.key1(), fitter.key2()), structure,
+                            fit_points, folder, guard);
 }
 
 namespace {
