@@ -158,33 +158,13 @@ public:
 
     Expected<WriteResult> finish(Durability durability)
     {
-        if (!m_problem && !m_differs && static_cast<std::uintmax_t>(m_target.status.st_size) == m_same)
-            return WriteResult{WriteOutcome::unchanged, {}};
-        if (!m_problem && m_temporary.empty())
-            start_temporary();
-        if (!m_problem && durability == Durability::each_file && ::fsync(m_file.get()) != 0)
-            abandon("cannot flush to disk");
-        // At a barrier later: a large file's writeback starts now, while the next files are made,
-        // so the barrier finds little left to wait for (12 in-betweens of 6 MB: 25 → 3 ms). Not
-        // for small files: 10^5 of them (a split) would each cost a call and a small disk write.
-        if (!m_problem && durability == Durability::at_barrier && m_size >= (std::uintmax_t{1} << 20))
-            ::sync_file_range(m_file.get(), 0, 0, SYNC_FILE_RANGE_WRITE);
-        if (!m_problem && m_target.exists &&
-            (m_target.status.st_uid != ::geteuid() || m_target.status.st_gid != ::getegid())) {
-            // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes
-            // the user's, as any new file would.
-            [[maybe_unused]] const int ignored = ::fchown(m_file.get(), m_target.status.st_uid, m_target.status.st_gid);
-        }
-        // A new file is 0644; a replaced one keeps its mode.
-        const mode_t mode = m_target.exists ? (m_target.status.st_mode & 07777) : 0644;
-        if (!m_problem && ::fchmod(m_file.get(), mode) != 0)
-            abandon("cannot set permissions");
-        if (!m_problem && m_file.close() != 0)
-            abandon("cannot close");
         if (m_problem)
             return *m_problem;
+        if (!m_differs && static_cast<std::uintmax_t>(m_target.status.st_size) == m_same)
+            return WriteResult{WriteOutcome::unchanged, {}};
         WriteResult result{m_target.exists ? WriteOutcome::replaced : WriteOutcome::created, {}};
-        if (m_target.exists && !keep_old_file(result.backup))
+        if ((m_temporary.empty() && !start_temporary()) || !complete_temporary(durability) ||
+            (m_target.exists && !keep_old_file(result.backup)))
             return *m_problem;
         if (::rename(m_temporary.c_str(), m_target.path.c_str()) != 0) {
             abandon("cannot replace the file");
@@ -231,6 +211,31 @@ private:
         // Known until it is renamed or removed: a signal meanwhile removes it.
         m_unfinished.emplace(m_temporary);
         return copy_same_part();
+    }
+
+    // The temporary file's content on its way to the disk, its owner and mode those of the file it
+    // replaces, and closed.
+    bool complete_temporary(Durability durability)
+    {
+        if (durability == Durability::each_file && ::fsync(m_file.get()) != 0)
+            return abandon("cannot flush to disk");
+        // At a barrier later: a large file's writeback starts now, while the next files are made,
+        // so the barrier finds little left to wait for (12 in-betweens of 6 MB: 25 → 3 ms). Not
+        // for small files: 10^5 of them (a split) would each cost a call and a small disk write.
+        if (durability == Durability::at_barrier && m_same + m_size >= (std::uintmax_t{1} << 20))
+            ::sync_file_range(m_file.get(), 0, 0, SYNC_FILE_RANGE_WRITE);
+        if (m_target.exists && (m_target.status.st_uid != ::geteuid() || m_target.status.st_gid != ::getegid())) {
+            // Allowed to root, and to the owner for a group of theirs; otherwise the file becomes
+            // the user's, as any new file would.
+            [[maybe_unused]] const int ignored = ::fchown(m_file.get(), m_target.status.st_uid, m_target.status.st_gid);
+        }
+        // A new file is 0644; a replaced one keeps its mode.
+        const mode_t mode = m_target.exists ? (m_target.status.st_mode & 07777) : 0644;
+        if (::fchmod(m_file.get(), mode) != 0)
+            return abandon("cannot set permissions");
+        if (m_file.close() != 0)
+            return abandon("cannot close");
+        return true;
     }
 
     // The part of the old file the new content began with, copied into the temporary file.
@@ -293,7 +298,7 @@ private:
     const KeyFileGuard* m_inputs;
     FileDescriptor m_old;
     std::uintmax_t m_same = 0; // bytes of the new content equal to the old file's first bytes
-    std::uintmax_t m_size = 0; // bytes of the new content written after them
+    std::uintmax_t m_size = 0; // bytes of the new content written after them (the file: both)
     bool m_differs;
     FileDescriptor m_file{-1};
     std::string m_temporary;
