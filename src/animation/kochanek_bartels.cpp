@@ -2,6 +2,8 @@
 
 #include "apcs/animation/input_limits.h"
 
+#include <cassert>
+
 namespace apcs {
 
 namespace {
@@ -33,27 +35,32 @@ Vec3 outgoing_tangent(const Vec3& previous, const Vec3& current, const Vec3& nex
     return ((1 - t) * (1 + c) * (1 + b) * (current - previous) + (1 - t) * (1 - c) * (1 - b) * (next - current)) * 0.5;
 }
 
+HermiteSegment kb_segment(std::span<const ControlPoint> points, EndSlopes slopes, std::size_t k)
+{
+    assert(k + 1 < points.size());
+    const std::size_t last = points.size() - 1;
+    const Vec3& start = points[k].position;
+    const Vec3& end = points[k + 1].position;
+    const Vec3 start_tangent = k == 0 ? limits::end_slope.clamp(slopes.start) * (end - start)
+                                      : outgoing_tangent(points[k - 1].position, start, end, points[k].staff);
+    const Vec3 end_tangent = k + 1 == last ? limits::end_slope.clamp(slopes.end) * (end - start)
+                                           : incoming_tangent(start, end, points[k + 2].position, points[k + 1].staff);
+    return {start, end, start_tangent, end_tangent};
+}
+
 std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, EndSlopes slopes)
 {
     std::vector<HermiteSegment> segments;
-    if (points.size() < 2)
-        return segments;
-    const std::size_t last = points.size() - 1;
-    const double start_slope = limits::end_slope.clamp(slopes.start);
-    const double end_slope = limits::end_slope.clamp(slopes.end);
-    segments.reserve(last);
-    for (std::size_t k = 0; k < last; ++k) {
-        const Vec3& start = points[k].position;
-        const Vec3& end = points[k + 1].position;
-        const Vec3 start_tangent = k == 0
-            ? start_slope * (end - start)
-            : outgoing_tangent(points[k - 1].position, start, end, points[k].staff);
-        const Vec3 end_tangent = k + 1 == last
-            ? end_slope * (end - start)
-            : incoming_tangent(start, end, points[k + 2].position, points[k + 1].staff);
-        segments.push_back({start, end, start_tangent, end_tangent});
-    }
+    kb_segments(points, slopes, segments);
     return segments;
+}
+
+void kb_segments(std::span<const ControlPoint> points, EndSlopes slopes, std::vector<HermiteSegment>& segments)
+{
+    const std::size_t count = points.size() < 2 ? 0 : points.size() - 1;
+    segments.resize(count);
+    for (std::size_t k = 0; k < count; ++k)
+        segments[k] = kb_segment(points, slopes, k);
 }
 
 PointTangents tangents_at(std::span<const HermiteSegment> segments, std::size_t point)

@@ -57,18 +57,6 @@ std::vector<int> share_by_largest_remainder(std::span<const double> weights, int
 
 namespace {
 
-std::size_t nearest_sample(const std::vector<double>& chord_length, double target)
-{
-    const auto above = std::lower_bound(chord_length.begin(), chord_length.end(), target);
-    if (above == chord_length.begin())
-        return 0;
-    if (above == chord_length.end())
-        return chord_length.size() - 1;
-    const auto below = above - 1;
-    const bool below_is_nearer = target - *below <= *above - target;
-    return static_cast<std::size_t>((below_is_nearer ? below : above) - chord_length.begin());
-}
-
 // Target distances of one span's in-betweens, measured from the span's start (SPEC §4.3).
 std::vector<double> span_targets(double span_start, double span_length, int count, double acceleration)
 {
@@ -92,15 +80,19 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 
 void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
 {
-    path.segments = kb_segments(points, settings.slopes);
+    kb_segments(points, settings.slopes, path.segments);
     sample_curve(path.segments, settings.samples_per_segment, path.curve);
+    place_inbetweens(points, settings, path);
+}
+
+void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
+{
     path.inbetweens.clear();
     path.span_timings.clear();
     path.frames_freeze = false;
     if (path.segments.empty())
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
-    const std::size_t samples = static_cast<std::size_t>(path.curve.samples_per_segment);
 
     const std::vector<AccelerationSpan> spans = acceleration_spans(points);
     const bool exact = settings.spacing == Spacing::exact;
@@ -108,7 +100,7 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
     // Distance from the curve's start to control point k, in the measure the spacing uses.
     const auto boundary = [&](std::size_t control_point) {
         return exact ? arc_table.length_to_segment_start(control_point)
-                     : path.curve.chord_length[control_point * samples];
+                     : path.curve.length_to_point[control_point];
     };
     const double total = exact ? arc_table.total_length() : path.curve.total_length();
 
@@ -140,11 +132,11 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
                 shown.position = arc_table.point_at(arc_table.parameter_at(target));
                 shown.arc_fraction = target / total;
                 const double chord_target = shown.arc_fraction * path.curve.total_length();
-                shown.sample_index = nearest_sample(path.curve.chord_length, chord_target);
+                shown.sample_index = path.curve.nearest_sample(chord_target);
             } else {
-                shown.sample_index = nearest_sample(path.curve.chord_length, target);
+                shown.sample_index = path.curve.nearest_sample(target);
                 shown.position = path.curve.points[shown.sample_index];
-                shown.arc_fraction = path.curve.chord_length[shown.sample_index] / total;
+                shown.arc_fraction = path.curve.chord_length(shown.sample_index) / total;
             }
             path.inbetweens.push_back(shown);
         }
@@ -154,5 +146,34 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
         for (std::size_t j = 1; j < path.inbetweens.size(); ++j)
             path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
 }
+
+void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                     std::size_t first_changed, std::size_t last_changed)
+{
+    const bool same_shape_of_arrays = points.size() >= 2 && path.segments.size() == points.size() - 1 &&
+                                      path.curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
+                                      path.curve.segment_length.size() == path.segments.size();
+    if (!same_shape_of_arrays || first_changed > last_changed) {
+        evaluate_path(points, settings, path);
+        return;
+    }
+    // Control point k's tangents shape segments k − 1 and k.
+    const std::size_t first = first_changed == 0 ? 0 : first_changed - 1;
+    const std::size_t end = std::min(last_changed + 1, path.segments.size());
+    std::size_t changed_first = end;
+    std::size_t changed_end = first;
+    for (std::size_t s = first; s < end; ++s) {
+        const HermiteSegment segment = kb_segment(points, settings.slopes, s);
+        if (segment == path.segments[s])
+            continue;
+        path.segments[s] = segment;
+        changed_first = std::min(changed_first, s);
+        changed_end = s + 1;
+    }
+    if (changed_first < changed_end)
+        resample_segments(path.segments, changed_first, changed_end, path.curve);
+    place_inbetweens(points, settings, path);
+}
+
 
 } // namespace apcs

@@ -182,8 +182,20 @@ void PathEditor::set_staff_value(double value)
     apply_staff_to_region(m_setup.points, m_region, m_staff);
     if (m_staff == change.staff && staff_runs(m_setup.points, m_region) == change.points_before)
         return;
+    const bool shape_changed = runs_change_shape(change.points_before, m_staff);
     m_history.push_back(std::move(change));
-    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
+    reevaluate_region(m_region, shape_changed);
+}
+
+// A key changes the staff values of a region: only the segments their tangents shape are sampled
+// again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
+// interactive).
+void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
+{
+    if (!shape_changed)
+        place_inbetweens(m_setup.points, m_setup.settings, m_evaluated);
+    else
+        reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -249,7 +261,6 @@ void PathEditor::undo()
     m_history.pop_back();
     m_problem.clear();
     std::visit([this](const auto& last) { undo_change(last); }, change);
-    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
     m_notice += "; " + changes_text(m_history.size()) + " left to undo";
     m_log.log(m_notice);
 }
@@ -257,7 +268,9 @@ void PathEditor::undo()
 // Back to the staff line the change was made on, with the staff as it was.
 void PathEditor::undo_change(const StaffChange& change)
 {
+    const bool shape_changed = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff);
     restore_staff_runs(m_setup.points, change.region, change.points_before);
+    reevaluate_region(change.region, shape_changed);
     m_region = change.region;
     m_staff = change.staff;
     m_line = change.line;
@@ -271,6 +284,7 @@ void PathEditor::undo_change(const StaffChange& change)
 void PathEditor::undo_change(const WaypointChange& change)
 {
     revert_change(m_setup.points, m_origins, change);
+    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;

@@ -32,8 +32,8 @@ std::vector<double> positions_along(const EvaluatedPath& path)
 double widest_sample_gap(const SampledCurve& curve)
 {
     double widest = 0.0;
-    for (std::size_t i = 1; i < curve.chord_length.size(); ++i)
-        widest = std::max(widest, curve.chord_length[i] - curve.chord_length[i - 1]);
+    for (std::size_t i = 1; i < curve.points.size(); ++i)
+        widest = std::max(widest, curve.chord_length(i) - curve.chord_length(i - 1));
     return widest;
 }
 
@@ -122,7 +122,7 @@ TEST_CASE("two spans with different accelerations share the in-betweens by lengt
     REQUIRE(spans[1].last_point == 3);
 
     const EvaluatedPath path = evaluate_path(points, {{}, 400, 12, Spacing::nearest});
-    const double boundary = path.curve.chord_length[2 * 400];
+    const double boundary = path.curve.length_to_point[2];
     const double length = path.curve.total_length();
     const std::vector<double> distances = positions_along(path);
     const auto in_first = static_cast<std::size_t>(std::count_if(distances.begin(), distances.end(),
@@ -243,7 +243,8 @@ TEST_CASE("a path evaluated into the arrays of an earlier one is the path evalua
         evaluate_path(short_path, settings, reused);
         const EvaluatedPath fresh = evaluate_path(short_path, settings);
         CHECK(reused.curve.points == fresh.curve.points);
-        CHECK(reused.curve.chord_length == fresh.curve.chord_length);
+        CHECK(reused.curve.length_in_segment == fresh.curve.length_in_segment);
+        CHECK(reused.curve.length_to_point == fresh.curve.length_to_point);
         REQUIRE(reused.inbetweens.size() == fresh.inbetweens.size());
         for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j) {
             CHECK(reused.inbetweens[j].position == fresh.inbetweens[j].position);
@@ -264,13 +265,83 @@ TEST_CASE("a long curve sampled on two cores is the curve sampled in order, to t
     const SampledCurve curve = sample_curve(segments, 8);
     const std::vector<HermiteBasis> table = hermite_basis_table(8);
     std::vector<Vec3> expected_points{segments.front().start};
-    std::vector<double> expected_lengths{0.0};
-    for (const HermiteSegment& segment : segments)
+    std::vector<double> expected_in_segment{0.0};
+    std::vector<double> expected_to_point{0.0};
+    for (const HermiteSegment& segment : segments) {
+        double length = 0.0;
         for (std::size_t j = 1; j < table.size(); ++j) {
             const Vec3 point = j + 1 == table.size() ? segment.end : segment.apply(table[j]);
-            expected_lengths.push_back(expected_lengths.back() + distance(expected_points.back(), point));
+            length += distance(expected_points.back(), point);
+            expected_in_segment.push_back(j + 1 == table.size() ? 0.0 : length);
             expected_points.push_back(point);
         }
+        expected_to_point.push_back(expected_to_point.back() + length);
+    }
     REQUIRE(curve.points == expected_points);
-    REQUIRE(curve.chord_length == expected_lengths);
+    REQUIRE(curve.length_in_segment == expected_in_segment);
+    REQUIRE(curve.length_to_point == expected_to_point);
+}
+
+TEST_CASE("the nearest sample is the one nearest in chord length, the earlier on a tie", "[animation][path]")
+{
+    // Two straight segments of lengths 4 and 2 (every tangent 0: end slopes 0, tension 1 between),
+    // two samples each, at their middles: chord lengths 0, 2, 4, 5, 6.
+    const ControlPoints points{{{0, 0, 0}, {}}, {{4, 0, 0}, {1, 0, 0, 0}}, {{4, 2, 0}, {}}};
+    const SampledCurve curve = sample_curve(kb_segments(points, {0, 0}), 2);
+    REQUIRE(curve.points.size() == 5);
+    std::vector<double> lengths;
+    for (std::size_t i = 0; i < curve.points.size(); ++i)
+        lengths.push_back(curve.chord_length(i));
+    REQUIRE(lengths == std::vector<double>{0, 2, 4, 5, 6});
+    CHECK(curve.nearest_sample(-1.0) == 0);
+    CHECK(curve.nearest_sample(0.9) == 0);
+    CHECK(curve.nearest_sample(1.0) == 0); // a tie: the earlier
+    CHECK(curve.nearest_sample(1.1) == 1);
+    CHECK(curve.nearest_sample(4.0) == 2);
+    CHECK(curve.nearest_sample(4.5) == 2);
+    CHECK(curve.nearest_sample(4.6) == 3);
+    CHECK(curve.nearest_sample(5.9) == 4);
+    CHECK(curve.nearest_sample(7.0) == 4);
+}
+
+TEST_CASE("a path re-evaluated after a change to some control points is the path evaluated afresh, to the bit",
+          "[animation][path]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 12000; ++k) // past the two-core threshold, for a global change
+        points.push_back({{std::sin(k * 0.9), k * 2.0, std::cos(k * 0.7)}, {0.2, 0, 0, 0.5}});
+    const auto same = [](const EvaluatedPath& left, const EvaluatedPath& right) {
+        REQUIRE(left.segments == right.segments);
+        REQUIRE(left.curve.points == right.curve.points);
+        REQUIRE(left.curve.length_in_segment == right.curve.length_in_segment);
+        REQUIRE(left.curve.segment_length == right.curve.segment_length);
+        REQUIRE(left.curve.length_to_point == right.curve.length_to_point);
+        REQUIRE(left.inbetweens.size() == right.inbetweens.size());
+        for (std::size_t j = 0; j < left.inbetweens.size(); ++j) {
+            REQUIRE(left.inbetweens[j].position == right.inbetweens[j].position);
+            REQUIRE(left.inbetweens[j].sample_index == right.inbetweens[j].sample_index);
+            REQUIRE(left.inbetweens[j].arc_fraction == right.inbetweens[j].arc_fraction);
+        }
+        REQUIRE(left.span_timings.size() == right.span_timings.size());
+        REQUIRE(left.frames_freeze == right.frames_freeze);
+    };
+    struct Change {
+        std::size_t first;
+        std::size_t last;
+        StaffValues staff;
+    };
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        const PathSettings settings{{0.5, 1}, 8, 12, spacing};
+        EvaluatedPath path = evaluate_path(points, settings);
+        ControlPoints changed = points;
+        for (const Change& change : {Change{0, 0, {0.5, 0, 0, 0.5}}, Change{5, 9, {-0.3, 0.4, 0.1, 0.5}},
+                                     Change{11999, 11999, {0.9, 0, 0, 0.5}}, Change{100, 4000, {0.2, 0, 0, -0.7}},
+                                     Change{0, 11999, {-0.1, 0.2, -0.3, 0.1}}}) {
+            CAPTURE(change.first, change.last);
+            for (std::size_t k = change.first; k <= change.last; ++k)
+                changed[k].staff = change.staff;
+            reevaluate_path(changed, settings, path, change.first, change.last);
+            same(path, evaluate_path(changed, settings));
+        }
+    }
 }

@@ -44,6 +44,44 @@ TEST_CASE("the path editor takes the staff line by line and is accepted when not
                                                   "BIAS -0.05", "ACCELERATION +0.00"});
 }
 
+TEST_CASE("each staff key leaves the path as evaluating its control points afresh gives, undo too", "[session][editor]")
+{
+    // Control points 2 and 3 differ in tension and continuity: the first key of a region on them,
+    // even on the ACCELERATION line (Enter past the others), gives both the first one's shape.
+    PathEditor::Setup setup = apcs::test::path_setup(
+        {Vec3{0, 0, 0}, Vec3{3, -4, 5}, Vec3{1, 1, 7}, Vec3{0, 0, 10}, Vec3{2, 3, 12}, Vec3{5, 1, 14}},
+        {{1, 1}, 8, 5, Spacing::nearest});
+    setup.points[2].staff = {0.6, -0.4, 0, 0};
+    const PathSettings settings = setup.settings;
+    LogLines log;
+    PathEditor editor(std::move(setup), log);
+    const auto matches_fresh = [&](const char* after) {
+        CAPTURE(after);
+        const EvaluatedPath fresh = evaluate_path(editor.points(), settings);
+        REQUIRE(editor.evaluated().segments == fresh.segments);
+        REQUIRE(editor.evaluated().curve.points == fresh.curve.points);
+        REQUIRE(editor.evaluated().curve.length_to_point == fresh.curve.length_to_point);
+        REQUIRE(editor.evaluated().inbetweens.size() == fresh.inbetweens.size());
+        for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j)
+            REQUIRE(editor.evaluated().inbetweens[j].position == fresh.inbetweens[j].position);
+    };
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{1}, cmd::Accept{}, cmd::ArrowMove{1},
+                   cmd::ArrowMove{1}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}});
+    REQUIRE(message_of(editor.view()) == "way1.dat: ACCELERATION  control points 2 to 4 of 6");
+    apply(editor, {cmd::StaffStep{+4}});
+    REQUIRE(editor.points()[2].staff == StaffValues{0, 0, 0, 0.2});
+    matches_fresh("the first key on ACCELERATION, which gave point 3 point 2's tension and continuity");
+    apply(editor, {cmd::StaffStep{+4}});
+    matches_fresh("a key on ACCELERATION alone");
+    apply(editor, {cmd::Undo{}});
+    matches_fresh("undoing the second key");
+    apply(editor, {cmd::Undo{}});
+    REQUIRE(editor.points()[2].staff == StaffValues{0.6, -0.4, 0, 0});
+    matches_fresh("undoing the first key");
+    apply(editor, {cmd::Accept{}, cmd::Yes{}, cmd::ChooseGlobal{}, cmd::StaffStep{-3}});
+    matches_fresh("a global key on TENSION");
+}
+
 TEST_CASE("the region's arrow starts at the first control point and cannot leave the path", "[session][editor]")
 {
     LogLines log;

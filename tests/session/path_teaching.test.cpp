@@ -129,7 +129,7 @@ TEST_CASE("the law graph's ticks are the in-betweens' distances within their spa
         const std::vector<LawTick> ticks = law_ticks(path, 0);
         for (std::size_t j = 0; j < ticks.size(); ++j)
             REQUIRE(ticks[j].distance_fraction ==
-                    Approx(path.curve.chord_length[path.inbetweens[j].sample_index] / path.curve.total_length()));
+                    Approx(path.curve.chord_length(path.inbetweens[j].sample_index) / path.curve.total_length()));
     }
 }
 

@@ -35,5 +35,9 @@ struct StaffRun {
 std::vector<StaffRun> staff_runs(const ControlPoints& points, ControlRegion region);
 // Gives the region's control points back the values `runs` holds (staff_runs of the same region).
 void restore_staff_runs(ControlPoints& points, ControlRegion region, const std::vector<StaffRun>& runs);
+// Whether some run has a tension, continuity or bias other than `shape`'s (each clamped to
+// [-1, 1]): the path's segments change when the region goes from one to the other; an acceleration
+// alone moves only the in-betweens.
+bool runs_change_shape(const std::vector<StaffRun>& runs, const StaffValues& shape);
 
 } // namespace apcs

@@ -39,6 +39,7 @@ struct HermiteSegment {
     }
     constexpr Vec3 point_at(double u) const { return apply(hermite_basis(u)); }
     constexpr Vec3 derivative_at(double u) const { return apply(hermite_basis_derivative(u)); }
+    constexpr bool operator==(const HermiteSegment&) const = default;
 };
 
 } // namespace apcs

@@ -78,5 +78,16 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 // The same into `path`, whose arrays keep their room: an editor that evaluates a long path at
 // every key neither allocates nor faults in the pages of millions of samples again.
 void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
+// `path` was evaluated from `points` with `settings`, and since then only the staff values of
+// control points first_changed … last_changed have changed (not their number or positions): only
+// the segments whose tangents they set are made and sampled again, the lengths after them added
+// up again, and the in-betweens placed anew. An acceleration changes no segment. The result is
+// evaluate_path's, to the bit; arrays of another size are evaluated afresh.
+void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                     std::size_t first_changed, std::size_t last_changed);
+// The shown in-betweens of a path whose segments and curve are made (Cal_INBETWEENS,
+// Decide_Show_Inbetween): the spans share them by length, each places its own by its law. All an
+// acceleration changes: the editor calls it alone for a key on the ACCELERATION line.
+void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
 
 } // namespace apcs

@@ -81,6 +81,7 @@ private:
     Outcome ask_adjusting(const Command& command);
     void start_staff(ControlRegion region);
     void set_staff_value(double value);
+    void reevaluate_region(ControlRegion region, bool shape_changed);
     void update_value_field(const Command& command);
     void open_waypoints();
     void update_waypoints(const Command& command);
