@@ -37,6 +37,24 @@ double widest_sample_gap(const SampledCurve& curve)
     return widest;
 }
 
+// Equal to the bit: segments, samples, lengths, in-betweens and their spans.
+void require_same_path(const EvaluatedPath& left, const EvaluatedPath& right)
+{
+    REQUIRE(left.segments == right.segments);
+    REQUIRE(left.curve.points == right.curve.points);
+    REQUIRE(left.curve.length_in_segment == right.curve.length_in_segment);
+    REQUIRE(left.curve.segment_length == right.curve.segment_length);
+    REQUIRE(left.curve.length_to_point == right.curve.length_to_point);
+    REQUIRE(left.inbetweens.size() == right.inbetweens.size());
+    for (std::size_t j = 0; j < left.inbetweens.size(); ++j) {
+        REQUIRE(left.inbetweens[j].position == right.inbetweens[j].position);
+        REQUIRE(left.inbetweens[j].sample_index == right.inbetweens[j].sample_index);
+        REQUIRE(left.inbetweens[j].arc_fraction == right.inbetweens[j].arc_fraction);
+    }
+    REQUIRE(left.span_timings.size() == right.span_timings.size());
+    REQUIRE(left.frames_freeze == right.frames_freeze);
+}
+
 } // namespace
 
 TEST_CASE("acceleration 0 spaces the in-betweens equally to within one sample", "[animation][acceleration]")
@@ -242,16 +260,7 @@ TEST_CASE("a path evaluated into the arrays of an earlier one is the path evalua
         evaluate_path(long_path, settings, reused); // large arrays first, then a short path into them
         evaluate_path(short_path, settings, reused);
         const EvaluatedPath fresh = evaluate_path(short_path, settings);
-        CHECK(reused.curve.points == fresh.curve.points);
-        CHECK(reused.curve.length_in_segment == fresh.curve.length_in_segment);
-        CHECK(reused.curve.length_to_point == fresh.curve.length_to_point);
-        REQUIRE(reused.inbetweens.size() == fresh.inbetweens.size());
-        for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j) {
-            CHECK(reused.inbetweens[j].position == fresh.inbetweens[j].position);
-            CHECK(reused.inbetweens[j].sample_index == fresh.inbetweens[j].sample_index);
-        }
-        CHECK(reused.span_timings.size() == fresh.span_timings.size());
-        CHECK(reused.frames_freeze == fresh.frames_freeze);
+        require_same_path(reused, fresh);
     }
 }
 
@@ -310,21 +319,6 @@ TEST_CASE("a path re-evaluated after a change to some control points is the path
     ControlPoints points;
     for (int k = 0; k < 12000; ++k) // past the two-core threshold, for a global change
         points.push_back({{std::sin(k * 0.9), k * 2.0, std::cos(k * 0.7)}, {0.2, 0, 0, 0.5}});
-    const auto same = [](const EvaluatedPath& left, const EvaluatedPath& right) {
-        REQUIRE(left.segments == right.segments);
-        REQUIRE(left.curve.points == right.curve.points);
-        REQUIRE(left.curve.length_in_segment == right.curve.length_in_segment);
-        REQUIRE(left.curve.segment_length == right.curve.segment_length);
-        REQUIRE(left.curve.length_to_point == right.curve.length_to_point);
-        REQUIRE(left.inbetweens.size() == right.inbetweens.size());
-        for (std::size_t j = 0; j < left.inbetweens.size(); ++j) {
-            REQUIRE(left.inbetweens[j].position == right.inbetweens[j].position);
-            REQUIRE(left.inbetweens[j].sample_index == right.inbetweens[j].sample_index);
-            REQUIRE(left.inbetweens[j].arc_fraction == right.inbetweens[j].arc_fraction);
-        }
-        REQUIRE(left.span_timings.size() == right.span_timings.size());
-        REQUIRE(left.frames_freeze == right.frames_freeze);
-    };
     struct Change {
         std::size_t first;
         std::size_t last;
@@ -341,7 +335,7 @@ TEST_CASE("a path re-evaluated after a change to some control points is the path
             for (std::size_t k = change.first; k <= change.last; ++k)
                 changed[k].staff = change.staff;
             reevaluate_path(changed, settings, path, change.first, change.last);
-            same(path, evaluate_path(changed, settings));
+            require_same_path(path, evaluate_path(changed, settings));
         }
     }
 }
