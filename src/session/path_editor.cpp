@@ -42,6 +42,8 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     , m_tangent_scale(tangent_arrow_scale(m_setup.points, m_view))
 {
     assert(m_setup.points.size() >= 2);
+    find_moved_points();
+    m_curve_lines.update(m_evaluated.segments, m_evaluated.curve, m_view);
 }
 
 // Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
@@ -50,7 +52,18 @@ void PathEditor::fit_view()
 {
     m_view = fitted_view(m_setup, m_evaluated);
     m_tangent_scale = tangent_arrow_scale(m_setup.points, m_view);
+    find_moved_points();
 }
+
+// After the control points moved, were inserted or deleted: the whole path and its picture anew.
+void PathEditor::evaluate_whole_path()
+{
+    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
+    m_curve_lines.forget_all();
+    find_moved_points();
+}
+
+void PathEditor::find_moved_points() { m_point_runs = control_point_runs(m_setup.points, m_view); }
 
 SessionPhase PathEditor::phase() const { return m_waypoints ? SessionPhase::waypoints : m_phase; }
 
@@ -76,6 +89,13 @@ void PathEditor::show_problem(const std::string& message)
 }
 
 PathEditor::Outcome PathEditor::update(const Command& command)
+{
+    const Outcome outcome = take(command);
+    m_curve_lines.update(m_evaluated.segments, m_evaluated.curve, m_view);
+    return outcome;
+}
+
+PathEditor::Outcome PathEditor::take(const Command& command)
 {
     m_notice.clear();
     if (update_views(command))
@@ -192,10 +212,13 @@ void PathEditor::set_staff_value(double value)
 // interactive).
 void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
 {
-    if (!shape_changed)
+    if (!shape_changed) {
         place_inbetweens(m_setup.points, m_setup.settings, m_evaluated);
-    else
-        reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
+        return;
+    }
+    reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
+    // Control point k's tangents shape segments k − 1 and k.
+    m_curve_lines.forget(region.first == 0 ? 0 : region.first - 1, region.last + 1);
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -284,7 +307,7 @@ void PathEditor::undo_change(const StaffChange& change)
 void PathEditor::undo_change(const WaypointChange& change)
 {
     revert_change(m_setup.points, m_origins, change);
-    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
+    evaluate_whole_path();
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;
@@ -313,6 +336,7 @@ void PathEditor::update_waypoints(const Command& command)
         m_setup.points = m_waypoints->points();
         m_origins = m_waypoints->origins();
         m_evaluated = m_waypoints->evaluated();
+        m_curve_lines.forget_all();
         m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
                    " control points";
     } else {

@@ -28,6 +28,19 @@ ViewScene path_screen_scene(const PathScreenContent& content)
     return scene.add(content.key_frame_polylines);
 }
 
+std::vector<ControlPointRun> control_point_runs(std::span<const ControlPoint> points, const ViewTransform& view)
+{
+    std::vector<ControlPointRun> runs;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const PixelPoint at = view.to_device(points[k].position).rounded();
+        if (!runs.empty() && runs.back().at == at)
+            runs.back().last = k;
+        else
+            runs.push_back({at, k, k});
+    }
+    return runs;
+}
+
 namespace {
 
 void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenContent& content)
@@ -71,12 +84,26 @@ void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const View
 }
 
 // Pre_Draw: every control point marked with an x; those of the picked region in reverse video.
+// Points that share a pixel one after another show one mark (the same mark drawn again changes
+// nothing), split where the region starts or ends.
 void pre_draw(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
 {
-    for (std::size_t k = 0; k < content.control_points.size(); ++k) {
-        const bool picked = content.region && k >= content.region->first && k <= content.region->second;
-        screen.marks.push_back({view.to_device(content.control_points[k].position).rounded(), MarkKind::control_point,
-                                picked ? CellStyle::reverse : CellStyle::plain});
+    std::vector<ControlPointRun> found;
+    std::span<const ControlPointRun> runs = content.control_point_runs;
+    if (runs.empty() && !content.control_points.empty()) {
+        found = control_point_runs(content.control_points, view);
+        runs = found;
+    }
+    for (const ControlPointRun& run : runs) {
+        if (!content.region || run.last < content.region->first || run.first > content.region->second) {
+            screen.marks.push_back({run.at, MarkKind::control_point});
+            continue;
+        }
+        if (run.first < content.region->first)
+            screen.marks.push_back({run.at, MarkKind::control_point});
+        screen.marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse});
+        if (run.last > content.region->second)
+            screen.marks.push_back({run.at, MarkKind::control_point});
     }
 }
 
@@ -104,7 +131,10 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
-        draw_world_curve(inside, content.path->segments, content.path->curve, view);
+        if (content.curve_lines != nullptr)
+            content.curve_lines->draw(inside);
+        else
+            draw_world_curve(inside, content.path->segments, content.path->curve, view);
         draw_ani_path(screen, *content.path, view);
         if (content.tangent_scale) {
             draw_tangent_arrows(screen, inside, content.path->segments, view, *content.tangent_scale);

@@ -1,7 +1,7 @@
 #include "apcs/session/world_drawing.h"
 
-#include <algorithm>
-#include <array>
+#include "apcs/session/curve_lines.h"
+
 
 namespace apcs {
 
@@ -64,25 +64,11 @@ void draw_world_curve(Painter& painter, std::span<const HermiteSegment> segments
         draw_world_polyline(painter, curve.points, view, style);
         return;
     }
-    PixelPoint from = view.to_device(curve.points.front()).rounded();
+    std::vector<PixelLine> lines;
+    find_curve_lines(segments, curve, view, 0, segments.size(), lines);
     int phase = 0;
-    for (std::size_t s = 0; s < segments.size(); ++s) {
-        const HermiteSegment& segment = segments[s];
-        if (phase > 0) {
-            const std::array<Vec3, 4> hull{segment.start, segment.start + segment.start_tangent * (1.0 / 3.0),
-                                           segment.end - segment.end_tangent * (1.0 / 3.0), segment.end};
-            if (std::all_of(hull.begin(), hull.end(),
-                            [&](const Vec3& point) { return view.to_device(point).rounded() == from; }))
-                continue;
-        }
-        for (std::size_t j = 1; j <= per_segment; ++j) {
-            const PixelPoint to = view.to_device(curve.points[s * per_segment + j]).rounded();
-            if (to == from && phase > 0)
-                continue;
-            painter.styled_line(from, to, style, phase);
-            from = to;
-        }
-    }
+    for (const PixelLine& line : lines)
+        painter.styled_line(line.from, line.to, style, phase);
 }
 
 } // namespace apcs

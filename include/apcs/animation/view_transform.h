@@ -63,6 +63,7 @@ public:
     double viewer_distance() const { return m_viewer_distance; }
     double focus() const { return m_focus; }
     Vec3 centre() const { return m_centre; }
+    bool operator==(const ViewTransform&) const = default;
 
 private:
     ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);

@@ -58,6 +58,8 @@ public:
     // the waypoint editor inserted (waypoint_change.h). The file's comments stay with their points.
     const std::vector<std::size_t>& point_origins() const { return m_origins; }
     const EvaluatedPath& evaluated() const { return m_evaluated; }
+    // The view fixed when the path was opened (fitted again when the waypoint editor is left).
+    const ViewTransform& view_transform() const { return m_view; }
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);
 
@@ -73,6 +75,7 @@ private:
     };
     using Change = std::variant<StaffChange, WaypointChange>;
 
+    Outcome take(const Command& command);
     bool update_views(const Command& command);
     void check_global_or_local_control(const Command& command);
     void scan_control_point(const Command& command);
@@ -89,6 +92,8 @@ private:
     void undo_change(const StaffChange& change);
     void undo_change(const WaypointChange& change);
     void fit_view();
+    void evaluate_whole_path();
+    void find_moved_points();
     bool single_point_region() const { return m_region.first == m_region.last; }
     std::size_t law_point() const;
     std::string message() const;
@@ -100,6 +105,9 @@ private:
     SessionLog& m_log;
     EvaluatedPath m_evaluated;
     ViewTransform m_view;
+    // The picture of the path kept between keys: only what a key changed is projected again.
+    CurveLines m_curve_lines;
+    std::vector<ControlPointRun> m_point_runs;
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale;
     SessionPhase m_phase = SessionPhase::choose_control;

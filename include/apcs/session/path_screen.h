@@ -5,6 +5,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/session/curve_lines.h"
 #include "apcs/session/world_drawing.h"
 
 #include <array>
@@ -15,10 +16,25 @@
 
 namespace apcs {
 
+// Control points that fall on one pixel one after another, first … last: the path screen marks
+// them once (or once per part in and out of the picked region). A path of 10^6 control points has
+// a few thousand runs on the screen.
+struct ControlPointRun {
+    PixelPoint at;
+    std::size_t first = 0;
+    std::size_t last = 0;
+};
+std::vector<ControlPointRun> control_point_runs(std::span<const ControlPoint> points, const ViewTransform& view);
+
 // Everything the path screen shows (thesis figs. 4.2.4–4.2.6).
 struct PathScreenContent {
     const EvaluatedPath* path = nullptr;
     std::span<const ControlPoint> control_points;
+    // What an editor keeps between keys for the view it draws with, so that a long path is not
+    // projected again at every key: the curve's lines (updated for `path`) and the control points'
+    // runs. Null or empty: found here.
+    const CurveLines* curve_lines = nullptr;
+    std::span<const ControlPointRun> control_point_runs;
     StaffValues staff;
     std::optional<StaffLine> active_line;
     // Local control: the picked region (first, last control point) drawn with a box around its x's.

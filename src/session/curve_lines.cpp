@@ -1,0 +1,100 @@
+#include "apcs/session/curve_lines.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <thread>
+
+namespace apcs {
+
+void find_curve_lines(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view,
+                      std::size_t first, std::size_t end, std::vector<PixelLine>& lines)
+{
+    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
+    assert(end <= segments.size() && curve.points.size() == segments.size() * per_segment + 1);
+    if (first >= end)
+        return;
+    PixelPoint from = view.to_device(curve.points[first * per_segment]).rounded();
+    bool continuing = first > 0;
+    for (std::size_t s = first; s < end; ++s) {
+        const HermiteSegment& segment = segments[s];
+        if (continuing) {
+            const std::array<Vec3, 4> hull{segment.start, segment.start + segment.start_tangent * (1.0 / 3.0),
+                                           segment.end - segment.end_tangent * (1.0 / 3.0), segment.end};
+            if (std::all_of(hull.begin(), hull.end(),
+                            [&](const Vec3& point) { return view.to_device(point).rounded() == from; }))
+                continue;
+        }
+        for (std::size_t j = 1; j <= per_segment; ++j) {
+            const PixelPoint to = view.to_device(curve.points[s * per_segment + j]).rounded();
+            if (to == from && continuing)
+                continue;
+            lines.push_back({from, to});
+            from = to;
+            continuing = true;
+        }
+    }
+}
+
+void CurveLines::forget(std::size_t first_segment, std::size_t end_segment)
+{
+    if (first_segment >= end_segment)
+        return;
+    const std::size_t last_block = (end_segment - 1) / segments_per_block;
+    for (std::size_t b = first_segment / segments_per_block; b <= last_block && b < m_blocks.size(); ++b)
+        m_blocks[b].current = false;
+}
+
+void CurveLines::forget_all()
+{
+    for (Block& block : m_blocks)
+        block.current = false;
+}
+
+void CurveLines::update(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view)
+{
+    const std::size_t block_count = (segments.size() + segments_per_block - 1) / segments_per_block;
+    if (m_view != view || m_segment_count != segments.size() || m_samples_per_segment != curve.samples_per_segment ||
+        m_blocks.size() != block_count) {
+        m_blocks.resize(block_count);
+        forget_all();
+        m_view = view;
+        m_segment_count = segments.size();
+        m_samples_per_segment = curve.samples_per_segment;
+    }
+    std::vector<std::size_t> stale;
+    for (std::size_t b = 0; b < m_blocks.size(); ++b)
+        if (!m_blocks[b].current)
+            stale.push_back(b);
+    const auto find_blocks = [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i) {
+            Block& block = m_blocks[stale[i]];
+            const std::size_t first_segment = stale[i] * segments_per_block;
+            block.lines.clear();
+            find_curve_lines(segments, curve, view, first_segment,
+                             std::min(first_segment + segments_per_block, segments.size()), block.lines);
+            block.current = true;
+        }
+    };
+    // Blocks are independent: a global change of 10^6 control points finds its 245 blocks on two cores.
+    if (stale.size() >= 2 && std::thread::hardware_concurrency() > 1) {
+        const std::size_t middle = stale.size() / 2;
+        std::thread second_half(find_blocks, middle, stale.size());
+        find_blocks(0, middle);
+        second_half.join();
+    } else {
+        find_blocks(0, stale.size());
+    }
+}
+
+void CurveLines::draw(Painter& painter, LineStyle style) const
+{
+    int phase = 0;
+    for (const Block& block : m_blocks) {
+        assert(block.current);
+        for (const PixelLine& line : block.lines)
+            painter.styled_line(line.from, line.to, style, phase);
+    }
+}
+
+} // namespace apcs
