@@ -2,6 +2,7 @@
 
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/geometry/pixel_point.h"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +13,8 @@
 
 namespace apcs::memory {
 
-static_assert(bytes_per_curve_sample >= 2 * sizeof(Vec3) + sizeof(double));
+static_assert(bytes_per_curve_sample >= 2 * sizeof(PixelPoint));
+static_assert(bytes_per_printed_sample >= sizeof(Vec3));
 static_assert(bytes_per_control_point >=
               sizeof(ControlPoint) + 2 * sizeof(HermiteSegment) + sizeof(int) + sizeof(double) +
                   sizeof(AccelerationSpan) + 2 * sizeof(double));
@@ -44,8 +46,9 @@ std::uint64_t path_bytes(const PathRequest& request)
     const std::uint64_t samples =
         saturating_sum(saturating_product(segments, static_cast<std::uint64_t>(std::max(request.samples_per_segment, 1))), 1);
     const std::uint64_t printed = request.printed ? bytes_per_printed_point : 0;
+    const std::uint64_t printed_sample = request.printed ? bytes_per_printed_sample + printed : 0;
     const std::uint64_t inbetweens = static_cast<std::uint64_t>(std::max(request.inbetween_count, 0));
-    return saturating_sum(saturating_sum(saturating_product(samples, bytes_per_curve_sample + printed),
+    return saturating_sum(saturating_sum(saturating_product(samples, bytes_per_curve_sample + printed_sample),
                                          saturating_product(inbetweens, bytes_per_inbetween + printed)),
                           saturating_product(request.control_points, bytes_per_control_point));
 }

@@ -80,8 +80,8 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 
 void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
 {
-    kb_segments(points, settings.slopes, path.segments);
-    sample_curve(path.segments, settings.samples_per_segment, path.curve);
+    kb_segments(points, settings.slopes, path.curve.segments);
+    sample_curve(path.curve, settings.samples_per_segment);
     place_inbetweens(points, settings, path);
 }
 
@@ -90,13 +90,13 @@ void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& 
     path.inbetweens.clear();
     path.span_timings.clear();
     path.frames_freeze = false;
-    if (path.segments.empty())
+    if (path.curve.segments.empty())
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
 
     const std::vector<AccelerationSpan> spans = acceleration_spans(points);
     const bool exact = settings.spacing == Spacing::exact;
-    const ArcLengthTable arc_table = exact ? ArcLengthTable(path.segments) : ArcLengthTable({});
+    const ArcLengthTable arc_table = exact ? ArcLengthTable(path.curve.segments) : ArcLengthTable({});
     // Distance from the curve's start to control point k, in the measure the spacing uses.
     const auto boundary = [&](std::size_t control_point) {
         return exact ? arc_table.length_to_segment_start(control_point)
@@ -112,7 +112,7 @@ void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& 
         for (int j = 1; j <= inbetween_count; ++j) {
             const double tau = static_cast<double>(j) / (inbetween_count + 1);
             path.inbetweens.push_back(
-                {path.curve.points.front(), acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
+                {path.curve.segments.front().start, acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
         }
         return;
     }
@@ -135,7 +135,7 @@ void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& 
                 shown.sample_index = path.curve.nearest_sample(chord_target);
             } else {
                 shown.sample_index = path.curve.nearest_sample(target);
-                shown.position = path.curve.points[shown.sample_index];
+                shown.position = path.curve.sample(shown.sample_index);
                 shown.arc_fraction = path.curve.chord_length(shown.sample_index) / total;
             }
             path.inbetweens.push_back(shown);
@@ -150,28 +150,28 @@ void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& 
 void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                      std::size_t first_changed, std::size_t last_changed)
 {
-    const bool same_shape_of_arrays = points.size() >= 2 && path.segments.size() == points.size() - 1 &&
+    const bool same_shape_of_arrays = points.size() >= 2 && path.curve.segments.size() == points.size() - 1 &&
                                       path.curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
-                                      path.curve.segment_length.size() == path.segments.size();
+                                      path.curve.segment_length.size() == path.curve.segments.size();
     if (!same_shape_of_arrays || first_changed > last_changed) {
         evaluate_path(points, settings, path);
         return;
     }
     // Control point k's tangents shape segments k − 1 and k.
     const std::size_t first = first_changed == 0 ? 0 : first_changed - 1;
-    const std::size_t end = std::min(last_changed + 1, path.segments.size());
+    const std::size_t end = std::min(last_changed + 1, path.curve.segments.size());
     std::size_t changed_first = end;
     std::size_t changed_end = first;
     for (std::size_t s = first; s < end; ++s) {
         const HermiteSegment segment = kb_segment(points, settings.slopes, s);
-        if (segment == path.segments[s])
+        if (segment == path.curve.segments[s])
             continue;
-        path.segments[s] = segment;
+        path.curve.segments[s] = segment;
         changed_first = std::min(changed_first, s);
         changed_end = s + 1;
     }
     if (changed_first < changed_end)
-        resample_segments(path.segments, changed_first, changed_end, path.curve);
+        remeasure_segments(path.curve, changed_first, changed_end);
     place_inbetweens(points, settings, path);
 }
 

@@ -1,6 +1,5 @@
 #include "apcs/animation/view_transform.h"
 
-#include "apcs/geometry/bounding_box.h"
 #include "apcs/geometry/hercules.h"
 
 #include <algorithm>
@@ -38,26 +37,30 @@ ViewTransform::ViewTransform(ViewAngles angles, Vec3 centre, double viewer_dista
 
 ViewTransform ViewTransform::fit(ViewAngles angles, std::span<const Vec3> scene, PixelRect drawing_area)
 {
-    BoundingBox box;
-    box.add(scene);
-    const double radius = box.empty() || box.half_diagonal() <= 0.0 ? 1.0 : box.half_diagonal();
-    ViewTransform view(angles, box.centre(), 3.0 * radius, drawing_area);
+    return fit_visiting(
+        angles,
+        [&](const auto& visit) {
+            for (const Vec3& point : scene)
+                visit(point);
+        },
+        drawing_area);
+}
 
-    double widest = 0.0;
-    double tallest = 0.0;
-    for (const Vec3& point : scene) {
-        const EyePoint eye = view.to_eye(point);
-        widest = std::max(widest, std::abs(eye.x / eye.z));
-        tallest = std::max(tallest, std::abs(eye.y / eye.z));
-    }
+ViewTransform ViewTransform::centred_on(ViewAngles angles, const BoundingBox& box, PixelRect drawing_area)
+{
+    const double radius = box.empty() || box.half_diagonal() <= 0.0 ? 1.0 : box.half_diagonal();
+    return {angles, box.centre(), 3.0 * radius, drawing_area};
+}
+
+void ViewTransform::focus_on(double widest, double tallest, PixelRect drawing_area)
+{
     const double half_width = std::max(drawing_area.width() / 2.0, 1.0);
     double focus = 0.0;
     if (widest > 0.0)
-        focus = half_width / (hercules::aspect_correction * view.m_half_height * widest);
+        focus = half_width / (hercules::aspect_correction * m_half_height * widest);
     if (tallest > 0.0)
         focus = focus > 0.0 ? std::min(focus, 1.0 / tallest) : 1.0 / tallest;
-    view.m_focus = focus > 0.0 ? 0.9 * focus : 1.0;
-    return view;
+    m_focus = focus > 0.0 ? 0.9 * focus : 1.0;
 }
 
 EyePoint ViewTransform::to_eye(const Vec3& world) const

@@ -20,7 +20,7 @@ namespace apcs {
 std::string format_path_print(const EvaluatedPath& path)
 {
     std::string text;
-    append_print_section(text, "curve", path.curve.points);
+    append_print_section(text, "curve", path.curve.samples());
     text += "# inbetweens\n";
     for (const Inbetween& inbetween : path.inbetweens)
         append_print_point(text, inbetween.position);

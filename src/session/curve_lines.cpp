@@ -7,14 +7,15 @@
 
 namespace apcs {
 
-void find_curve_lines(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view,
-                      std::size_t first, std::size_t end, std::vector<PixelLine>& lines)
+void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
+                      std::vector<PixelLine>& lines)
 {
+    const std::span<const HermiteSegment> segments = curve.segments;
     const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
-    assert(end <= segments.size() && curve.points.size() == segments.size() * per_segment + 1);
+    assert(end <= segments.size());
     if (first >= end)
         return;
-    PixelPoint from = view.to_device(curve.points[first * per_segment]).rounded();
+    PixelPoint from = view.to_device(segments[first].start).rounded();
     bool continuing = first > 0;
     for (std::size_t s = first; s < end; ++s) {
         const HermiteSegment& segment = segments[s];
@@ -26,7 +27,7 @@ void find_curve_lines(std::span<const HermiteSegment> segments, const SampledCur
                 continue;
         }
         for (std::size_t j = 1; j <= per_segment; ++j) {
-            const PixelPoint to = view.to_device(curve.points[s * per_segment + j]).rounded();
+            const PixelPoint to = view.to_device(curve.segment_sample(s, j)).rounded();
             if (to == from && continuing)
                 continue;
             lines.push_back({from, to});
@@ -51,8 +52,9 @@ void CurveLines::forget_all()
         block.current = false;
 }
 
-void CurveLines::update(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view)
+void CurveLines::update(const SampledCurve& curve, const ViewTransform& view)
 {
+    const std::span<const HermiteSegment> segments = curve.segments;
     const std::size_t block_count = (segments.size() + segments_per_block - 1) / segments_per_block;
     if (m_view != view || m_segment_count != segments.size() || m_samples_per_segment != curve.samples_per_segment ||
         m_blocks.size() != block_count) {
@@ -71,7 +73,7 @@ void CurveLines::update(std::span<const HermiteSegment> segments, const SampledC
             Block& block = m_blocks[stale[i]];
             const std::size_t first_segment = stale[i] * segments_per_block;
             block.lines.clear();
-            find_curve_lines(segments, curve, view, first_segment,
+            find_curve_lines(curve, view, first_segment,
                              std::min(first_segment + segments_per_block, segments.size()), block.lines);
             block.current = true;
         }

@@ -62,17 +62,17 @@ std::vector<CurveFigure> thesis_curve_figures()
 GraphicsScreen draw_curve_figure(const CurveFigure& figure)
 {
     std::vector<EvaluatedPath> paths;
-    ViewScene scene;
-    for (const FigureCurve& shown : figure.curves) {
+    for (const FigureCurve& shown : figure.curves)
         paths.push_back(evaluate_path(shown.points, {{}, 48, 0, Spacing::nearest}));
-        scene.add(paths.back().curve.points);
-    }
+    ViewScene scene;
+    for (const EvaluatedPath& path : paths)
+        scene.add(path.curve);
     const ViewTransform view = scene.fit({0, 90}, figure_area);
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     std::string legend;
     for (std::size_t i = 0; i < figure.curves.size(); ++i) {
-        draw_world_polyline(painter, paths[i].curve.points, view, figure.curves[i].style);
+        draw_world_curve(painter, paths[i].curve, view, figure.curves[i].style);
         legend += std::string(legend.empty() ? "" : "   ") + style_name(figure.curves[i].style) + ": " +
                   figure.curves[i].label;
     }

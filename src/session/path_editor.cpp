@@ -43,7 +43,7 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
 {
     assert(m_setup.points.size() >= 2);
     find_moved_points();
-    m_curve_lines.update(m_evaluated.segments, m_evaluated.curve, m_view);
+    m_curve_lines.update(m_evaluated.curve, m_view);
 }
 
 // Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
@@ -91,7 +91,7 @@ void PathEditor::show_problem(const std::string& message)
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
     const Outcome outcome = take(command);
-    m_curve_lines.update(m_evaluated.segments, m_evaluated.curve, m_view);
+    m_curve_lines.update(m_evaluated.curve, m_view);
     return outcome;
 }
 
@@ -321,7 +321,7 @@ void PathEditor::undo_change(const WaypointChange& change)
 void PathEditor::open_waypoints()
 {
     m_waypoints.emplace(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
-                                              waypoint_step(shown_scene(m_setup, m_evaluated).points())});
+                                              waypoint_step(shown_scene(m_setup, m_evaluated).bounds())});
     m_log.log("waypoint editor");
 }
 

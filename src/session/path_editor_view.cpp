@@ -21,7 +21,7 @@ std::string PathEditor::message() const
     case SessionPhase::pick_region_first: return std::string(text::pick_first);
     case SessionPhase::pick_region_last: return std::string(text::pick_last);
     case SessionPhase::staff:
-        return m_show_tangents ? tangent_numbers(m_evaluated.segments, m_tangent_point) : staff_message();
+        return m_show_tangents ? tangent_numbers(m_evaluated.curve.segments, m_tangent_point) : staff_message();
     default: return std::string(text::ask_again);
     }
 }

@@ -24,7 +24,7 @@ ViewScene path_screen_scene(const PathScreenContent& content)
     ViewScene scene;
     scene.add(content.control_points);
     if (content.path != nullptr)
-        scene.add(content.path->curve.points);
+        scene.add(content.path->curve);
     return scene.add(content.key_frame_polylines);
 }
 
@@ -134,10 +134,10 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         if (content.curve_lines != nullptr)
             content.curve_lines->draw(inside);
         else
-            draw_world_curve(inside, content.path->segments, content.path->curve, view);
+            draw_world_curve(inside, content.path->curve, view);
         draw_ani_path(screen, *content.path, view);
         if (content.tangent_scale) {
-            draw_tangent_arrows(screen, inside, content.path->segments, view, *content.tangent_scale);
+            draw_tangent_arrows(screen, inside, content.path->curve.segments, view, *content.tangent_scale);
             // An arrow's line is clipped at the boundary; its end mark must not sit on it or beside it.
             std::erase_if(screen.marks, [](const PixelMark& mark) {
                 return mark.kind == MarkKind::tangent_end && !layout::view_area.contains(mark.at);

@@ -66,7 +66,7 @@ void WaypointEditor::insert_point()
     WaypointChange change;
     change.kind = WaypointChange::Kind::insert;
     change.index = from + 1;
-    change.point = {halfway_along(m_evaluated.segments, from), m_setup.points[m_chosen].staff};
+    change.point = {halfway_along(m_evaluated.curve.segments, from), m_setup.points[m_chosen].staff};
     apply(change);
     m_chosen = change.index;
 }
@@ -120,17 +120,9 @@ std::string WaypointEditor::message() const
            "  depth " + format_staff_value(depth);
 }
 
-double waypoint_step(std::span<const Vec3> shown)
+double waypoint_step(const BoundingBox& shown)
 {
-    if (shown.empty())
-        return 0.01;
-    Vec3 low = shown.front();
-    Vec3 high = shown.front();
-    for (const Vec3& point : shown) {
-        low = {std::min(low.x, point.x), std::min(low.y, point.y), std::min(low.z, point.z)};
-        high = {std::max(high.x, point.x), std::max(high.y, point.y), std::max(high.z, point.z)};
-    }
-    const double diagonal = length(high - low);
+    const double diagonal = shown.empty() ? 0.0 : length(shown.high() - shown.low());
     // A scene that is one point still needs a step that moves something.
     return diagonal > 0.0 ? diagonal / 100.0 : 0.01;
 }

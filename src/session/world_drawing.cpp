@@ -18,6 +18,12 @@ ViewScene& ViewScene::add(std::span<const ControlPoint> points)
     return *this;
 }
 
+ViewScene& ViewScene::add(const SampledCurve& curve)
+{
+    m_curves.push_back(&curve);
+    return *this;
+}
+
 ViewScene& ViewScene::add(const FrameSequence& frames)
 {
     for (std::size_t k = 0; k < frames.frame_count(); ++k)
@@ -34,7 +40,14 @@ ViewScene& ViewScene::add(const std::vector<std::vector<Vec3>>& polylines)
 
 ViewTransform ViewScene::fit(ViewAngles angles, PixelRect drawing_area) const
 {
-    return ViewTransform::fit(angles, m_points, drawing_area);
+    return ViewTransform::fit_visiting(angles, [this](const auto& visit) { for_each_point(visit); }, drawing_area);
+}
+
+BoundingBox ViewScene::bounds() const
+{
+    BoundingBox box;
+    for_each_point([&](const Vec3& point) { box.add(point); });
+    return box;
 }
 
 void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view, LineStyle style)
@@ -56,16 +69,10 @@ void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const
     }
 }
 
-void draw_world_curve(Painter& painter, std::span<const HermiteSegment> segments, const SampledCurve& curve,
-                      const ViewTransform& view, LineStyle style)
+void draw_world_curve(Painter& painter, const SampledCurve& curve, const ViewTransform& view, LineStyle style)
 {
-    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
-    if (segments.empty() || curve.points.size() != segments.size() * per_segment + 1) {
-        draw_world_polyline(painter, curve.points, view, style);
-        return;
-    }
     std::vector<PixelLine> lines;
-    find_curve_lines(segments, curve, view, 0, segments.size(), lines);
+    find_curve_lines(curve, view, 0, curve.segments.size(), lines);
     int phase = 0;
     for (const PixelLine& line : lines)
         painter.styled_line(line.from, line.to, style, phase);

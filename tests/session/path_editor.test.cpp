@@ -58,8 +58,8 @@ TEST_CASE("each staff key leaves the path as evaluating its control points afres
     const auto matches_fresh = [&](const char* after) {
         CAPTURE(after);
         const EvaluatedPath fresh = evaluate_path(editor.points(), settings);
-        REQUIRE(editor.evaluated().segments == fresh.segments);
-        REQUIRE(editor.evaluated().curve.points == fresh.curve.points);
+        REQUIRE(editor.evaluated().curve.segments == fresh.curve.segments);
+        REQUIRE(editor.evaluated().curve.segment_length == fresh.curve.segment_length);
         REQUIRE(editor.evaluated().curve.length_to_point == fresh.curve.length_to_point);
         REQUIRE(editor.evaluated().inbetweens.size() == fresh.inbetweens.size());
         for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j)

@@ -187,7 +187,7 @@ TEST_CASE("a long curve drawn segment by segment is pixel for pixel its samples 
     for (int k = 0; k < 20000; ++k)
         points.push_back({{std::sin(k * 0.0007) * 3.0, std::cos(k * 0.0011) * 2.0, std::sin(k * 0.0005)}, {}});
     const EvaluatedPath path = evaluate_path(points, PathSettings{});
-    const ViewTransform view = ViewScene().add(path.curve.points).fit({30, 40}, layout::drawing_area);
+    const ViewTransform view = ViewScene().add(path.curve).fit({30, 40}, layout::drawing_area);
     // The case the hull is for must be most of this curve, or the test proves nothing about it.
     const auto on_one_pixel = [&view](const HermiteSegment& segment) {
         const PixelPoint start = view.to_device(segment.start).rounded();
@@ -197,20 +197,20 @@ TEST_CASE("a long curve drawn segment by segment is pixel for pixel its samples 
                 return false;
         return true;
     };
-    REQUIRE(std::count_if(path.segments.begin(), path.segments.end(), on_one_pixel) > 15000);
+    REQUIRE(std::count_if(path.curve.segments.begin(), path.curve.segments.end(), on_one_pixel) > 15000);
     // And a segment whose two ends share a pixel but which swings far out between them (its
     // neighbours make its tangents long): only its hull, not its ends, may pass it over.
     const ControlPoints swinging{
         {{0, -20, 0}, {}}, {{0, 0, 0}, {}}, {{0, 0.0001, 0}, {}}, {{0, 10, 5}, {}}, {{0, 20, 0}, {}}};
     const EvaluatedPath swing = evaluate_path(swinging, PathSettings{});
-    const ViewTransform swing_view = ViewScene().add(swing.curve.points).fit({0, 90}, layout::drawing_area);
+    const ViewTransform swing_view = ViewScene().add(swing.curve).fit({0, 90}, layout::drawing_area);
     for (const LineStyle style : {LineStyle::solid, LineStyle::dashed}) {
         Bitmap by_samples;
         Bitmap by_segments;
         Painter samples_painter(by_samples);
         Painter segments_painter(by_segments);
-        draw_world_polyline(samples_painter, swing.curve.points, swing_view, style);
-        draw_world_curve(segments_painter, swing.segments, swing.curve, swing_view, style);
+        draw_world_polyline(samples_painter, swing.curve.samples(), swing_view, style);
+        draw_world_curve(segments_painter, swing.curve, swing_view, style);
         REQUIRE(by_segments == by_samples);
     }
     for (const LineStyle style : {LineStyle::solid, LineStyle::dashed, LineStyle::dotted}) {
@@ -223,8 +223,8 @@ TEST_CASE("a long curve drawn segment by segment is pixel for pixel its samples 
         samples_painter.record_into(sample_strokes);
         Painter segments_painter(by_segments);
         segments_painter.record_into(segment_strokes);
-        draw_world_polyline(samples_painter, path.curve.points, view, style);
-        draw_world_curve(segments_painter, path.segments, path.curve, view, style);
+        draw_world_polyline(samples_painter, path.curve.samples(), view, style);
+        draw_world_curve(segments_painter, path.curve, view, style);
         REQUIRE(by_segments == by_samples);
         REQUIRE(by_samples.lit_count() > 500);
         REQUIRE(segment_strokes.size() == sample_strokes.size());

@@ -70,8 +70,8 @@ TEST_CASE("a path file over the memory limit is refused, and asked again", "[ses
     MemoryFiles files = example_files();
     SessionSettings settings;
     settings.samples_per_segment = 1000;
-    // 3 x 1000 + 1 samples x 56 + 12 x 48 + 4 x 320 = 169912 bytes.
-    settings.memory_limit_bytes = 128 * 1024;
+    // 3 x 1000 + 1 samples x 16 + 12 x 48 + 4 x 320 = 49872 bytes.
+    settings.memory_limit_bytes = 40 * 1024;
     Session session(settings, files);
     type(session, "key1.dat");
     type(session, "key2.dat");
@@ -82,7 +82,7 @@ TEST_CASE("a path file over the memory limit is refused, and asked again", "[ses
     type(session, "way1.dat");
     CHECK(session.phase() == SessionPhase::ask_path_file);
     CHECK(shows(session, "way1.dat: 4 control points x 1000 samples per segment (--samples) and 12 "
-                                    "in-betweens (--inbetweens) need 165.9 KiB; the memory limit is 128 KiB "
+                                    "in-betweens (--inbetweens) need 48.7 KiB; the memory limit is 40 KiB "
                                     "(APCS_MEMORY_LIMIT); use a path of fewer control points, or start apcs with a "
                                     "lower --samples or --inbetweens"));
 }

@@ -4,12 +4,21 @@
 
 #include <catch2/catch.hpp>
 
+#include <initializer_list>
 #include <numeric>
 
 using namespace apcs;
 namespace cmd = apcs::command;
 
 namespace {
+
+BoundingBox box_of(std::initializer_list<Vec3> points)
+{
+    BoundingBox box;
+    for (const Vec3& point : points)
+        box.add(point);
+    return box;
+}
 
 const Vec3 origin{0, 0, 0};
 
@@ -34,9 +43,9 @@ void apply(WaypointEditor& editor, std::initializer_list<Command> commands)
 
 TEST_CASE("a waypoint step is 1 % of the diagonal of what the view shows", "[session][waypoints]")
 {
-    REQUIRE(waypoint_step(std::vector<Vec3>{origin, {0, 0, 10}}) == Approx(0.1));
-    REQUIRE(waypoint_step(std::vector<Vec3>{origin, {3, 4, 12}, {1, 1, 1}}) == Approx(0.13));
-    REQUIRE(waypoint_step(std::vector<Vec3>{{5, 5, 5}}) > 0.0);
+    REQUIRE(waypoint_step(box_of({origin, {0, 0, 10}})) == Approx(0.1));
+    REQUIRE(waypoint_step(box_of({origin, {3, 4, 12}, {1, 1, 1}})) == Approx(0.13));
+    REQUIRE(waypoint_step(box_of({{5, 5, 5}})) > 0.0);
 }
 
 TEST_CASE("I inserts a control point halfway along the curve by arc length, with the chosen point's values",

@@ -18,8 +18,10 @@ inline constexpr std::string_view limit_variable = "APCS_MEMORY_LIMIT";
 
 // What one element of a request costs, in bytes; memory_budget.cpp checks each against the sizes
 // of the types it stands for.
-// A curve sample: its point, its chord length and the drawn copy of the point.
-inline constexpr std::uint64_t bytes_per_curve_sample = 56;
+// A curve sample: samples are computed when needed, not held (sampled_curve.h), but a screen may
+// keep a drawn line to each (two pixel points), and printing holds each point.
+inline constexpr std::uint64_t bytes_per_curve_sample = 16;
+inline constexpr std::uint64_t bytes_per_printed_sample = 24;
 // A control point: itself, its KB segment, its arc-length table entry and its acceleration span.
 inline constexpr std::uint64_t bytes_per_control_point = 320;
 // A shown in-between: its position, progress and sample, and its target distance.

@@ -59,8 +59,7 @@ struct SpanTiming {
 // One graphic point's path, evaluated: the KB segments, the sampled curve and the shown
 // in-betweens (thesis DRAW, Cal_tangent_vector, Cal_INBETWEENS, Decide_Show_Inbetween).
 struct EvaluatedPath {
-    std::vector<HermiteSegment> segments;
-    SampledCurve curve;
+    SampledCurve curve; // its segments, and how they are sampled
     std::vector<Inbetween> inbetweens;
     // The spans in path order (empty for a path of zero length or of fewer than two points).
     std::vector<SpanTiming> span_timings;

@@ -11,42 +11,46 @@ namespace apcs {
 // (the thesis' Cal_Hermite_Basis), so that sampling a segment costs no polynomial evaluation.
 std::vector<HermiteBasis> hermite_basis_table(int samples_per_segment);
 
-// A KB curve sampled at `samples_per_segment` points per segment: N = segments · samples_per_segment
-// intervals, N + 1 points, with control point k at index k · samples_per_segment.
+// A KB curve's segments sampled at `samples_per_segment` points each: N = segments · samples_per_segment
+// intervals, N + 1 samples, control point k at sample k · samples_per_segment.
 //
-// The chord length (the polyline's length from the start) is kept in two levels, each segment's
-// own and the lengths to the control points, so that a change to a few segments of a long path
-// measures those segments again and adds up one number per segment, not one per sample.
+// Samples are computed when asked for, never held: a path of 10^6 control points has 3.2·10^7 of
+// them, 1 GB to write at every key of a global change. What is kept is each segment's chord length
+// (the length of the polyline through its samples) and the lengths to the control points, so that a
+// change to a few segments measures those again and adds up one number per segment.
 struct SampledCurve {
-    std::vector<Vec3> points;
-    // Chord length from the first sample of sample i's segment (its control point) to sample i:
-    // 0 at every control point.
-    std::vector<double> length_in_segment;
+    std::vector<HermiteSegment> segments;
     // Each segment's chord length, and the chord length from the start to control point k
     // (k = 0 … segments): 0 first, the whole length L last.
     std::vector<double> segment_length;
     std::vector<double> length_to_point;
     int samples_per_segment = 1;
+    std::vector<HermiteBasis> basis; // hermite_basis_table(samples_per_segment)
 
+    // N + 1, or 0 for a curve of no segments.
+    std::size_t sample_count() const;
+    // Sample j (0 … samples_per_segment) of segment s: its start and end are the control points
+    // themselves, exactly, not a rounded evaluation.
+    Vec3 segment_sample(std::size_t segment, std::size_t j) const;
+    // Sample i (i < sample_count()).
+    Vec3 sample(std::size_t i) const;
+    // Every sample, in order (for printing; a long path's are not held otherwise).
+    std::vector<Vec3> samples() const;
     double total_length() const { return length_to_point.empty() ? 0.0 : length_to_point.back(); }
-    // The chord length from the curve's start to sample i (i < points.size()).
-    double chord_length(std::size_t sample) const
-    {
-        return length_to_point[sample / static_cast<std::size_t>(samples_per_segment)] + length_in_segment[sample];
-    }
+    // The chord length from the curve's start to sample i (i < sample_count()).
+    double chord_length(std::size_t i) const;
     // The sample whose chord length is nearest to `target`, the earlier of two equally near (the
     // thesis' Decide_Show_Inbetween); the first or last sample for a target outside the curve.
     std::size_t nearest_sample(double target) const;
 };
 
-// samples_per_segment is clamped to at least 1.
+// A curve of a copy of `segments`; samples_per_segment is clamped to at least 1.
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment);
-// The same into `curve`, whose arrays keep their room.
-void sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment, SampledCurve& curve);
-// Segments first … end − 1 of a curve sampled from `segments` (same count, same samples per
-// segment) changed: their samples and lengths are made again, and the lengths to the control points
-// after them. The curve is then the one sample_curve makes, to the bit.
-void resample_segments(std::span<const HermiteSegment> segments, std::size_t first, std::size_t end,
-                       SampledCurve& curve);
+// Measures `curve.segments` (set by the caller, arrays' room kept) at samples_per_segment.
+void sample_curve(SampledCurve& curve, int samples_per_segment);
+// Segments first … end − 1 of a measured curve changed: they are measured again, and the lengths
+// to the control points after them added up again. The curve is then the one sample_curve makes,
+// to the bit.
+void remeasure_segments(SampledCurve& curve, std::size_t first, std::size_t end);
 
 } // namespace apcs

@@ -1,8 +1,11 @@
 #pragma once
 
+#include "apcs/geometry/bounding_box.h"
 #include "apcs/geometry/pixel_point.h"
 #include "apcs/geometry/vec3.h"
 
+#include <algorithm>
+#include <cmath>
 #include <span>
 
 namespace apcs {
@@ -50,6 +53,24 @@ struct DevicePoint {
 class ViewTransform {
 public:
     static ViewTransform fit(ViewAngles angles, std::span<const Vec3> scene, PixelRect drawing_area);
+    // The same for a scene too large to gather: for_each_point(visit) calls visit(point) for each
+    // of its points, and is called twice.
+    template <typename ForEachPoint>
+    static ViewTransform fit_visiting(ViewAngles angles, ForEachPoint for_each_point, PixelRect drawing_area)
+    {
+        BoundingBox box;
+        for_each_point([&](const Vec3& point) { box.add(point); });
+        ViewTransform view = centred_on(angles, box, drawing_area);
+        double widest = 0.0;
+        double tallest = 0.0;
+        for_each_point([&](const Vec3& point) {
+            const EyePoint eye = view.to_eye(point);
+            widest = std::max(widest, std::abs(eye.x / eye.z));
+            tallest = std::max(tallest, std::abs(eye.y / eye.z));
+        });
+        view.focus_on(widest, tallest, drawing_area);
+        return view;
+    }
 
     EyePoint to_eye(const Vec3& world) const;
     DevicePoint to_device(const Vec3& world) const;
@@ -66,6 +87,8 @@ public:
     bool operator==(const ViewTransform&) const = default;
 
 private:
+    static ViewTransform centred_on(ViewAngles angles, const BoundingBox& box, PixelRect drawing_area);
+    void focus_on(double widest, double tallest, PixelRect drawing_area);
     ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);
 
     double m_sin_theta = 0.0;

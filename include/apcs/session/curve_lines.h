@@ -1,12 +1,10 @@
 #pragma once
 
-#include "apcs/animation/hermite.h"
 #include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/painter.h"
 
 #include <optional>
-#include <span>
 #include <vector>
 
 namespace apcs {
@@ -28,8 +26,8 @@ public:
     // The control points moved, or their number changed.
     void forget_all();
     // Finds the lines of the blocks forgotten; all of them when the view, the number of segments
-    // or of samples per segment is not the last update's. `curve` is `segments` sampled.
-    void update(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view);
+    // or of samples per segment is not the last update's.
+    void update(const SampledCurve& curve, const ViewTransform& view);
     // Draws the lines as draw_world_curve would.
     void draw(Painter& painter, LineStyle style = LineStyle::solid) const;
 
@@ -50,7 +48,7 @@ private:
 // Segments first … end − 1 of a sampled curve as draw_world_curve draws them: the lines in order.
 // `continuing` says a line was drawn before (first > 0): a segment or sample that stays on the
 // pixel where the lines stand is then passed over.
-void find_curve_lines(std::span<const HermiteSegment> segments, const SampledCurve& curve, const ViewTransform& view,
-                      std::size_t first, std::size_t end, std::vector<PixelLine>& lines);
+void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
+                      std::vector<PixelLine>& lines);
 
 } // namespace apcs

@@ -4,6 +4,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/animation/waypoint_change.h"
+#include "apcs/geometry/bounding_box.h"
 #include "apcs/session/command.h"
 
 #include <cstddef>
@@ -59,7 +60,7 @@ private:
 };
 
 // One step of the editor: 1 % of the diagonal of the bounding box of what the view shows.
-double waypoint_step(std::span<const Vec3> shown);
+double waypoint_step(const BoundingBox& shown);
 
 // The point on the curve of `segments` halfway by arc length from control point `from` to the
 // next one (from < segments.size()).

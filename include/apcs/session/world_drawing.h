@@ -2,7 +2,6 @@
 
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/frame_sequence.h"
-#include "apcs/animation/hermite.h"
 #include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/painter.h"
@@ -18,14 +17,28 @@ class ViewScene {
 public:
     ViewScene& add(std::span<const Vec3> points);
     ViewScene& add(std::span<const ControlPoint> points);
+    // Its samples, visited where they are needed, never gathered (a long path has 10^7); the
+    // curve must outlive the scene.
+    ViewScene& add(const SampledCurve& curve);
     ViewScene& add(const FrameSequence& frames);
     ViewScene& add(const std::vector<std::vector<Vec3>>& polylines);
 
     ViewTransform fit(ViewAngles angles, PixelRect drawing_area) const;
-    std::span<const Vec3> points() const { return m_points; }
+    BoundingBox bounds() const;
 
 private:
+    template <typename Visit>
+    void for_each_point(const Visit& visit) const
+    {
+        for (const Vec3& point : m_points)
+            visit(point);
+        for (const SampledCurve* curve : m_curves)
+            for (std::size_t i = 0; i < curve->sample_count(); ++i)
+                visit(curve->sample(i));
+    }
+
     std::vector<Vec3> m_points;
+    std::vector<const SampledCurve*> m_curves;
 };
 
 // Projects a world polyline through `view` and strokes it; a polyline of one point is one pixel.
@@ -37,7 +50,7 @@ void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const
 // stands is passed over without projecting its samples: the segment lies in their hull, a
 // perspective view keeps hulls, and a pixel is convex, so every sample would fall on that pixel
 // and draw nothing. The same picture; for a long path (many segments on one pixel) far less work.
-void draw_world_curve(Painter& painter, std::span<const HermiteSegment> segments, const SampledCurve& curve,
-                      const ViewTransform& view, LineStyle style = LineStyle::solid);
+void draw_world_curve(Painter& painter, const SampledCurve& curve, const ViewTransform& view,
+                      LineStyle style = LineStyle::solid);
 
 } // namespace apcs
