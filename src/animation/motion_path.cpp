@@ -4,13 +4,17 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
+#include "apcs/animation/two_cores.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 
 namespace apcs {
 
+// A span ends where a point's acceleration differs from the one before it: the points are
+// searched for those places in two halves on two cores (a key on 10^6 control points does this).
 std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> points)
 {
     std::vector<AccelerationSpan> spans;
@@ -18,15 +22,21 @@ std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> p
         return spans;
     const std::size_t last = points.size() - 1;
     const auto acceleration = [&](std::size_t k) { return limits::staff_value.clamp(points[k].staff.acceleration); };
-    AccelerationSpan current{0, last, acceleration(0)};
-    for (std::size_t k = 1; k < last; ++k) {
-        if (acceleration(k) != current.acceleration) {
-            current.last_point = k;
-            spans.push_back(current);
-            current = {k, last, acceleration(k)};
+    std::array<std::vector<std::size_t>, 2> halves;
+    split_across_cores(last - 1, 1 << 16, [&](std::size_t from, std::size_t to) {
+        std::vector<std::size_t> starts;
+        for (std::size_t k = from + 1; k < to + 1; ++k)
+            if (acceleration(k) != acceleration(k - 1))
+                starts.push_back(k);
+        halves[from == 0 ? 0 : 1] = std::move(starts);
+    });
+    std::size_t first = 0;
+    for (const std::vector<std::size_t>& starts : halves)
+        for (const std::size_t start : starts) {
+            spans.push_back({first, start, acceleration(first)});
+            first = start;
         }
-    }
-    spans.push_back(current);
+    spans.push_back({first, last, acceleration(first)});
     return spans;
 }
 
@@ -160,20 +170,26 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
     // Control point k's tangents shape segments k − 1 and k.
     const std::size_t first = first_changed == 0 ? 0 : first_changed - 1;
     const std::size_t end = std::min(last_changed + 1, path.curve.segments.size());
-    std::size_t changed_first = end;
-    std::size_t changed_end = first;
-    for (std::size_t s = first; s < end; ++s) {
-        const HermiteSegment segment = kb_segment(points, settings.slopes, s);
-        if (segment == path.curve.segments[s])
-            continue;
-        path.curve.segments[s] = segment;
-        changed_first = std::min(changed_first, s);
-        changed_end = s + 1;
-    }
-    if (changed_first < changed_end)
-        remeasure_segments(path.curve, changed_first, changed_end);
+    // Each half makes and measures its changed segments; a global change of 10^6 control points
+    // runs on two cores.
+    std::array<std::size_t, 2> changed_first{end, end};
+    split_across_cores(end - first, 4096, [&](std::size_t from, std::size_t to) {
+        // Kept here and stored once: the halves' entries share a cache line.
+        std::size_t half_first = end;
+        SegmentMeasure measure(path.curve.basis);
+        for (std::size_t s = first + from; s < first + to; ++s) {
+            const HermiteSegment segment = kb_segment(points, settings.slopes, s);
+            if (segment == path.curve.segments[s])
+                continue;
+            path.curve.segments[s] = segment;
+            path.curve.segment_length[s] = measure(segment);
+            half_first = std::min(half_first, s);
+        }
+        changed_first[from == 0 ? 0 : 1] = half_first;
+    });
+    if (const std::size_t changed = std::min(changed_first[0], changed_first[1]); changed < end)
+        add_up_lengths(path.curve, changed);
     place_inbetweens(points, settings, path);
 }
-
 
 } // namespace apcs

@@ -1,9 +1,11 @@
 #include "apcs/animation/sampled_curve.h"
 
+#include "apcs/animation/two_cores.h"
+
 #include <algorithm>
-#include <cassert>
+#include <array>
+#include <cmath>
 #include <ranges>
-#include <thread>
 
 namespace apcs {
 
@@ -85,48 +87,59 @@ SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_
     return curve;
 }
 
-namespace {
-
-// Measures segments first … end − 1: each sample's distance from the one before, summed along
-// the segment. Segments are independent of each other.
-void measure_segments(SampledCurve& curve, std::size_t first, std::size_t end)
+SegmentMeasure::SegmentMeasure(std::span<const HermiteBasis> basis)
+    : m_x(basis.size())
+    , m_y(basis.size())
+    , m_z(basis.size())
 {
-    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
-    for (std::size_t s = first; s < end; ++s) {
-        Vec3 previous = curve.segments[s].start;
-        double length = 0.0;
-        for (std::size_t j = 1; j <= per_segment; ++j) {
-            const Vec3 point = curve.segment_sample(s, j);
-            length += distance(previous, point);
-            previous = point;
-        }
-        curve.segment_length[s] = length;
+    for (std::vector<double>& column : m_basis)
+        column.reserve(basis.size());
+    for (const HermiteBasis& weights : basis) {
+        m_basis[0].push_back(weights.f1);
+        m_basis[1].push_back(weights.f2);
+        m_basis[2].push_back(weights.f3);
+        m_basis[3].push_back(weights.f4);
     }
 }
 
-// A long path (a session's 10^6 control points: 3.2·10^7 samples) is measured on two cores; each
-// segment is measured alike either way, so the lengths are the same to the bit.
-void measure_segments_on_cores(SampledCurve& curve, std::size_t first, std::size_t end)
+// One coordinate of the samples, as HermiteSegment::apply computes it (the same operations in the
+// same order: the same bits); the ends are the control points themselves.
+void SegmentMeasure::sample_coordinate(double start, double end, double start_tangent, double end_tangent,
+                                       std::vector<double>& out) const
 {
-    constexpr std::size_t segments_worth_a_thread = 4096;
-    if (end - first >= 2 * segments_worth_a_thread && std::thread::hardware_concurrency() > 1) {
-        const std::size_t middle = first + (end - first) / 2;
-        std::thread second_half([&] { measure_segments(curve, middle, end); });
-        measure_segments(curve, first, middle);
-        second_half.join();
-    } else {
-        measure_segments(curve, first, end);
-    }
+    const std::size_t last = out.size() - 1;
+    out[0] = start;
+    for (std::size_t j = 1; j < last; ++j)
+        out[j] = start * m_basis[0][j] + end * m_basis[1][j] + start_tangent * m_basis[2][j] +
+                 end_tangent * m_basis[3][j];
+    out[last] = end;
 }
 
-// The lengths to control points first + 1 … : one addition per segment, in order.
-void sum_lengths_from(std::size_t first, SampledCurve& curve)
+// Coordinates and distances a column at a time, so that the compiler does several samples in one
+// instruction; only the sum runs one sample after another, in order (as chord_length sums).
+double SegmentMeasure::operator()(const HermiteSegment& segment)
+{
+    sample_coordinate(segment.start.x, segment.end.x, segment.start_tangent.x, segment.end_tangent.x, m_x);
+    sample_coordinate(segment.start.y, segment.end.y, segment.start_tangent.y, segment.end_tangent.y, m_y);
+    sample_coordinate(segment.start.z, segment.end.z, segment.start_tangent.z, segment.end_tangent.z, m_z);
+    // distance(previous, point) is the length of point − previous; m_x then holds the distances.
+    for (std::size_t j = 1; j < m_x.size(); ++j) {
+        const double dx = m_x[j] - m_x[j - 1];
+        const double dy = m_y[j] - m_y[j - 1];
+        const double dz = m_z[j] - m_z[j - 1];
+        m_x[j - 1] = std::sqrt(dx * dx + dy * dy + dz * dz);
+    }
+    double length = 0.0;
+    for (std::size_t j = 0; j + 1 < m_x.size(); ++j)
+        length += m_x[j];
+    return length;
+}
+
+void add_up_lengths(SampledCurve& curve, std::size_t first)
 {
     for (std::size_t s = first; s < curve.segment_length.size(); ++s)
         curve.length_to_point[s + 1] = curve.length_to_point[s] + curve.segment_length[s];
 }
-
-} // namespace
 
 void sample_curve(SampledCurve& curve, int samples_per_segment)
 {
@@ -136,16 +149,15 @@ void sample_curve(SampledCurve& curve, int samples_per_segment)
     curve.length_to_point.resize(curve.segments.empty() ? 0 : curve.segments.size() + 1);
     if (curve.segments.empty())
         return;
+    // A long path (a session's 10^6 control points: 3.2·10^7 samples) is measured on two cores;
+    // each segment alike either way, so the lengths are the same to the bit.
+    split_across_cores(curve.segments.size(), 4096, [&](std::size_t first, std::size_t end) {
+        SegmentMeasure measure(curve.basis);
+        for (std::size_t s = first; s < end; ++s)
+            curve.segment_length[s] = measure(curve.segments[s]);
+    });
     curve.length_to_point[0] = 0.0;
-    measure_segments_on_cores(curve, 0, curve.segments.size());
-    sum_lengths_from(0, curve);
-}
-
-void remeasure_segments(SampledCurve& curve, std::size_t first, std::size_t end)
-{
-    assert(curve.segment_length.size() == curve.segments.size() && first <= end && end <= curve.segments.size());
-    measure_segments_on_cores(curve, first, end);
-    sum_lengths_from(first, curve);
+    add_up_lengths(curve, 0);
 }
 
 } // namespace apcs

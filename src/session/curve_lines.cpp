@@ -1,9 +1,10 @@
 #include "apcs/session/curve_lines.h"
 
+#include "apcs/animation/two_cores.h"
+
 #include <algorithm>
 #include <array>
 #include <cassert>
-#include <thread>
 
 namespace apcs {
 
@@ -19,9 +20,11 @@ void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std:
     bool continuing = first > 0;
     for (std::size_t s = first; s < end; ++s) {
         const HermiteSegment& segment = segments[s];
+        // `from` is the pixel of the segment's start (the last point passed, drawn or not), so
+        // its other three hull points decide.
         if (continuing) {
-            const std::array<Vec3, 4> hull{segment.start, segment.start + segment.start_tangent * (1.0 / 3.0),
-                                           segment.end - segment.end_tangent * (1.0 / 3.0), segment.end};
+            const std::array<Vec3, 3> hull{segment.end, segment.start + segment.start_tangent * (1.0 / 3.0),
+                                           segment.end - segment.end_tangent * (1.0 / 3.0)};
             if (std::all_of(hull.begin(), hull.end(),
                             [&](const Vec3& point) { return view.to_device(point).rounded() == from; }))
                 continue;
@@ -68,25 +71,17 @@ void CurveLines::update(const SampledCurve& curve, const ViewTransform& view)
     for (std::size_t b = 0; b < m_blocks.size(); ++b)
         if (!m_blocks[b].current)
             stale.push_back(b);
-    const auto find_blocks = [&](std::size_t first, std::size_t end) {
+    // Blocks are independent: a global change of 10^6 control points finds its 245 blocks on two cores.
+    split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i) {
             Block& block = m_blocks[stale[i]];
             const std::size_t first_segment = stale[i] * segments_per_block;
             block.lines.clear();
-            find_curve_lines(curve, view, first_segment,
-                             std::min(first_segment + segments_per_block, segments.size()), block.lines);
+            find_curve_lines(curve, view, first_segment, std::min(first_segment + segments_per_block, segments.size()),
+                             block.lines);
             block.current = true;
         }
-    };
-    // Blocks are independent: a global change of 10^6 control points finds its 245 blocks on two cores.
-    if (stale.size() >= 2 && std::thread::hardware_concurrency() > 1) {
-        const std::size_t middle = stale.size() / 2;
-        std::thread second_half(find_blocks, middle, stale.size());
-        find_blocks(0, middle);
-        second_half.join();
-    } else {
-        find_blocks(0, stale.size());
-    }
+    });
 }
 
 void CurveLines::draw(Painter& painter, LineStyle style) const

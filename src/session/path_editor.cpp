@@ -197,9 +197,9 @@ void PathEditor::start_staff(ControlRegion region)
 // past the end of the line) is not.
 void PathEditor::set_staff_value(double value)
 {
-    StaffChange change{m_region, m_line, m_staff, m_line_start_value, staff_runs(m_setup.points, m_region)};
+    StaffChange change{m_region, m_line, m_staff, m_line_start_value, {}};
     m_staff[m_line] = snapped(value);
-    apply_staff_to_region(m_setup.points, m_region, m_staff);
+    change.points_before = apply_staff_to_region(m_setup.points, m_region, m_staff);
     if (m_staff == change.staff && staff_runs(m_setup.points, m_region) == change.points_before)
         return;
     const bool shape_changed = runs_change_shape(change.points_before, m_staff);

@@ -67,3 +67,22 @@ TEST_CASE("a staff line names its value and the next line", "[animation][region]
     REQUIRE(is_last_staff_line(StaffLine::acceleration));
     REQUIRE_FALSE(is_last_staff_line(StaffLine::tension));
 }
+
+TEST_CASE("a region of 200000 control points, done in two halves, gives back its runs as they were",
+          "[animation][region]")
+{
+    ControlPoints points(200000);
+    for (std::size_t k = 0; k < points.size(); ++k)
+        points[k].staff = {k < 100000 ? 0.25 : 0.5, 0, 0, (k / 7000) % 3 == 0 ? -0.5 : 0.0};
+    const ControlRegion region{3, 199990};
+    const std::vector<StaffRun> expected = staff_runs(points, region);
+    REQUIRE(expected.size() > 20);
+    const std::vector<StaffRun> before = apply_staff_to_region(points, region, {0.1, 0.2, 0.3, 0.4});
+    CHECK(before == expected);
+    CHECK(points[2].staff == StaffValues{0.25, 0, 0, -0.5});
+    CHECK(points[150000].staff == StaffValues{0.1, 0.2, 0.3, 0.4});
+    CHECK(points[199990].staff.tension == 0.1);
+    CHECK(points[199990].staff.acceleration == 0.0); // the region's last point starts the span after it
+    restore_staff_runs(points, region, before);
+    CHECK(staff_runs(points, region) == expected);
+}

@@ -340,3 +340,31 @@ TEST_CASE("a path re-evaluated after a change to some control points is the path
         }
     }
 }
+
+TEST_CASE("the acceleration spans of 300000 control points, found in two halves, are found in order",
+          "[animation][acceleration]")
+{
+    ControlPoints points(300000);
+    for (std::size_t k = 0; k < points.size(); ++k)
+        points[k].staff.acceleration = (k / 1000) % 4 == 1 ? 0.5 : (k % 150001 == 0 ? 3.0 : 0.0); // 3.0 clamps to 1
+    std::vector<AccelerationSpan> expected;
+    AccelerationSpan current{0, points.size() - 1, 1.0}; // point 0's 3.0, clamped
+    for (std::size_t k = 1; k + 1 < points.size(); ++k) {
+        const double acceleration = std::clamp(points[k].staff.acceleration, -1.0, 1.0);
+        if (acceleration != current.acceleration) {
+            current.last_point = k;
+            expected.push_back(current);
+            current = {k, points.size() - 1, acceleration};
+        }
+    }
+    expected.push_back(current);
+    const std::vector<AccelerationSpan> spans = acceleration_spans(points);
+    REQUIRE(spans.size() == expected.size());
+    REQUIRE(spans.size() > 100);
+    for (std::size_t s = 0; s < spans.size(); ++s) {
+        CAPTURE(s);
+        REQUIRE(spans[s].first_point == expected[s].first_point);
+        REQUIRE(spans[s].last_point == expected[s].last_point);
+        REQUIRE(spans[s].acceleration == expected[s].acceleration);
+    }
+}

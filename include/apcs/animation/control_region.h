@@ -18,13 +18,6 @@ struct ControlRegion {
     bool contains(std::size_t point) const { return point >= first && point <= last; }
 };
 
-// Gives every control point of the region the staff's tension, continuity and bias, and the
-// staff's acceleration to the spans the region covers (thesis Accer(is, ie)). A span's
-// acceleration is carried by the control point it starts from (SPEC §2.1), so the region's last
-// point keeps its own: it starts the span after the region, unless the region is the whole path.
-// Values are clamped to [-1, 1]; a region outside the path changes only the points inside it.
-void apply_staff_to_region(ControlPoints& points, ControlRegion region, const StaffValues& staff);
-
 // The staff values of a region's control points, run-length encoded (a run of equal values is one
 // entry), so that undoing a key on a whole path of 10^6 points of one value keeps one entry.
 struct StaffRun {
@@ -32,6 +25,14 @@ struct StaffRun {
     StaffValues staff;
     friend bool operator==(const StaffRun&, const StaffRun&) = default;
 };
+// Gives every control point of the region the staff's tension, continuity and bias, and the
+// staff's acceleration to the spans the region covers (thesis Accer(is, ie)). A span's
+// acceleration is carried by the control point it starts from (SPEC §2.1), so the region's last
+// point keeps its own: it starts the span after the region, unless the region is the whole path.
+// Values are clamped to [-1, 1]; a region outside the path changes only the points inside it.
+// Returns the region's values as they were (staff_runs before the change).
+std::vector<StaffRun> apply_staff_to_region(ControlPoints& points, ControlRegion region, const StaffValues& staff);
+
 std::vector<StaffRun> staff_runs(const ControlPoints& points, ControlRegion region);
 // Gives the region's control points back the values `runs` holds (staff_runs of the same region).
 void restore_staff_runs(ControlPoints& points, ControlRegion region, const std::vector<StaffRun>& runs);

@@ -2,6 +2,7 @@
 
 #include "apcs/animation/hermite.h"
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -48,9 +49,25 @@ struct SampledCurve {
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment);
 // Measures `curve.segments` (set by the caller, arrays' room kept) at samples_per_segment.
 void sample_curve(SampledCurve& curve, int samples_per_segment);
-// Segments first … end − 1 of a measured curve changed: they are measured again, and the lengths
-// to the control points after them added up again. The curve is then the one sample_curve makes,
-// to the bit.
-void remeasure_segments(SampledCurve& curve, std::size_t first, std::size_t end);
+// The chord length of a segment's samples, summed in order (as SampledCurve::chord_length sums):
+// what sample_curve keeps in segment_length, to the bit. Holds the basis in columns and room for
+// one segment's samples: one per thread.
+class SegmentMeasure {
+public:
+    explicit SegmentMeasure(std::span<const HermiteBasis> basis);
+    double operator()(const HermiteSegment& segment);
+
+private:
+    void sample_coordinate(double start, double end, double start_tangent, double end_tangent,
+                           std::vector<double>& out) const;
+
+    std::array<std::vector<double>, 4> m_basis; // f1 … f4 of every sample
+    std::vector<double> m_x;
+    std::vector<double> m_y;
+    std::vector<double> m_z;
+};
+
+// After segment_length changed from segment `first` on: the lengths to the control points after it.
+void add_up_lengths(SampledCurve& curve, std::size_t first);
 
 } // namespace apcs
