@@ -2,7 +2,6 @@
 
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/motion_path.h"
-#include "apcs/geometry/pixel_point.h"
 
 #include <algorithm>
 #include <array>
@@ -13,11 +12,10 @@
 
 namespace apcs::memory {
 
-static_assert(bytes_per_curve_sample >= 2 * sizeof(PixelPoint));
 static_assert(bytes_per_printed_sample >= sizeof(Vec3));
 static_assert(bytes_per_control_point >=
               sizeof(ControlPoint) + 2 * sizeof(HermiteSegment) + sizeof(int) + sizeof(double) +
-                  sizeof(AccelerationSpan) + 2 * sizeof(double));
+                  sizeof(AccelerationSpan) + 2 * sizeof(double) + 8);
 static_assert(bytes_per_inbetween >= sizeof(Inbetween) + sizeof(double));
 static_assert(bytes_per_frame_point >= sizeof(Vec3));
 
@@ -48,7 +46,7 @@ std::uint64_t path_bytes(const PathRequest& request)
     const std::uint64_t printed = request.printed ? bytes_per_printed_point : 0;
     const std::uint64_t printed_sample = request.printed ? bytes_per_printed_sample + printed : 0;
     const std::uint64_t inbetweens = static_cast<std::uint64_t>(std::max(request.inbetween_count, 0));
-    return saturating_sum(saturating_sum(saturating_product(samples, bytes_per_curve_sample + printed_sample),
+    return saturating_sum(saturating_sum(saturating_product(samples, printed_sample),
                                          saturating_product(inbetweens, bytes_per_inbetween + printed)),
                           saturating_product(request.control_points, bytes_per_control_point));
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 
 namespace apcs {
 
@@ -40,6 +41,13 @@ void Bitmap::toggle(int x, int y)
 }
 
 void Bitmap::clear() { std::fill(m_bits.begin(), m_bits.end(), std::uint8_t{0}); }
+
+void Bitmap::merge(const Bitmap& other)
+{
+    assert(other.m_width == m_width && other.m_height == m_height);
+    for (std::size_t i = 0; i < m_bits.size(); ++i)
+        m_bits[i] |= other.m_bits[i];
+}
 
 std::size_t Bitmap::lit_count() const
 {

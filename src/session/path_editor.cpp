@@ -43,7 +43,7 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
 {
     assert(m_setup.points.size() >= 2);
     find_moved_points();
-    m_curve_lines.update(m_evaluated.curve, m_view);
+    m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
 }
 
 // Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
@@ -59,7 +59,7 @@ void PathEditor::fit_view()
 void PathEditor::evaluate_whole_path()
 {
     evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
-    m_curve_lines.forget_all();
+    m_curve_raster.forget_all();
     find_moved_points();
 }
 
@@ -91,7 +91,7 @@ void PathEditor::show_problem(const std::string& message)
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
     const Outcome outcome = take(command);
-    m_curve_lines.update(m_evaluated.curve, m_view);
+    m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
     return outcome;
 }
 
@@ -218,7 +218,7 @@ void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
     }
     reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
     // Control point k's tangents shape segments k − 1 and k.
-    m_curve_lines.forget(region.first == 0 ? 0 : region.first - 1, region.last + 1);
+    m_curve_raster.forget(region.first == 0 ? 0 : region.first - 1, region.last + 1);
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -336,7 +336,7 @@ void PathEditor::update_waypoints(const Command& command)
         m_setup.points = m_waypoints->points();
         m_origins = m_waypoints->origins();
         m_evaluated = m_waypoints->evaluated();
-        m_curve_lines.forget_all();
+        m_curve_raster.forget_all();
         m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
                    " control points";
     } else {

@@ -69,7 +69,7 @@ PathScreenContent PathEditor::screen_content() const
         return content;
     }
     PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
-    content.curve_lines = &m_curve_lines;
+    content.curve_raster = &m_curve_raster;
     content.control_point_runs = m_point_runs;
     const bool adjusting = m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again;
     if (adjusting) {

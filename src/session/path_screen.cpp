@@ -131,8 +131,8 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
-        if (content.curve_lines != nullptr)
-            content.curve_lines->draw(inside);
+        if (content.curve_raster != nullptr)
+            content.curve_raster->draw(screen.bitmap);
         else
             draw_world_curve(inside, content.path->curve, view);
         draw_ani_path(screen, *content.path, view);

@@ -1,6 +1,6 @@
 #include "apcs/session/world_drawing.h"
 
-#include "apcs/session/curve_lines.h"
+#include "apcs/session/curve_raster.h"
 
 
 namespace apcs {

@@ -9,18 +9,18 @@ using namespace apcs;
 TEST_CASE("a path needs (segments x samples + 1) curve samples, its in-betweens and its control points",
           "[animation][memory]")
 {
-    // 2 segments x 1000 + 1 = 2001 samples x 16 (a drawn line each at most), 12 in-betweens x 48,
-    // 3 control points x 320.
-    CHECK(memory::path_bytes({3, 1000, 12, false}) == 2001 * 16 + 12 * 48 + 3 * 320);
-    CHECK(memory::path_bytes({3, 1000, 12, false}) == 33552);
-    // Printed, each sample is held (24) and each sample and in-between is a line of text of up to
-    // 60 bytes.
-    CHECK(memory::path_bytes({3, 1000, 12, true}) == 2001 * 100 + 12 * 108 + 3 * 320);
-    CHECK(memory::path_bytes({3, 1000, 12, true}) == 202356);
-    // Ten times the samples, about ten times the memory: 20001 x 16 + 576 + 960.
-    CHECK(memory::path_bytes({3, 10000, 12, false}) == 321552);
+    // Samples are computed, not held: 12 in-betweens x 48 and 3 control points x 320, whatever
+    // the samples.
+    CHECK(memory::path_bytes({3, 1000, 12, false}) == 12 * 48 + 3 * 320);
+    CHECK(memory::path_bytes({3, 100000, 12, false}) == 1536);
+    // Printed, each of the 2 x 1000 + 1 samples is held (24) and each sample and in-between is a
+    // line of text of up to 60 bytes.
+    CHECK(memory::path_bytes({3, 1000, 12, true}) == 2001 * 84 + 12 * 108 + 3 * 320);
+    CHECK(memory::path_bytes({3, 1000, 12, true}) == 170340);
+    // Ten times the samples printed, about ten times the memory: 20001 x 84 + 1296 + 960.
+    CHECK(memory::path_bytes({3, 10000, 12, true}) == 1682340);
     // The case: 1,000 control points x 100000 samples, printed.
-    CHECK(memory::path_bytes({1000, 100000, 12, true}) == 99'900'001ull * 100 + 12 * 108 + 1000 * 320);
+    CHECK(memory::path_bytes({1000, 100000, 12, true}) == 99'900'001ull * 84 + 12 * 108 + 1000 * 320);
 }
 
 TEST_CASE("frames need frames x points x 24 bytes and each key point's own share", "[animation][memory]")

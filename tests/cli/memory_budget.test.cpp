@@ -54,15 +54,15 @@ TEST_CASE("apcs path over the memory limit is refused before sampling, exit 1", 
 {
     const TempFolder folder;
     folder.write("way.dat", "0 0 0\n1 1 0\n2 0 0\n");
-    const MemoryLimitVariable limit("190K");
-    // 2001 samples x (16 + 24 + 60) + 12 x (48 + 60) + 3 x 320 = 202356 bytes.
+    const MemoryLimitVariable limit("160K");
+    // 2001 samples x (24 + 60) + 12 x (48 + 60) + 3 x 320 = 170340 bytes.
     const auto refused = run_apcs({"path", (folder / "way.dat").string(), "--samples", "1000"});
     CHECK(refused.status == 1);
     CHECK(refused.out.empty());
     CHECK(refused.err == "apcs: 3 control points x 1000 samples per segment (--samples) and 12 in-betweens "
-                         "(--inbetweens) need 197.6 KiB; the memory limit is 190 KiB (APCS_MEMORY_LIMIT); lower "
+                         "(--inbetweens) need 166.3 KiB; the memory limit is 160 KiB (APCS_MEMORY_LIMIT); lower "
                          "--samples or --inbetweens\n");
-    // 1601 samples fit: 162356 bytes.
+    // 1601 samples fit: 136740 bytes.
     const auto accepted = run_apcs({"path", (folder / "way.dat").string(), "--samples", "800"});
     CHECK(accepted.status == 0);
     CHECK(accepted.err.empty());
@@ -79,7 +79,7 @@ TEST_CASE("a 1000-point path with --samples 100000 is refused under the default 
     CHECK(refused.status == 1);
     CHECK(refused.out.empty());
     CHECK(refused.err == "apcs: 1000 control points x 100000 samples per segment (--samples) and 12 in-betweens "
-                         "(--inbetweens) need 9.3 GiB; the memory limit is 4 GiB (APCS_MEMORY_LIMIT); lower "
+                         "(--inbetweens) need 7.8 GiB; the memory limit is 4 GiB (APCS_MEMORY_LIMIT); lower "
                          "--samples or --inbetweens\n");
 }
 
@@ -88,13 +88,13 @@ TEST_CASE("apcs fit over the memory limit is refused before fitting, exit 1", "[
     const TempFolder folder;
     write_keys(folder);
     const MemoryLimitVariable limit("400K");
-    // 1002 x 4 x 84 + 4 x 608 for the printed frames, 2 x (65 x 16 + 1000 x 48 + 3 x 320) for the paths.
+    // 1002 x 4 x 84 + 4 x 608 for the printed frames, 2 x (1000 x 48 + 3 x 320) for the paths.
     const auto refused = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                    (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens",
                                    "1000", "--print"});
     CHECK(refused.status == 1);
     CHECK(refused.out.empty());
-    CHECK(refused.err == "apcs: 1002 frames of 4 points (--inbetweens 1000) and their paths need 428.8 KiB; the memory "
+    CHECK(refused.err == "apcs: 1002 frames of 4 points (--inbetweens 1000) and their paths need 426.8 KiB; the memory "
                          "limit is 400 KiB (APCS_MEMORY_LIMIT); lower --inbetweens or --samples, or use key frames of "
                          "fewer points\n");
 }
@@ -113,17 +113,17 @@ TEST_CASE("apcs fit writing its in-betweens one at a time counts the keys, not e
                                        "--out",
                                        folder.path().string()};
     {
-        // 2 x 4 x 24 + 4 x 608 for the keys, 2 x (65 x 16 + 1000 x 48 + 3 x 320) for the paths:
-        // 102624 bytes, where all 1002 frames held would need 428.8 KiB.
-        const MemoryLimitVariable limit("100K");
+        // 2 x 4 x 24 + 4 x 608 for the keys, 2 x (1000 x 48 + 3 x 320) for the paths: 100544
+        // bytes, where all 1002 frames held would need 426.8 KiB.
+        const MemoryLimitVariable limit("98K");
         const auto refused = run_apcs(fit);
         CHECK(refused.status == 1);
         CHECK(refused.err == "apcs: the key frames (2 frames of 4 points), the in-betweens made one at a time "
-                             "(--inbetweens 1000), and their paths need 100.2 KiB; the memory limit is 100 KiB "
+                             "(--inbetweens 1000), and their paths need 98.2 KiB; the memory limit is 98 KiB "
                              "(APCS_MEMORY_LIMIT); lower --inbetweens or --samples, or use key frames of fewer points\n");
         CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
     }
-    const MemoryLimitVariable limit("101K");
+    const MemoryLimitVariable limit("99K");
     const auto written = run_apcs(fit);
     CHECK(written.status == 0);
     CHECK(std::filesystem::exists(folder / "inb1000.dat"));

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include <string>
 #include <vector>
 
@@ -80,6 +82,38 @@ TEST_CASE("each staff key leaves the path as evaluating its control points afres
     matches_fresh("undoing the first key");
     apply(editor, {cmd::Accept{}, cmd::Yes{}, cmd::ChooseGlobal{}, cmd::StaffStep{-3}});
     matches_fresh("a global key on TENSION");
+}
+
+TEST_CASE("a long path's screen, kept block by block between keys, is the screen drawn afresh", "[session][editor]")
+{
+    // 10000 control points (three blocks of segments) zigzagging over the screen, so that most
+    // samples fall on pixels of their own and blocks meet in the middle of lines.
+    PathEditor::Setup setup;
+    setup.path_name = "way1.dat";
+    for (int k = 0; k < 10000; ++k)
+        setup.points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.001, std::cos(k * 0.37) * 2.0}, {}});
+    setup.settings = {{1, 1}, 8, 12, Spacing::nearest};
+    LogLines log;
+    PathEditor editor(std::move(setup), log);
+    const auto matches_fresh = [&](const char* after) {
+        CAPTURE(after);
+        PathScreenContent fresh = path_screen_content(editor.points(), editor.evaluated());
+        const GraphicsScreen drawn = draw_path_screen(fresh, editor.view_transform());
+        REQUIRE(editor.view().bitmap == drawn.bitmap);
+        REQUIRE(editor.view().bitmap.lit_count() > 20000);
+    };
+    matches_fresh("opening");
+    const Bitmap opened = editor.view().bitmap;
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{4089}, cmd::Accept{}, cmd::ArrowMove{15},
+                   cmd::Accept{}, cmd::StaffStep{-20}});
+    REQUIRE(editor.points()[4096].staff.tension == Approx(-1.0));
+    REQUIRE(editor.view().bitmap != opened);
+    matches_fresh("a local key on control points 4090 to 4105, across two blocks");
+    apply(editor, {cmd::Undo{}});
+    matches_fresh("its undo");
+    apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Yes{}, cmd::ChooseGlobal{},
+                   cmd::StaffStep{+5}});
+    matches_fresh("a global key");
 }
 
 TEST_CASE("the region's arrow starts at the first control point and cannot leave the path", "[session][editor]")

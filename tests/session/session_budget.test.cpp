@@ -68,9 +68,14 @@ TEST_CASE("frames over the memory limit are refused after KEY2, which is asked a
 TEST_CASE("a path file over the memory limit is refused, and asked again", "[session][memory]")
 {
     MemoryFiles files = example_files();
+    // 200 control points from KEY1's first point to KEY2's: 200 x 320 + 12 x 48 = 64576 bytes
+    // (curve samples are computed, not held: --samples does not count).
+    std::string way;
+    for (int k = 0; k < 200; ++k)
+        way += "0 " + std::to_string(k % 199 % 5) + " " + std::to_string(k * 10.0 / 199) + "\n";
+    files.files["way1.dat"] = way;
     SessionSettings settings;
     settings.samples_per_segment = 1000;
-    // 3 x 1000 + 1 samples x 16 + 12 x 48 + 4 x 320 = 49872 bytes.
     settings.memory_limit_bytes = 40 * 1024;
     Session session(settings, files);
     type(session, "key1.dat");
@@ -81,8 +86,8 @@ TEST_CASE("a path file over the memory limit is refused, and asked again", "[ses
     REQUIRE(session.phase() == SessionPhase::ask_path_file);
     type(session, "way1.dat");
     CHECK(session.phase() == SessionPhase::ask_path_file);
-    CHECK(shows(session, "way1.dat: 4 control points x 1000 samples per segment (--samples) and 12 "
-                                    "in-betweens (--inbetweens) need 48.7 KiB; the memory limit is 40 KiB "
+    CHECK(shows(session, "way1.dat: 200 control points x 1000 samples per segment (--samples) and 12 "
+                                    "in-betweens (--inbetweens) need 63.1 KiB; the memory limit is 40 KiB "
                                     "(APCS_MEMORY_LIMIT); use a path of fewer control points, or start apcs with a "
                                     "lower --samples or --inbetweens"));
 }

@@ -18,11 +18,11 @@ inline constexpr std::string_view limit_variable = "APCS_MEMORY_LIMIT";
 
 // What one element of a request costs, in bytes; memory_budget.cpp checks each against the sizes
 // of the types it stands for.
-// A curve sample: samples are computed when needed, not held (sampled_curve.h), but a screen may
-// keep a drawn line to each (two pixel points), and printing holds each point.
-inline constexpr std::uint64_t bytes_per_curve_sample = 16;
+// A curve sample takes no memory: samples are computed when needed (sampled_curve.h). Printed, each
+// is held, and its text.
 inline constexpr std::uint64_t bytes_per_printed_sample = 24;
-// A control point: itself, its KB segment, its arc-length table entry and its acceleration span.
+// A control point: itself, its KB segment, its arc-length table entry, its acceleration span, its
+// segment's lengths and its share of the drawn curve's block rasters (31320 bytes for 4096).
 inline constexpr std::uint64_t bytes_per_control_point = 320;
 // A shown in-between: its position, progress and sample, and its target distance.
 inline constexpr std::uint64_t bytes_per_inbetween = 48;

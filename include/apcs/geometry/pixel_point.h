@@ -22,6 +22,7 @@ struct PixelRect {
     {
         return point.x >= left && point.x < right && point.y >= top && point.y < bottom;
     }
+    friend constexpr bool operator==(const PixelRect&, const PixelRect&) = default;
 };
 
 } // namespace apcs

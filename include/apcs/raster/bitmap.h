@@ -24,6 +24,8 @@ public:
     void toggle(int x, int y);
     void clear();
     std::size_t lit_count() const;
+    // Lights every pixel lit in `other`, a bitmap of the same size.
+    void merge(const Bitmap& other);
     bool operator==(const Bitmap&) const = default;
 
     // Row `y` as packed bytes (width/8 rounded up).

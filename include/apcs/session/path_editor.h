@@ -106,7 +106,7 @@ private:
     EvaluatedPath m_evaluated;
     ViewTransform m_view;
     // The picture of the path kept between keys: only what a key changed is projected again.
-    CurveLines m_curve_lines;
+    CurveRaster m_curve_raster;
     std::vector<ControlPointRun> m_point_runs;
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale;

@@ -5,7 +5,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/raster/graphics_screen.h"
-#include "apcs/session/curve_lines.h"
+#include "apcs/session/curve_raster.h"
 #include "apcs/session/world_drawing.h"
 
 #include <array>
@@ -31,9 +31,9 @@ struct PathScreenContent {
     const EvaluatedPath* path = nullptr;
     std::span<const ControlPoint> control_points;
     // What an editor keeps between keys for the view it draws with, so that a long path is not
-    // projected again at every key: the curve's lines (updated for `path`) and the control points'
+    // projected again at every key: the curve drawn (updated for `path`) and the control points'
     // runs. Null or empty: found here.
-    const CurveLines* curve_lines = nullptr;
+    const CurveRaster* curve_raster = nullptr;
     std::span<const ControlPointRun> control_point_runs;
     StaffValues staff;
     std::optional<StaffLine> active_line;

@@ -1,6 +1,7 @@
-#include "apcs/session/curve_lines.h"
+#include "apcs/session/curve_raster.h"
 
 #include "apcs/animation/two_cores.h"
+#include "apcs/raster/painter.h"
 
 #include <algorithm>
 #include <array>
@@ -40,7 +41,7 @@ void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std:
     }
 }
 
-void CurveLines::forget(std::size_t first_segment, std::size_t end_segment)
+void CurveRaster::forget(std::size_t first_segment, std::size_t end_segment)
 {
     if (first_segment >= end_segment)
         return;
@@ -49,48 +50,54 @@ void CurveLines::forget(std::size_t first_segment, std::size_t end_segment)
         m_blocks[b].current = false;
 }
 
-void CurveLines::forget_all()
+void CurveRaster::forget_all()
 {
     for (Block& block : m_blocks)
         block.current = false;
 }
 
-void CurveLines::update(const SampledCurve& curve, const ViewTransform& view)
+void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip)
 {
-    const std::span<const HermiteSegment> segments = curve.segments;
-    const std::size_t block_count = (segments.size() + segments_per_block - 1) / segments_per_block;
-    if (m_view != view || m_segment_count != segments.size() || m_samples_per_segment != curve.samples_per_segment ||
-        m_blocks.size() != block_count) {
+    const std::size_t segment_count = curve.segments.size();
+    const std::size_t block_count = (segment_count + segments_per_block - 1) / segments_per_block;
+    if (m_view != view || m_clip != clip || m_segment_count != segment_count ||
+        m_samples_per_segment != curve.samples_per_segment || m_blocks.size() != block_count) {
         m_blocks.resize(block_count);
         forget_all();
         m_view = view;
-        m_segment_count = segments.size();
+        m_clip = clip;
+        m_segment_count = segment_count;
         m_samples_per_segment = curve.samples_per_segment;
     }
     std::vector<std::size_t> stale;
     for (std::size_t b = 0; b < m_blocks.size(); ++b)
         if (!m_blocks[b].current)
             stale.push_back(b);
-    // Blocks are independent: a global change of 10^6 control points finds its 245 blocks on two cores.
+    // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
     split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
+        std::vector<PixelLine> lines;
         for (std::size_t i = first; i < end; ++i) {
             Block& block = m_blocks[stale[i]];
             const std::size_t first_segment = stale[i] * segments_per_block;
-            block.lines.clear();
-            find_curve_lines(curve, view, first_segment, std::min(first_segment + segments_per_block, segments.size()),
-                             block.lines);
+            lines.clear();
+            find_curve_lines(curve, view, first_segment, std::min(first_segment + segments_per_block, segment_count),
+                             lines);
+            block.raster.clear();
+            Painter painter(block.raster, clip);
+            // Solid lines: the phase only says whether a line's first pixel is the last one's end.
+            int phase = first_segment > 0 ? 1 : 0;
+            for (const PixelLine& line : lines)
+                painter.styled_line(line.from, line.to, LineStyle::solid, phase);
             block.current = true;
         }
     });
 }
 
-void CurveLines::draw(Painter& painter, LineStyle style) const
+void CurveRaster::draw(Bitmap& target) const
 {
-    int phase = 0;
     for (const Block& block : m_blocks) {
         assert(block.current);
-        for (const PixelLine& line : block.lines)
-            painter.styled_line(line.from, line.to, style, phase);
+        target.merge(block.raster);
     }
 }
 

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "apcs/animation/sampled_curve.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/bitmap.h"
+
+#include <optional>
+#include <vector>
+
+namespace apcs {
+
+// One line the curve draws, in raster pixels.
+struct PixelLine {
+    PixelPoint from;
+    PixelPoint to;
+};
+
+// Segments first … end − 1 of a sampled curve as draw_world_curve draws them: the lines in order.
+// A line was drawn before when first > 0: a segment or sample that stays on the pixel where the
+// lines stand is then passed over.
+void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
+                      std::vector<PixelLine>& lines);
+
+// A KB curve drawn solid, as draw_world_curve draws it, kept between keys as one raster per block
+// of segments: a key that changes a few segments of a path of 10^6 control points draws those
+// blocks again and lays the others over them as they were. A change of every segment draws all
+// blocks again, on both cores. The pixels are draw_world_curve's for a curve that starts inside
+// the clip (as a fitted view's does); no strokes are recorded (the editor's screen is never
+// written as SVG).
+class CurveRaster {
+public:
+    // The curve's segments first … end − 1 have changed since the last update.
+    void forget(std::size_t first_segment, std::size_t end_segment);
+    // The control points moved, or their number changed.
+    void forget_all();
+    // Draws the blocks forgotten; all of them when the view, the clip, the number of segments or of
+    // samples per segment is not the last update's.
+    void update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip);
+    // Lights the curve's pixels in `target` (a 720x348 raster).
+    void draw(Bitmap& target) const;
+
+    static constexpr std::size_t segments_per_block = 4096;
+
+private:
+    struct Block {
+        bool current = false;
+        Bitmap raster;
+    };
+
+    std::vector<Block> m_blocks;
+    std::optional<ViewTransform> m_view;
+    PixelRect m_clip;
+    std::size_t m_segment_count = 0;
+    int m_samples_per_segment = 0;
+};
+
+} // namespace apcs
