@@ -80,17 +80,25 @@ bool same_clip(const std::optional<PixelRect>& a, const std::optional<PixelRect>
 template <typename Plot>
 void Painter::each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const
 {
-    double x0 = from.x;
-    double y0 = from.y;
-    double x1 = to.x;
-    double y1 = to.y;
     const PixelRect box = bounds();
-    if (!clip_segment(x0, y0, x1, y1, box.left, box.top, box.right - 1, box.bottom - 1))
-        return;
-    int x = static_cast<int>(std::lround(x0));
-    int y = static_cast<int>(std::lround(y0));
-    const int end_x = static_cast<int>(std::lround(x1));
-    const int end_y = static_cast<int>(std::lround(y1));
+    int x = from.x;
+    int y = from.y;
+    int end_x = to.x;
+    int end_y = to.y;
+    // A line inside the box needs no clipping (clipping would give back its own ends): a long
+    // curve draws millions of short lines.
+    if (!box.contains(from) || !box.contains(to)) {
+        double x0 = from.x;
+        double y0 = from.y;
+        double x1 = to.x;
+        double y1 = to.y;
+        if (!clip_segment(x0, y0, x1, y1, box.left, box.top, box.right - 1, box.bottom - 1))
+            return;
+        x = static_cast<int>(std::lround(x0));
+        y = static_cast<int>(std::lround(y0));
+        end_x = static_cast<int>(std::lround(x1));
+        end_y = static_cast<int>(std::lround(y1));
+    }
     const int dx = std::abs(end_x - x);
     const int dy = -std::abs(end_y - y);
     const int step_x = x < end_x ? 1 : -1;
