@@ -63,7 +63,22 @@ void PathEditor::evaluate_whole_path()
     find_moved_points();
 }
 
-void PathEditor::find_moved_points() { m_point_runs = control_point_runs(m_setup.points, m_view); }
+void PathEditor::find_moved_points()
+{
+    m_point_runs = control_point_runs(m_setup.points, m_view);
+    m_marks_region.reset();
+    refresh_point_marks();
+}
+
+// The marks change with the picked region only: made again when it changes, not at every key.
+void PathEditor::refresh_point_marks()
+{
+    const std::optional<PickedRegion> region = picked_region();
+    if (m_marks_region && *m_marks_region == region)
+        return;
+    m_point_marks = control_point_marks(m_point_runs, region);
+    m_marks_region = region;
+}
 
 SessionPhase PathEditor::phase() const { return m_waypoints ? SessionPhase::waypoints : m_phase; }
 
@@ -92,6 +107,7 @@ PathEditor::Outcome PathEditor::update(const Command& command)
 {
     const Outcome outcome = take(command);
     m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
+    refresh_point_marks();
     return outcome;
 }
 

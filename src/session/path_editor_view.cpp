@@ -59,6 +59,17 @@ std::size_t PathEditor::law_point() const
     }
 }
 
+// The region boxed: the one adjusted, or its first point while the last is picked.
+std::optional<PickedRegion> PathEditor::picked_region() const
+{
+    switch (m_phase) {
+    case SessionPhase::staff:
+    case SessionPhase::ask_again: return PickedRegion{m_region.first, m_region.last};
+    case SessionPhase::pick_region_last: return PickedRegion{m_region_first, m_region_first};
+    default: return std::nullopt;
+    }
+}
+
 PathScreenContent PathEditor::screen_content() const
 {
     if (m_waypoints) {
@@ -70,16 +81,12 @@ PathScreenContent PathEditor::screen_content() const
     }
     PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
     content.curve_raster = &m_curve_raster;
-    content.control_point_runs = m_point_runs;
-    const bool adjusting = m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again;
-    if (adjusting) {
+    content.control_point_marks = m_point_marks;
+    content.region = picked_region();
+    if (m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again)
         content.staff = m_staff;
-        content.region = std::pair{m_region.first, m_region.last};
-    }
     if (m_phase == SessionPhase::staff)
         content.active_line = m_line;
-    if (m_phase == SessionPhase::pick_region_last)
-        content.region = std::pair{m_region_first, m_region_first};
     if (m_phase == SessionPhase::pick_region_first || m_phase == SessionPhase::pick_region_last) {
         content.arrow_at = m_arrow;
         content.arrow_home = !m_arrow.has_value();

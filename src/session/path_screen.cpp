@@ -43,6 +43,66 @@ std::vector<ControlPointRun> control_point_runs(std::span<const ControlPoint> po
 
 namespace {
 
+// Each run's mark, split where the picked region starts or ends.
+std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std::optional<PickedRegion> region)
+{
+    std::vector<PixelMark> marks;
+    for (const ControlPointRun& run : runs) {
+        if (!region || run.last < region->first || run.first > region->second) {
+            marks.push_back({run.at, MarkKind::control_point});
+            continue;
+        }
+        if (run.first < region->first)
+            marks.push_back({run.at, MarkKind::control_point});
+        marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse});
+        if (run.last > region->second)
+            marks.push_back({run.at, MarkKind::control_point});
+    }
+    return marks;
+}
+
+} // namespace
+
+// A cell shows the last control point mark laid in it, and a picture draws every mark's x and box:
+// so of a pixel's marks the last is kept where it stands, after a boxed copy when an earlier one
+// was boxed and the last is not. Marks off the raster are kept as they are (part of an x may show).
+std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs, std::optional<PickedRegion> region)
+{
+    std::vector<PixelMark> all = marks_of_runs(runs, region);
+    // A few thousand marks cost less laid twice than a table of every pixel.
+    constexpr std::size_t worth_a_table = 4096;
+    if (all.size() <= worth_a_table)
+        return all;
+    const Bitmap raster;
+    const auto pixel = [&](const PixelMark& mark) {
+        return static_cast<std::size_t>(mark.at.y) * static_cast<std::size_t>(raster.width()) +
+               static_cast<std::size_t>(mark.at.x);
+    };
+    std::vector<std::size_t> last(static_cast<std::size_t>(raster.width() * raster.height()), all.size());
+    std::vector<bool> boxed(last.size(), false);
+    for (std::size_t i = 0; i < all.size(); ++i)
+        if (raster.contains(all[i].at.x, all[i].at.y)) {
+            last[pixel(all[i])] = i;
+            boxed[pixel(all[i])] = boxed[pixel(all[i])] || all[i].style == CellStyle::reverse;
+        }
+    std::vector<PixelMark> kept;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const PixelMark& mark = all[i];
+        if (!raster.contains(mark.at.x, mark.at.y)) {
+            kept.push_back(mark);
+            continue;
+        }
+        if (last[pixel(mark)] != i)
+            continue;
+        if (boxed[pixel(mark)] && mark.style != CellStyle::reverse)
+            kept.push_back({mark.at, MarkKind::control_point, CellStyle::reverse});
+        kept.push_back(mark);
+    }
+    return kept;
+}
+
+namespace {
+
 void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenContent& content)
 {
     for (const StaffLine line : staff_lines) {
@@ -84,27 +144,15 @@ void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const View
 }
 
 // Pre_Draw: every control point marked with an x; those of the picked region in reverse video.
-// Points that share a pixel one after another show one mark (the same mark drawn again changes
-// nothing), split where the region starts or ends.
 void pre_draw(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
 {
-    std::vector<ControlPointRun> found;
-    std::span<const ControlPointRun> runs = content.control_point_runs;
-    if (runs.empty() && !content.control_points.empty()) {
-        found = control_point_runs(content.control_points, view);
-        runs = found;
+    if (!content.control_point_marks.empty()) {
+        screen.marks.insert(screen.marks.end(), content.control_point_marks.begin(), content.control_point_marks.end());
+        return;
     }
-    for (const ControlPointRun& run : runs) {
-        if (!content.region || run.last < content.region->first || run.first > content.region->second) {
-            screen.marks.push_back({run.at, MarkKind::control_point});
-            continue;
-        }
-        if (run.first < content.region->first)
-            screen.marks.push_back({run.at, MarkKind::control_point});
-        screen.marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse});
-        if (run.last > content.region->second)
-            screen.marks.push_back({run.at, MarkKind::control_point});
-    }
+    const std::vector<PixelMark> marks =
+        control_point_marks(control_point_runs(content.control_points, view), content.region);
+    screen.marks.insert(screen.marks.end(), marks.begin(), marks.end());
 }
 
 // The arrow of Scan_Control_Point: beside its control point, or at the top-left before it moves.

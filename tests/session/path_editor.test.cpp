@@ -116,6 +116,37 @@ TEST_CASE("a long path's screen, kept block by block between keys, is the screen
     matches_fresh("a global key");
 }
 
+TEST_CASE("a scribbled path's control points, one mark per pixel, show what a mark per point shows",
+          "[session][editor]")
+{
+    PathEditor::Setup setup;
+    setup.path_name = "way1.dat";
+    for (int k = 0; k < 10000; ++k)
+        setup.points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.001, std::cos(k * 0.37) * 2.0}, {}});
+    LogLines log;
+    PathEditor editor(std::move(setup), log);
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{3999}, cmd::Accept{}, cmd::ArrowMove{2000},
+                   cmd::Accept{}, cmd::StaffStep{+2}});
+    const GraphicsScreen shown = editor.view();
+    GraphicsScreen every = shown;
+    std::erase_if(every.marks, [](const PixelMark& mark) { return mark.kind == MarkKind::control_point; });
+    for (std::size_t k = 0; k < editor.points().size(); ++k)
+        every.marks.push_back({editor.view_transform().to_device(editor.points()[k].position).rounded(),
+                               MarkKind::control_point, k >= 4000 && k <= 6000 ? CellStyle::reverse : CellStyle::plain});
+    const auto control_marks = [](const GraphicsScreen& screen) {
+        return std::count_if(screen.marks.begin(), screen.marks.end(),
+                             [](const PixelMark& mark) { return mark.kind == MarkKind::control_point; });
+    };
+    REQUIRE(control_marks(shown) < 9000); // 8811: points that share a pixel show one mark
+    REQUIRE(control_marks(every) == 10000);
+    for (const CellArea area : {CellArea{80, 24}, CellArea{200, 60}})
+        for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille}) {
+            CAPTURE(area.columns);
+            REQUIRE(render_cells(shown, area, glyphs) == render_cells(every, area, glyphs));
+        }
+    REQUIRE(render_raster(shown) == render_raster(every));
+}
+
 TEST_CASE("the region's arrow starts at the first control point and cannot leave the path", "[session][editor]")
 {
     LogLines log;

@@ -230,3 +230,25 @@ TEST_CASE("a long curve drawn segment by segment is pixel for pixel its samples 
         REQUIRE(segment_strokes.size() == sample_strokes.size());
     }
 }
+
+TEST_CASE("of many control point marks on one pixel the last is kept, boxed first when an earlier was",
+          "[session][screen]")
+{
+    // 5000 runs on pixels of their own, then one more on the first run's pixel, out of the region.
+    std::vector<ControlPointRun> runs;
+    for (int i = 0; i < 5000; ++i)
+        runs.push_back({{10 + i % 700, 10 + i / 700}, static_cast<std::size_t>(i), static_cast<std::size_t>(i)});
+    runs.push_back({{10, 10}, 5000, 5000});
+    runs.push_back({{-3, 20}, 5001, 5001}); // off the raster: kept as it is
+    const std::vector<PixelMark> marks = control_point_marks(runs, PickedRegion{0, 0});
+    REQUIRE(marks.size() == 5002);
+    CHECK(marks.front().at == PixelPoint{11, 10}); // the first pixel's marks moved to its last
+    CHECK(marks[4999].at == PixelPoint{10, 10});
+    CHECK(marks[4999].style == CellStyle::reverse);
+    CHECK(marks[5000].at == PixelPoint{10, 10});
+    CHECK(marks[5000].style == CellStyle::plain);
+    CHECK(marks[5001].at == PixelPoint{-3, 20});
+    // Few marks are laid as they come.
+    const std::vector<PixelMark> few = control_point_marks(std::span(runs).first(10), std::nullopt);
+    CHECK(few.size() == 10);
+}

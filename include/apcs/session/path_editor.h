@@ -94,6 +94,8 @@ private:
     void fit_view();
     void evaluate_whole_path();
     void find_moved_points();
+    void refresh_point_marks();
+    std::optional<PickedRegion> picked_region() const;
     bool single_point_region() const { return m_region.first == m_region.last; }
     std::size_t law_point() const;
     std::string message() const;
@@ -108,6 +110,8 @@ private:
     // The picture of the path kept between keys: only what a key changed is projected again.
     CurveRaster m_curve_raster;
     std::vector<ControlPointRun> m_point_runs;
+    std::vector<PixelMark> m_point_marks;
+    std::optional<std::optional<PickedRegion>> m_marks_region; // the region m_point_marks show
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale;
     SessionPhase m_phase = SessionPhase::choose_control;

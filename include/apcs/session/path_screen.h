@@ -26,19 +26,27 @@ struct ControlPointRun {
 };
 std::vector<ControlPointRun> control_point_runs(std::span<const ControlPoint> points, const ViewTransform& view);
 
+// First and last control point of a picked region.
+using PickedRegion = std::pair<std::size_t, std::size_t>;
+
+// The control points' marks, in reverse video inside `region`, one per pixel where they are many
+// (a path of 10^6 control points scribbled over the screen has up to one per pixel, not 10^6):
+// the cells and the picture show what a mark for every point would show.
+std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs, std::optional<PickedRegion> region);
+
 // Everything the path screen shows (thesis figs. 4.2.4–4.2.6).
 struct PathScreenContent {
     const EvaluatedPath* path = nullptr;
     std::span<const ControlPoint> control_points;
     // What an editor keeps between keys for the view it draws with, so that a long path is not
     // projected again at every key: the curve drawn (updated for `path`) and the control points'
-    // runs. Null or empty: found here.
+    // marks (control_point_marks, for `region`). Null or empty: found here.
     const CurveRaster* curve_raster = nullptr;
-    std::span<const ControlPointRun> control_point_runs;
+    std::span<const PixelMark> control_point_marks;
     StaffValues staff;
     std::optional<StaffLine> active_line;
     // Local control: the picked region (first, last control point) drawn with a box around its x's.
-    std::optional<std::pair<std::size_t, std::size_t>> region;
+    std::optional<PickedRegion> region;
     // Local control while picking: the arrow points at this control point.
     std::optional<std::size_t> arrow_at;
     // Before the first move the arrow waits at the top-left of the screen (thesis fig. 4.2.5).
