@@ -97,14 +97,53 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
 {
+    place_inbetweens_on(acceleration_spans(points), points, settings, path);
+}
+
+namespace {
+
+// Whether control points first … last still have the accelerations of the spans `timings` were
+// placed on: then a key on them leaves the spans as they were, and the 10^6 points' accelerations
+// need not be read again. Spans cover the points as [first_point, last_point).
+bool same_accelerations(std::span<const ControlPoint> points, const std::vector<SpanTiming>& timings,
+                        std::size_t first, std::size_t last)
+{
+    if (timings.empty())
+        return false;
+    auto span = std::upper_bound(timings.begin(), timings.end(), first,
+                                 [](std::size_t point, const SpanTiming& timing) { return point < timing.span.first_point; });
+    if (span == timings.begin())
+        return false;
+    --span;
+    for (std::size_t k = first; k <= last && k + 1 < points.size(); ++k) {
+        while (span != timings.end() && k >= span->span.last_point)
+            ++span;
+        if (span == timings.end() || limits::staff_value.clamp(points[k].staff.acceleration) != span->span.acceleration)
+            return false;
+    }
+    return true;
+}
+
+std::vector<AccelerationSpan> spans_of(const std::vector<SpanTiming>& timings)
+{
+    std::vector<AccelerationSpan> spans;
+    spans.reserve(timings.size());
+    for (const SpanTiming& timing : timings)
+        spans.push_back(timing.span);
+    return spans;
+}
+
+} // namespace
+
+void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const ControlPoint> points,
+                         const PathSettings& settings, EvaluatedPath& path)
+{
     path.inbetweens.clear();
     path.span_timings.clear();
     path.frames_freeze = false;
     if (path.curve.segments.empty())
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
-
-    const std::vector<AccelerationSpan> spans = acceleration_spans(points);
     const bool exact = settings.spacing == Spacing::exact;
     const ArcLengthTable arc_table = exact ? ArcLengthTable(path.curve.segments) : ArcLengthTable({});
     // Distance from the curve's start to control point k, in the measure the spacing uses.
@@ -167,6 +206,9 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
         evaluate_path(points, settings, path);
         return;
     }
+    std::vector<AccelerationSpan> spans = same_accelerations(points, path.span_timings, first_changed, last_changed)
+                                              ? spans_of(path.span_timings)
+                                              : acceleration_spans(points);
     // Control point k's tangents shape segments k − 1 and k.
     const std::size_t first = first_changed == 0 ? 0 : first_changed - 1;
     const std::size_t end = std::min(last_changed + 1, path.curve.segments.size());
@@ -189,7 +231,7 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
     });
     if (const std::size_t changed = std::min(changed_first[0], changed_first[1]); changed < end)
         add_up_lengths(path.curve, changed);
-    place_inbetweens(points, settings, path);
+    place_inbetweens_on(std::move(spans), points, settings, path);
 }
 
 } // namespace apcs

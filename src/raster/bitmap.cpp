@@ -42,10 +42,13 @@ void Bitmap::toggle(int x, int y)
 
 void Bitmap::clear() { std::fill(m_bits.begin(), m_bits.end(), std::uint8_t{0}); }
 
-void Bitmap::merge(const Bitmap& other)
+void Bitmap::merge(const Bitmap& other) { merge(other, 0, m_height); }
+
+void Bitmap::merge(const Bitmap& other, int first_row, int end_row)
 {
     assert(other.m_width == m_width && other.m_height == m_height);
-    for (std::size_t i = 0; i < m_bits.size(); ++i)
+    const auto clamped = [&](int row) { return static_cast<std::size_t>(std::clamp(row, 0, m_height)); };
+    for (std::size_t i = clamped(first_row) * m_bytes_per_row; i < clamped(end_row) * m_bytes_per_row; ++i)
         m_bits[i] |= other.m_bits[i];
 }
 

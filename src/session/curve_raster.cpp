@@ -73,32 +73,49 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
     for (std::size_t b = 0; b < m_blocks.size(); ++b)
         if (!m_blocks[b].current)
             stale.push_back(b);
+    if (stale.empty() && !m_blocks.empty())
+        return;
     // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
     split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
         std::vector<PixelLine> lines;
-        for (std::size_t i = first; i < end; ++i) {
-            Block& block = m_blocks[stale[i]];
-            const std::size_t first_segment = stale[i] * segments_per_block;
-            lines.clear();
-            find_curve_lines(curve, view, first_segment, std::min(first_segment + segments_per_block, segment_count),
-                             lines);
-            block.raster.clear();
-            Painter painter(block.raster, clip);
-            // Solid lines: the phase only says whether a line's first pixel is the last one's end.
-            int phase = first_segment > 0 ? 1 : 0;
-            for (const PixelLine& line : lines)
-                painter.styled_line(line.from, line.to, LineStyle::solid, phase);
-            block.current = true;
-        }
+        for (std::size_t i = first; i < end; ++i)
+            draw_block(m_blocks[stale[i]], curve, stale[i] * segments_per_block, lines);
     });
+    compose();
+}
+
+void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment,
+                             std::vector<PixelLine>& lines) const
+{
+    lines.clear();
+    find_curve_lines(curve, *m_view, first_segment, std::min(first_segment + segments_per_block, m_segment_count),
+                     lines);
+    block.raster.clear();
+    block.first_row = block.raster.height();
+    block.end_row = 0;
+    Painter painter(block.raster, m_clip);
+    // Solid lines: the phase only says whether a line's first pixel is the last one's end.
+    int phase = first_segment > 0 ? 1 : 0;
+    for (const PixelLine& line : lines) {
+        painter.styled_line(line.from, line.to, LineStyle::solid, phase);
+        block.first_row = std::min({block.first_row, line.from.y, line.to.y});
+        block.end_row = std::max({block.end_row, line.from.y + 1, line.to.y + 1});
+    }
+    block.current = true;
+}
+
+// A long trajectory's blocks each reach a few rows: only those are laid.
+void CurveRaster::compose()
+{
+    m_composed.clear();
+    for (const Block& block : m_blocks)
+        m_composed.merge(block.raster, block.first_row, block.end_row);
 }
 
 void CurveRaster::draw(Bitmap& target) const
 {
-    for (const Block& block : m_blocks) {
-        assert(block.current);
-        target.merge(block.raster);
-    }
+    assert(std::all_of(m_blocks.begin(), m_blocks.end(), [](const Block& block) { return block.current; }));
+    target.merge(m_composed);
 }
 
 } // namespace apcs

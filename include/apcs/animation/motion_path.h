@@ -88,5 +88,8 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
 // Decide_Show_Inbetween): the spans share them by length, each places its own by its law. All an
 // acceleration changes: the editor calls it alone for a key on the ACCELERATION line.
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
+// The same on spans known to be acceleration_spans(points).
+void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const ControlPoint> points,
+                         const PathSettings& settings, EvaluatedPath& path);
 
 } // namespace apcs

@@ -24,8 +24,10 @@ public:
     void toggle(int x, int y);
     void clear();
     std::size_t lit_count() const;
-    // Lights every pixel lit in `other`, a bitmap of the same size.
+    // Lights every pixel lit in `other`, a bitmap of the same size: all of it, or its rows
+    // first_row … end_row − 1 (clamped to the raster).
     void merge(const Bitmap& other);
+    void merge(const Bitmap& other, int first_row, int end_row);
     bool operator==(const Bitmap&) const = default;
 
     // Row `y` as packed bytes (width/8 rounded up).

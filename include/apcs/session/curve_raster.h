@@ -45,9 +45,17 @@ private:
     struct Block {
         bool current = false;
         Bitmap raster;
+        // The rows its lines reach: first … end − 1.
+        int first_row = 0;
+        int end_row = 0;
     };
 
+    void draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment, std::vector<PixelLine>& lines) const;
+    void compose();
+
     std::vector<Block> m_blocks;
+    // All blocks laid over one another, made again when one is drawn again.
+    Bitmap m_composed;
     std::optional<ViewTransform> m_view;
     PixelRect m_clip;
     std::size_t m_segment_count = 0;
