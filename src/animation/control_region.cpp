@@ -13,10 +13,6 @@ namespace {
 // The lines that shape the tangents, and so the segments.
 constexpr std::array shape_lines{StaffLine::tension, StaffLine::continuity, StaffLine::bias};
 
-} // namespace
-
-namespace {
-
 void add_to_runs(std::vector<StaffRun>& runs, const StaffValues& staff)
 {
     if (!runs.empty() && runs.back().staff == staff)

@@ -202,7 +202,7 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
     const bool same_shape_of_arrays = points.size() >= 2 && path.curve.segments.size() == points.size() - 1 &&
                                       path.curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
                                       path.curve.segment_length.size() == path.curve.segments.size();
-    if (!same_shape_of_arrays || first_changed > last_changed) {
+    if (!same_shape_of_arrays || first_changed > last_changed || first_changed >= points.size()) {
         evaluate_path(points, settings, path);
         return;
     }

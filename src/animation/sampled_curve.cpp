@@ -55,7 +55,7 @@ double SampledCurve::chord_length(std::size_t i) const
     double length = length_to_point[segment];
     if (segment == segments.size())
         return length;
-    // Summed as measure_segments sums, from the segment's start: the same number to the bit.
+    // Summed as SegmentMeasure sums, from the segment's start: the same number to the bit.
     double within = 0.0;
     Vec3 previous = segments[segment].start;
     for (std::size_t j = 1; j <= i % per_segment; ++j) {

@@ -1,6 +1,7 @@
 #include "apcs/animation/two_cores.h"
 
 #include <exception>
+#include <system_error>
 #include <thread>
 
 namespace apcs {
@@ -14,13 +15,20 @@ void split_across_cores(std::size_t count, std::size_t worth_a_thread,
     }
     const std::size_t middle = count / 2;
     std::exception_ptr second_problem;
-    std::thread second_half([&] {
-        try {
-            work(middle, count);
-        } catch (...) {
-            second_problem = std::current_exception();
-        }
-    });
+    std::thread second_half;
+    try {
+        second_half = std::thread([&] {
+            try {
+                work(middle, count);
+            } catch (...) {
+                second_problem = std::current_exception();
+            }
+        });
+    } catch (const std::system_error&) {
+        // No thread to be had (out of threads or address space): both halves here, in order.
+        work(0, count);
+        return;
+    }
     std::exception_ptr first_problem;
     try {
         work(0, middle);

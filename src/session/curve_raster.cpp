@@ -4,42 +4,9 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
-#include <array>
 #include <cassert>
 
 namespace apcs {
-
-void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
-                      std::vector<PixelLine>& lines)
-{
-    const std::span<const HermiteSegment> segments = curve.segments;
-    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
-    assert(end <= segments.size());
-    if (first >= end)
-        return;
-    PixelPoint from = view.to_device(segments[first].start).rounded();
-    bool continuing = first > 0;
-    for (std::size_t s = first; s < end; ++s) {
-        const HermiteSegment& segment = segments[s];
-        // `from` is the pixel of the segment's start (the last point passed, drawn or not), so
-        // its other three hull points decide.
-        if (continuing) {
-            const std::array<Vec3, 3> hull{segment.end, segment.start + segment.start_tangent * (1.0 / 3.0),
-                                           segment.end - segment.end_tangent * (1.0 / 3.0)};
-            if (std::all_of(hull.begin(), hull.end(),
-                            [&](const Vec3& point) { return view.to_device(point).rounded() == from; }))
-                continue;
-        }
-        for (std::size_t j = 1; j <= per_segment; ++j) {
-            const PixelPoint to = view.to_device(curve.segment_sample(s, j)).rounded();
-            if (to == from && continuing)
-                continue;
-            lines.push_back({from, to});
-            from = to;
-            continuing = true;
-        }
-    }
-}
 
 void CurveRaster::forget(std::size_t first_segment, std::size_t end_segment)
 {
@@ -77,30 +44,26 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
         return;
     // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
     split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
-        std::vector<PixelLine> lines;
         for (std::size_t i = first; i < end; ++i)
-            draw_block(m_blocks[stale[i]], curve, stale[i] * segments_per_block, lines);
+            draw_block(m_blocks[stale[i]], curve, stale[i] * segments_per_block);
     });
     compose();
 }
 
-void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment,
-                             std::vector<PixelLine>& lines) const
+void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const
 {
-    lines.clear();
-    find_curve_lines(curve, *m_view, first_segment, std::min(first_segment + segments_per_block, m_segment_count),
-                     lines);
     block.raster.clear();
     block.first_row = block.raster.height();
     block.end_row = 0;
     Painter painter(block.raster, m_clip);
     // Solid lines: the phase only says whether a line's first pixel is the last one's end.
     int phase = first_segment > 0 ? 1 : 0;
-    for (const PixelLine& line : lines) {
-        painter.styled_line(line.from, line.to, LineStyle::solid, phase);
-        block.first_row = std::min({block.first_row, line.from.y, line.to.y});
-        block.end_row = std::max({block.end_row, line.from.y + 1, line.to.y + 1});
-    }
+    for_each_curve_line(curve, *m_view, first_segment, std::min(first_segment + segments_per_block, m_segment_count),
+                        [&](const PixelLine& line) {
+                            painter.styled_line(line.from, line.to, LineStyle::solid, phase);
+                            block.first_row = std::min({block.first_row, line.from.y, line.to.y});
+                            block.end_row = std::max({block.end_row, line.from.y + 1, line.to.y + 1});
+                        });
     block.current = true;
 }
 

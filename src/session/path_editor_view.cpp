@@ -74,6 +74,7 @@ PathScreenContent PathEditor::screen_content() const
 {
     if (m_waypoints) {
         PathScreenContent content = path_screen_content(m_waypoints->points(), m_waypoints->evaluated());
+        content.record_strokes = false;
         content.region = std::pair{m_waypoints->chosen(), m_waypoints->chosen()};
         content.arrow_at = m_waypoints->chosen();
         content.message = m_waypoints->message();
@@ -81,6 +82,7 @@ PathScreenContent PathEditor::screen_content() const
     }
     PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
     content.curve_raster = &m_curve_raster;
+    content.record_strokes = false;
     content.control_point_marks = m_point_marks;
     content.region = picked_region();
     if (m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again)

@@ -172,9 +172,12 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     // Make_Boundary.
-    painter.record_into(screen.strokes).rectangle(layout::drawing_area);
+    if (content.record_strokes)
+        painter.record_into(screen.strokes);
+    painter.rectangle(layout::drawing_area);
     Painter inside(screen.bitmap, layout::inside_boundary);
-    inside.record_into(screen.strokes);
+    if (content.record_strokes)
+        inside.record_into(screen.strokes);
     for (const auto& polyline : content.key_frame_polylines)
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {

@@ -2,7 +2,6 @@
 
 #include "apcs/session/curve_raster.h"
 
-
 namespace apcs {
 
 ViewScene& ViewScene::add(std::span<const Vec3> points)
@@ -71,11 +70,9 @@ void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const
 
 void draw_world_curve(Painter& painter, const SampledCurve& curve, const ViewTransform& view, LineStyle style)
 {
-    std::vector<PixelLine> lines;
-    find_curve_lines(curve, view, 0, curve.segments.size(), lines);
     int phase = 0;
-    for (const PixelLine& line : lines)
-        painter.styled_line(line.from, line.to, style, phase);
+    for_each_curve_line(curve, view, 0, curve.segments.size(),
+                        [&](const PixelLine& line) { painter.styled_line(line.from, line.to, style, phase); });
 }
 
 } // namespace apcs

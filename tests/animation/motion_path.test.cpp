@@ -345,6 +345,9 @@ TEST_CASE("a path re-evaluated after a change to some control points is the path
             reevaluate_path(changed, settings, path, change.first, change.last);
             require_same_path(path, evaluate_path(changed, settings));
         }
+        // A region outside the path: evaluated afresh, never read past the end.
+        reevaluate_path(changed, settings, path, 20000, 20005);
+        require_same_path(path, evaluate_path(changed, settings));
     }
 }
 

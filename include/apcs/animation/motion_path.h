@@ -81,7 +81,8 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 // control points first_changed … last_changed have changed (not their number or positions): only
 // the segments whose tangents they set are made and sampled again, the lengths after them added
 // up again, and the in-betweens placed anew. An acceleration changes no segment. The result is
-// evaluate_path's, to the bit; arrays of another size are evaluated afresh.
+// evaluate_path's, to the bit; arrays of another size, or a region outside the path, are evaluated
+// afresh.
 void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                      std::size_t first_changed, std::size_t last_changed);
 // The shown in-betweens of a path whose segments and curve are made (Cal_INBETWEENS,

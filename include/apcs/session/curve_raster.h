@@ -15,11 +15,35 @@ struct PixelLine {
     PixelPoint to;
 };
 
-// Segments first … end − 1 of a sampled curve as draw_world_curve draws them: the lines in order.
-// A line was drawn before when first > 0: a segment or sample that stays on the pixel where the
-// lines stand is then passed over.
-void find_curve_lines(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
-                      std::vector<PixelLine>& lines);
+// Segments first … end − 1 of a sampled curve as draw_world_curve draws them: emit(line) for each
+// line in order, none kept. A line was drawn before when first > 0: a segment or sample that stays
+// on the pixel where the lines stand is then passed over; a segment whose Bézier hull lies on that
+// pixel is passed over whole (`from` is its start's pixel, so its other three hull points decide).
+template <typename Emit>
+void for_each_curve_line(const SampledCurve& curve, const ViewTransform& view, std::size_t first, std::size_t end,
+                         Emit emit)
+{
+    if (first >= end || end > curve.segments.size())
+        return;
+    const std::size_t per_segment = static_cast<std::size_t>(curve.samples_per_segment);
+    PixelPoint from = view.to_device(curve.segments[first].start).rounded();
+    bool continuing = first > 0;
+    const auto on_from = [&](const Vec3& point) { return view.to_device(point).rounded() == from; };
+    for (std::size_t s = first; s < end; ++s) {
+        const HermiteSegment& segment = curve.segments[s];
+        if (continuing && on_from(segment.end) && on_from(segment.start + segment.start_tangent * (1.0 / 3.0)) &&
+            on_from(segment.end - segment.end_tangent * (1.0 / 3.0)))
+            continue;
+        for (std::size_t j = 1; j <= per_segment; ++j) {
+            const PixelPoint to = view.to_device(curve.segment_sample(s, j)).rounded();
+            if (to == from && continuing)
+                continue;
+            emit(PixelLine{from, to});
+            from = to;
+            continuing = true;
+        }
+    }
+}
 
 // A KB curve drawn solid, as draw_world_curve draws it, kept between keys as one raster per block
 // of segments: a key that changes a few segments of a path of 10^6 control points draws those
@@ -50,7 +74,7 @@ private:
         int end_row = 0;
     };
 
-    void draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment, std::vector<PixelLine>& lines) const;
+    void draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const;
     void compose();
 
     std::vector<Block> m_blocks;

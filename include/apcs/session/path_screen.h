@@ -17,8 +17,8 @@
 namespace apcs {
 
 // Control points that fall on one pixel one after another, first … last: the path screen marks
-// them once (or once per part in and out of the picked region). A path of 10^6 control points has
-// a few thousand runs on the screen.
+// them once (or once per part in and out of the picked region). A long trajectory of 10^6 control
+// points has a few thousand runs; a path scribbled over the screen up to one per point.
 struct ControlPointRun {
     PixelPoint at;
     std::size_t first = 0;
@@ -43,6 +43,9 @@ struct PathScreenContent {
     // marks (control_point_marks, for `region`). Null or empty: found here.
     const CurveRaster* curve_raster = nullptr;
     std::span<const PixelMark> control_point_marks;
+    // The lines as vector strokes too, for SVG pictures; a terminal screen needs none (a long
+    // scribbled path would hold one per pixel step).
+    bool record_strokes = true;
     StaffValues staff;
     std::optional<StaffLine> active_line;
     // Local control: the picked region (first, last control point) drawn with a box around its x's.
