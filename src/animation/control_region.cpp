@@ -13,12 +13,12 @@ namespace {
 // The lines that shape the tangents, and so the segments.
 constexpr std::array shape_lines{StaffLine::tension, StaffLine::continuity, StaffLine::bias};
 
-void add_to_runs(std::vector<StaffRun>& runs, const StaffValues& staff)
+void add_to_runs(std::vector<StaffRun>& runs, const StaffRun& run)
 {
-    if (!runs.empty() && runs.back().staff == staff)
-        ++runs.back().count;
+    if (!runs.empty() && runs.back().staff == run.staff)
+        runs.back().count += run.count;
     else
-        runs.push_back({1, staff});
+        runs.push_back(run);
 }
 
 } // namespace
@@ -39,7 +39,7 @@ std::vector<StaffRun> apply_staff_to_region(ControlPoints& points, ControlRegion
         std::vector<StaffRun> before;
         for (std::size_t k = region.first + from; k < region.first + to; ++k) {
             StaffValues& values = points[k].staff;
-            add_to_runs(before, values);
+            add_to_runs(before, {1, values});
             const double acceleration = k < region.last || whole ? clamped.acceleration : values.acceleration;
             values = clamped;
             values.acceleration = acceleration;
@@ -47,12 +47,8 @@ std::vector<StaffRun> apply_staff_to_region(ControlPoints& points, ControlRegion
         halves[from == 0 ? 0 : 1] = std::move(before);
     });
     std::vector<StaffRun> before = std::move(halves[0]);
-    for (const StaffRun& run : halves[1]) {
-        if (!before.empty() && before.back().staff == run.staff)
-            before.back().count += run.count;
-        else
-            before.push_back(run);
-    }
+    for (const StaffRun& run : halves[1])
+        add_to_runs(before, run);
     return before;
 }
 
@@ -60,7 +56,7 @@ std::vector<StaffRun> staff_runs(const ControlPoints& points, ControlRegion regi
 {
     std::vector<StaffRun> runs;
     for (std::size_t k = region.first; k <= region.last && k < points.size(); ++k)
-        add_to_runs(runs, points[k].staff);
+        add_to_runs(runs, {1, points[k].staff});
     return runs;
 }
 

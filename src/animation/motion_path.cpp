@@ -196,15 +196,15 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
             path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
 }
 
-void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                     std::size_t first_changed, std::size_t last_changed)
+SegmentRange reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                             std::size_t first_changed, std::size_t last_changed)
 {
     const bool same_shape_of_arrays = points.size() >= 2 && path.curve.segments.size() == points.size() - 1 &&
                                       path.curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
                                       path.curve.segment_length.size() == path.curve.segments.size();
     if (!same_shape_of_arrays || first_changed > last_changed || first_changed >= points.size()) {
         evaluate_path(points, settings, path);
-        return;
+        return {0, path.curve.segments.size()};
     }
     std::vector<AccelerationSpan> spans = same_accelerations(points, path.span_timings, first_changed, last_changed)
                                               ? spans_of(path.span_timings)
@@ -232,6 +232,7 @@ void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& s
     if (const std::size_t changed = std::min(changed_first[0], changed_first[1]); changed < end)
         add_up_lengths(path.curve, changed);
     place_inbetweens_on(std::move(spans), points, settings, path);
+    return {first, end};
 }
 
 } // namespace apcs

@@ -42,7 +42,7 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     , m_tangent_scale(tangent_arrow_scale(m_setup.points, m_view))
 {
     assert(m_setup.points.size() >= 2);
-    find_moved_points();
+    mark_control_points();
     m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
 }
 
@@ -52,7 +52,7 @@ void PathEditor::fit_view()
 {
     m_view = fitted_view(m_setup, m_evaluated);
     m_tangent_scale = tangent_arrow_scale(m_setup.points, m_view);
-    find_moved_points();
+    mark_control_points();
 }
 
 // After the control points moved, were inserted or deleted: the whole path and its picture anew.
@@ -60,10 +60,11 @@ void PathEditor::evaluate_whole_path()
 {
     evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
     m_curve_raster.forget_all();
-    find_moved_points();
+    mark_control_points();
 }
 
-void PathEditor::find_moved_points()
+// The control points or the view changed: their pixels, runs and marks anew.
+void PathEditor::mark_control_points()
 {
     m_point_runs = control_point_runs(m_setup.points, m_view);
     m_marks_region.reset();
@@ -105,13 +106,13 @@ void PathEditor::show_problem(const std::string& message)
 
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
-    const Outcome outcome = take(command);
+    const Outcome outcome = take_command(command);
     m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
     refresh_point_marks();
     return outcome;
 }
 
-PathEditor::Outcome PathEditor::take(const Command& command)
+PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
     m_notice.clear();
     if (update_views(command))
@@ -232,9 +233,8 @@ void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
         place_inbetweens(m_setup.points, m_setup.settings, m_evaluated);
         return;
     }
-    reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
-    // Control point k's tangents shape segments k − 1 and k.
-    m_curve_raster.forget(region.first == 0 ? 0 : region.first - 1, region.last + 1);
+    const SegmentRange remade = reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
+    m_curve_raster.forget(remade.first, remade.end);
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.

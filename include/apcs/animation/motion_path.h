@@ -83,8 +83,13 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 // up again, and the in-betweens placed anew. An acceleration changes no segment. The result is
 // evaluate_path's, to the bit; arrays of another size, or a region outside the path, are evaluated
 // afresh.
-void reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                     std::size_t first_changed, std::size_t last_changed);
+// Returns the segments it may have made again, first … end − 1 (all of them when evaluated afresh).
+struct SegmentRange {
+    std::size_t first = 0;
+    std::size_t end = 0;
+};
+SegmentRange reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                             std::size_t first_changed, std::size_t last_changed);
 // The shown in-betweens of a path whose segments and curve are made (Cal_INBETWEENS,
 // Decide_Show_Inbetween): the spans share them by length, each places its own by its law. All an
 // acceleration changes: the editor calls it alone for a key on the ACCELERATION line.

@@ -75,7 +75,7 @@ private:
     };
     using Change = std::variant<StaffChange, WaypointChange>;
 
-    Outcome take(const Command& command);
+    Outcome take_command(const Command& command);
     bool update_views(const Command& command);
     void check_global_or_local_control(const Command& command);
     void scan_control_point(const Command& command);
@@ -93,7 +93,7 @@ private:
     void undo_change(const WaypointChange& change);
     void fit_view();
     void evaluate_whole_path();
-    void find_moved_points();
+    void mark_control_points();
     void refresh_point_marks();
     std::optional<PickedRegion> picked_region() const;
     bool single_point_region() const { return m_region.first == m_region.last; }
