@@ -1,7 +1,7 @@
 #include "apcs/animation/control_region.h"
 
 #include "apcs/animation/input_limits.h"
-#include "apcs/animation/two_cores.h"
+#include "apcs/base/parallel_work.h"
 
 #include <algorithm>
 #include <array>

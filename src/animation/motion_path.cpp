@@ -4,7 +4,7 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
-#include "apcs/animation/two_cores.h"
+#include "apcs/base/parallel_work.h"
 
 #include <algorithm>
 #include <array>

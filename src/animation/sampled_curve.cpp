@@ -1,6 +1,6 @@
 #include "apcs/animation/sampled_curve.h"
 
-#include "apcs/animation/two_cores.h"
+#include "apcs/base/parallel_work.h"
 
 #include <algorithm>
 #include <array>

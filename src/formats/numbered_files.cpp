@@ -1,7 +1,7 @@
 #include "apcs/formats/numbered_files.h"
 
+#include "apcs/base/parallel_work.h"
 #include "apcs/formats/file_io.h"
-#include "apcs/formats/parallel_work.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,6 +1,6 @@
 #include "apcs/session/curve_raster.h"
 
-#include "apcs/animation/two_cores.h"
+#include "apcs/base/parallel_work.h"
 #include "apcs/raster/painter.h"
 
 #include <algorithm>

@@ -2,11 +2,11 @@
 
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
+#include "apcs/cli/options.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/session/animation_player.h"
 #include "apcs/session/exit_status.h"
-#include "apcs/cli/options.h"
 
 #include <filesystem>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
-#include "apcs/formats/diagnostic.h"
 #include "apcs/session/exit_status.h"
 
 #include <cstdint>

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "apcs/animation/motion_path.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/session/exit_status.h"
-#include "apcs/formats/diagnostic.h"
 
 #include <iosfwd>
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "apcs/session/exit_status.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
-#include "apcs/formats/diagnostic.h"
+#include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/session.h"
 

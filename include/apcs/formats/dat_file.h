@@ -2,7 +2,7 @@
 
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/graphic.h"
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/text_lines.h"
 #include "apcs/geometry/vec3.h"
 

@@ -1,47 +1,6 @@
 #pragma once
 
-#include <string>
-#include <utility>
-#include <variant>
-
-namespace apcs {
-
-// What went wrong with an input, where: "FILE:LINE: message", or "FILE: message" when no line
-// applies (line 0).
-struct Diagnostic {
-    std::string file;
-    int line = 0;
-    std::string message;
-
-    std::string to_string() const
-    {
-        std::string text = file;
-        if (line > 0)
-            text += ":" + std::to_string(line);
-        return text + ": " + message;
-    }
-};
-
-// A value or the diagnostic that explains why there is none (g++ 12 has no std::expected).
-// [[nodiscard]]: a function that returns one must not have its problem dropped unread.
-template <typename T>
-class [[nodiscard]] Expected {
-public:
-    Expected(T value) : m_content(std::move(value)) {}
-    Expected(Diagnostic error) : m_content(std::move(error)) {}
-
-    bool has_value() const { return std::holds_alternative<T>(m_content); }
-    explicit operator bool() const { return has_value(); }
-    T& value() { return std::get<T>(m_content); }
-    const T& value() const { return std::get<T>(m_content); }
-    T& operator*() { return value(); }
-    const T& operator*() const { return value(); }
-    T* operator->() { return &value(); }
-    const T* operator->() const { return &value(); }
-    const Diagnostic& error() const { return std::get<Diagnostic>(m_content); }
-
-private:
-    std::variant<T, Diagnostic> m_content;
-};
-
-} // namespace apcs
+// Diagnostic and Expected moved to the base layer, so that every layer (the animation layer's memory
+// budget too) reports errors the same way. This header stays only until the files of the session
+// and terminal layers that include it name apcs/base/diagnostic.h themselves (issue 27).
+#include "apcs/base/diagnostic.h"

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/dat_file.h"
-#include "apcs/formats/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
 
 #include <cstdint>

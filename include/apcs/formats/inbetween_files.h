@@ -3,7 +3,7 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/surface_fit.h"
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
 
 #include <filesystem>

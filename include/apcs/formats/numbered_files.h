@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
 

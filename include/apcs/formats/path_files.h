@@ -5,8 +5,8 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/waypoint_change.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/dat_file.h"
-#include "apcs/formats/diagnostic.h"
 
 #include <filesystem>
 #include <optional>

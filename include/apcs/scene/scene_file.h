@@ -1,8 +1,8 @@
 #pragma once
 
 #include "apcs/animation/control_point.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/dat_file.h"
-#include "apcs/formats/diagnostic.h"
 #include "apcs/scene/scene.h"
 
 #include <filesystem>
