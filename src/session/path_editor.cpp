@@ -1,6 +1,7 @@
 #include "apcs/session/path_editor.h"
 
 #include "apcs/animation/input_limits.h"
+#include "apcs/session/overloaded.h"
 #include "apcs/session/path_overlays.h"
 #include "apcs/session/screen_layout.h"
 
@@ -81,27 +82,38 @@ void PathEditor::refresh_point_marks()
     m_marks_region = region;
 }
 
-SessionPhase PathEditor::phase() const { return m_waypoints ? SessionPhase::waypoints : m_phase; }
+SessionPhase PathEditor::phase() const
+{
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) { return SessionPhase::choose_control; },
+                          [](const RegionPick& pick) {
+                              return pick.first ? SessionPhase::pick_region_last : SessionPhase::pick_region_first;
+                          },
+                          [](const Staff&) { return SessionPhase::staff; },
+                          [](const Waypoints&) { return SessionPhase::waypoints; },
+                          [](const AskAgain&) { return SessionPhase::ask_again; },
+                      },
+                      m_mode);
+}
 
 KeyContext PathEditor::key_context() const
 {
-    if (m_waypoints)
-        return KeyContext::waypoints;
-    if (m_field)
-        return KeyContext::value_field;
-    switch (m_phase) {
-    case SessionPhase::choose_control: return KeyContext::control_choice;
-    case SessionPhase::pick_region_first:
-    case SessionPhase::pick_region_last: return KeyContext::region_pick;
-    case SessionPhase::staff: return KeyContext::staff;
-    default: return KeyContext::adjust_again;
-    }
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) { return KeyContext::control_choice; },
+                          [](const RegionPick&) { return KeyContext::region_pick; },
+                          [](const Staff& staff) { return staff.field ? KeyContext::value_field : KeyContext::staff; },
+                          [](const Waypoints&) { return KeyContext::waypoints; },
+                          [](const AskAgain&) { return KeyContext::adjust_again; },
+                      },
+                      m_mode);
 }
 
+// Only an accepted path is written: the editor is then asking whether to adjust again.
 void PathEditor::show_problem(const std::string& message)
 {
     m_problem = message;
-    m_phase = SessionPhase::ask_again;
+    if (!std::holds_alternative<AskAgain>(m_mode))
+        m_mode = AskAgain{ControlRegion::whole(m_setup.points), m_setup.points.front().staff};
 }
 
 PathEditor::Outcome PathEditor::update(const Command& command)
@@ -112,124 +124,138 @@ PathEditor::Outcome PathEditor::update(const Command& command)
     return outcome;
 }
 
+// lager's update: the mode takes the command and says which mode follows.
 PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
     m_notice.clear();
     if (update_views(command))
         return Outcome::editing;
-    if (m_waypoints) {
-        update_waypoints(command);
-        return Outcome::editing;
-    }
-    if (m_field) {
-        update_value_field(command);
-        return Outcome::editing;
-    }
-    if (std::holds_alternative<command::Undo>(command)) {
-        undo();
-        return Outcome::editing;
-    }
-    switch (m_phase) {
-    case SessionPhase::choose_control: check_global_or_local_control(command); break;
-    case SessionPhase::pick_region_first:
-    case SessionPhase::pick_region_last: scan_control_point(command); break;
-    case SessionPhase::staff: scan_parameters(command); break;
-    default: return ask_adjusting(command);
-    }
-    return Outcome::editing;
+    Transition transition =
+        std::visit(Overloaded{
+                       [&](ControlChoice&) { return check_global_or_local_control(command); },
+                       [&](RegionPick& pick) { return scan_control_point(pick, command); },
+                       [&](Staff& staff) { return scan_parameters(staff, command); },
+                       [&](Waypoints& waypoints) { return update_waypoints(waypoints, command); },
+                       [&](AskAgain&) { return ask_adjusting(command); },
+                   },
+                   m_mode);
+    if (transition.next)
+        m_mode = std::move(*transition.next);
+    return transition.outcome;
 }
 
-// K, T, G and Tab change what is shown, never the path.
+// K, T, G and Tab change what is shown, never the path (Tab chooses the waypoint editor's point
+// there).
 bool PathEditor::update_views(const Command& command)
 {
-    if (std::holds_alternative<command::ToggleKeyFrames>(command))
-        m_show_key_frames = !m_show_key_frames;
-    else if (std::holds_alternative<command::ToggleTangents>(command))
-        m_show_tangents = !m_show_tangents;
-    else if (std::holds_alternative<command::ToggleLawGraph>(command))
-        m_show_law = !m_show_law;
-    else if (const auto* choose = std::get_if<command::ChoosePoint>(&command); choose != nullptr && !m_waypoints)
-        m_tangent_point = wrapped_point(m_tangent_point, choose->by, m_setup.points.size());
-    else
-        return false;
-    return true;
+    const bool in_waypoints = std::holds_alternative<Waypoints>(m_mode);
+    const auto toggle = [](bool& shown) {
+        shown = !shown;
+        return true;
+    };
+    return std::visit(Overloaded{
+                          [&](const command::ToggleKeyFrames&) { return toggle(m_show_key_frames); },
+                          [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
+                          [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
+                          [&](const command::ChoosePoint& choose) {
+                              if (!in_waypoints)
+                                  m_tangent_point = wrapped_point(m_tangent_point, choose.by, m_setup.points.size());
+                              return !in_waypoints;
+                          },
+                          // Every other command is the mode's.
+                          [](const auto&) { return false; },
+                      },
+                      command);
 }
 
-void PathEditor::check_global_or_local_control(const Command& command)
+PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)
 {
-    if (std::holds_alternative<command::ChooseGlobal>(command)) {
-        m_log.log("global control");
-        start_staff(ControlRegion::whole(m_setup.points));
-    } else if (std::holds_alternative<command::ChooseLocal>(command)) {
-        m_arrow.reset();
-        m_phase = SessionPhase::pick_region_first;
-    } else if (std::holds_alternative<command::OpenWaypoints>(command)) {
-        open_waypoints();
-    }
+    return std::visit(Overloaded{
+                          [&](const command::ChooseGlobal&) {
+                              m_log.log("global control");
+                              return Transition{start_staff(ControlRegion::whole(m_setup.points))};
+                          },
+                          [](const command::ChooseLocal&) { return Transition{RegionPick{}}; },
+                          [&](const command::OpenWaypoints&) { return Transition{open_waypoints()}; },
+                          [&](const command::Undo&) { return undo(); },
+                          // Check_GorL_Control waits for 8, 2 or W.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
 }
 
-void PathEditor::scan_control_point(const Command& command)
+PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Command& command)
 {
-    const bool picking_last = m_phase == SessionPhase::pick_region_last;
     const std::size_t last_index = m_setup.points.size() - 1;
-    if (const auto* move = std::get_if<command::ArrowMove>(&command)) {
-        // The arrow's first move, whichever way, brings it from the corner to the first point.
-        const auto target = m_arrow ? static_cast<long long>(*m_arrow) + move->points : 0LL;
-        m_arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
-    } else if (std::holds_alternative<command::Back>(command)) {
-        m_problem.clear();
-        m_phase = picking_last ? SessionPhase::pick_region_first : SessionPhase::choose_control;
-    } else if (std::holds_alternative<command::Accept>(command) && m_arrow) {
-        if (!picking_last) {
-            m_region_first = *m_arrow;
-            m_problem.clear();
-            m_phase = SessionPhase::pick_region_last;
-        } else if (*m_arrow < m_region_first) {
-            m_problem = "The last control point must come after the first (point " +
-                        std::to_string(m_region_first + 1) + ")";
-        } else {
-            // Enter twice on one control point picks it alone: KB's per-key control.
-            m_problem.clear();
-            m_log.log(*m_arrow == m_region_first
-                          ? "local control: control point " + std::to_string(m_region_first + 1)
-                          : "local control: control points " + std::to_string(m_region_first + 1) + " to " +
-                                std::to_string(*m_arrow + 1));
-            start_staff({m_region_first, *m_arrow});
+    const auto pick_last = [&](std::size_t first, std::size_t last) {
+        if (last < first) {
+            m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
+            return Transition{};
         }
-    }
+        // Enter twice on one control point picks it alone: KB's per-key control.
+        m_problem.clear();
+        m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
+                                : "local control: control points " + std::to_string(first + 1) + " to " +
+                                      std::to_string(last + 1));
+        return Transition{start_staff({first, last})};
+    };
+    return std::visit(
+        Overloaded{
+            [&](const command::ArrowMove& move) {
+                // The arrow's first move, whichever way, brings it from the corner to the first point.
+                const auto target = pick.arrow ? static_cast<long long>(*pick.arrow) + move.points : 0LL;
+                pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
+                return Transition{};
+            },
+            [&](const command::Back&) {
+                m_problem.clear();
+                return pick.first ? Transition{RegionPick{pick.arrow, std::nullopt}} : Transition{ControlChoice{}};
+            },
+            [&](const command::Accept&) {
+                if (!pick.arrow) // Enter before the arrow has moved points at nothing.
+                    return Transition{};
+                if (pick.first)
+                    return pick_last(*pick.first, *pick.arrow);
+                m_problem.clear();
+                return Transition{RegionPick{pick.arrow, pick.arrow}};
+            },
+            [&](const command::Undo&) { return undo(); },
+            // The arrow waits for a move, Enter or Esc.
+            [](const auto&) { return Transition{}; },
+        },
+        command);
 }
 
-void PathEditor::start_staff(ControlRegion region)
+PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 {
     assert(region.first <= region.last && region.last < m_setup.points.size());
-    m_region = region;
-    m_staff = m_setup.points[region.first].staff;
-    m_line = StaffLine::tension;
-    m_line_start_value = m_staff[m_line];
+    Staff staff{region, m_setup.points[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
+    staff.line_start_value = staff.staff[staff.line];
     m_tangent_point = region.is_whole(m_setup.points) ? 1 : region.first;
-    m_phase = SessionPhase::staff;
+    return staff;
 }
 
 // Every value that changes a point is one change for undo; a key that changes nothing (a step
 // past the end of the line) is not.
-void PathEditor::set_staff_value(double value)
+void PathEditor::set_staff_value(Staff& staff, double value)
 {
-    StaffChange change{m_region, m_line, m_staff, m_line_start_value, {}};
-    m_staff[m_line] = snapped(value);
-    change.points_before = apply_staff_to_region(m_setup.points, m_region, m_staff);
-    if (m_staff == change.staff && staff_runs(m_setup.points, m_region) == change.points_before)
+    StaffChange change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
+    staff.staff[staff.line] = snapped(value);
+    change.points_before = apply_staff_to_region(m_setup.points, staff.region, staff.staff);
+    if (staff.staff == change.staff && staff_runs(m_setup.points, staff.region) == change.points_before)
         return;
-    const bool shape_changed = runs_change_shape(change.points_before, m_staff);
+    const RegionChange region_change =
+        runs_change_shape(change.points_before, staff.staff) ? RegionChange::shape : RegionChange::timing;
     m_history.push_back(std::move(change));
-    reevaluate_region(m_region, shape_changed);
+    reevaluate_region(staff.region, region_change);
 }
 
 // A key changes the staff values of a region: only the segments their tangents shape are sampled
 // again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
 // interactive).
-void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
+void PathEditor::reevaluate_region(ControlRegion region, RegionChange change)
 {
-    if (!shape_changed) {
+    if (change == RegionChange::timing) {
         place_inbetweens(m_setup.points, m_setup.settings, m_evaluated);
         return;
     }
@@ -238,89 +264,103 @@ void PathEditor::reevaluate_region(ControlRegion region, bool shape_changed)
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
-void PathEditor::scan_parameters(const Command& command)
+PathEditor::Transition PathEditor::scan_parameters(Staff& staff, const Command& command)
 {
-    if (const auto* step = std::get_if<command::StaffStep>(&command))
-        return set_staff_value(m_staff[m_line] + step->steps * m_setup.staff_step);
-    if (std::holds_alternative<command::OpenValueField>(command))
-        m_field.emplace();
-    else if (std::holds_alternative<command::Keep>(command))
-        accept_staff_line(true);
-    else if (std::holds_alternative<command::Accept>(command))
-        accept_staff_line(false);
+    if (staff.field)
+        return update_value_field(staff, command);
+    return std::visit(Overloaded{
+                          [&](const command::StaffStep& step) {
+                              set_staff_value(staff, staff.staff[staff.line] + step.steps * m_setup.staff_step);
+                              return Transition{};
+                          },
+                          [&](const command::OpenValueField&) {
+                              staff.field.emplace();
+                              return Transition{};
+                          },
+                          [&](const command::Keep&) { return accept_staff_line(staff, LineEnding::kept); },
+                          [&](const command::Accept&) { return accept_staff_line(staff, LineEnding::accepted); },
+                          [&](const command::Undo&) { return undo(); },
+                          // The staff waits for a step, =, Enter or Esc.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
 }
 
-void PathEditor::accept_staff_line(bool keep)
+PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding ending)
 {
-    if (keep)
-        set_staff_value(m_line_start_value);
-    m_log.log(std::string(staff_line_name(m_line)) + " " + format_staff_value(m_staff[m_line]) + (keep ? " (kept)" : ""));
+    const bool kept = ending == LineEnding::kept;
+    if (kept)
+        set_staff_value(staff, staff.line_start_value);
+    m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
+              (kept ? " (kept)" : ""));
     // A single control point starts no span of its own: its acceleration line is skipped.
-    const bool last_line = is_last_staff_line(m_line) || (single_point_region() && m_line == StaffLine::bias);
-    if (last_line) {
-        m_phase = SessionPhase::ask_again;
-        return;
-    }
-    m_line = next_staff_line(m_line);
-    m_line_start_value = m_staff[m_line];
+    const bool single_point = staff.region.first == staff.region.last;
+    if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
+        return Transition{AskAgain{staff.region, staff.staff}};
+    staff.line = next_staff_line(staff.line);
+    staff.line_start_value = staff.staff[staff.line];
+    return Transition{};
 }
 
 // "=": the typed value sets the line like keys would; the line stays active.
-void PathEditor::update_value_field(const Command& command)
+PathEditor::Transition PathEditor::update_value_field(Staff& staff, const Command& command)
 {
-    const ValueField::Outcome outcome = m_field->update(command);
+    const ValueField::Outcome outcome = staff.field->update(command);
     if (outcome == ValueField::Outcome::editing)
-        return;
+        return Transition{};
     if (outcome == ValueField::Outcome::set) {
-        set_staff_value(m_field->value());
-        m_log.log(std::string(staff_line_name(m_line)) + " typed " + format_staff_value(m_staff[m_line]));
-        if (m_field->clamped())
-            m_notice = std::string(staff_line_name(m_line)) + " set to " + format_staff_value(m_staff[m_line]) +
-                       ": the staff runs from -1 to 1";
+        set_staff_value(staff, staff.field->value());
+        const std::string line(staff_line_name(staff.line));
+        m_log.log(line + " typed " + format_staff_value(staff.staff[staff.line]));
+        if (staff.field->clamped())
+            m_notice = line + " set to " + format_staff_value(staff.staff[staff.line]) + ": the staff runs from -1 to 1";
     }
-    m_field.reset();
+    staff.field.reset();
+    return Transition{};
 }
 
-PathEditor::Outcome PathEditor::ask_adjusting(const Command& command)
+PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
 {
-    if (std::holds_alternative<command::Yes>(command)) {
-        m_phase = SessionPhase::choose_control;
-        return Outcome::editing;
-    }
-    return std::holds_alternative<command::No>(command) ? Outcome::accepted : Outcome::editing;
+    return std::visit(Overloaded{
+                          [](const command::Yes&) { return Transition{ControlChoice{}}; },
+                          [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
+                          [&](const command::Undo&) { return undo(); },
+                          // Ask_Adjusting waits for Y or N.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
 }
 
-void PathEditor::undo()
+PathEditor::Transition PathEditor::undo()
 {
     if (m_history.empty()) {
         m_notice = "Nothing to undo: the path is as it was opened";
-        return;
+        return Transition{};
     }
     const Change change = std::move(m_history.back());
     m_history.pop_back();
     m_problem.clear();
-    std::visit([this](const auto& last) { undo_change(last); }, change);
+    Transition transition = std::visit([this](const auto& last) { return undo_change(last); }, change);
     m_notice += "; " + changes_text(m_history.size()) + " left to undo";
     m_log.log(m_notice);
+    return transition;
 }
 
 // Back to the staff line the change was made on, with the staff as it was.
-void PathEditor::undo_change(const StaffChange& change)
+PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
 {
-    const bool shape_changed = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff);
+    const RegionChange region_change = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
+                                           ? RegionChange::shape
+                                           : RegionChange::timing;
     restore_staff_runs(m_setup.points, change.region, change.points_before);
-    reevaluate_region(change.region, shape_changed);
-    m_region = change.region;
-    m_staff = change.staff;
-    m_line = change.line;
-    m_line_start_value = change.line_start_value;
-    m_phase = SessionPhase::staff;
+    reevaluate_region(change.region, region_change);
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
+    return Transition{Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt}};
 }
 
 // A waypoint edit is undone at the choice of control, where the editor was opened.
-void PathEditor::undo_change(const WaypointChange& change)
+PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
     revert_change(m_setup.points, m_origins, change);
     evaluate_whole_path();
@@ -331,27 +371,28 @@ void PathEditor::undo_change(const WaypointChange& change)
     case WaypointChange::Kind::move: m_notice = "Undone: the move of " + point; break;
     }
     m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
-    m_phase = SessionPhase::choose_control;
+    return Transition{ControlChoice{}};
 }
 
-void PathEditor::open_waypoints()
+PathEditor::Waypoints PathEditor::open_waypoints()
 {
-    m_waypoints.emplace(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
-                                              waypoint_step(shown_scene(m_setup, m_evaluated).bounds())});
     m_log.log("waypoint editor");
+    return Waypoints{WaypointEditor(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
+                                                          waypoint_step(shown_scene(m_setup, m_evaluated).bounds())})};
 }
 
-void PathEditor::update_waypoints(const Command& command)
+PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const Command& command)
 {
-    const WaypointEditor::Outcome outcome = m_waypoints->update(command);
+    WaypointEditor& editor = waypoints.editor;
+    const WaypointEditor::Outcome outcome = editor.update(command);
     if (outcome == WaypointEditor::Outcome::editing)
-        return;
-    const std::size_t changes = m_waypoints->changes().size();
+        return Transition{};
+    const std::size_t changes = editor.changes().size();
     if (outcome == WaypointEditor::Outcome::kept) {
-        m_history.insert(m_history.end(), m_waypoints->changes().begin(), m_waypoints->changes().end());
-        m_setup.points = m_waypoints->points();
-        m_origins = m_waypoints->origins();
-        m_evaluated = m_waypoints->evaluated();
+        m_history.insert(m_history.end(), editor.changes().begin(), editor.changes().end());
+        m_setup.points = editor.points();
+        m_origins = editor.origins();
+        m_evaluated = editor.evaluated();
         m_curve_raster.forget_all();
         m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
                    " control points";
@@ -359,9 +400,9 @@ void PathEditor::update_waypoints(const Command& command)
         m_notice = "Waypoints: " + changes_text(changes) + " undone";
     }
     m_log.log(m_notice);
-    m_waypoints.reset();
     m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
     fit_view();
+    return Transition{ControlChoice{}};
 }
 
 } // namespace apcs

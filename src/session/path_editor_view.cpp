@@ -1,6 +1,7 @@
 // What the path editor shows: the path screen of its step and the message line.
 #include "apcs/session/path_editor.h"
 
+#include "apcs/session/overloaded.h"
 #include "apcs/session/path_overlays.h"
 #include "apcs/session/session_text.h"
 
@@ -12,34 +13,37 @@ std::string PathEditor::message() const
 {
     if (!m_problem.empty())
         return m_problem;
-    if (m_field)
-        return m_field->message(staff_line_name(m_line));
+    if (const auto* staff = std::get_if<Staff>(&m_mode); staff != nullptr && staff->field)
+        return staff->field->message(staff_line_name(staff->line));
     if (!m_notice.empty())
         return m_notice;
-    switch (m_phase) {
-    case SessionPhase::choose_control: return std::string(text::choose_control);
-    case SessionPhase::pick_region_first: return std::string(text::pick_first);
-    case SessionPhase::pick_region_last: return std::string(text::pick_last);
-    case SessionPhase::staff:
-        return m_show_tangents ? tangent_numbers(m_evaluated.curve.segments, m_tangent_point) : staff_message();
-    default: return std::string(text::ask_again);
-    }
+    return std::visit(
+        Overloaded{
+            [](const ControlChoice&) { return std::string(text::choose_control); },
+            [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
+            [&](const Staff& staff) {
+                return m_show_tangents ? tangent_numbers(m_evaluated.curve.segments, m_tangent_point) : staff_message(staff);
+            },
+            [](const Waypoints& waypoints) { return waypoints.editor.message(); },
+            [](const AskAgain&) { return std::string(text::ask_again); },
+        },
+        m_mode);
 }
 
-std::string PathEditor::staff_message() const
+std::string PathEditor::staff_message(const Staff& staff) const
 {
-    const std::string line(staff_line_name(m_line));
+    const std::string line(staff_line_name(staff.line));
     // A path of two control points has no interior one, where t, c and b act: say so, or the
     // animator sees nothing move and cannot tell why.
-    if (m_setup.points.size() == 2 && m_line != StaffLine::acceleration)
+    if (m_setup.points.size() == 2 && staff.line != StaffLine::acceleration)
         return line + std::string(text::no_interior_points);
     const std::string of = " of " + std::to_string(m_setup.points.size());
     std::string message = m_setup.path_name + ": " + line;
-    if (single_point_region())
-        message += "  control point " + std::to_string(m_region.first + 1) + of + " (no span, no ACCELERATION)";
+    const ControlRegion& region = staff.region;
+    if (region.first == region.last)
+        message += "  control point " + std::to_string(region.first + 1) + of + " (no span, no ACCELERATION)";
     else
-        message += "  control points " + std::to_string(m_region.first + 1) + " to " +
-                   std::to_string(m_region.last + 1) + of;
+        message += "  control points " + std::to_string(region.first + 1) + " to " + std::to_string(region.last + 1) + of;
     if (m_evaluated.frames_freeze)
         message += "  (" + std::string(text::frames_freeze) + ")";
     return message;
@@ -48,36 +52,46 @@ std::string PathEditor::staff_message() const
 // The span whose law G shows: the region's, the arrow's while picking, the chosen waypoint's.
 std::size_t PathEditor::law_point() const
 {
-    if (m_waypoints)
-        return m_waypoints->chosen();
-    switch (m_phase) {
-    case SessionPhase::staff:
-    case SessionPhase::ask_again: return m_region.first;
-    case SessionPhase::pick_region_first:
-    case SessionPhase::pick_region_last: return m_arrow.value_or(0);
-    default: return 0;
-    }
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) -> std::size_t { return 0; },
+                          [](const RegionPick& pick) { return pick.arrow.value_or(0); },
+                          [](const Staff& staff) { return staff.region.first; },
+                          [](const Waypoints& waypoints) { return waypoints.editor.chosen(); },
+                          [](const AskAgain& ask) { return ask.region.first; },
+                      },
+                      m_mode);
 }
 
 // The region boxed: the one adjusted, or its first point while the last is picked.
 std::optional<PickedRegion> PathEditor::picked_region() const
 {
-    switch (m_phase) {
-    case SessionPhase::staff:
-    case SessionPhase::ask_again: return PickedRegion{m_region.first, m_region.last};
-    case SessionPhase::pick_region_last: return PickedRegion{m_region_first, m_region_first};
-    default: return std::nullopt;
-    }
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) -> std::optional<PickedRegion> { return std::nullopt; },
+                          [](const RegionPick& pick) -> std::optional<PickedRegion> {
+                              if (!pick.first)
+                                  return std::nullopt;
+                              return PickedRegion{*pick.first, *pick.first};
+                          },
+                          [](const Staff& staff) -> std::optional<PickedRegion> {
+                              return PickedRegion{staff.region.first, staff.region.last};
+                          },
+                          [](const Waypoints&) -> std::optional<PickedRegion> { return std::nullopt; },
+                          [](const AskAgain& ask) -> std::optional<PickedRegion> {
+                              return PickedRegion{ask.region.first, ask.region.last};
+                          },
+                      },
+                      m_mode);
 }
 
 PathScreenContent PathEditor::screen_content() const
 {
-    if (m_waypoints) {
-        PathScreenContent content = path_screen_content(m_waypoints->points(), m_waypoints->evaluated());
+    if (const auto* waypoints = std::get_if<Waypoints>(&m_mode)) {
+        const WaypointEditor& editor = waypoints->editor;
+        PathScreenContent content = path_screen_content(editor.points(), editor.evaluated());
         content.record_strokes = false;
-        content.region = std::pair{m_waypoints->chosen(), m_waypoints->chosen()};
-        content.arrow_at = m_waypoints->chosen();
-        content.message = m_waypoints->message();
+        content.region = std::pair{editor.chosen(), editor.chosen()};
+        content.arrow_at = editor.chosen();
+        content.message = editor.message();
         return content;
     }
     PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
@@ -85,14 +99,20 @@ PathScreenContent PathEditor::screen_content() const
     content.record_strokes = false;
     content.control_point_marks = m_point_marks;
     content.region = picked_region();
-    if (m_phase == SessionPhase::staff || m_phase == SessionPhase::ask_again)
-        content.staff = m_staff;
-    if (m_phase == SessionPhase::staff)
-        content.active_line = m_line;
-    if (m_phase == SessionPhase::pick_region_first || m_phase == SessionPhase::pick_region_last) {
-        content.arrow_at = m_arrow;
-        content.arrow_home = !m_arrow.has_value();
-    }
+    std::visit(Overloaded{
+                   [](const ControlChoice&) {},
+                   [&](const RegionPick& pick) {
+                       content.arrow_at = pick.arrow;
+                       content.arrow_home = !pick.arrow.has_value();
+                   },
+                   [&](const Staff& staff) {
+                       content.staff = staff.staff;
+                       content.active_line = staff.line;
+                   },
+                   [](const Waypoints&) {},
+                   [&](const AskAgain& ask) { content.staff = ask.staff; },
+               },
+               m_mode);
     content.message = message();
     return content;
 }

@@ -3,6 +3,7 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/raster/cell_grid.h"
+#include "apcs/session/overloaded.h"
 
 #include <cmath>
 
@@ -26,30 +27,40 @@ constexpr std::size_t longest_text = 24;
 
 ValueField::Outcome ValueField::update(const Command& command)
 {
-    if (const auto* typed = std::get_if<command::TypeCharacter>(&command)) {
-        m_problem.clear();
-        if (m_text.size() < longest_text)
-            append_utf8(m_text, typed->character);
-    } else if (std::holds_alternative<command::EraseCharacter>(command)) {
-        m_problem.clear();
-        erase_last_character(m_text);
-    } else if (std::holds_alternative<command::ClearLine>(command)) {
-        return Outcome::closed;
-    } else if (std::holds_alternative<command::SubmitLine>(command)) {
-        if (m_text.empty()) {
-            m_problem = "Type a value from -1 to 1 first, then Enter (Esc closes the field)";
-            return Outcome::editing;
-        }
-        const std::optional<double> number = parse_number(m_text);
-        if (!number || !std::isfinite(*number)) {
-            m_problem = "'" + m_text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
-            return Outcome::editing;
-        }
-        m_value = limits::staff_value.clamp(*number);
-        m_clamped = m_value != *number;
-        return Outcome::set;
+    return std::visit(Overloaded{
+                          [&](const command::TypeCharacter& typed) {
+                              m_problem.clear();
+                              if (m_text.size() < longest_text)
+                                  append_utf8(m_text, typed.character);
+                              return Outcome::editing;
+                          },
+                          [&](const command::EraseCharacter&) {
+                              m_problem.clear();
+                              erase_last_character(m_text);
+                              return Outcome::editing;
+                          },
+                          [](const command::ClearLine&) { return Outcome::closed; },
+                          [&](const command::SubmitLine&) { return submit(); },
+                          // The field takes text keys only.
+                          [](const auto&) { return Outcome::editing; },
+                      },
+                      command);
+}
+
+ValueField::Outcome ValueField::submit()
+{
+    if (m_text.empty()) {
+        m_problem = "Type a value from -1 to 1 first, then Enter (Esc closes the field)";
+        return Outcome::editing;
     }
-    return Outcome::editing;
+    const std::optional<double> number = parse_number(m_text);
+    if (!number || !std::isfinite(*number)) {
+        m_problem = "'" + m_text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
+        return Outcome::editing;
+    }
+    m_value = limits::staff_value.clamp(*number);
+    m_clamped = m_value != *number;
+    return Outcome::set;
 }
 
 std::string ValueField::message(std::string_view line_name) const

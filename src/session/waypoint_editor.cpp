@@ -2,6 +2,7 @@
 
 #include "apcs/animation/arc_length.h"
 #include "apcs/formats/number_text.h"
+#include "apcs/session/overloaded.h"
 
 #include <algorithm>
 #include <cassert>
@@ -19,26 +20,34 @@ WaypointEditor::WaypointEditor(Setup setup)
 WaypointEditor::Outcome WaypointEditor::update(const Command& command)
 {
     m_problem.clear();
-    if (const auto* choose = std::get_if<command::ChoosePoint>(&command)) {
-        m_chosen = wrapped_point(m_chosen, choose->by, m_setup.points.size());
-    } else if (const auto* move = std::get_if<command::MovePoint>(&command)) {
-        move_point(*move);
-    } else if (std::holds_alternative<command::InsertPoint>(command)) {
-        insert_point();
-    } else if (std::holds_alternative<command::DeletePoint>(command)) {
-        delete_point();
-    } else if (std::holds_alternative<command::Undo>(command)) {
-        undo();
-    } else if (std::holds_alternative<command::Accept>(command)) {
-        return Outcome::kept;
-    } else if (std::holds_alternative<command::Back>(command)) {
-        for (auto change = m_changes.rbegin(); change != m_changes.rend(); ++change)
-            revert_change(m_setup.points, m_setup.origins, *change);
-        m_changes.clear();
-        m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
-        return Outcome::discarded;
-    }
-    return Outcome::editing;
+    const auto editing = [](auto&& edit) {
+        edit();
+        return Outcome::editing;
+    };
+    return std::visit(
+        Overloaded{
+            [&](const command::ChoosePoint& choose) {
+                return editing([&] { m_chosen = wrapped_point(m_chosen, choose.by, m_setup.points.size()); });
+            },
+            [&](const command::MovePoint& move) { return editing([&] { move_point(move); }); },
+            [&](const command::InsertPoint&) { return editing([&] { insert_point(); }); },
+            [&](const command::DeletePoint&) { return editing([&] { delete_point(); }); },
+            [&](const command::Undo&) { return editing([&] { undo(); }); },
+            [](const command::Accept&) { return Outcome::kept; },
+            [&](const command::Back&) { return discard(); },
+            // The editor waits for Tab, a move, I, D, U, Enter or Esc.
+            [](const auto&) { return Outcome::editing; },
+        },
+        command);
+}
+
+WaypointEditor::Outcome WaypointEditor::discard()
+{
+    for (auto change = m_changes.rbegin(); change != m_changes.rend(); ++change)
+        revert_change(m_setup.points, m_setup.origins, *change);
+    m_changes.clear();
+    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    return Outcome::discarded;
 }
 
 void WaypointEditor::apply(const WaypointChange& change)

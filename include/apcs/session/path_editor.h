@@ -64,6 +64,39 @@ public:
     void show_problem(const std::string& message);
 
 private:
+    // The editor's modes (lager's model: each owns what it alone needs; update visits them, so a
+    // mode without a case does not compile). phase() names them in transcripts.
+    struct ControlChoice {};
+    // Scan_Control_Point: the arrow waits at the top-left until moved; the region's first point
+    // once picked (then the last is picked).
+    struct RegionPick {
+        std::optional<std::size_t> arrow;
+        std::optional<std::size_t> first;
+    };
+    // Scan_Parameters: the region adjusted, the staff shown, its active line and that line's value
+    // when it became active (Esc puts it back), and the field "=" opened on the line.
+    struct Staff {
+        ControlRegion region;
+        StaffValues staff;
+        StaffLine line = StaffLine::tension;
+        double line_start_value = 0.0;
+        std::optional<ValueField> field;
+    };
+    struct Waypoints {
+        WaypointEditor editor;
+    };
+    // Ask_Adjusting: the region and staff just adjusted stay on the screen.
+    struct AskAgain {
+        ControlRegion region;
+        StaffValues staff;
+    };
+    using Mode = std::variant<ControlChoice, RegionPick, Staff, Waypoints, AskAgain>;
+    // What a command does to the mode: the next one (none: the mode stays, changed or not).
+    struct Transition {
+        std::optional<Mode> next;
+        Outcome outcome = Outcome::editing;
+    };
+
     // A key on the staff: the staff, the region and the line as they were, and the region's
     // points' values before it.
     struct StaffChange {
@@ -74,32 +107,35 @@ private:
         std::vector<StaffRun> points_before;
     };
     using Change = std::variant<StaffChange, WaypointChange>;
+    // Enter takes the line's value as shown; Esc keeps the value the line had when it became active.
+    enum class LineEnding { accepted, kept };
+    // What a change of staff values did to the path: moved only its in-betweens, or reshaped it.
+    enum class RegionChange { timing, shape };
 
     Outcome take_command(const Command& command);
     bool update_views(const Command& command);
-    void check_global_or_local_control(const Command& command);
-    void scan_control_point(const Command& command);
-    void scan_parameters(const Command& command);
-    void accept_staff_line(bool keep);
-    Outcome ask_adjusting(const Command& command);
-    void start_staff(ControlRegion region);
-    void set_staff_value(double value);
-    void reevaluate_region(ControlRegion region, bool shape_changed);
-    void update_value_field(const Command& command);
-    void open_waypoints();
-    void update_waypoints(const Command& command);
-    void undo();
-    void undo_change(const StaffChange& change);
-    void undo_change(const WaypointChange& change);
+    Transition check_global_or_local_control(const Command& command);
+    Transition scan_control_point(RegionPick& pick, const Command& command);
+    Transition scan_parameters(Staff& staff, const Command& command);
+    Transition accept_staff_line(Staff& staff, LineEnding ending);
+    Transition update_value_field(Staff& staff, const Command& command);
+    Transition update_waypoints(Waypoints& waypoints, const Command& command);
+    Transition ask_adjusting(const Command& command);
+    Staff start_staff(ControlRegion region);
+    Waypoints open_waypoints();
+    void set_staff_value(Staff& staff, double value);
+    void reevaluate_region(ControlRegion region, RegionChange change);
+    Transition undo();
+    Transition undo_change(const StaffChange& change);
+    Transition undo_change(const WaypointChange& change);
     void fit_view();
     void evaluate_whole_path();
     void mark_control_points();
     void refresh_point_marks();
     std::optional<PickedRegion> picked_region() const;
-    bool single_point_region() const { return m_region.first == m_region.last; }
     std::size_t law_point() const;
     std::string message() const;
-    std::string staff_message() const;
+    std::string staff_message(const Staff& staff) const;
     PathScreenContent screen_content() const;
 
     Setup m_setup;
@@ -114,30 +150,16 @@ private:
     std::optional<std::optional<PickedRegion>> m_marks_region; // the region m_point_marks show
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale;
-    SessionPhase m_phase = SessionPhase::choose_control;
+    Mode m_mode;
+    // What is shown over every mode (K, T, G and the point T numbers) and said on the message line:
+    // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped
+    // value).
     bool m_show_key_frames = false;
-    std::string m_problem;
-    // What the last key did, said once on the message line (an undo, a clamped value).
-    std::string m_notice;
-
-    // Scan_Control_Point: the arrow waits at the top-left until moved; the region's first point
-    // once picked.
-    std::optional<std::size_t> m_arrow;
-    std::size_t m_region_first = 0;
-
-    // Scan_Parameters: the region adjusted, the staff shown, its active line and that line's value
-    // when it became active (Esc puts it back).
-    ControlRegion m_region;
-    StaffValues m_staff;
-    StaffLine m_line = StaffLine::tension;
-    double m_line_start_value = 0.0;
-    std::optional<ValueField> m_field;
-
     bool m_show_tangents = false;
     std::size_t m_tangent_point = 1;
     bool m_show_law = false;
-
-    std::optional<WaypointEditor> m_waypoints;
+    std::string m_problem;
+    std::string m_notice;
     // Every change since the path was opened, oldest first: U takes back the last.
     std::vector<Change> m_history;
 };

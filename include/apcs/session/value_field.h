@@ -24,6 +24,9 @@ public:
     std::string message(std::string_view line_name) const;
 
 private:
+    // Enter: the text read as a number, or why not.
+    Outcome submit();
+
     std::string m_text;
     std::string m_problem;
     double m_value = 0.0;

@@ -48,6 +48,8 @@ private:
     void delete_point();
     void move_point(const command::MovePoint& move);
     void undo();
+    // Esc: every change since the editor opened taken back, newest first.
+    Outcome discard();
     void apply(const WaypointChange& change);
     // The key frames' points never move: true (and the message says why) for them.
     bool is_key_frame_point(std::size_t index);
