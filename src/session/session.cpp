@@ -1,19 +1,15 @@
 #include "apcs/session/session.h"
 
 #include "apcs/formats/numbered_files.h"
-#include "apcs/raster/painter.h"
-#include "apcs/raster/png_encoder.h"
-#include "apcs/raster/svg_encoder.h"
 #include "apcs/session/screen_layout.h"
+#include "apcs/session/session_graph.h"
+#include "apcs/session/session_pictures.h"
 #include "apcs/session/session_text.h"
 
 #include <algorithm>
-#include <cassert>
 #include <utility>
 
 namespace apcs {
-
-namespace text = session_text;
 
 const char* phase_name(SessionPhase phase)
 {
@@ -43,6 +39,11 @@ const char* phase_name(SessionPhase phase)
 
 namespace {
 
+template <typename... Handlers>
+struct Overloaded : Handlers... {
+    using Handlers::operator()...;
+};
+
 std::string trimmed(const std::string& line)
 {
     const auto first = line.find_first_not_of(" \t");
@@ -55,14 +56,60 @@ std::string trimmed(const std::string& line)
 // A typed answer is a file name or a few numbers: longer input is not kept.
 constexpr std::size_t max_answer_bytes = 200;
 
+std::string without_last_character(const std::string& input)
+{
+    std::u32string characters = decode_utf8(input);
+    if (!characters.empty())
+        characters.pop_back();
+    std::string shorter;
+    for (const char32_t character : characters)
+        append_utf8(shorter, character);
+    return shorter;
+}
+
+// What a command does to the line being typed at a prompt: the answer when it ends the line.
+std::optional<std::string> edit_line(TextConsole& console, const Command& command)
+{
+    return std::visit(Overloaded{[&](const command::TypeCharacter& typed) -> std::optional<std::string> {
+                                     std::string input = console.input();
+                                     // A zero-width or control character would change the answer where nobody can see it.
+                                     if (input.size() < max_answer_bytes && cell_width(typed.character) > 0) {
+                                         append_utf8(input, typed.character);
+                                         console.set_input(input);
+                                     }
+                                     return std::nullopt;
+                                 },
+                                 [&](const command::EraseCharacter&) -> std::optional<std::string> {
+                                     console.set_input(without_last_character(console.input()));
+                                     return std::nullopt;
+                                 },
+                                 [&](const command::ClearLine&) -> std::optional<std::string> {
+                                     console.set_input("");
+                                     return std::nullopt;
+                                 },
+                                 [&](const command::SubmitLine&) -> std::optional<std::string> {
+                                     return trimmed(console.input());
+                                 },
+                                 // The key map lets no other command through to a text line.
+                                 [](const auto&) -> std::optional<std::string> { return std::nullopt; }},
+                      command);
+}
+
 } // namespace
 
 Session::Session(SessionSettings settings, SessionFiles& files)
-    : m_settings(settings)
+    : m_settings(std::move(settings))
     , m_files(files)
-    , m_step(TextStep{})
+    , m_step(step::Key1Prompt{})
 {
-    go_to(SessionPhase::ask_key1);
+    StepContext step_context = context();
+    for (const std::string& line : std::get<step::Key1Prompt>(m_step).lines(step_context))
+        step_context.say(line);
+}
+
+StepContext Session::context()
+{
+    return {m_settings, m_files, m_model, m_console, m_notice};
 }
 
 SessionPhase Session::phase() const
@@ -72,182 +119,154 @@ SessionPhase Session::phase() const
 
 bool Session::animating() const
 {
-    const auto* player = std::get_if<AnimationPlayer>(&m_step);
-    return player != nullptr && player->playing();
-}
-
-KeyContext Session::key_context() const
-{
-    if (m_help_for)
-        return KeyContext::help_screen;
-    if (m_asking_quit)
-        return KeyContext::quit_question;
-    return step_key_context();
+    const auto* playing = std::get_if<step::Playing>(&m_step);
+    return playing != nullptr && playing->player.playing();
 }
 
 KeyContext Session::step_key_context() const
 {
-    if (const auto* text_step = std::get_if<TextStep>(&m_step))
-        return prompt_for(text_step->current).keys;
-    if (const auto* editor = std::get_if<PathEditor>(&m_step))
-        return editor->key_context();
-    return std::get<AnimationPlayer>(m_step).key_context();
+    return std::visit([](const auto& step) { return step.key_context(); }, m_step);
 }
 
 void Session::handle(const KeyEvent& event)
 {
-    const KeyContext context = key_context();
-    const std::optional<Command> command = command_for(context, event);
+    const KeyContext keys = m_overlays.key_context(step_key_context());
+    const std::optional<Command> command = command_for(keys, event);
     if (!command)
         return;
     m_notice.clear();
-    if (!handle_everywhere(context, *command))
-        dispatch_to_step(*command);
-}
-
-bool Session::handle_everywhere(KeyContext context, const Command& command)
-{
-    if (context == KeyContext::help_screen) {
-        m_help_for.reset();
-        return true;
+    // Only an unsaved path is worth a question; elsewhere every file is already written.
+    const QuitAsks quit_asks = std::holds_alternative<step::Shaping>(m_step) ? QuitAsks::question_first : QuitAsks::at_once;
+    switch (m_overlays.handle(keys, *command, quit_asks)) {
+    case OverlayAnswer::step_command: return dispatch_to_step(*command);
+    case OverlayAnswer::handled: return;
+    case OverlayAnswer::save_picture: return save_picture();
+    case OverlayAnswer::quit: return quit();
     }
-    if (context == KeyContext::quit_question) {
-        m_asking_quit = false;
-        if (std::holds_alternative<command::Yes>(command))
-            quit();
-        return true;
-    }
-    if (std::holds_alternative<command::ShowHelp>(command)) {
-        m_help_for = context;
-        return true;
-    }
-    if (std::holds_alternative<command::SavePicture>(command)) {
-        save_picture();
-        return true;
-    }
-    if (std::holds_alternative<command::Quit>(command)) {
-        // Only an unsaved path is worth a question; elsewhere every file is already written.
-        if (std::holds_alternative<PathEditor>(m_step))
-            m_asking_quit = true;
-        else
-            quit();
-        return true;
-    }
-    return false;
 }
 
 void Session::dispatch_to_step(const Command& command)
 {
-    if (auto* text_step = std::get_if<TextStep>(&m_step))
-        return update_text_step(text_step->current, command);
-    if (auto* editor = std::get_if<PathEditor>(&m_step)) {
-        if (editor->update(command) == PathEditor::Outcome::accepted)
-            accept_path(*editor);
-        return;
-    }
-    auto& player = std::get<AnimationPlayer>(m_step);
-    if (player.update(command) == AnimationPlayer::Outcome::finished)
-        return finish();
-    if (player.phase() == SessionPhase::overlay)
-        write_overlay_once();
+    StepContext step_context = context();
+    const StepResult result = std::visit(
+        Overloaded{[&](step::Shaping& shaping) { return shaping.update(step_context, command); },
+                   [&](step::Playing& playing) { return playing.update(step_context, command); },
+                   [](step::Finished&) { return StepResult{}; },
+                   [&](auto& prompt) {
+                       // Y, Enter or any key, as the question asks: the key map let only those through.
+                       if (prompt.key_context() != KeyContext::text_line)
+                           return prompt.submit(step_context, {});
+                       return update_text_step(command);
+                   }},
+        m_step);
+    follow(result);
 }
 
-void Session::update_text_step(SessionPhase phase, const Command& command)
+StepResult Session::update_text_step(const Command& command)
 {
-    const Prompt& prompt = prompt_for(phase);
-    if (prompt.keys != KeyContext::text_line) {
-        // Y, Enter or any key, as the prompt asks: the key map let only those through.
-        if (prompt.submit != nullptr)
-            (this->*prompt.submit)({});
-        return;
-    }
-    std::string input = m_console.input();
-    if (const auto* typed = std::get_if<command::TypeCharacter>(&command)) {
-        // A zero-width or control character would change the answer where nobody can see it.
-        if (input.size() < max_answer_bytes && cell_width(typed->character) > 0) {
-            append_utf8(input, typed->character);
-            m_console.set_input(input);
-        }
-    } else if (std::holds_alternative<command::EraseCharacter>(command)) {
-        std::u32string characters = decode_utf8(input);
-        if (!characters.empty())
-            characters.pop_back();
-        std::string shorter;
-        for (const char32_t character : characters)
-            append_utf8(shorter, character);
-        m_console.set_input(shorter);
-    } else if (std::holds_alternative<command::ClearLine>(command)) {
+    const std::optional<std::string> typed = edit_line(m_console, command);
+    if (!typed)
+        return {};
+    if (*typed == "?") {
+        // The answer ? alone asks for the help screen (SPEC §7.3); it is no answer.
         m_console.set_input("");
-    } else if (std::holds_alternative<command::SubmitLine>(command)) {
-        if (trimmed(input) == "?") {
-            // The answer ? alone asks for the help screen (SPEC §7.3); it is no answer.
-            m_console.set_input("");
-            m_help_for = KeyContext::text_line;
+        m_overlays.open_help(KeyContext::text_line);
+        return {};
+    }
+    StepContext step_context = context();
+    return std::visit(
+        [&](auto& prompt) -> StepResult {
+            if constexpr (requires { prompt.default_answer(step_context); }) {
+                // An empty answer takes the thesis' example, and the console shows it as typed.
+                const std::string answer = typed->empty() ? prompt.default_answer(step_context) : *typed;
+                m_console.set_input(answer);
+                m_console.commit_input();
+                return prompt.submit(step_context, answer);
+            } else {
+                return {};
+            }
+        },
+        m_step);
+}
+
+void Session::follow(StepResult result)
+{
+    while (result.outcome != StepOutcome::stay) {
+        StepContext step_context = context();
+        std::optional<Step> next = next_step(m_step, result.outcome, step_context);
+        if (!next)
             return;
-        }
-        // An empty answer takes the thesis' example, and the console shows it as typed.
-        const std::string answer = trimmed(input).empty() ? prompt.default_answer(*this) : trimmed(input);
-        m_console.set_input(answer);
-        m_console.commit_input();
-        (this->*prompt.submit)(answer);
+        // Steps that keep a reference (to the log) cannot be assigned: each is made in place.
+        std::visit([this](auto&& made) { m_step.emplace<std::decay_t<decltype(made)>>(std::move(made)); },
+                   std::move(*next));
+        const std::string problem = std::move(result.problem);
+        result = std::visit(
+            [&](auto& step) -> StepResult {
+                if constexpr (requires { step.start(step_context); })
+                    return step.start(step_context);
+                else
+                    return {};
+            },
+            m_step);
+        if (result.outcome == StepOutcome::stay)
+            ask(problem);
     }
 }
 
-void Session::go_to(SessionPhase phase)
+// The prompt of the step begun: its lines, or after `problem` (a refusal) the lines that ask again.
+void Session::ask(const std::string& problem)
 {
-    m_step = TextStep{phase};
-    for (const std::string& line : prompt_for(phase).lines(*this))
-        say(line);
-}
-
-void Session::ask_again(SessionPhase phase, const std::string& problem)
-{
-    m_step = TextStep{phase};
-    say(problem);
-    for (const std::string& line : prompt_for(phase).again(*this))
-        say(line);
+    StepContext step_context = context();
+    if (!problem.empty())
+        step_context.say(problem);
+    const step::Lines lines = std::visit(
+        [&](const auto& step) { return problem.empty() ? step.lines(step_context) : step.again(step_context); }, m_step);
+    for (const std::string& line : lines)
+        step_context.say(line);
 }
 
 void Session::tick()
 {
-    if (auto* player = std::get_if<AnimationPlayer>(&m_step))
-        player->tick();
+    if (auto* playing = std::get_if<step::Playing>(&m_step))
+        playing->player.tick();
+}
+
+void Session::work()
+{
+    auto* splitting = std::get_if<step::Splitting>(&m_step);
+    if (splitting == nullptr)
+        return;
+    StepContext step_context = context();
+    follow(splitting->work(step_context));
 }
 
 SessionScreen Session::screen() const
 {
-    SessionScreen shown;
-    if (m_help_for) {
-        shown.text = help_screen();
-        return shown;
-    }
-    if (const auto* editor = std::get_if<PathEditor>(&m_step)) {
-        shown.graphics = true;
-        shown.picture = editor->view();
-    } else if (const auto* player = std::get_if<AnimationPlayer>(&m_step)) {
-        shown.graphics = true;
-        shown.picture = player->view();
-    } else {
-        shown.text = m_console.render(!finished());
-        const std::string message = m_split ? split_progress() : m_notice;
-        if (!message.empty())
-            shown.text.put_text(0, TextConsole::rows - 1, message);
-        return shown;
-    }
-    // The message line, by priority (SPEC §7.3): an open question, then what the last key did.
-    const std::string message = m_asking_quit ? std::string(session_text::quit_question) : m_notice;
-    if (!message.empty()) {
-        auto& lines = shown.picture.text;
-        lines.erase(std::remove_if(lines.begin(), lines.end(), [](const TextLine& line) { return line.row == layout::message_row; }),
-                    lines.end());
-        lines.push_back({1, layout::message_row, message});
-    }
-    return shown;
+    if (const overlay::HelpScreen* help = m_overlays.help())
+        return {false, key_help_screen(phase_name(phase()), help->keys), {}};
+    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view()); },
+                                 [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
+                                 [&](const auto& text_step) {
+                                     SessionScreen shown{false, m_console.render(!finished()), {}};
+                                     std::string message = m_notice;
+                                     if constexpr (std::is_same_v<std::decay_t<decltype(text_step)>, step::Splitting>)
+                                         message = text_step.progress();
+                                     if (!message.empty())
+                                         shown.text.put_text(0, TextConsole::rows - 1, message);
+                                     return shown;
+                                 }},
+                      m_step);
 }
 
-CellGrid Session::help_screen() const
+// The message line, by priority (SPEC §7.3): an open question, then what the last key did.
+SessionScreen Session::graphics_screen(GraphicsScreen picture) const
 {
-    return key_help_screen(phase_name(phase()), *m_help_for);
+    const std::string message = m_overlays.asking_quit() ? std::string(session_text::quit_question) : m_notice;
+    if (!message.empty()) {
+        std::erase_if(picture.text, [](const TextLine& line) { return line.row == layout::message_row; });
+        picture.text.push_back({1, layout::message_row, message});
+    }
+    return {true, {}, std::move(picture)};
 }
 
 void Session::save_picture()
@@ -259,70 +278,23 @@ void Session::save_picture()
     }
     for (int number = 1; number <= most_pictures; ++number) {
         const std::string name = picture_file_name(number);
-        if (!m_files.exists(name))
-            return write_picture(name, shown.picture, PngShape::monitor, "picture " + name);
+        if (!m_files.exists(name)) {
+            StepContext step_context = context();
+            return write_picture(step_context, name, shown.picture, PngShape::monitor, "picture " + name);
+        }
     }
     m_notice = "apcs001.png … apcs999.png all exist; move some away";
-}
-
-void Session::write_overlay_once()
-{
-    if (m_overlay_written)
-        return;
-    m_overlay_written = true;
-    const GraphicsScreen& overlay = std::get<AnimationPlayer>(m_step).view();
-    for (const auto& [name, shape] : {std::pair{m_settings.overlay_png, PngShape::monitor},
-                                      std::pair{m_settings.overlay_png_raw, PngShape::raw}}) {
-        if (name)
-            write_picture(*name, overlay, shape, "overlay of all frames written to " + *name);
-    }
-    if (m_settings.overlay_svg)
-        store_picture(*m_settings.overlay_svg, encode_svg(overlay),
-                      "overlay of all frames written to " + *m_settings.overlay_svg);
-}
-
-void Session::write_picture(const std::string& name, const GraphicsScreen& picture, PngShape shape,
-                            const std::string& log_line)
-{
-    const std::optional<std::string> png = encode_png(render_raster(picture), shape);
-    if (!png) {
-        m_notice = name + ": cannot encode the PNG image";
-        return;
-    }
-    store_picture(name, *png, log_line);
-}
-
-void Session::store_picture(const std::string& name, const std::string& bytes, const std::string& log_line)
-{
-    if (auto problem = write_file(name, bytes)) {
-        m_notice = problem->to_string();
-        return;
-    }
-    record_written(name);
-    m_files.log(log_line);
-    m_notice = "wrote " + name;
 }
 
 void Session::quit()
 {
     m_files.log("quit at " + std::string(phase_name(phase())));
-    if (m_split)
-        close_split();
-    finish();
-}
-
-std::optional<Diagnostic> Session::write_file(const std::string& name, const std::string& content)
-{
-    std::optional<Diagnostic> problem = m_files.write(name, content);
-    if (problem)
-        m_write_problem = problem;
-    return problem;
-}
-
-void Session::record_written(const std::string& name)
-{
-    if (m_written_names.insert(name).second)
-        m_written.push_back(name);
+    StepContext step_context = context();
+    if (auto* splitting = std::get_if<step::Splitting>(&m_step))
+        static_cast<void>(splitting->close(step_context));
+    m_step.emplace<step::Finished>();
+    static_cast<void>(std::get<step::Finished>(m_step).start(step_context));
+    ask({});
 }
 
 } // namespace apcs

@@ -1,12 +1,12 @@
 // addpoint.c and split.c (SPEC §5.1, §5.2): equal point counts, then one path file per point,
 // written a batch at a time so that the shell can read keys between batches.
-#include "apcs/session/session.h"
+#include "apcs/session/session_steps.h"
 
 #include "apcs/formats/path_files.h"
 
 #include <algorithm>
 
-namespace apcs {
+namespace apcs::step {
 
 namespace {
 
@@ -16,75 +16,70 @@ constexpr std::size_t split_batch_files = 64;
 
 } // namespace
 
-void Session::add_points_and_split()
+Splitting Splitting::after(const Key2Prompt&, StepContext& context)
 {
-    m_keys = equalise_key_frames(m_key_frames[0], m_key_frames[1]);
-    m_point_count = m_keys.key1.point_count();
-    m_split = Split{m_keys.key1.all_points(), m_keys.key2.all_points(), 0};
-    m_files.begin_batch();
-    m_step = TextStep{SessionPhase::splitting};
-    // Keys of up to a batch of points are split at once, as in the thesis.
-    work();
+    SessionModel& model = context.model;
+    model.keys = equalise_key_frames(model.key_frames[0], model.key_frames[1]);
+    model.point_count = model.keys.key1.point_count();
+    return {model.keys.key1.all_points(), model.keys.key2.all_points(), 0};
 }
 
-void Session::work()
+// Keys of up to a batch of points are split at once, as in the thesis.
+StepResult Splitting::start(StepContext& context)
 {
-    if (!m_split)
-        return;
-    Split& split = *m_split;
-    const std::size_t total = std::min(split.key1.size(), split.key2.size());
-    const std::size_t batch_end = std::min(total, split.written + split_batch_files);
-    while (split.written < batch_end) {
-        const std::size_t index = split.written;
-        const NamedText file = split_path_file(index + 1, split.key1[index], split.key2[index]);
-        if (auto problem = write_file(file.name, file.content)) {
-            close_split();
-            return ask_again(SessionPhase::ask_key2, problem->to_string());
+    context.files.begin_batch();
+    return work(context);
+}
+
+StepResult Splitting::work(StepContext& context)
+{
+    const std::size_t batch_end = std::min(total(), written + split_batch_files);
+    while (written < batch_end) {
+        const NamedText file = split_path_file(written + 1, key1[written], key2[written]);
+        if (auto problem = context.write_file(file.name, file.content)) {
+            static_cast<void>(close(context));
+            return StepResult::refused(problem->to_string());
         }
-        record_written(file.name);
-        ++split.written;
+        context.model.written.add(file.name);
+        ++written;
     }
-    if (split.written == total)
-        finish_split();
+    return written == total() ? finish(context) : StepResult{};
 }
 
-void Session::finish_split()
+StepResult Splitting::finish(StepContext& context)
 {
-    if (const std::optional<Diagnostic> problem = close_split())
-        return ask_again(SessionPhase::ask_key2, problem->to_string());
-    m_files.log("added points: both keys have " + std::to_string(m_point_count) + " points in " +
-                std::to_string(m_keys.key1.parts.size()) + " parts; wrote ani1.dat … " + path_file_name(m_point_count));
-    go_to(SessionPhase::ask_view);
+    if (const std::optional<Diagnostic> problem = close(context))
+        return StepResult::refused(problem->to_string());
+    const SessionModel& model = context.model;
+    context.files.log("added points: both keys have " + std::to_string(model.point_count) + " points in " +
+                      std::to_string(model.keys.key1.parts.size()) + " parts; wrote ani1.dat … " +
+                      path_file_name(model.point_count));
+    return {StepOutcome::done};
 }
 
-// Esc while splitting: the files written stay (each whole), and KEY2 is asked again.
-void Session::stop_split(const std::string&)
+StepResult Splitting::submit(StepContext& context, const std::string&)
 {
-    const std::size_t written = m_split->written;
-    const std::size_t total = std::min(m_split->key1.size(), m_split->key2.size());
-    const std::optional<Diagnostic> problem = close_split();
+    const std::optional<Diagnostic> problem = close(context);
     const std::string files = written == 0 ? std::string("no path file")
                                            : "ani1.dat … " + path_file_name(written) + " (" + std::to_string(written) +
-                                                 " of " + std::to_string(total) + ")";
-    m_files.log("split stopped: " + files + " written");
-    ask_again(SessionPhase::ask_key2, problem ? problem->to_string()
-                                              : "Split stopped: " + files + " written, none half-written");
+                                                 " of " + std::to_string(total()) + ")";
+    context.files.log("split stopped: " + files + " written");
+    return {StepOutcome::stopped,
+            problem ? problem->to_string() : "Split stopped: " + files + " written, none half-written"};
 }
 
-std::optional<Diagnostic> Session::close_split()
+std::optional<Diagnostic> Splitting::close(StepContext& context)
 {
-    m_split.reset();
-    std::optional<Diagnostic> problem = m_files.end_batch();
+    std::optional<Diagnostic> problem = context.files.end_batch();
     if (problem)
-        m_write_problem = problem;
+        context.model.written.set_problem(*problem);
     return problem;
 }
 
-std::string Session::split_progress() const
+std::string Splitting::progress() const
 {
-    const std::size_t total = std::min(m_split->key1.size(), m_split->key2.size());
-    const std::string last = m_split->written == 0 ? std::string("nothing") : path_file_name(m_split->written);
-    return "Splitting: " + last + " of " + std::to_string(total) + " written - Esc stops, Ctrl-C ends APCS";
+    const std::string last = written == 0 ? std::string("nothing") : path_file_name(written);
+    return "Splitting: " + last + " of " + std::to_string(total()) + " written - Esc stops, Ctrl-C ends APCS";
 }
 
-} // namespace apcs
+} // namespace apcs::step

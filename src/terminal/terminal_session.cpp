@@ -16,7 +16,7 @@ namespace apcs {
 
 namespace {
 
-CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
+CellGrid grid_for(const InteractiveProgram& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
                   std::string_view caption)
 {
     const SessionScreen screen = with_caption(session.screen(), caption);
@@ -27,7 +27,7 @@ CellGrid grid_for(const Session& session, TerminalSize size, GlyphSet glyphs, As
 
 // The session's work (the split) for about a frame's time, then back to the keys: Esc or Ctrl-C
 // is read within that time, however many files are left.
-void work_a_while(Session& session)
+void work_a_while(InteractiveProgram& session)
 {
     constexpr auto slice = std::chrono::milliseconds(30);
     const auto start = std::chrono::steady_clock::now();
@@ -120,7 +120,7 @@ std::unique_ptr<Terminal> open_terminal(Diagnostic& problem)
     return std::move(*opened);
 }
 
-ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
+ExitStatus run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem)
 {
     const std::unique_ptr<Terminal> terminal = open_terminal(problem);

@@ -4,7 +4,7 @@
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
-#include "apcs/session/session.h"
+#include "apcs/session/interactive_program.h"
 #include "apcs/terminal/terminal.h"
 
 #include <memory>
@@ -12,7 +12,7 @@
 
 namespace apcs {
 
-// Runs the session in the terminal: the script's keys first, as if typed, at `pace` (at once; one
+// Runs the session (or apcs play's ScenePlayer) in the terminal: the script's keys first, as if typed, at `pace` (at once; one
 // key every N ms; one key per Space) with its captions on the message line, then the keyboard, the
 // graphics screen in `glyphs` (already chosen: not GlyphSet::automatic). Every key handled is
 // appended to `recorded`; Ctrl-L (Key::redraw) also repaints the whole terminal. Below the least
@@ -30,7 +30,7 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 // The terminal, or nullptr with `problem` set ("apcs: PROBLEM") when there is no usable one.
 std::unique_ptr<Terminal> open_terminal(Diagnostic& problem);
 
-ExitStatus run_terminal_session(Session& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
+ExitStatus run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
                                 std::vector<KeyEvent>& recorded, Diagnostic& problem);
 
 } // namespace apcs

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "apcs/animation/control_point.h"
+#include "apcs/animation/memory_budget.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/raster/cell_grid.h"
+#include "apcs/raster/graphics_screen.h"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace apcs {
+
+struct SessionSettings {
+    int samples_per_segment = 32;
+    int inbetween_count = 12;
+    Spacing spacing = Spacing::nearest;
+    double step = 0.05; // staff step per key
+    // What an empty answer takes where the command line gave it (--theta, --phi, --delay,
+    // --slopes); else the thesis' example (30 40 200, 1 1).
+    std::optional<double> theta_degrees;
+    std::optional<double> phi_degrees;
+    std::optional<int> delay_ms;
+    std::optional<EndSlopes> slopes;
+    // The staff values of path files with three columns (--tension, --continuity, --bias, --accel).
+    StaffValues staff;
+    // Where the overlay of all frames goes as a PNG when the animation ends, if anywhere: as the
+    // monitor showed it (--png) and as the bare raster (--png-raw).
+    std::optional<std::string> overlay_png;
+    std::optional<std::string> overlay_png_raw;
+    std::optional<std::string> overlay_svg; // the same as vector lines (--svg)
+    // The memory one request may take (APCS_MEMORY_LIMIT): more points or samples are refused.
+    std::uint64_t memory_limit_bytes = memory::default_limit_bytes;
+};
+
+// What the terminal shows now: the DOS text console or the graphics screen.
+struct SessionScreen {
+    bool graphics = false;
+    CellGrid text;          // 80x24, when !graphics
+    GraphicsScreen picture; // when graphics
+};
+
+} // namespace apcs

@@ -1,0 +1,28 @@
+#include "apcs/session/session_model.h"
+
+#include <cassert>
+
+namespace apcs {
+
+void WrittenFiles::add(const std::string& name)
+{
+    if (m_known.insert(name).second)
+        m_names.push_back(name);
+}
+
+std::optional<Diagnostic> StepContext::write_file(const std::string& name, const std::string& content)
+{
+    std::optional<Diagnostic> problem = files.write(name, content);
+    if (problem)
+        model.written.set_problem(*problem);
+    return problem;
+}
+
+PathSettings StepContext::path_settings(int path) const
+{
+    assert(path == 0 || path == 1);
+    return {model.paths[static_cast<std::size_t>(path)].slopes, settings.samples_per_segment, settings.inbetween_count,
+            settings.spacing};
+}
+
+} // namespace apcs
