@@ -4,27 +4,33 @@
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/painter.h"
 
-#include <array>
 #include <utility>
 
 namespace apcs {
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, Key>, 12> key_names{{
-    {"ENTER", Key::enter},
-    {"ESC", Key::escape},
-    {"SPACE", Key::space},
-    {"LEFT", Key::left},
-    {"RIGHT", Key::right},
-    {"UP", Key::up},
-    {"DOWN", Key::down},
-    {"BACKSPACE", Key::backspace},
-    {"TAB", Key::tab},
-    {"BTAB", Key::back_tab},
-    {"F1", Key::f1},
-    {"CTRL-L", Key::redraw},
-}};
+// What a script line's token may be, for its error text: "a single printable character or ENTER,
+// ESC, …" in the order of the physical keys.
+std::string expected_token()
+{
+    std::string expected = "expected a single printable character or ";
+    for (const PhysicalKey& row : physical_keys)
+        expected += std::string(row.script_name) + (&row == &physical_keys.back() ? "" : ", ");
+    return expected;
+}
+
+// The key a token names: a physical key's script name or a single printable character.
+std::optional<KeyEvent> key_of_token(std::string_view token)
+{
+    for (const PhysicalKey& row : physical_keys)
+        if (token == row.script_name)
+            return KeyEvent::of(row.key);
+    const std::u32string characters = decode_utf8(token);
+    if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD)
+        return std::nullopt;
+    return KeyEvent::typed(characters[0]);
+}
 
 // The caption of a line's comment, if it starts with ";;": its text without the marks and the
 // blanks around it.
@@ -64,26 +70,15 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         const std::optional<std::string> caption =
             comment == std::string_view::npos ? std::nullopt : caption_of(line.substr(comment));
         line = line.substr(0, comment);
-        bool stop = false;
         for_each_field(line, [&](std::string_view token) {
-            if (stop)
+            if (problem)
                 return;
-            for (const auto& [name, key] : key_names)
-                if (token == name) {
-                    events.push_back(KeyEvent::of(key));
-                    return;
-                }
-            const std::u32string characters = decode_utf8(token);
-            if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD) {
-                problem = Diagnostic{file_name, line_number,
-                                     "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
-                                     "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L; found '" + std::string(token) + "'"};
-                stop = true;
-                return;
-            }
-            events.push_back(KeyEvent::typed(characters[0]));
+            if (const std::optional<KeyEvent> event = key_of_token(token))
+                events.push_back(*event);
+            else
+                problem = Diagnostic{file_name, line_number, expected_token() + "; found '" + std::string(token) + "'"};
         });
-        if (stop)
+        if (problem)
             return *problem;
         if (caption && captions != nullptr)
             captions->push_back({events.size(), *caption});
@@ -92,6 +87,20 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     if (events.size() < events.capacity() / 2)
         events.shrink_to_fit();
     return events;
+}
+
+// The typed text `pending_text` as a script's TEXT line, emptying it. A TEXT line may not end in a
+// space that an editor could strip, so its trailing spaces follow as SPACE tokens.
+std::string take_text_line(std::string& pending_text)
+{
+    std::string trailing_spaces;
+    while (pending_text.ends_with(' ')) {
+        pending_text.pop_back();
+        trailing_spaces += "SPACE\n";
+    }
+    std::string lines = pending_text.empty() ? std::string() : "TEXT " + pending_text + "\n";
+    pending_text.clear();
+    return lines + trailing_spaces;
 }
 
 } // namespace
@@ -124,14 +133,8 @@ std::string format_key_script(const std::vector<KeyEvent>& events)
 {
     std::string script;
     std::string pending_text;
-    const auto flush_text = [&] {
-        if (!pending_text.empty())
-            script += "TEXT " + pending_text + "\n";
-        pending_text.clear();
-    };
     for (const KeyEvent& event : events) {
-        // Text keeps its spaces inside a TEXT line; a TEXT line may not end in a space that an
-        // editor could strip, so a trailing space is written as its own token.
+        // Text keeps its spaces inside a TEXT line.
         if (event.key == Key::character && event.character != U';') {
             append_utf8(pending_text, event.character);
             continue;
@@ -140,28 +143,13 @@ std::string format_key_script(const std::vector<KeyEvent>& events)
             pending_text += ' ';
             continue;
         }
-        std::string trailing_spaces;
-        while (pending_text.ends_with(' ')) {
-            pending_text.pop_back();
-            trailing_spaces += "SPACE\n";
-        }
-        flush_text();
-        script += trailing_spaces;
-        if (event.key == Key::character) {
+        script += take_text_line(pending_text);
+        if (event.key == Key::character)
             script += "TEXT ;\n";
-            continue;
-        }
-        for (const auto& [name, key] : key_names)
-            if (key == event.key)
-                script += std::string(name) + "\n";
+        else if (const PhysicalKey* row = find_physical_key(event.key))
+            script += std::string(row->script_name) + "\n";
     }
-    std::string trailing_spaces;
-    while (pending_text.ends_with(' ')) {
-        pending_text.pop_back();
-        trailing_spaces += "SPACE\n";
-    }
-    flush_text();
-    return script + trailing_spaces;
+    return script + take_text_line(pending_text);
 }
 
 } // namespace apcs

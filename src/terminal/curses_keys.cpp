@@ -11,56 +11,87 @@ static_assert(keypad_key_base > KEY_MAX + 0x200 && keypad_key_8 < 0x10000);
 
 namespace {
 
-// What get_wch gives and the key the session sees: `key_code` when get_wch said KEY_CODE_YES
-// (a curses key code), else a character. Any other printable character is typed as itself.
+// What get_wch gives for a row of APCS_PHYSICAL_KEYS (physical_key.h): its curses columns, 0 (or
+// nullptr) filling the slots a row leaves empty.
 struct CursesKey {
-    bool key_code;
-    wint_t code;
-    KeyEvent event;
+    Key key;
+    std::array<int, 2> key_codes;
+    std::array<wint_t, 2> characters;
+    std::array<const char*, 3> sequences;
 };
 
-constexpr std::array curses_keys{
-    CursesKey{true, KEY_LEFT, {Key::left, 0}},
-    CursesKey{true, KEY_RIGHT, {Key::right, 0}},
-    CursesKey{true, KEY_UP, {Key::up, 0}},
-    CursesKey{true, KEY_DOWN, {Key::down, 0}},
-    CursesKey{true, KEY_ENTER, {Key::enter, 0}},
-    CursesKey{true, KEY_BACKSPACE, {Key::backspace, 0}},
-    CursesKey{true, KEY_BTAB, {Key::back_tab, 0}},
-    CursesKey{true, KEY_F(1), {Key::f1, 0}},
-    CursesKey{true, keypad_key_4, {Key::character, U'4'}},
-    CursesKey{true, keypad_key_6, {Key::character, U'6'}},
-    CursesKey{true, keypad_key_8, {Key::character, U'8'}},
-    CursesKey{true, keypad_key_2, {Key::character, U'2'}},
-    CursesKey{false, '\r', {Key::enter, 0}},
-    CursesKey{false, '\n', {Key::enter, 0}},
-    CursesKey{false, ' ', {Key::space, 0}},
-    CursesKey{false, 8, {Key::backspace, 0}},
-    CursesKey{false, 127, {Key::backspace, 0}},
-    CursesKey{false, 27, {Key::escape, 0}},
-    CursesKey{false, '\t', {Key::tab, 0}},
-    CursesKey{false, 12, {Key::redraw, 0}}, // Ctrl-L
+#define APCS_LIST(...) __VA_ARGS__
+#define APCS_CURSES_KEY(enumerator, script_name, help_label, keypad_digit, key_codes, characters, sequences)   \
+    CursesKey{Key::enumerator, {APCS_LIST key_codes}, {APCS_LIST characters}, {APCS_LIST sequences}},
+constexpr std::array curses_keys{APCS_PHYSICAL_KEYS(APCS_CURSES_KEY)};
+#undef APCS_CURSES_KEY
+#undef APCS_LIST
+
+// The keypad's digits in application mode, which terminfo does not name: they type their digit.
+struct KeypadDigit {
+    const char* sequence;
+    int code;
+    char32_t digit;
 };
 
-constexpr std::array key_sequence_table{
-    KeySequence{"\033Ot", keypad_key_4},
-    KeySequence{"\033Ov", keypad_key_6},
-    KeySequence{"\033Ox", keypad_key_8},
-    KeySequence{"\033Or", keypad_key_2},
-    KeySequence{"\033OM", KEY_ENTER},
-    KeySequence{"\033[A", KEY_UP},
-    KeySequence{"\033[B", KEY_DOWN},
-    KeySequence{"\033[C", KEY_RIGHT},
-    KeySequence{"\033[D", KEY_LEFT},
-    KeySequence{"\033OA", KEY_UP},
-    KeySequence{"\033OB", KEY_DOWN},
-    KeySequence{"\033OC", KEY_RIGHT},
-    KeySequence{"\033OD", KEY_LEFT},
-    KeySequence{"\033[Z", KEY_BTAB},
-    KeySequence{"\033OP", KEY_F(1)},
-    KeySequence{"\033[11~", KEY_F(1)},
-    KeySequence{"\033[[A", KEY_F(1)},
+constexpr std::array keypad_digits{
+    KeypadDigit{"\033Ot", keypad_key_4, U'4'},
+    KeypadDigit{"\033Ov", keypad_key_6, U'6'},
+    KeypadDigit{"\033Ox", keypad_key_8, U'8'},
+    KeypadDigit{"\033Or", keypad_key_2, U'2'},
 };
+
+constexpr std::size_t sequence_count()
+{
+    std::size_t count = keypad_digits.size();
+    for (const CursesKey& row : curses_keys)
+        count += static_cast<std::size_t>(std::ranges::count_if(row.sequences, [](const char* s) { return s != nullptr; }));
+    return count;
+}
+
+// A row's sequences are bound to its first key code: a row with sequences needs one.
+constexpr bool sequences_have_a_key_code()
+{
+    return std::ranges::all_of(curses_keys, [](const CursesKey& row) {
+        return row.sequences[0] == nullptr || row.key_codes[0] != 0;
+    });
+}
+static_assert(sequences_have_a_key_code());
+
+constexpr auto key_sequence_table = [] {
+    std::array<KeySequence, sequence_count()> table{};
+    std::size_t next = 0;
+    for (const KeypadDigit& keypad : keypad_digits)
+        table[next++] = {keypad.sequence, keypad.code};
+    for (const CursesKey& row : curses_keys)
+        for (const char* sequence : row.sequences)
+            if (sequence != nullptr)
+                table[next++] = {sequence, row.key_codes[0]};
+    return table;
+}();
+
+// The key of a curses key code: a physical key's, or a keypad digit typed.
+std::optional<KeyEvent> key_of_code(wint_t code)
+{
+    for (const CursesKey& row : curses_keys)
+        if (std::ranges::find(row.key_codes, static_cast<int>(code)) != row.key_codes.end())
+            return KeyEvent::of(row.key);
+    for (const KeypadDigit& keypad : keypad_digits)
+        if (static_cast<int>(code) == keypad.code)
+            return KeyEvent::typed(keypad.digit);
+    return std::nullopt;
+}
+
+// The key of a character: a physical key's (Enter for CR), else the character typed if printable.
+std::optional<KeyEvent> key_of_character(wint_t code)
+{
+    for (const CursesKey& row : curses_keys)
+        if (std::ranges::find(row.characters, code) != row.characters.end())
+            return KeyEvent::of(row.key);
+    if (code >= 0x20)
+        return KeyEvent::typed(static_cast<char32_t>(code));
+    return std::nullopt;
+}
 
 } // namespace
 
@@ -98,16 +129,13 @@ EscapeTail escape_tail(std::u32string_view after_escape)
 
 std::optional<KeyEvent> key_event_from_curses(int get_wch_result, wint_t code)
 {
-    if (get_wch_result != OK && get_wch_result != KEY_CODE_YES)
+    // 0 fills a row's empty slots, and is no key either way (NUL).
+    if (code == 0)
         return std::nullopt;
-    const bool key_code = get_wch_result == KEY_CODE_YES;
-    const auto* found = std::find_if(curses_keys.begin(), curses_keys.end(), [&](const CursesKey& entry) {
-        return entry.key_code == key_code && entry.code == code;
-    });
-    if (found != curses_keys.end())
-        return found->event;
-    if (!key_code && code >= 0x20)
-        return KeyEvent::typed(static_cast<char32_t>(code));
+    if (get_wch_result == KEY_CODE_YES)
+        return key_of_code(code);
+    if (get_wch_result == OK)
+        return key_of_character(code);
     return std::nullopt;
 }
 

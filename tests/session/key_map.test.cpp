@@ -14,6 +14,27 @@ namespace {
 KeyEvent ch(char32_t c) { return KeyEvent::typed(c); }
 KeyEvent key(Key k) { return KeyEvent::of(k); }
 
+constexpr KeyContext all_contexts[] = {
+    KeyContext::text_line,    KeyContext::yes_to_go_on, KeyContext::enter_to_go_on,   KeyContext::any_key,
+    KeyContext::splitting,    KeyContext::any_key_graphics, KeyContext::control_choice, KeyContext::region_pick,
+    KeyContext::staff,        KeyContext::value_field,  KeyContext::waypoints,        KeyContext::adjust_again,
+    KeyContext::animation,    KeyContext::quit_question, KeyContext::help_screen,     KeyContext::finished,
+};
+
+// The keys a pattern names, one event each (none for the patterns of any key or any character).
+std::vector<KeyEvent> examples_of(const KeyPattern& pattern)
+{
+    switch (pattern.kind) {
+    case KeyPattern::Kind::key: return {KeyEvent::of(pattern.key)};
+    case KeyPattern::Kind::character:
+    case KeyPattern::Kind::letter: return {KeyEvent::typed(pattern.character)};
+    case KeyPattern::Kind::keypad: return {KeyEvent::of(pattern.key), KeyEvent::typed(pattern.character)};
+    case KeyPattern::Kind::printable:
+    case KeyPattern::Kind::any: return {};
+    }
+    return {};
+}
+
 } // namespace
 
 TEST_CASE("each context reads its keys as the thesis' commands", "[session][keys]")
@@ -116,8 +137,8 @@ TEST_CASE("the key line of graphics mode is made from the key map's rows", "[ses
     REQUIRE(key_help(KeyContext::value_field) == "Enter set  Backspace erase  Esc close");
     REQUIRE(key_help(KeyContext::animation) == "Esc stop  Space pause  R replay  ? help  q quit");
     // Every key line fits the 80 columns of the screen, after its first.
-    for (const KeyBinding& binding : key_bindings())
-        REQUIRE(key_help(binding.context).size() <= 78);
+    for (const KeyContext context : all_contexts)
+        REQUIRE(key_help(context).size() <= 78);
     REQUIRE(key_help(KeyContext::text_line).empty());
 }
 
@@ -141,8 +162,8 @@ TEST_CASE("the help screen lists every key of a step with what it means, keys of
 
 TEST_CASE("every help screen fits the 80x24 console: lines of at most 79 columns, rows 2 to 20", "[session][keys]")
 {
-    for (const KeyBinding& binding : key_bindings()) {
-        const std::vector<std::string> lines = key_help_lines(binding.context);
+    for (const KeyContext context : all_contexts) {
+        const std::vector<std::string> lines = key_help_lines(context);
         REQUIRE(lines.size() <= 19);
         for (const std::string& line : lines)
             REQUIRE(line.size() <= 79);
@@ -155,13 +176,61 @@ TEST_CASE("every help screen fits the 80x24 console: lines of at most 79 columns
 TEST_CASE("no key map row is hidden behind an earlier row of its context", "[session][keys]")
 {
     const auto bindings = key_bindings();
-    for (std::size_t later = 0; later < bindings.size(); ++later) {
-        const KeyPattern& pattern = bindings[later].pattern;
-        if (pattern.kind == KeyPattern::Kind::any || pattern.kind == KeyPattern::Kind::printable)
-            continue;
-        const KeyEvent example = pattern.kind == KeyPattern::Kind::key ? KeyEvent::of(pattern.key)
-                                                                        : KeyEvent::typed(pattern.character);
-        CAPTURE(later);
-        REQUIRE(command_for(bindings[later].context, example) == bindings[later].command);
+    for (std::size_t later = 0; later < bindings.size(); ++later)
+        for (const KeyContext context : all_contexts) {
+            if (!bindings[later].contexts.contains(context))
+                continue;
+            for (const KeyEvent& example : examples_of(bindings[later].pattern)) {
+                CAPTURE(later, static_cast<int>(context), static_cast<int>(example.key));
+                REQUIRE(command_for(context, example) == bindings[later].command);
+            }
+        }
+}
+
+TEST_CASE("a keypad pattern means the arrow and the digit on the same key, and the help screen names both",
+          "[session][keys]")
+{
+    const std::tuple<Key, char32_t, std::string> rows[] = {
+        {Key::left, U'4', "4, Left"}, {Key::right, U'6', "6, Right"}, {Key::up, U'8', "8, Up"}, {Key::down, U'2', "2, Down"}};
+    for (const auto& [arrow, digit, label] : rows) {
+        const KeyPattern pattern = KeyPattern::keypad(arrow);
+        REQUIRE(pattern.matches(key(arrow)));
+        REQUIRE(pattern.matches(ch(digit)));
+        REQUIRE_FALSE(pattern.matches(ch(U'5')));
+        REQUIRE_FALSE(pattern.matches(key(Key::enter)));
+        REQUIRE(key_label(pattern) == label);
     }
+}
+
+TEST_CASE("a key context set holds the contexts it was given and no other", "[session][keys]")
+{
+    const KeyContexts staff_and_waypoints{KeyContext::staff, KeyContext::waypoints};
+    for (const KeyContext context : all_contexts)
+        REQUIRE(staff_and_waypoints.contains(context) ==
+                (context == KeyContext::staff || context == KeyContext::waypoints));
+    REQUIRE(KeyContexts{KeyContext::finished}.contains(KeyContext::finished));
+    REQUIRE_FALSE(KeyContexts{}.contains(KeyContext::text_line));
+}
+
+TEST_CASE("every physical key's row gives its script token, read back as the key, and its help label",
+          "[session][keys]")
+{
+    for (const PhysicalKey& row : physical_keys) {
+        CAPTURE(std::string(row.script_name));
+        const Expected<std::vector<KeyEvent>> parsed = parse_key_script(row.script_name, "keys.txt");
+        REQUIRE(parsed);
+        REQUIRE(*parsed == std::vector<KeyEvent>{key(row.key)});
+        REQUIRE(format_key_script({key(row.key)}) == std::string(row.script_name) + "\n");
+        REQUIRE(key_label(KeyPattern::of(row.key)) == row.help_label);
+    }
+    REQUIRE(find_physical_key(Key::character) == nullptr);
+}
+
+TEST_CASE("a script token that names no key is refused with the list of every key's token", "[session][keys]")
+{
+    const Expected<std::vector<KeyEvent>> parsed = parse_key_script("ENTER\nF2\n", "keys.txt");
+    REQUIRE_FALSE(parsed);
+    REQUIRE(parsed.error().line == 2);
+    REQUIRE(parsed.error().message == "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
+                                      "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L; found 'F2'");
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/formats/diagnostic.h"
+#include "apcs/session/physical_key.h"
 
 #include <cstdint>
 #include <optional>
@@ -10,10 +11,6 @@
 #include <vector>
 
 namespace apcs {
-
-// A key as the session sees it: the terminal maps digits, arrows and the keypad to these
-// (SPEC §7.3); `character` carries any other printable key.
-enum class Key { character, enter, escape, space, left, right, up, down, backspace, tab, back_tab, f1, redraw };
 
 struct KeyEvent {
     Key key = Key::character;
@@ -25,9 +22,9 @@ struct KeyEvent {
 };
 
 // A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
-// literally; any other line holds tokens — a printable character, or ENTER, ESC, SPACE, LEFT,
-// RIGHT, UP, DOWN, BACKSPACE, TAB, BTAB (Shift-Tab), F1, CTRL-L (redraw); ';' starts a comment. Returns the events, or the first problem
-// with its line, named as `file_name`.
+// literally; any other line holds tokens — a printable character, or a physical key's script name
+// (ENTER, ESC, … CTRL-L: physical_key.h); ';' starts a comment. Returns the events, or the first
+// problem with its line, named as `file_name`.
 // A longer script is refused before it is read: 16 MiB is 16 million keystrokes or more, and
 // each takes sizeof(KeyEvent) = 8 bytes once parsed.
 inline constexpr std::uintmax_t max_key_script_bytes = 16ull << 20;

@@ -4,6 +4,8 @@
 #include "apcs/session/command.h"
 #include "apcs/session/key_event.h"
 
+#include <cstdint>
+#include <initializer_list>
 #include <optional>
 #include <span>
 #include <string>
@@ -32,9 +34,27 @@ enum class KeyContext {
     finished,       // nothing is read
 };
 
-// Which keys a binding matches.
+// The contexts a binding holds in.
+class KeyContexts {
+public:
+    constexpr KeyContexts(std::initializer_list<KeyContext> contexts)
+    {
+        for (const KeyContext context : contexts)
+            m_members |= bit(context);
+    }
+    constexpr bool contains(KeyContext context) const { return (m_members & bit(context)) != 0; }
+
+private:
+    static constexpr std::uint32_t bit(KeyContext context) { return std::uint32_t{1} << static_cast<int>(context); }
+    std::uint32_t m_members = 0;
+};
+static_assert(static_cast<int>(KeyContext::finished) < 32, "KeyContexts holds a context in a bit of 32");
+
+// Which keys a binding matches. The terminal gives a keypad digit and an arrow as different keys
+// (at a text prompt 4 is typed and Left does nothing); where they mean the same (SPEC §7.3: digits
+// 8/2/4/6 and the arrows are equal) one `keypad` pattern matches both.
 struct KeyPattern {
-    enum class Kind { key, character, letter, printable, any };
+    enum class Kind { key, character, letter, keypad, printable, any };
     Kind kind = Kind::any;
     Key key = Key::character;
     char32_t character = 0;
@@ -44,6 +64,8 @@ struct KeyPattern {
     static constexpr KeyPattern exactly(char32_t character) { return {Kind::character, Key::character, character}; }
     // This letter in either case (J is Shift-J on the PC keyboard; j works too).
     static constexpr KeyPattern letter(char32_t upper) { return {Kind::letter, Key::character, upper}; }
+    // An arrow, or the digit the same keypad key types with NumLock on (Left and 4).
+    static constexpr KeyPattern keypad(Key arrow) { return {Kind::keypad, arrow, find_physical_key(arrow)->keypad_digit}; }
     // Any printable character (typed text).
     static constexpr KeyPattern printable() { return {Kind::printable, Key::character, 0}; }
     static constexpr KeyPattern any_key() { return {Kind::any, Key::character, 0}; }
@@ -51,15 +73,15 @@ struct KeyPattern {
     bool matches(const KeyEvent& event) const;
 };
 
-// One row of the key map: in `context`, a key matching `pattern` means `command`. `help` is the
-// row's words on the key line of graphics mode (rows that share words are shown once; empty: not
-// shown); `meaning` is what the help screen says of the key.
+// One row of the key map: in `contexts`, a key matching `pattern` means `command`. `key_line_words`
+// are the row's words on the key line of graphics mode (rows that share words are shown once;
+// empty: not shown); `help_text` is what the help screen says of the key (empty: not shown).
 struct KeyBinding {
-    KeyContext context;
+    KeyContexts contexts;
     KeyPattern pattern;
     Command command;
-    std::string_view help;
-    std::string_view meaning;
+    std::string_view key_line_words;
+    std::string_view help_text;
 };
 
 // The whole key map (SPEC §3, §7.3), in the order it is searched: the first matching row wins.
@@ -72,7 +94,8 @@ std::optional<Command> command_for(KeyContext context, const KeyEvent& event);
 // The key line of a context: its rows' help words, each once, in table order, two spaces apart.
 std::string key_help(KeyContext context);
 
-// The name of the keys a pattern matches, as the help screen writes it: "4", "Left", "J", "Enter".
+// The name of the keys a pattern matches, as the help screen writes it: "4", "Left", "4, Left", "J",
+// "Enter".
 std::string key_label(const KeyPattern& pattern);
 
 // The help screen's lines for a context: every key and what it means, keys of the same meaning on

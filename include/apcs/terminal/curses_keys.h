@@ -19,18 +19,18 @@ inline constexpr int keypad_key_6 = keypad_key_base + 6;
 inline constexpr int keypad_key_8 = keypad_key_base + 8;
 
 // A sequence a terminal may send for a key while its terminfo entry names another one, and the
-// curses key code the terminal binds it to (define_key) where terminfo does not name the sequence:
-// the arrows in both cursor-key modes (ESC [ A and ESC O A: terminals that ignore the application
-// mode, keypad's arrows with NumLock off), the keypad's digits and Enter in application mode,
-// Shift-Tab (ESC [ Z) and F1 (ESC O P, ESC [ 1 1 ~, the Linux console's ESC [ [ A).
+// curses key code the terminal binds it to (define_key) where terminfo does not name the sequence.
 struct KeySequence {
     const char* sequence;
     int code;
 };
 
-// ESC O t = keypad_key_4, ESC O v = keypad_key_6, ESC O x = keypad_key_8, ESC O r = keypad_key_2,
-// ESC O M = KEY_ENTER (SPEC §7.3); ESC [ A / ESC O A = KEY_UP and so on; ESC [ Z = KEY_BTAB;
-// ESC O P, ESC [ 1 1 ~, ESC [ [ A = KEY_F(1).
+// The keypad's digits in application mode (ESC O t = keypad_key_4, ESC O v = keypad_key_6,
+// ESC O x = keypad_key_8, ESC O r = keypad_key_2), then the escape sequences of the physical keys'
+// rows (physical_key.h), each bound to its row's first curses key code: the arrows in both
+// cursor-key modes (ESC [ A and ESC O A: terminals that ignore the application mode, the keypad's
+// arrows with NumLock off), the keypad's Enter (ESC O M), Shift-Tab (ESC [ Z) and F1 (ESC O P,
+// ESC [ 1 1 ~, the Linux console's ESC [ [ A). SPEC §7.3.
 std::span<const KeySequence> key_sequences();
 
 // What the characters that follow an Esc at once make, when ncurses returned the Esc alone because
@@ -46,10 +46,12 @@ enum class EscapeTail { unfinished, sequence, broken, keys };
 EscapeTail escape_tail(std::u32string_view after_escape);
 
 // The key the session sees for what get_wch returned (`get_wch_result`: OK for a character,
-// KEY_CODE_YES for a curses key code): arrows, Enter (CR, LF, KEY_ENTER), Space, Backspace (^H,
-// DEL, KEY_BACKSPACE), Esc, Tab, Shift-Tab (KEY_BTAB), F1, Ctrl-L (redraw), the keypad's digits
-// and any other printable character. nullopt for anything else (ERR, other control characters,
-// keys the session has no use for). KEY_RESIZE is the caller's. Pure: uses the constants of <curses.h> only, so it is tested without ncurses.
+// KEY_CODE_YES for a curses key code): a physical key by its row's curses key codes and characters
+// (physical_key.h: arrows, Enter as CR, LF or KEY_ENTER, Backspace as ^H, DEL or KEY_BACKSPACE,
+// Ctrl-L and the rest), the keypad's digits typed, and any other printable character typed.
+// nullopt for anything else (ERR, other control characters, keys the session has no use for).
+// KEY_RESIZE is the caller's. Pure: uses the constants of <curses.h> only, so it is tested without
+// ncurses.
 std::optional<KeyEvent> key_event_from_curses(int get_wch_result, wint_t code);
 
 } // namespace apcs
