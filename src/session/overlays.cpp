@@ -1,15 +1,8 @@
 #include "apcs/session/overlays.h"
 
+#include "apcs/session/overloaded.h"
+
 namespace apcs {
-
-namespace {
-
-template <typename... Handlers>
-struct Overloaded : Handlers... {
-    using Handlers::operator()...;
-};
-
-} // namespace
 
 KeyContext Overlays::key_context(KeyContext step) const
 {

@@ -1,6 +1,7 @@
 #include "apcs/session/session.h"
 
 #include "apcs/formats/numbered_files.h"
+#include "apcs/session/overloaded.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/session_graph.h"
 #include "apcs/session/session_pictures.h"
@@ -38,11 +39,6 @@ const char* phase_name(SessionPhase phase)
 }
 
 namespace {
-
-template <typename... Handlers>
-struct Overloaded : Handlers... {
-    using Handlers::operator()...;
-};
 
 std::string trimmed(const std::string& line)
 {
