@@ -111,13 +111,13 @@ std::string byte_count_text(std::uint64_t bytes)
     return std::string(text) + " " + std::string(unit_names[unit]);
 }
 
-std::optional<std::string> refusal(std::string_view what, std::uint64_t needed, std::uint64_t limit,
-                                   std::string_view remedy)
+Expected<void> check_fits(std::string_view what, std::uint64_t needed, std::uint64_t limit, std::string_view remedy)
 {
     if (needed <= limit)
-        return std::nullopt;
-    return std::string(what) + " need " + byte_count_text(needed) + "; the memory limit is " + byte_count_text(limit) +
-           " (" + std::string(limit_variable) + "); " + std::string(remedy);
+        return ok;
+    return Diagnostic{"apcs", 0,
+                      std::string(what) + " need " + byte_count_text(needed) + "; the memory limit is " +
+                          byte_count_text(limit) + " (" + std::string(limit_variable) + "); " + std::string(remedy)};
 }
 
 } // namespace apcs::memory

@@ -207,13 +207,13 @@ std::optional<std::string> session_option_before_command(const CLI::App& app, co
     return std::nullopt;
 }
 
-// A picture is never written over an input of the run (picture_over_input), and two pictures
-// never go to one file, where one would be lost silently.
-std::optional<Diagnostic> picture_target_clash(const CommonOptions& options,
-                                               std::span<const std::filesystem::path> inputs, bool& usage)
+// A picture is never written over an input of the run (check_pictures_spare_inputs), and two
+// pictures never go to one file, where one would be lost silently (a usage error).
+Expected<void> check_picture_targets(const CommonOptions& options, std::span<const std::filesystem::path> inputs,
+                                     bool& usage)
 {
-    if (auto over_input = picture_over_input(options, inputs))
-        return over_input;
+    if (Expected<void> spared = check_pictures_spare_inputs(options, inputs); !spared)
+        return spared;
     const std::filesystem::path dash(standard_stream_name);
     KeyFileGuard pictures;
     for (const auto& [option, target] : picture_targets(options)) {
@@ -226,7 +226,7 @@ std::optional<Diagnostic> picture_target_clash(const CommonOptions& options,
         }
         pictures.protect(**target);
     }
-    return std::nullopt;
+    return ok;
 }
 
 // "-" is standard input where a file is read and standard output where one is written: each holds
@@ -322,10 +322,10 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     if (const auto clash = standard_stream_clash(options, inputs, chosen == &app))
         return usage_error(*clash, chosen, err);
     bool usage = false;
-    if (const auto clash = picture_target_clash(options, inputs, usage)) {
+    if (const Expected<void> targets = check_picture_targets(options, inputs, usage); !targets) {
         if (usage)
-            return usage_error(clash->message, chosen, err);
-        return to_int(report_bad_input(*clash, err));
+            return usage_error(targets.error().message, chosen, err);
+        return to_int(report_bad_input(targets.error(), err));
     }
     if (slopes.size() == 2)
         options.path.slopes = {slopes[0], slopes[1]};

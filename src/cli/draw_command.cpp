@@ -61,8 +61,8 @@ ExitStatus run_draw_command(std::span<const std::filesystem::path> files, const 
         const std::string name = file == standard_stream_name ? "standard input" : file.filename().string();
         graphics.push_back({name, std::move(*graphic)});
     }
-    if (auto problem = write_pictures(draw_graphics_overlay(graphics, options.view), options, out))
-        return report_bad_input(*problem, err);
+    if (Expected<void> done = write_pictures(draw_graphics_overlay(graphics, options.view), options, out); !done)
+        return report_bad_input(done.error(), err);
     return ExitStatus::success;
 }
 

@@ -28,12 +28,12 @@ std::string format_frames_print(const FrameSequence& frames)
 
 namespace {
 
-std::optional<Diagnostic> write_overlay_pictures(const FrameSequence& frames, const Graphic& structure,
-                                                 const CommonOptions& options,
-                                                 std::span<const std::filesystem::path> key_files, std::ostream& out)
+Expected<void> write_overlay_pictures(const FrameSequence& frames, const Graphic& structure,
+                                      const CommonOptions& options,
+                                      std::span<const std::filesystem::path> key_files, std::ostream& out)
 {
     if (!pictures_asked(options))
-        return std::nullopt;
+        return ok;
     const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " +
                                 key_files.front().filename().string() + " to " +
                                 key_files.back().filename().string();
@@ -41,12 +41,12 @@ std::optional<Diagnostic> write_overlay_pictures(const FrameSequence& frames, co
 }
 
 // --gif: every frame as the session's animation shows it (KEY1, the in-betweens, KEY2).
-std::optional<Diagnostic> write_animation_gif(const FrameSequence& frames, const Graphic& structure,
-                                              const CommonOptions& options,
-                                              std::span<const std::filesystem::path> key_files, std::ostream& out)
+Expected<void> write_animation_gif(const FrameSequence& frames, const Graphic& structure,
+                                   const CommonOptions& options,
+                                   std::span<const std::filesystem::path> key_files, std::ostream& out)
 {
     if (!options.gif)
-        return std::nullopt;
+        return ok;
     UnloggedSteps log;
     AnimationPlayer player(frames, structure, {key_files.front().filename().string(), key_files.back().filename().string()},
                            options.view, options.delay_ms, log);
@@ -55,8 +55,8 @@ std::optional<Diagnostic> write_animation_gif(const FrameSequence& frames, const
 
 } // namespace
 
-std::optional<Diagnostic> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
-                                           const std::filesystem::path& target, int delay_ms, std::ostream& out)
+Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
+                                const std::filesystem::path& target, int delay_ms, std::ostream& out)
 {
     std::size_t shown = 0;
     const auto frame_at = [&](std::size_t k) {
@@ -73,10 +73,10 @@ std::optional<Diagnostic> write_player_gif(AnimationPlayer& player, std::size_t 
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err)
 {
-    if (auto problem = write_overlay_pictures(frames, structure, options, key_files, out))
-        return report_bad_input(*problem, err);
-    if (auto problem = write_animation_gif(frames, structure, options, key_files, out))
-        return report_bad_input(*problem, err);
+    if (Expected<void> done = write_overlay_pictures(frames, structure, options, key_files, out); !done)
+        return report_bad_input(done.error(), err);
+    if (Expected<void> done = write_animation_gif(frames, structure, options, key_files, out); !done)
+        return report_bad_input(done.error(), err);
     if (options.print) {
         const std::string text = format_frames_print(frames);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));

@@ -30,8 +30,8 @@ std::optional<ExitStatus> refuse_over_budget(std::string_view what, std::uint64_
         err << limit.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
-    if (const std::optional<std::string> reason = memory::refusal(what, needed, *limit, remedy)) {
-        err << "apcs: " << *reason << '\n';
+    if (const Expected<void> fits = memory::check_fits(what, needed, *limit, remedy); !fits) {
+        err << fits.error().to_string() << '\n';
         return ExitStatus::bad_input;
     }
     return std::nullopt;

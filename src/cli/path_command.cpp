@@ -27,21 +27,20 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
-std::optional<Diagnostic> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
-                                              std::ostream& out)
+Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes, std::ostream& out)
 {
     if (target == standard_stream_name) {
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        return std::nullopt;
+        return ok;
     }
     const Expected<WriteResult> written = write_file_atomically(target, bytes);
     if (!written)
         return written.error();
-    return std::nullopt;
+    return ok;
 }
 
-std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                                         PngShape shape, std::ostream& out)
+Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                              PngShape shape, std::ostream& out)
 {
     const std::optional<std::string> png = encode_png(render_raster(screen), shape);
     if (!png)
@@ -49,8 +48,8 @@ std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, co
     return write_picture_bytes(target, *png, out);
 }
 
-std::optional<Diagnostic> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                                         std::ostream& out)
+Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                              std::ostream& out)
 {
     return write_picture_bytes(target, encode_svg(screen), out);
 }
@@ -61,7 +60,7 @@ picture_targets(const CommonOptions& options)
     return {{{"--png", &options.png}, {"--png-raw", &options.png_raw}, {"--svg", &options.svg}, {"--gif", &options.gif}}};
 }
 
-std::optional<Diagnostic> picture_over_input(const CommonOptions& options, std::span<const std::filesystem::path> inputs)
+Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs)
 {
     const std::filesystem::path dash(standard_stream_name);
     KeyFileGuard read;
@@ -72,18 +71,18 @@ std::optional<Diagnostic> picture_over_input(const CommonOptions& options, std::
         if (*target && **target != dash && read.guards(**target))
             return Diagnostic{(*target)->string(), 0, "is an input of this run; " + std::string(option) +
                                                           " never writes over an input"};
-    return std::nullopt;
+    return ok;
 }
 
-std::optional<Diagnostic> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out)
+Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out)
 {
     for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}})
         if (target)
-            if (auto problem = write_png_file(*target, screen, shape, out))
-                return problem;
+            if (auto outcome = write_png_file(*target, screen, shape, out); !outcome)
+                return outcome.error();
     if (options.svg)
         return write_svg_file(*options.svg, screen, out);
-    return std::nullopt;
+    return ok;
 }
 
 GraphicsScreen draw_path_file_screen(const ControlPoints& points, const EvaluatedPath& path, ViewAngles angles)
@@ -107,8 +106,9 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
     const EvaluatedPath path = evaluate_path(points, options.path);
     warn_if_frames_freeze(path, options.path.inbetween_count, err);
     if (pictures_asked(options))
-        if (auto problem = write_pictures(draw_path_file_screen(points, path, options.view), options, out))
-            return report_bad_input(*problem, err);
+        if (Expected<void> written = write_pictures(draw_path_file_screen(points, path, options.view), options, out);
+            !written)
+            return report_bad_input(written.error(), err);
     if (options.print || !pictures_asked(options)) {
         const std::string text = format_path_print(path);
         out.write(text.data(), static_cast<std::streamsize>(text.size()));

@@ -72,8 +72,8 @@ void print_frames(const SceneAnimation& animation, const Scene& scene, std::ostr
 }
 
 // frm000.dat … into `folder`, one frame computed, formatted and written at a time on each core.
-std::optional<Diagnostic> write_frame_files(const SceneAnimation& animation, const std::filesystem::path& folder,
-                                            const KeyFileGuard& guard)
+Expected<void> write_frame_files(const SceneAnimation& animation, const std::filesystem::path& folder,
+                                 const KeyFileGuard& guard)
 {
     const int last = animation.last_frame();
     const auto written = write_numbered_files(
@@ -86,7 +86,7 @@ std::optional<Diagnostic> write_frame_files(const SceneAnimation& animation, con
         guard, "the frame files");
     if (!written)
         return written.error();
-    return std::nullopt;
+    return ok;
 }
 
 ViewAngles view_of(const Scene& scene, const CommonOptions& options)
@@ -129,8 +129,8 @@ std::string save_screen_picture(const GraphicsScreen& screen)
         if (std::filesystem::exists(std::filesystem::symlink_status(name, error)))
             continue;
         std::ostringstream unused;
-        if (const std::optional<Diagnostic> problem = write_png_file(name, screen, PngShape::monitor, unused))
-            return problem->to_string();
+        if (const Expected<void> written = write_png_file(name, screen, PngShape::monitor, unused); !written)
+            return written.error().to_string();
         return "wrote " + name;
     }
     return "apcs001.png … apcs999.png all exist; move some away";
@@ -156,8 +156,8 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     if (!scene)
         return report_bad_input(scene.error(), err);
     // The .dat files a scene reads are known only now; the command line checked the scene file.
-    if (auto clash = picture_over_input(options, inputs))
-        return report_bad_input(*clash, err);
+    if (Expected<void> done = check_pictures_spare_inputs(options, inputs); !done)
+        return report_bad_input(done.error(), err);
     const std::string scene_name = request.scene.filename().string();
     if (request.tree) {
         out << format_scene_tree(*scene, scene_name);
@@ -178,8 +178,8 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         KeyFileGuard guard;
         for (const std::filesystem::path& input : inputs)
             guard.protect(input);
-        if (auto problem = write_frame_files(animation, *options.out, guard))
-            return report_bad_input(*problem, err);
+        if (Expected<void> done = write_frame_files(animation, *options.out, guard); !done)
+            return report_bad_input(done.error(), err);
     }
     if (!all_frames)
         return ExitStatus::success;
@@ -189,17 +189,17 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     const std::size_t frame_count = frames.frame_count();
     if (options.png || options.png_raw || options.svg) {
         const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
-        if (auto problem = write_pictures(frames_overlay_screen(frames, animation.structure(), shown.view, caption),
-                                          shown, out))
-            return report_bad_input(*problem, err);
+        if (Expected<void> done = write_pictures(frames_overlay_screen(frames, animation.structure(), shown.view, caption),
+                                          shown, out); !done)
+            return report_bad_input(done.error(), err);
     }
     UnloggedSteps log;
     AnimationPlayer player(std::move(frames), animation.structure(), {scene_name, scene_name}, shown.view,
                            options.delay_ms, log);
     player.name_frames_by_scene(scene_name);
     if (options.gif)
-        if (auto problem = write_player_gif(player, frame_count, *options.gif, options.delay_ms, out))
-            return report_bad_input(*problem, err);
+        if (Expected<void> done = write_player_gif(player, frame_count, *options.gif, options.delay_ms, out); !done)
+            return report_bad_input(done.error(), err);
     if (!played)
         return ExitStatus::success;
     return play_on_terminal(player, shown, terminal, err);

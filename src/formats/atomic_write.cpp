@@ -21,11 +21,11 @@ namespace {
 
 // NAME.bak is replaced by the old file only when it is a writable regular file or absent: a FIFO, a
 // link, a directory or a read-only file there is the user's, and is left as it is.
-std::optional<Diagnostic> backup_refusal(const fs::path& backup, const std::string& shown)
+Expected<void> check_backup_replaceable(const fs::path& backup, const std::string& shown)
 {
     struct stat status {};
     if (backup.empty() || ::lstat(backup.c_str(), &status) != 0)
-        return std::nullopt;
+        return ok;
     const std::string cannot = "cannot keep the old file as " + backup.string() + ": it ";
     if (S_ISLNK(status.st_mode))
         return Diagnostic{shown, 0, cannot + "is a symbolic link; a backup replaces only a regular file"};
@@ -35,7 +35,7 @@ std::optional<Diagnostic> backup_refusal(const fs::path& backup, const std::stri
         return Diagnostic{shown, 0, cannot + not_regular(status.st_mode) + "; a backup replaces only a regular file"};
     if (is_read_only(backup, status))
         return Diagnostic{shown, 0, cannot + "is read-only (mode " + octal_mode(status.st_mode) + "); not replaced"};
-    return std::nullopt;
+    return ok;
 }
 
 // The mkstemp pattern of the hidden temporary file for `name` in `folder`: ".NAME.XXXXXX", with
@@ -141,7 +141,7 @@ public:
 
     bool add(std::string_view chunk)
     {
-        if (m_problem)
+        if (!m_outcome)
             return false;
         if (!m_differs) {
             if (old_continues_with(chunk)) {
@@ -158,17 +158,17 @@ public:
 
     Expected<WriteResult> finish(Durability durability)
     {
-        if (m_problem)
-            return *m_problem;
+        if (!m_outcome)
+            return m_outcome.error();
         if (!m_differs && static_cast<std::uintmax_t>(m_target.status.st_size) == m_same)
             return WriteResult{WriteOutcome::unchanged, {}};
         WriteResult result{m_target.exists ? WriteOutcome::replaced : WriteOutcome::created, {}};
         if ((m_temporary.empty() && !start_temporary()) || !complete_temporary(durability) ||
             (m_target.exists && !keep_old_file(result.backup)))
-            return *m_problem;
+            return m_outcome.error();
         if (::rename(m_temporary.c_str(), m_target.path.c_str()) != 0) {
             abandon("cannot replace the file");
-            return *m_problem;
+            return m_outcome.error();
         }
         m_temporary.clear();
         return result;
@@ -196,11 +196,11 @@ private:
     {
         if (m_target.exists && is_read_only(m_target.path, m_target.status))
             return refuse("is read-only (mode " + octal_mode(m_target.status.st_mode) + "); not replaced");
-        if (m_target.exists)
-            if (auto problem = backup_refusal(backup_path_for(m_target.path, m_inputs), m_shown)) {
-                m_problem = std::move(problem);
+        if (m_target.exists) {
+            m_outcome = check_backup_replaceable(backup_path_for(m_target.path, m_inputs), m_shown);
+            if (!m_outcome)
                 return false;
-            }
+        }
         const fs::path folder = m_target.path.has_parent_path() ? m_target.path.parent_path() : fs::path(".");
         std::string temporary = (folder / temporary_name_for(folder, m_target.path.filename().string())).string();
         const int descriptor = ::mkstemp(temporary.data());
@@ -278,7 +278,7 @@ private:
 
     bool refuse(const std::string& message)
     {
-        m_problem = Diagnostic{m_shown, 0, message};
+        m_outcome = Diagnostic{m_shown, 0, message};
         return false;
     }
 
@@ -303,7 +303,7 @@ private:
     FileDescriptor m_file{-1};
     std::string m_temporary;
     std::optional<UnfinishedFile> m_unfinished;
-    std::optional<Diagnostic> m_problem;
+    Expected<void> m_outcome = ok; // the first problem, once there is one
 };
 
 } // namespace
@@ -327,12 +327,12 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
         requested, [content](const ContentSink& sink) { sink(content); }, inputs, durability);
 }
 
-std::optional<Diagnostic> flush_file_system(const fs::path& folder)
+Expected<void> flush_file_system(const fs::path& folder)
 {
     FileDescriptor opened(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
     if (opened.get() < 0 || ::syncfs(opened.get()) != 0)
         return Diagnostic{folder.string(), 0, "cannot flush the files written to disk: " + system_reason(errno)};
-    return std::nullopt;
+    return ok;
 }
 
 } // namespace apcs

@@ -66,19 +66,19 @@ public:
     Expected<Graphic> parse_graphic_pieces(std::size_t line_count, const TextPieces& read);
 
 private:
-    [[nodiscard]] std::optional<Diagnostic> parse_line(std::string_view line);
-    [[nodiscard]] std::optional<Diagnostic> parse_count(std::string_view field);
-    [[nodiscard]] std::optional<Diagnostic> parse_part(const Fields& fields);
-    [[nodiscard]] std::optional<Diagnostic> parse_point(const Fields& fields);
-    [[nodiscard]] std::optional<Diagnostic> finish();
+    Expected<void> parse_line(std::string_view line);
+    Expected<void> parse_count(std::string_view field);
+    Expected<void> parse_part(const Fields& fields);
+    Expected<void> parse_point(const Fields& fields);
+    Expected<void> finish();
     [[nodiscard]] Diagnostic error(std::string message, int line) const
     {
         return {m_file_name, line, std::move(message)};
     }
     [[nodiscard]] Diagnostic error(std::string message) const { return error(std::move(message), m_line); }
     void end_part();
-    std::optional<Diagnostic> parse_all(std::string_view text);
-    std::optional<Diagnostic> parse_pieces(std::size_t line_count, const TextPieces& read);
+    Expected<void> parse_all(std::string_view text);
+    Expected<void> parse_pieces(std::size_t line_count, const TextPieces& read);
     std::size_t part_size(std::size_t part) const
     {
         return m_positions_only ? m_positions[part].size() : m_file.parts[part].points.size();
@@ -118,12 +118,12 @@ TextPieces whole(std::string_view text)
     return [text](const TextPieceSink& sink) { return sink(text); };
 }
 
-std::optional<Diagnostic> DatParser::parse_all(std::string_view text)
+Expected<void> DatParser::parse_all(std::string_view text)
 {
     return parse_pieces(line_count_of(text), whole(text));
 }
 
-std::optional<Diagnostic> DatParser::parse_pieces(std::size_t line_count, const TextPieces& read)
+Expected<void> DatParser::parse_pieces(std::size_t line_count, const TextPieces& read)
 {
     // A part's points are reserved for the lines left, so that a large file's points are not
     // copied again and again as they grow (end_part gives back what a part did not use).
@@ -132,24 +132,24 @@ std::optional<Diagnostic> DatParser::parse_pieces(std::size_t line_count, const 
         m_line = line;
         return parse_line(content);
     });
-    if (auto problem = read([&lines](std::string_view piece) { return lines.feed(piece); }))
-        return problem;
-    if (auto problem = lines.finish())
-        return problem;
+    if (auto outcome = read([&lines](std::string_view piece) { return lines.feed(piece); }); !outcome)
+        return outcome;
+    if (auto outcome = lines.finish(); !outcome)
+        return outcome.error();
     return finish();
 }
 
 Expected<DatFile> DatParser::parse(std::string_view text)
 {
-    if (auto problem = parse_all(text))
-        return *problem;
+    if (auto outcome = parse_all(text); !outcome)
+        return outcome.error();
     return std::move(m_file);
 }
 
 Expected<Graphic> DatParser::parse_graphic_pieces(std::size_t line_count, const TextPieces& read)
 {
-    if (auto problem = parse_pieces(line_count, read))
-        return *problem;
+    if (auto outcome = parse_pieces(line_count, read); !outcome)
+        return outcome.error();
     Graphic graphic;
     graphic.parts.reserve(m_file.parts.size());
     for (std::size_t i = 0; i < m_file.parts.size(); ++i)
@@ -164,11 +164,11 @@ void DatParser::reserve_for_lines_left(Points& points) const
     points.reserve(std::min(lines_left, max_dat_points - m_points));
 }
 
-std::optional<Diagnostic> DatParser::parse_line(std::string_view content)
+Expected<void> DatParser::parse_line(std::string_view content)
 {
     const Fields fields = split_fields(content);
     if (fields.empty())
-        return std::nullopt;
+        return ok;
     if (equals_ignoring_case(fields[0], "PART"))
         return parse_part(fields);
     if (!m_seen_data && fields.size() == 1)
@@ -176,7 +176,7 @@ std::optional<Diagnostic> DatParser::parse_line(std::string_view content)
     return parse_point(fields);
 }
 
-std::optional<Diagnostic> DatParser::parse_count(std::string_view field)
+Expected<void> DatParser::parse_count(std::string_view field)
 {
     m_seen_data = true;
     m_count_line = m_line;
@@ -188,10 +188,10 @@ std::optional<Diagnostic> DatParser::parse_count(std::string_view field)
         return error("point count " + std::to_string(*count) + " is over the limit of " +
                      std::to_string(max_dat_points));
     m_declared_count = *count;
-    return std::nullopt;
+    return ok;
 }
 
-std::optional<Diagnostic> DatParser::parse_part(const Fields& fields)
+Expected<void> DatParser::parse_part(const Fields& fields)
 {
     m_seen_data = true;
     if (fields.size() < 2 || fields.size() > 3)
@@ -214,10 +214,10 @@ std::optional<Diagnostic> DatParser::parse_part(const Fields& fields)
         m_positions.emplace_back();
     m_part_lines.push_back(m_line);
     m_marked_closed.push_back(closed);
-    return std::nullopt;
+    return ok;
 }
 
-std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
+Expected<void> DatParser::parse_point(const Fields& fields)
 {
     m_seen_data = true;
     if (fields.size() != 2 && fields.size() != 3 && fields.size() != 7)
@@ -261,13 +261,13 @@ std::optional<Diagnostic> DatParser::parse_point(const Fields& fields)
         if (positions.capacity() == 0)
             reserve_for_lines_left(positions);
         positions.push_back(point.position);
-        return std::nullopt;
+        return ok;
     }
     std::vector<DatPoint>& points = m_file.parts.back().points;
     if (points.capacity() == 0)
         reserve_for_lines_left(points);
     points.push_back(point);
-    return std::nullopt;
+    return ok;
 }
 
 void DatParser::end_part()
@@ -282,7 +282,7 @@ void DatParser::end_part()
         give_back_room(m_file.parts.back().points);
 }
 
-std::optional<Diagnostic> DatParser::finish()
+Expected<void> DatParser::finish()
 {
     end_part();
     if (!m_file.parts.empty() && part_size(m_file.parts.size() - 1) == 0)
@@ -300,7 +300,7 @@ std::optional<Diagnostic> DatParser::finish()
         const bool ends_meet = part_size(i) >= 3 && part_end(i, false) == part_end(i, true);
         m_file.parts[i].closure = m_marked_closed[i] || ends_meet ? Closure::closed : Closure::open;
     }
-    return std::nullopt;
+    return ok;
 }
 
 // "PART name OPEN|CLOSED" for part `index`: an unnamed part is called P1, P2, …; blanks and

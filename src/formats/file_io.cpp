@@ -31,11 +31,11 @@ Diagnostic too_large(const std::string& shown, std::uintmax_t bytes, std::uintma
 
 // No text APCS reads holds a NUL byte: a binary file is refused at the first one, before the rest
 // of it is read. `lines_before` counts the LFs before `chunk`, for the line number.
-std::optional<Diagnostic> refuse_nul_byte(const std::string& shown, std::size_t lines_before, std::string_view chunk)
+Expected<void> refuse_nul_byte(const std::string& shown, std::size_t lines_before, std::string_view chunk)
 {
     const std::size_t nul = chunk.find('\0');
     if (nul == std::string_view::npos)
-        return std::nullopt;
+        return ok;
     const auto lines = lines_before + static_cast<std::size_t>(std::count(chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(nul), '\n'));
     return Diagnostic{shown, 1 + static_cast<int>(lines), "NUL byte; expected a text file"};
 }
@@ -71,8 +71,8 @@ fs::path resolve_input_path(const fs::path& name)
     return found ? *found : name;
 }
 
-std::optional<Diagnostic> read_text_pieces(const fs::path& name, const TextPieceSink& consume, std::uintmax_t most_bytes,
-                                           std::uintmax_t* file_size)
+Expected<void> read_text_pieces(const fs::path& name, const TextPieceSink& consume, std::uintmax_t most_bytes,
+                                std::uintmax_t* file_size)
 {
     const std::string shown = name.string();
     const Expected<fs::path> found = find_input_path(name);
@@ -112,17 +112,17 @@ std::optional<Diagnostic> read_text_pieces(const fs::path& name, const TextPiece
             return Diagnostic{shown, 0, "cannot read: " + system_reason(errno)};
         }
         if (got == 0)
-            return std::nullopt;
+            return ok;
         const std::string_view chunk(buffer, static_cast<std::size_t>(got));
-        if (auto binary = refuse_nul_byte(shown, lines, chunk))
-            return binary;
+        if (auto outcome = refuse_nul_byte(shown, lines, chunk); !outcome)
+            return outcome.error();
         // A file that grew while it was read.
         if (total + chunk.size() > most_bytes)
             return too_large(shown, total + chunk.size(), most_bytes);
         total += chunk.size();
         lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
-        if (auto problem = consume(chunk))
-            return problem;
+        if (auto outcome = consume(chunk); !outcome)
+            return outcome.error();
     }
 }
 
@@ -130,14 +130,14 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
 {
     std::string content;
     std::uintmax_t size = 0;
-    const auto append = [&content, &size](std::string_view chunk) -> std::optional<Diagnostic> {
+    const auto append = [&content, &size](std::string_view chunk) -> Expected<void> {
         if (content.empty())
             content.reserve(static_cast<std::size_t>(size));
         content.append(chunk);
-        return std::nullopt;
+        return ok;
     };
-    if (auto problem = read_text_pieces(name, append, most_bytes, &size))
-        return *problem;
+    if (auto outcome = read_text_pieces(name, append, most_bytes, &size); !outcome)
+        return outcome.error();
     return content;
 }
 
@@ -174,12 +174,12 @@ Expected<Graphic> read_key_frame(const fs::path& name)
     // Read twice, a block at a time, never whole: first its lines are counted (to size the
     // points once), then they are parsed as they come. A large key costs its points, not its text.
     std::size_t lines = 1;
-    const auto count_lines = [&lines](std::string_view chunk) -> std::optional<Diagnostic> {
+    const auto count_lines = [&lines](std::string_view chunk) -> Expected<void> {
         lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
-        return std::nullopt;
+        return ok;
     };
-    if (auto problem = read_text_pieces(name, count_lines))
-        return *problem;
+    if (auto outcome = read_text_pieces(name, count_lines); !outcome)
+        return outcome.error();
     return parse_key_frame_pieces(name.string(), lines,
                                   [&name](const TextPieceSink& sink) { return read_text_pieces(name, sink); });
 }
@@ -202,8 +202,8 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
             return content;
         // A stream has no size to refuse up front: it is refused at its first NUL, as a file is.
         const std::string_view chunk(buffer, static_cast<std::size_t>(got));
-        if (auto binary = refuse_nul_byte(shown, lines, chunk))
-            return *std::move(binary);
+        if (auto outcome = refuse_nul_byte(shown, lines, chunk); !outcome)
+            return outcome.error();
         if (content.size() + chunk.size() > most_bytes)
             return too_large(shown, content.size() + chunk.size(), most_bytes);
         lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));

@@ -42,11 +42,11 @@ bool KeyFileGuard::guards(const fs::path& target) const
     });
 }
 
-std::optional<Diagnostic> KeyFileGuard::refuse(const fs::path& target) const
+Expected<void> KeyFileGuard::may_write(const fs::path& target) const
 {
     if (guards(target))
         return Diagnostic{target.string(), 0, "is a key file; key files are never written"};
-    return std::nullopt;
+    return ok;
 }
 
 } // namespace apcs

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <optional>
 #include <thread>
 
 namespace apcs {
@@ -23,11 +22,11 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
     targets.reserve(count);
     for (std::size_t index = 0; index < count; ++index) {
         targets.push_back(folder / name_of(index));
-        if (std::optional<Diagnostic> refusal = guard.refuse(targets.back()))
-            return *std::move(refusal);
+        if (Expected<void> writable = guard.may_write(targets.back()); !writable)
+            return writable.error();
     }
     // The files are independent: making, formatting and flushing them is shared among the cores.
-    std::vector<std::optional<Diagnostic>> problems(count);
+    std::vector<Expected<void>> outcomes(count, ok);
     std::vector<char> written(count, 0);
     const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
     for_each_index_in_parallel(count, workers, [&](std::size_t index) {
@@ -35,19 +34,19 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
         const Expected<WriteResult> result =
             write_file_atomically(targets[index], write_content, &guard, Durability::at_barrier);
         if (!result)
-            problems[index] = result.error();
+            outcomes[index] = result.error();
         else
             written[index] = result->outcome != WriteOutcome::unchanged;
     });
     // The files written are put on the disk even when another failed: they are whole and stay.
-    std::optional<Diagnostic> barrier_problem;
+    Expected<void> flushed = ok;
     if (std::find(written.begin(), written.end(), 1) != written.end())
-        barrier_problem = flush_file_system(folder);
-    for (const std::optional<Diagnostic>& problem : problems)
-        if (problem)
-            return *problem;
-    if (barrier_problem)
-        return *barrier_problem;
+        flushed = flush_file_system(folder);
+    for (const Expected<void>& outcome : outcomes)
+        if (!outcome)
+            return outcome.error();
+    if (!flushed)
+        return flushed.error();
     return targets;
 }
 

@@ -84,8 +84,8 @@ bool same_place(const Vec3& a, const Vec3& b)
 
 } // namespace
 
-std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
-                                          const Vec3& key1_position, const Vec3& key2_position)
+Expected<void> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
+                               const Vec3& key1_position, const Vec3& key2_position)
 {
     if (path.parts.empty() || path.parts.front().points.empty())
         return Diagnostic{file_name, 0, "has no control points"};
@@ -99,7 +99,7 @@ std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string
         return Diagnostic{file_name, end.line,
                           "the path ends at " + describe_point(end.position) + "; expected the " + which +
                               " graphic point's KEY2 position " + describe_point(key2_position)};
-    return std::nullopt;
+    return ok;
 }
 
 ControlPoints control_points_from(const DatFile& file, const StaffValues& defaults)
@@ -118,9 +118,9 @@ Expected<ControlPoints> point_path_from(const DatFile& file, const std::string& 
     const bool first = end == PathEnd::first;
     const Vec3& key1_position = first ? keys.key1.first_point() : keys.key1.last_point();
     const Vec3& key2_position = first ? keys.key2.first_point() : keys.key2.last_point();
-    if (std::optional<Diagnostic> problem =
-            check_path_ends(file, file_name, first ? "first" : "last", key1_position, key2_position))
-        return *std::move(problem);
+    if (Expected<void> ends = check_path_ends(file, file_name, first ? "first" : "last", key1_position, key2_position);
+        !ends)
+        return ends.error();
     return control_points_from(file, defaults);
 }
 

@@ -21,13 +21,13 @@ DataLineReader::DataLineReader(const std::string& file_name, DataLineHandler han
 {
 }
 
-std::optional<Diagnostic> DataLineReader::feed(std::string_view chunk)
+Expected<void> DataLineReader::feed(std::string_view chunk)
 {
-    if (m_problem || chunk.empty())
-        return m_problem;
+    if (!m_outcome || chunk.empty())
+        return m_outcome;
     if (m_ended) {
         check_trailer(chunk);
-        return m_problem;
+        return m_outcome;
     }
     if (!m_bom_decided && m_pending.empty() && chunk.size() >= utf8_byte_order_mark.size()) {
         if (chunk.starts_with(utf8_byte_order_mark))
@@ -37,29 +37,29 @@ std::optional<Diagnostic> DataLineReader::feed(std::string_view chunk)
     if (m_pending.empty() && m_bom_decided) {
         // Whole lines straight from the chunk; only an unfinished last line is kept.
         const std::size_t used = take_lines(chunk, false);
-        if (!m_problem && !m_ended)
+        if (m_outcome && !m_ended)
             m_pending.assign(chunk.substr(used));
-        return m_problem;
+        return m_outcome;
     }
     m_pending.append(chunk);
     if (!m_bom_decided) {
         if (m_pending.size() < utf8_byte_order_mark.size())
-            return std::nullopt;
+            return ok;
         decide_bom();
     }
     const std::size_t used = take_lines(m_pending, false);
     m_pending.erase(0, used);
-    return m_problem;
+    return m_outcome;
 }
 
-std::optional<Diagnostic> DataLineReader::finish()
+Expected<void> DataLineReader::finish()
 {
-    if (m_problem || m_ended)
-        return m_problem;
+    if (!m_outcome || m_ended)
+        return m_outcome;
     decide_bom();
     const std::size_t used = take_lines(m_pending, true);
     m_pending.erase(0, used);
-    return m_problem;
+    return m_outcome;
 }
 
 void DataLineReader::decide_bom()
@@ -72,7 +72,7 @@ void DataLineReader::decide_bom()
 std::size_t DataLineReader::take_lines(std::string_view text, bool at_end)
 {
     std::size_t start = 0;
-    while (!m_problem) {
+    while (m_outcome) {
         const std::size_t end = text.find_first_of(std::string_view("\r\n\x1A", 3), start);
         if (end == std::string_view::npos) {
             if (!at_end || start == text.size())
@@ -104,28 +104,27 @@ void DataLineReader::handle_line(std::string_view content)
 {
     ++m_line;
     if (content.size() > max_text_line_bytes)
-        m_problem = Diagnostic{m_file_name, m_line,
+        m_outcome = Diagnostic{m_file_name, m_line,
                                "line is " + std::to_string(content.size()) + " bytes long; expected at most " +
                                    std::to_string(max_text_line_bytes)};
     else if (content.find('\0') != std::string_view::npos)
-        m_problem = Diagnostic{m_file_name, m_line, "NUL byte; expected a text file"};
+        m_outcome = Diagnostic{m_file_name, m_line, "NUL byte; expected a text file"};
     else
-        m_problem = m_handle(m_line, content.substr(0, content.find_first_of(";#")));
+        m_outcome = m_handle(m_line, content.substr(0, content.find_first_of(";#")));
 }
 
 void DataLineReader::check_trailer(std::string_view bytes)
 {
-    if (!m_problem && !std::all_of(bytes.begin(), bytes.end(), is_trailer))
-        m_problem = Diagnostic{m_file_name, m_end_line,
+    if (m_outcome && !std::all_of(bytes.begin(), bytes.end(), is_trailer))
+        m_outcome = Diagnostic{m_file_name, m_end_line,
                                "Ctrl-Z (end of file) followed by more data; expected it only at the end"};
 }
 
-std::optional<Diagnostic> for_each_data_line(std::string_view text, const std::string& file_name,
-                                             const DataLineHandler& handle)
+Expected<void> for_each_data_line(std::string_view text, const std::string& file_name, const DataLineHandler& handle)
 {
     DataLineReader reader(file_name, handle);
-    if (auto problem = reader.feed(text))
-        return problem;
+    if (Expected<void> fed = reader.feed(text); !fed)
+        return fed;
     return reader.finish();
 }
 

@@ -19,7 +19,6 @@ namespace apcs {
 namespace {
 
 using Fields = std::vector<std::string_view>;
-using Problem = std::optional<Diagnostic>;
 
 // The scene's largest scale: a SCALE whose power over its frames leaves 1e-6 … 1e6 is refused.
 constexpr double most_scale_growth = 1e6;
@@ -91,30 +90,30 @@ public:
     Expected<Scene> parse(std::string_view text);
 
 private:
-    Problem parse_line(const Fields& fields);
-    Problem parse_frames(const Fields& fields);
-    Problem parse_view(const Fields& fields);
-    Problem parse_object(const Fields& fields);
-    Problem parse_shape(const Fields& fields);
-    Problem parse_keys(const Fields& fields);
-    Problem parse_paths(const Fields& fields);
-    Problem parse_staff(const Fields& fields);
-    Problem parse_move(const Fields& fields);
-    Problem parse_rotate(const Fields& fields);
-    Problem parse_scale(const Fields& fields);
-    Problem parse_joint(const Fields& fields);
-    Problem finish_object();
-    Problem finish_joints();
+    Expected<void> parse_line(const Fields& fields);
+    Expected<void> parse_frames(const Fields& fields);
+    Expected<void> parse_view(const Fields& fields);
+    Expected<void> parse_object(const Fields& fields);
+    Expected<void> parse_shape(const Fields& fields);
+    Expected<void> parse_keys(const Fields& fields);
+    Expected<void> parse_paths(const Fields& fields);
+    Expected<void> parse_staff(const Fields& fields);
+    Expected<void> parse_move(const Fields& fields);
+    Expected<void> parse_rotate(const Fields& fields);
+    Expected<void> parse_scale(const Fields& fields);
+    Expected<void> parse_joint(const Fields& fields);
+    Expected<void> finish_object();
+    Expected<void> finish_joints();
 
-    Problem read_file(std::string_view name, DatFile& file, std::size_t minimum_points = 2);
-    Problem number(std::string_view field, const std::string& what, double& value) const;
-    Problem frame(std::string_view field, const std::string& what, int& value) const;
-    Problem span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const;
-    Problem point_clause(Clauses& clauses, std::optional<Vec3>& point) const;
-    Problem turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about, FrameSpan& frames,
-                         Axis* axis) const;
-    Problem check_span(const FrameSpan& span, std::string_view keyword) const;
-    Problem once(bool already, std::string_view what) const;
+    Expected<DatFile> read_file(std::string_view name, std::size_t minimum_points = 2);
+    Expected<double> number(std::string_view field, const std::string& what) const;
+    Expected<int> frame(std::string_view field, const std::string& what) const;
+    Expected<void> span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const;
+    Expected<Vec3> about_clause(Clauses& clauses) const;
+    Expected<void> turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
+                                FrameSpan& frames, Axis* axis) const;
+    Expected<void> check_span(const FrameSpan& span, std::string_view keyword) const;
+    Expected<void> once(bool already, std::string_view what) const;
     SceneObject& object() { return m_scene.objects.back(); }
     Diagnostic error(std::string message, int line = 0) const
     {
@@ -132,25 +131,25 @@ private:
 
 Expected<Scene> SceneParser::parse(std::string_view text)
 {
-    const Problem problem = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) -> Problem {
+    const Expected<void> lines = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) {
         m_line = line;
         const Fields fields = split(content);
-        return fields.empty() ? std::nullopt : parse_line(fields);
+        return fields.empty() ? Expected<void>(ok) : parse_line(fields);
     });
-    if (problem)
-        return *problem;
+    if (!lines)
+        return lines.error();
     if (!m_frames_seen)
         return Diagnostic{m_file_name, 0, "expected 'FRAMES N' as the first data line; the file has none"};
     if (m_scene.objects.empty())
         return Diagnostic{m_file_name, 0, "expected at least one OBJECT line; the file has none"};
-    if (auto unfinished = finish_object())
-        return *unfinished;
-    if (auto joints = finish_joints())
-        return *joints;
+    if (Expected<void> object = finish_object(); !object)
+        return object.error();
+    if (Expected<void> joints = finish_joints(); !joints)
+        return joints.error();
     return std::move(m_scene);
 }
 
-Problem SceneParser::parse_line(const Fields& fields)
+Expected<void> SceneParser::parse_line(const Fields& fields)
 {
     const std::string keyword = ascii_lower_case(fields[0]);
     if (!m_frames_seen) {
@@ -158,7 +157,7 @@ Problem SceneParser::parse_line(const Fields& fields)
             return error("expected 'FRAMES N' as the first data line, found " + quote_field(fields[0]));
         return parse_frames(fields);
     }
-    using Parse = Problem (SceneParser::*)(const Fields&);
+    using Parse = Expected<void> (SceneParser::*)(const Fields&);
     static const std::map<std::string, Parse> object_keywords{
         {"shape", &SceneParser::parse_shape}, {"keys", &SceneParser::parse_keys},
         {"paths", &SceneParser::parse_paths}, {"staff", &SceneParser::parse_staff},
@@ -179,17 +178,17 @@ Problem SceneParser::parse_line(const Fields& fields)
     return (this->*found->second)(fields);
 }
 
-Problem SceneParser::parse_frames(const Fields& fields)
+Expected<void> SceneParser::parse_frames(const Fields& fields)
 {
     m_frames_seen = true;
     const std::optional<std::size_t> count = fields.size() == 2 ? parse_count_value(fields[1]) : std::nullopt;
     if (!count || *count < 1 || *count > static_cast<std::size_t>(max_scene_frames))
         return error("expected 'FRAMES N' with N a whole number from 1 to " + std::to_string(max_scene_frames));
     m_scene.last_frame = static_cast<int>(*count);
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_view(const Fields& fields)
+Expected<void> SceneParser::parse_view(const Fields& fields)
 {
     if (!m_scene.objects.empty())
         return error("VIEW after an OBJECT line; expected it before the first OBJECT");
@@ -197,20 +196,21 @@ Problem SceneParser::parse_view(const Fields& fields)
         return error("a second VIEW line; expected one at most");
     if (fields.size() != 3)
         return error("expected 'VIEW THETA PHI' (degrees)");
-    ViewAngles view;
-    if (auto problem = number(fields[1], "THETA", view.theta_degrees))
-        return problem;
-    if (auto problem = number(fields[2], "PHI", view.phi_degrees))
-        return problem;
-    m_scene.view = view;
-    return std::nullopt;
+    const Expected<double> theta = number(fields[1], "THETA");
+    if (!theta)
+        return theta.error();
+    const Expected<double> phi = number(fields[2], "PHI");
+    if (!phi)
+        return phi.error();
+    m_scene.view = ViewAngles{.theta_degrees = *theta, .phi_degrees = *phi};
+    return ok;
 }
 
-Problem SceneParser::parse_object(const Fields& fields)
+Expected<void> SceneParser::parse_object(const Fields& fields)
 {
     if (!m_scene.objects.empty())
-        if (auto problem = finish_object())
-            return problem;
+        if (auto outcome = finish_object(); !outcome)
+            return outcome.error();
     const bool with_parent = fields.size() == 4 && equals_ignoring_case(fields[2], "PARENT");
     if (fields.size() != 2 && !with_parent)
         return error("expected 'OBJECT NAME' or 'OBJECT NAME PARENT NAME'");
@@ -237,18 +237,18 @@ Problem SceneParser::parse_object(const Fields& fields)
     }
     m_scene.objects.push_back(std::move(declared));
     m_pending = {};
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::once(bool already, std::string_view what) const
+Expected<void> SceneParser::once(bool already, std::string_view what) const
 {
     if (!already)
-        return std::nullopt;
+        return ok;
     return error("a second " + std::string(what) + " for object '" + m_scene.objects.back().name +
                  "'; expected one at most");
 }
 
-Problem SceneParser::read_file(std::string_view name, DatFile& file, std::size_t minimum_points)
+Expected<DatFile> SceneParser::read_file(std::string_view name, std::size_t minimum_points)
 {
     Expected<DatFile> read = m_read(std::string(name));
     if (!read)
@@ -256,95 +256,99 @@ Problem SceneParser::read_file(std::string_view name, DatFile& file, std::size_t
     if (read->point_count() < minimum_points)
         return error("cannot use " + quote_field(name) + ": expected at least " + std::to_string(minimum_points) +
                      " points");
-    file = std::move(*read);
-    return std::nullopt;
+    return read;
 }
 
-Problem SceneParser::parse_shape(const Fields& fields)
+Expected<void> SceneParser::parse_shape(const Fields& fields)
 {
-    if (auto problem = once(object().has_drawing(), "SHAPE or KEYS"))
-        return problem;
+    if (auto outcome = once(object().has_drawing(), "SHAPE or KEYS"); !outcome)
+        return outcome.error();
     if (fields.size() != 2)
         return error("expected 'SHAPE FILE.dat'");
-    DatFile file;
-    if (auto problem = read_file(fields[1], file, 1))
-        return problem;
-    object().shape = graphic_from(file);
-    return std::nullopt;
+    const Expected<DatFile> file = read_file(fields[1], 1);
+    if (!file)
+        return file.error();
+    object().shape = graphic_from(*file);
+    return ok;
 }
 
-Problem SceneParser::parse_keys(const Fields& fields)
+Expected<void> SceneParser::parse_keys(const Fields& fields)
 {
-    if (auto problem = once(object().has_drawing(), "SHAPE or KEYS"))
-        return problem;
+    if (auto outcome = once(object().has_drawing(), "SHAPE or KEYS"); !outcome)
+        return outcome.error();
     if (fields.size() < 3)
         return error("expected 'KEYS KEY1.dat KEY2.dat [FROM F TO G]'");
-    DatFile key1;
-    DatFile key2;
-    if (auto problem = read_file(fields[1], key1))
-        return problem;
-    if (auto problem = read_file(fields[2], key2))
-        return problem;
-    SceneKeys keys{equalise_key_frames(graphic_from(key1), graphic_from(key2)), {}, {}, {0, m_scene.last_frame}};
+    const Expected<DatFile> key1 = read_file(fields[1]);
+    if (!key1)
+        return key1.error();
+    const Expected<DatFile> key2 = read_file(fields[2]);
+    if (!key2)
+        return key2.error();
+    SceneKeys keys{equalise_key_frames(graphic_from(*key1), graphic_from(*key2)), {}, {}, {0, m_scene.last_frame}};
     Clauses clauses(fields, 3);
     while (!clauses.done())
-        if (auto problem = span_clause(clauses, "KEYS", keys.frames))
-            return problem;
-    if (auto problem = check_span(keys.frames, "KEYS"))
-        return problem;
+        if (auto outcome = span_clause(clauses, "KEYS", keys.frames); !outcome)
+            return outcome.error();
+    if (auto outcome = check_span(keys.frames, "KEYS"); !outcome)
+        return outcome.error();
     if (keys.frames.from == keys.frames.to)
         return error("KEYS FROM " + std::to_string(keys.frames.from) + " TO " + std::to_string(keys.frames.to) +
                      ": expected FROM before TO (KEY1 at FROM, KEY2 at TO)");
     object().keys = std::move(keys);
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_paths(const Fields& fields)
+Expected<void> SceneParser::parse_paths(const Fields& fields)
 {
-    if (auto problem = once(m_pending.paths.has_value(), "PATHS"))
-        return problem;
+    if (auto outcome = once(m_pending.paths.has_value(), "PATHS"); !outcome)
+        return outcome.error();
     if (fields.size() != 3)
         return error("expected 'PATHS FIRST.dat LAST.dat'");
     std::array<PendingPath, 2> paths;
     for (std::size_t i = 0; i < 2; ++i) {
-        if (auto problem = read_file(fields[1 + i], paths[i].file))
-            return problem;
+        Expected<DatFile> file = read_file(fields[1 + i]);
+        if (!file)
+            return file.error();
+        paths[i].file = std::move(*file);
         paths[i].name = std::string(fields[1 + i]);
         paths[i].line = m_line;
     }
     m_pending.paths = std::move(paths);
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_staff(const Fields& fields)
+Expected<void> SceneParser::parse_staff(const Fields& fields)
 {
-    if (auto problem = once(object().own_staff, "STAFF"))
-        return problem;
+    if (auto outcome = once(object().own_staff, "STAFF"); !outcome)
+        return outcome.error();
     if (fields.size() != 5)
         return error("expected 'STAFF T C B A' (four values from -1 to 1)");
     StaffValues staff;
     for (std::size_t i = 0; i < staff_lines.size(); ++i) {
         const std::string what = ascii_lower_case(staff_line_name(staff_lines[i]));
-        if (auto problem = number(fields[1 + i], what, staff[staff_lines[i]]))
-            return problem;
-        if (!limits::staff_value.contains(staff[staff_lines[i]]))
+        const Expected<double> value = number(fields[1 + i], what);
+        if (!value)
+            return value.error();
+        if (!limits::staff_value.contains(*value))
             return error(what + " " + quote_field(fields[1 + i]) + " is outside " + range_text(limits::staff_value));
+        staff[staff_lines[i]] = *value;
     }
     object().staff = staff;
     object().own_staff = true;
     // Parts declared later inherit it (parse_object copies the parent's values).
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_move(const Fields& fields)
+Expected<void> SceneParser::parse_move(const Fields& fields)
 {
-    if (auto problem = once(object().move.has_value(), "MOVE"))
-        return problem;
+    if (auto outcome = once(object().move.has_value(), "MOVE"); !outcome)
+        return outcome.error();
     if (fields.size() < 2)
         return error("expected 'MOVE PATH.dat [TIMES F0 F1 ... | FROM F TO G] [LOOP]'");
-    PendingPath path{{}, std::string(fields[1]), m_line};
-    if (auto problem = read_file(fields[1], path.file))
-        return problem;
+    Expected<DatFile> file = read_file(fields[1]);
+    if (!file)
+        return file.error();
+    PendingPath path{std::move(*file), std::string(fields[1]), m_line};
     SceneMove move;
     move.frames = {0, m_scene.last_frame};
     bool span_given = false;
@@ -362,18 +366,18 @@ Problem SceneParser::parse_move(const Fields& fields)
                 return error("TIMES is given twice; expected it once");
             // The frames run to the first field that is not a whole number (LOOP, FROM, ...).
             while (!clauses.done() && parse_count_value(clauses.peek())) {
-                int time = 0;
-                if (auto problem = frame(clauses.take(), "TIMES", time))
-                    return problem;
-                if (!move.times.empty() && time <= move.times.back())
-                    return error("TIMES " + std::to_string(time) + " after " + std::to_string(move.times.back()) +
+                const Expected<int> time = frame(clauses.take(), "TIMES");
+                if (!time)
+                    return time.error();
+                if (!move.times.empty() && *time <= move.times.back())
+                    return error("TIMES " + std::to_string(*time) + " after " + std::to_string(move.times.back()) +
                                  ": expected increasing frames, one per control point");
-                move.times.push_back(time);
+                move.times.push_back(*time);
             }
         } else {
             span_given = true;
-            if (auto problem = span_clause(clauses, "MOVE", move.frames))
-                return problem;
+            if (auto outcome = span_clause(clauses, "MOVE", move.frames); !outcome)
+                return outcome.error();
         }
     }
     if (!move.times.empty() && span_given)
@@ -385,54 +389,58 @@ Problem SceneParser::parse_move(const Fields& fields)
                          " control points; expected one frame per control point");
         move.frames = {move.times.front(), move.times.back()};
     }
-    if (auto problem = check_span(move.frames, "MOVE"))
-        return problem;
+    if (auto outcome = check_span(move.frames, "MOVE"); !outcome)
+        return outcome.error();
     object().move = std::move(move);
     m_pending.move_path = std::move(path);
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_rotate(const Fields& fields)
+Expected<void> SceneParser::parse_rotate(const Fields& fields)
 {
-    if (auto problem = once(object().rotate.has_value(), "ROTATE"))
-        return problem;
+    if (auto outcome = once(object().rotate.has_value(), "ROTATE"); !outcome)
+        return outcome.error();
     if (fields.size() < 2)
         return error("expected 'ROTATE DEG [AXIS x|y|z] [ABOUT X Y Z] [FROM F TO G]'");
     SceneRotate rotate;
     rotate.frames = {0, m_scene.last_frame};
-    if (auto problem = number(fields[1], "the degrees per frame", rotate.degrees_per_frame))
-        return problem;
+    const Expected<double> degrees = number(fields[1], "the degrees per frame");
+    if (!degrees)
+        return degrees.error();
+    rotate.degrees_per_frame = *degrees;
     Clauses clauses(fields, 2);
-    if (auto problem = turn_clauses(clauses, "ROTATE", rotate.about, rotate.frames, &rotate.axis))
-        return problem;
+    if (auto outcome = turn_clauses(clauses, "ROTATE", rotate.about, rotate.frames, &rotate.axis); !outcome)
+        return outcome.error();
     object().rotate = rotate;
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_scale(const Fields& fields)
+Expected<void> SceneParser::parse_scale(const Fields& fields)
 {
-    if (auto problem = once(object().scale.has_value(), "SCALE"))
-        return problem;
+    if (auto outcome = once(object().scale.has_value(), "SCALE"); !outcome)
+        return outcome.error();
     if (fields.size() < 2)
         return error("expected 'SCALE FACTOR [ABOUT X Y Z] [FROM F TO G]'");
     SceneScale scale;
     scale.frames = {0, m_scene.last_frame};
-    if (auto problem = number(fields[1], "FACTOR", scale.factor))
-        return problem;
+    const Expected<double> factor = number(fields[1], "FACTOR");
+    if (!factor)
+        return factor.error();
+    scale.factor = *factor;
     if (scale.factor <= 0.0)
         return error("SCALE FACTOR " + quote_field(fields[1]) + " is not above 0; expected a factor > 0");
     Clauses clauses(fields, 2);
-    if (auto problem = turn_clauses(clauses, "SCALE", scale.about, scale.frames, nullptr))
-        return problem;
+    if (auto outcome = turn_clauses(clauses, "SCALE", scale.about, scale.frames, nullptr); !outcome)
+        return outcome.error();
     const double growth = std::abs(std::log(scale.factor)) * (scale.frames.to - scale.frames.from);
     if (growth > std::log(most_scale_growth))
         return error("SCALE " + quote_field(fields[1]) + " over " + std::to_string(scale.frames.to - scale.frames.from) +
                      " frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)");
     object().scale = scale;
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::parse_joint(const Fields& fields)
+Expected<void> SceneParser::parse_joint(const Fields& fields)
 {
     if (fields.size() != 3 && fields.size() != 5)
         return error("expected 'JOINT NAME INDEX [TOLERANCE D]'");
@@ -446,41 +454,39 @@ Problem SceneParser::parse_joint(const Fields& fields)
     if (fields.size() == 5) {
         if (!equals_ignoring_case(fields[3], "TOLERANCE"))
             return error("expected TOLERANCE D after the index, found " + quote_field(fields[3]));
-        double tolerance = 0.0;
-        if (auto problem = number(fields[4], "TOLERANCE", tolerance))
-            return problem;
-        if (tolerance < 0.0)
+        const Expected<double> tolerance = number(fields[4], "TOLERANCE");
+        if (!tolerance)
+            return tolerance.error();
+        if (*tolerance < 0.0)
             return error("TOLERANCE " + quote_field(fields[4]) + " is negative; expected a distance >= 0");
-        joint.tolerance = tolerance;
+        joint.tolerance = *tolerance;
     }
     for (const SceneJoint& other : object().joints)
         if (other.name == joint.name)
             return error("joint " + quote_field(joint.name) + " is named twice in object '" + object().name +
                          "' (line " + std::to_string(other.line) + "); a joint joins a part and its parent");
     object().joints.push_back(std::move(joint));
-    return std::nullopt;
+    return ok;
 }
 
-Problem SceneParser::number(std::string_view field, const std::string& what, double& value) const
+Expected<double> SceneParser::number(std::string_view field, const std::string& what) const
 {
     const std::optional<double> parsed = parse_number(field);
     if (!parsed || !std::isfinite(*parsed) || std::abs(*parsed) > max_dat_magnitude)
         return error("expected a number with |value| <= 1e9 for " + what + ", found " + quote_field(field));
-    value = *parsed;
-    return std::nullopt;
+    return *parsed;
 }
 
-Problem SceneParser::frame(std::string_view field, const std::string& what, int& value) const
+Expected<int> SceneParser::frame(std::string_view field, const std::string& what) const
 {
     const std::optional<std::size_t> parsed = parse_count_value(field);
     if (!parsed || *parsed > static_cast<std::size_t>(m_scene.last_frame))
         return error("expected a frame from 0 to " + std::to_string(m_scene.last_frame) + " after " + what +
                      ", found " + quote_field(field));
-    value = static_cast<int>(*parsed);
-    return std::nullopt;
+    return static_cast<int>(*parsed);
 }
 
-Problem SceneParser::span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const
+Expected<void> SceneParser::span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const
 {
     const std::string_view clause = clauses.take();
     const bool from = equals_ignoring_case(clause, "FROM");
@@ -492,13 +498,17 @@ Problem SceneParser::span_clause(Clauses& clauses, std::string_view keyword, Fra
         return error(std::string(from ? "FROM" : "TO") + " is given twice; expected it once");
     if (clauses.done())
         return error("expected a frame after " + std::string(from ? "FROM" : "TO"));
-    return frame(clauses.take(), from ? "FROM" : "TO", from ? span.from : span.to);
+    const Expected<int> value = frame(clauses.take(), from ? "FROM" : "TO");
+    if (!value)
+        return value.error();
+    (from ? span.from : span.to) = *value;
+    return ok;
 }
 
 // The clauses of ROTATE and SCALE after their number: ABOUT X Y Z, FROM F, TO G and, when `axis`
 // is given (ROTATE), AXIS x|y|z; then FROM <= TO.
-Problem SceneParser::turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
-                                  FrameSpan& frames, Axis* axis) const
+Expected<void> SceneParser::turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
+                                         FrameSpan& frames, Axis* axis) const
 {
     while (!clauses.done()) {
         const std::string_view clause = clauses.peek();
@@ -511,39 +521,44 @@ Problem SceneParser::turn_clauses(Clauses& clauses, std::string_view keyword, st
                 return error("unknown AXIS " + quote_field(name) + "; expected x, y or z");
             *axis = name == "x" ? Axis::x : name == "y" ? Axis::y : Axis::z;
         } else if (equals_ignoring_case(clause, "ABOUT")) {
-            if (auto problem = point_clause(clauses, about))
-                return problem;
-        } else if (auto problem = span_clause(clauses, keyword, frames)) {
-            return problem;
+            const Expected<Vec3> centre = about_clause(clauses);
+            if (!centre)
+                return centre.error();
+            about = *centre;
+        } else if (Expected<void> span = span_clause(clauses, keyword, frames); !span) {
+            return span.error();
         }
     }
     return check_span(frames, keyword);
 }
 
-Problem SceneParser::point_clause(Clauses& clauses, std::optional<Vec3>& point) const
+// ABOUT X Y Z: the centre of a turn.
+Expected<Vec3> SceneParser::about_clause(Clauses& clauses) const
 {
     clauses.take();
     if (clauses.seen("ABOUT") || clauses.left() < 3)
         return error("expected 'ABOUT X Y Z' once");
     Vec3 centre;
-    for (double* coordinate : {&centre.x, &centre.y, &centre.z})
-        if (auto problem = number(clauses.take(), "ABOUT", *coordinate))
-            return problem;
-    point = centre;
-    return std::nullopt;
+    for (double* coordinate : {&centre.x, &centre.y, &centre.z}) {
+        const Expected<double> value = number(clauses.take(), "ABOUT");
+        if (!value)
+            return value.error();
+        *coordinate = *value;
+    }
+    return centre;
 }
 
-Problem SceneParser::check_span(const FrameSpan& span, std::string_view keyword) const
+Expected<void> SceneParser::check_span(const FrameSpan& span, std::string_view keyword) const
 {
     if (span.from <= span.to)
-        return std::nullopt;
+        return ok;
     return error(std::string(keyword) + " FROM " + std::to_string(span.from) + " TO " + std::to_string(span.to) +
                  ": expected FROM <= TO");
 }
 
 // What needs the whole object: the paths of KEYS and MOVE take its staff values; every joint's
 // point lies in its drawing.
-Problem SceneParser::finish_object()
+Expected<void> SceneParser::finish_object()
 {
     SceneObject& current = object();
     if (m_pending.paths && !current.keys)
@@ -581,12 +596,12 @@ Problem SceneParser::finish_object()
                              " of object '" + current.name + "', whose drawing has " + std::to_string(points) +
                              " points" + (current.keys ? " (after adding points)" : ""),
                          joint.line);
-    return std::nullopt;
+    return ok;
 }
 
 // Every joint name is used exactly twice, by a part and its parent, and its two points meet
 // within the tolerance in frame 0.
-Problem SceneParser::finish_joints()
+Expected<void> SceneParser::finish_joints()
 {
     struct Use {
         std::size_t object;
@@ -623,7 +638,7 @@ Problem SceneParser::finish_joints()
                              " apart in frame 0; expected at most " + shortest_number(tolerance),
                          second.joint->line);
     }
-    return std::nullopt;
+    return ok;
 }
 
 } // namespace

@@ -116,7 +116,10 @@ std::vector<std::string> FolderFiles::earlier_inbetweens(std::size_t written_cou
 std::optional<Diagnostic> FolderFiles::end_batch()
 {
     m_in_batch = false;
-    return flush_file_system(m_folder);
+    // SessionFiles still says optional<Diagnostic>; it becomes Expected<void> with the session.
+    if (Expected<void> flushed = flush_file_system(m_folder); !flushed)
+        return flushed.error();
+    return std::nullopt;
 }
 
 FolderFiles::~FolderFiles()

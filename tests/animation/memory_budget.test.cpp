@@ -61,7 +61,9 @@ TEST_CASE("byte counts are shown in the unit that keeps them below 1024", "[anim
 
 TEST_CASE("a request over the limit is refused with what it needs and the limit", "[animation][memory]")
 {
-    CHECK_FALSE(memory::refusal("x", 1024, 1024, "lower y"));
-    CHECK(memory::refusal("100 frames of 2 points", 2048, 1024, "lower --inbetweens") ==
-          "100 frames of 2 points need 2 KiB; the memory limit is 1 KiB (APCS_MEMORY_LIMIT); lower --inbetweens");
+    CHECK(memory::check_fits("x", 1024, 1024, "lower y"));
+    const Expected<void> refused = memory::check_fits("100 frames of 2 points", 2048, 1024, "lower --inbetweens");
+    REQUIRE_FALSE(refused);
+    CHECK(refused.error().to_string() == "apcs: 100 frames of 2 points need 2 KiB; the memory limit is 1 KiB "
+                                         "(APCS_MEMORY_LIMIT); lower --inbetweens");
 }

@@ -75,9 +75,9 @@ TEST_CASE("text fed in pieces of any size gives the lines and the problem of the
 {
     using Seen = std::vector<std::pair<int, std::string>>;
     const auto read_whole = [](std::string_view text, Seen& seen) {
-        return for_each_data_line(text, "t.dat", [&seen](int line, std::string_view content) -> std::optional<Diagnostic> {
+        return for_each_data_line(text, "t.dat", [&seen](int line, std::string_view content) -> Expected<void> {
             seen.emplace_back(line, std::string(content));
-            return std::nullopt;
+            return ok;
         });
     };
     std::vector<std::string> texts{"\xEF\xBB\xBF" "1 2\r\n3 4\r", "a\r\r\nb\rc", "x\n\x1A\r\n", "x\ny\x1Az", "\xEF\xBB", ""};
@@ -85,23 +85,23 @@ TEST_CASE("text fed in pieces of any size gives the lines and the problem of the
         texts.push_back(test::read_all(entry.path()));
     for (const std::string& text : texts) {
         Seen whole;
-        const std::optional<Diagnostic> whole_problem = read_whole(text, whole);
+        const Expected<void> whole_outcome = read_whole(text, whole);
         for (const std::size_t piece : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{7}, std::size_t{64}}) {
             CAPTURE(text, piece);
             Seen pieces;
-            DataLineReader reader("t.dat", [&pieces](int line, std::string_view content) -> std::optional<Diagnostic> {
+            DataLineReader reader("t.dat", [&pieces](int line, std::string_view content) -> Expected<void> {
                 pieces.emplace_back(line, std::string(content));
-                return std::nullopt;
+                return ok;
             });
-            std::optional<Diagnostic> problem;
-            for (std::size_t at = 0; at < text.size() && !problem; at += piece)
-                problem = reader.feed(std::string_view(text).substr(at, piece));
-            if (!problem)
-                problem = reader.finish();
+            Expected<void> outcome = ok;
+            for (std::size_t at = 0; at < text.size() && outcome; at += piece)
+                outcome = reader.feed(std::string_view(text).substr(at, piece));
+            if (outcome)
+                outcome = reader.finish();
             REQUIRE(pieces == whole);
-            REQUIRE(problem.has_value() == whole_problem.has_value());
-            if (problem)
-                REQUIRE(problem->to_string() == whole_problem->to_string());
+            REQUIRE(outcome.has_value() == whole_outcome.has_value());
+            if (!outcome)
+                REQUIRE(outcome.error().to_string() == whole_outcome.error().to_string());
         }
     }
 }

@@ -21,7 +21,7 @@ TEST_CASE("a key file is guarded under its own name and nothing else is", "[form
     REQUIRE(guard.guards(key));
     REQUIRE_FALSE(guard.guards(other));
     REQUIRE_FALSE(guard.guards(folder / "inb001.dat"));
-    REQUIRE_FALSE(guard.refuse(other).has_value());
+    REQUIRE(guard.may_write(other).has_value());
 }
 
 TEST_CASE("refusing a key file names the target and says why", "[formats][key-file-guard]")
@@ -30,9 +30,9 @@ TEST_CASE("refusing a key file names the target and says why", "[formats][key-fi
     const fs::path key = folder.write("key1.dat", "0 0\n1 1\n");
     KeyFileGuard guard;
     guard.protect(key);
-    const std::optional<Diagnostic> refusal = guard.refuse(key);
-    REQUIRE(refusal.has_value());
-    REQUIRE(refusal->to_string() == key.string() + ": is a key file; key files are never written");
+    const Expected<void> refusal = guard.may_write(key);
+    REQUIRE_FALSE(refusal.has_value());
+    REQUIRE(refusal.error().to_string() == key.string() + ": is a key file; key files are never written");
 }
 
 TEST_CASE("a hard link to a key file is the key file", "[formats][key-file-guard]")

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -66,9 +68,8 @@ std::optional<std::uint64_t> parse_byte_count(std::string_view text);
 // "4 GiB", "1.5 MiB", "900 bytes": the unit that keeps the number below 1024, one decimal.
 std::string byte_count_text(std::uint64_t bytes);
 
-// nullopt when `needed` fits in `limit`; else the reason for the refusal:
-// "WHAT need 9.3 GiB; the memory limit is 4 GiB (APCS_MEMORY_LIMIT); REMEDY".
-std::optional<std::string> refusal(std::string_view what, std::uint64_t needed, std::uint64_t limit,
-                                   std::string_view remedy);
+// ok when `needed` fits in `limit`; else the refusal, a diagnostic of the program itself ("apcs")
+// whose message is "WHAT need 9.3 GiB; the memory limit is 4 GiB (APCS_MEMORY_LIMIT); REMEDY".
+Expected<void> check_fits(std::string_view what, std::uint64_t needed, std::uint64_t limit, std::string_view remedy);
 
 } // namespace apcs::memory

@@ -23,9 +23,9 @@ std::string format_frames_print(const FrameSequence& frames);
 
 // The frames `player` shows, from its first, `frame_count` of them, as an animated GIF to `target`
 // (standard output for "-"), each shown `delay_ms`.
-[[nodiscard]] std::optional<Diagnostic> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
-                                                         const std::filesystem::path& target, int delay_ms,
-                                                         std::ostream& out);
+Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
+                                const std::filesystem::path& target, int delay_ms,
+                                std::ostream& out);
 
 // The end of a batch command: all frames overlaid in the pictures --png and --png-raw name, the
 // numbers to `out` with --print, and the in-between files into --out (write_inbetween_files) —

@@ -24,30 +24,26 @@ std::string format_path_print(const EvaluatedPath& path);
 inline constexpr std::string_view standard_stream_name = "-";
 
 // A picture's bytes to `target` atomically, or to `out` when `target` is "-".
-[[nodiscard]] std::optional<Diagnostic> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
-                                                            std::ostream& out);
+Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes, std::ostream& out);
 
 // Writes the screen's raster (text drawn in the font) as a PNG, atomically; to `out` when
 // `target` is "-".
-[[nodiscard]] std::optional<Diagnostic> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                                                       PngShape shape, std::ostream& out);
+Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                              PngShape shape, std::ostream& out);
 
 // Writes the screen as an SVG (encode_svg), atomically; to `out` when `target` is "-".
-[[nodiscard]] std::optional<Diagnostic> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                                                       std::ostream& out);
+Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen, std::ostream& out);
 
 // The picture options and where each writes: --png, --png-raw, --svg, --gif.
 std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
 picture_targets(const CommonOptions& options);
 
-// "TARGET: is an input of this run; --png never writes over an input" when a picture option names
-// one of `inputs` (through a link, in another case, without an extension); else nothing.
-[[nodiscard]] std::optional<Diagnostic> picture_over_input(const CommonOptions& options,
-                                                           std::span<const std::filesystem::path> inputs);
+// ok unless a picture option names one of `inputs` (through a link, in another case, without an
+// extension); then "TARGET: is an input of this run; --png never writes over an input".
+Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs);
 
 // Every picture `options` asks for (--png, --png-raw, --svg) of `screen`; the first problem.
-[[nodiscard]] std::optional<Diagnostic> write_pictures(const GraphicsScreen& screen, const CommonOptions& options,
-                                                       std::ostream& out);
+Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the
 // first control point's values.

@@ -80,8 +80,8 @@ Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file
 
 // A piece of text for a reader that takes text as it comes, and what hands the pieces over: it
 // calls the sink with each piece in order and returns the first problem, its own or the sink's.
-using TextPieceSink = std::function<std::optional<Diagnostic>(std::string_view piece)>;
-using TextPieces = std::function<std::optional<Diagnostic>(const TextPieceSink& sink)>;
+using TextPieceSink = std::function<Expected<void>(std::string_view piece)>;
+using TextPieces = std::function<Expected<void>(const TextPieceSink& sink)>;
 
 // parse_key_frame for text that comes in pieces (a file read a block at a time), never whole;
 // `line_count` (the text's LFs + 1) sizes the points once.

@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -33,9 +32,9 @@ Expected<std::string> read_text_file(const std::filesystem::path& name, std::uin
 // read_text_file's checks and messages for a file read a block at a time: each block goes to
 // `consume` (whose problem ends the reading), none is kept. `file_size`, when given, receives the
 // file's size before the first block.
-std::optional<Diagnostic> read_text_pieces(const std::filesystem::path& name, const TextPieceSink& consume,
-                                           std::uintmax_t most_bytes = max_input_bytes,
-                                           std::uintmax_t* file_size = nullptr);
+Expected<void> read_text_pieces(const std::filesystem::path& name, const TextPieceSink& consume,
+                                std::uintmax_t most_bytes = max_input_bytes,
+                                std::uintmax_t* file_size = nullptr);
 
 // A .dat file, or standard input when `name` is "-" (messages then say "standard input:LINE").
 Expected<DatFile> read_dat_file(const std::filesystem::path& name, std::size_t minimum_points = 2);
@@ -91,7 +90,7 @@ Expected<WriteResult> write_file_atomically(const std::filesystem::path& target,
 
 // The barrier of Durability::at_barrier: every file written on the file system of `folder` is
 // flushed to the disk (syncfs), the folders' entries with them. The problem, if any.
-[[nodiscard]] std::optional<Diagnostic> flush_file_system(const std::filesystem::path& folder);
+Expected<void> flush_file_system(const std::filesystem::path& folder);
 
 // NAME.ext → NAME.bak in the same folder; NAME.b01 … NAME.b99 when NAME.bak is one of `inputs`
 // (the first of those that is neither an input nor an existing file; NAME.b99 when all exist;

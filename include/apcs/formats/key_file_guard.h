@@ -3,7 +3,6 @@
 #include "apcs/base/diagnostic.h"
 
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,8 +21,8 @@ public:
 
     [[nodiscard]] bool guards(const std::filesystem::path& target) const;
 
-    // "TARGET: is a key file; key files are never written" when `target` is guarded, else nothing.
-    [[nodiscard]] std::optional<Diagnostic> refuse(const std::filesystem::path& target) const;
+    // ok when `target` is not guarded; else "TARGET: is a key file; key files are never written".
+    Expected<void> may_write(const std::filesystem::path& target) const;
 
 private:
     struct KeyFile {

@@ -9,7 +9,6 @@
 #include "apcs/formats/dat_file.h"
 
 #include <filesystem>
-#include <optional>
 #include <span>
 #include <string_view>
 #include <string>
@@ -55,11 +54,10 @@ std::string inbetween_heading(std::size_t number, std::size_t count);
 NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, std::size_t number);
 
 // A path file for graphic point `which` ("first" or "last") must start at its KEY1 position and
-// end at its KEY2 position (to 1e-6 of the scene's size). Returns the problem, if any, as
-// "FILE:LINE: …" naming the expected point.
-[[nodiscard]] std::optional<Diagnostic> check_path_ends(const DatFile& path, const std::string& file_name,
-                                                        const std::string& which, const Vec3& key1_position,
-                                                        const Vec3& key2_position);
+// end at its KEY2 position (to 1e-6 of the scene's size). Else the problem, as "FILE:LINE: …"
+// naming the expected point.
+Expected<void> check_path_ends(const DatFile& path, const std::string& file_name, const std::string& which,
+                               const Vec3& key1_position, const Vec3& key2_position);
 
 // A path file's points as KB control points, all parts in file order: 7-column points keep their
 // own t c b a, shorter ones take `defaults`.

@@ -4,7 +4,6 @@
 
 #include <cstddef>
 #include <functional>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -12,8 +11,8 @@ namespace apcs {
 
 inline constexpr std::size_t max_text_line_bytes = 4096;
 
-// What a data line handler says: nothing (go on) or the problem that ends the reading.
-using DataLineHandler = std::function<std::optional<Diagnostic>(int line_number, std::string_view content)>;
+// What a data line handler says: ok (go on) or the problem that ends the reading.
+using DataLineHandler = std::function<Expected<void>(int line_number, std::string_view content)>;
 
 // The lexical rules that .dat and .scn files share (SPEC §2.1): a UTF-8 byte-order mark is
 // skipped; a Ctrl-Z may end the file (only line ends and blanks after it); lines end with LF,
@@ -22,8 +21,7 @@ using DataLineHandler = std::function<std::optional<Diagnostic>(int line_number,
 // comment (blank lines too), numbered from 1; the first problem, its own or the handler's, ends
 // the reading and is returned as "FILE:LINE: message" for `file_name`.
 // The problem is the first in the file's order: a line before a misplaced Ctrl-Z is read first.
-[[nodiscard]] std::optional<Diagnostic> for_each_data_line(std::string_view text, const std::string& file_name,
-                                                           const DataLineHandler& handle);
+Expected<void> for_each_data_line(std::string_view text, const std::string& file_name, const DataLineHandler& handle);
 
 // for_each_data_line for text that comes in pieces (a file read a block at a time): each line
 // goes to the handler as soon as it is whole, so only an unfinished line is ever held. feed()
@@ -31,8 +29,8 @@ using DataLineHandler = std::function<std::optional<Diagnostic>(int line_number,
 class DataLineReader {
 public:
     DataLineReader(const std::string& file_name, DataLineHandler handle);
-    [[nodiscard]] std::optional<Diagnostic> feed(std::string_view chunk);
-    [[nodiscard]] std::optional<Diagnostic> finish();
+    Expected<void> feed(std::string_view chunk);
+    Expected<void> finish();
 
 private:
     void decide_bom();
@@ -48,7 +46,7 @@ private:
     bool m_ended = false; // a Ctrl-Z was read
     int m_end_line = 0;   // the line of the Ctrl-Z
     int m_line = 0;
-    std::optional<Diagnostic> m_problem;
+    Expected<void> m_outcome = ok; // the first problem, once there is one
 };
 
 } // namespace apcs
