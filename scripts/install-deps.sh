@@ -3,7 +3,10 @@
 # Usage: scripts/install-deps.sh [extra-package ...]   (README.md says why each package is needed)
 set -euo pipefail
 
-packages=(g++ cmake make catch2 libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux tmux procps groff-base "$@")
+# Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
+# `script`, a terminal for keys_from_pipe.sh) and mount (the full-disk case of batch_faults.sh).
+packages=(g++ cmake make catch2 libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux tmux procps groff-base
+          python3 bsdutils mount "$@")
 
 missing=()
 for package in "${packages[@]}"; do

@@ -10,16 +10,17 @@
 #include <iostream>
 #include <new>
 #include <malloc.h>
+#include <unistd.h>
 
 namespace {
 
 // A signal that ends a batch command (the session's terminal handles its own) first removes the
-// temporary files being written, then ends the program as the signal would have.
-extern "C" void end_on_signal(int signal)
+// temporary files being written, then ends the program with exit status 130, as SPEC §1 says of
+// every command ended by a signal (not 128 + the signal, as the signal itself would).
+extern "C" void end_on_signal(int)
 {
     apcs::remove_unfinished_files();
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
+    ::_exit(apcs::to_int(apcs::ExitStatus::stopped));
 }
 
 void remove_unfinished_files_on_signals()

@@ -25,9 +25,10 @@ for run in pipe stdin; do
   diff -r -x apcs.log "$work/file" "$work/$run" > "$work/diff" || fail "--keys $run differs from the file: $(cat "$work/diff")"
 done
 # "-" when standard input is the terminal: the session needs it for keys, so that is a usage error.
-if command -v script > /dev/null; then
-  script -qec "$apcs --workdir $work/stdin --keys -" /dev/null < /dev/null > "$work/out.tty" 2>&1; status=$?
-  [ "$status" -eq 2 ] || fail "--keys - on a terminal: exit $status: $(cat "$work/out.tty")"
-  grep -qF -- "--keys -: standard input is a terminal" "$work/out.tty" || fail "no message: $(cat "$work/out.tty")"
-fi
+# util-linux's `script` gives it a terminal; scripts/install-deps.sh installs it (bsdutils), so
+# without it the case fails rather than pass untried.
+command -v script > /dev/null || fail "no 'script' (util-linux, Debian's bsdutils) to give apcs a terminal"
+script -qec "$apcs --workdir $work/stdin --keys -" /dev/null < /dev/null > "$work/out.tty" 2>&1; status=$?
+[ "$status" -eq 2 ] || fail "--keys - on a terminal: exit $status: $(cat "$work/out.tty")"
+grep -qF -- "--keys -: standard input is a terminal" "$work/out.tty" || fail "no message: $(cat "$work/out.tty")"
 echo "keys_from_pipe: file, pipe and standard input replay alike"
