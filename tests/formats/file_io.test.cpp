@@ -422,10 +422,10 @@ TEST_CASE("writes left for one barrier are atomic and keep backups as ever; the 
             WriteOutcome::created);
     for (const auto& entry : std::filesystem::directory_iterator(folder.path()))
         REQUIRE(entry.path().filename().string().front() != '.');
-    REQUIRE_FALSE(flush_file_system(folder.path()).has_value());
-    const std::optional<Diagnostic> missing = flush_file_system(folder / "no-such-folder");
-    REQUIRE(missing.has_value());
-    REQUIRE(missing->to_string() == (folder / "no-such-folder").string() +
+    REQUIRE(flush_file_system(folder.path()).has_value());
+    const Expected<void> missing = flush_file_system(folder / "no-such-folder");
+    REQUIRE_FALSE(missing.has_value());
+    REQUIRE(missing.error().to_string() == (folder / "no-such-folder").string() +
                                         ": cannot flush the files written to disk: No such file or directory");
 }
 
