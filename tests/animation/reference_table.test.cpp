@@ -101,6 +101,26 @@ TEST_CASE("the KB curve and its in-betweens match the checked-in reference table
     }
 }
 
+TEST_CASE("exact spacing places the in-betweens at the reference table's arc lengths to 1e-7",
+          "[animation][reference][arc-length]")
+{
+    // The table integrates the length by Gauss-Legendre and inverts it to 1e-15; the program by
+    // adaptive Simpson to 1e-10 of the length and bisection to 1e-9 of it.
+    const ReferenceTable& table = reference();
+    PathSettings exact = table.settings;
+    exact.spacing = Spacing::exact;
+    const EvaluatedPath path = evaluate_path(table.points, exact);
+    const std::vector<Vec3> inbetweens = table.positions("inbetweens exact");
+    REQUIRE(inbetweens.size() == 7);
+    REQUIRE(path.inbetweens.size() == inbetweens.size());
+    for (std::size_t j = 0; j < inbetweens.size(); ++j) {
+        CAPTURE(j);
+        REQUIRE(distance(path.inbetweens[j].position, inbetweens[j]) < 1e-7);
+        // Not the nearest samples: exact spacing is a different placement.
+        REQUIRE(distance(path.inbetweens[j].position, table.positions("inbetweens")[j]) > 1e-3);
+    }
+}
+
 TEST_CASE("surface fitting matches the checked-in reference frames to 1e-9", "[animation][reference][fit]")
 {
     const ReferenceTable& table = reference();

@@ -5,7 +5,8 @@ independently of the C++ code.
 Parameters (also written into the output's header):
   the first graphic point's path: control points P0..P4 with their own t, c, b (and a per span);
   the last graphic point's path: LAST_POINTS; end slopes S0 = 0.6, S1 = 0.9 for both,
-  8 samples per segment, M = 7 in-betweens by the nearest-sample rule of SPEC 4.3;
+  8 samples per segment, M = 7 in-betweens by the nearest-sample rule of SPEC 4.3, and the same
+  in-betweens with exact spacing (SPEC 4.4: at their arc length);
   two key frames KEY1, KEY2 of 5 points (open), whose first and last points are the paths' ends.
 Formulas: thesis Eq. 3.1.4 for DS/DD, the Hermite blending functions of Ch. 2.1, and the
 surface-fitting blend of SPEC 5.3 (linear along each point's progress, F1/F2 across the graphic).
@@ -49,74 +50,153 @@ def tangents(points, k):
     return ds, dd
 
 
-def curve(points):
+def curve(points, slopes=SLOPES, per_segment=SAMPLES):
     n = len(points) - 1
     samples = [points[0][:3]]
     for k in range(n):
         p0, p1 = points[k][:3], points[k + 1][:3]
-        t0 = mul(sub(p1, p0), SLOPES[0]) if k == 0 else tangents(points, k)[1]
-        t1 = mul(sub(p1, p0), SLOPES[1]) if k + 1 == n else tangents(points, k + 1)[0]
-        for j in range(1, SAMPLES + 1):
-            u = j / SAMPLES
+        t0 = mul(sub(p1, p0), slopes[0]) if k == 0 else tangents(points, k)[1]
+        t1 = mul(sub(p1, p0), slopes[1]) if k + 1 == n else tangents(points, k + 1)[0]
+        for j in range(1, per_segment + 1):
+            u = j / per_segment
             f3, f4 = u**3 - 2 * u**2 + u, u**3 - u**2
-            point = p1 if j == SAMPLES else add(add(mul(p0, f1(u)), mul(p1, f2(u))), add(mul(t0, f3), mul(t1, f4)))
+            point = p1 if j == per_segment else add(add(mul(p0, f1(u)), mul(p1, f2(u))), add(mul(t0, f3), mul(t1, f4)))
             samples.append(point)
     return samples
 
 
-def inbetweens(points, samples):
+def shares_by_largest_remainder(lengths, count):
+    quotas = [count * length / sum(lengths) for length in lengths]
+    shares = [math.floor(q) for q in quotas]
+    order = sorted(range(len(lengths)), key=lambda i: -(quotas[i] - shares[i]))
+    for i in order[: count - sum(shares)]:
+        shares[i] += 1
+    return shares
+
+
+def law(a, tau):
+    """SPEC 4.3: the fraction of a span's length reached at time fraction tau with acceleration a."""
+    warp = math.sin(math.pi * tau / 2) if a < 0 else 1 - math.cos(math.pi * tau / 2)
+    return (1 - abs(a)) * tau + abs(a) * warp
+
+
+def span_bounds(points):
+    """Spans of equal a: boundaries where a changes (the last point's a is unused)."""
+    bounds = [0] + [k for k in range(1, len(points) - 1) if points[k][6] != points[k - 1][6]] + [len(points) - 1]
+    return list(zip(bounds, bounds[1:]))
+
+
+def inbetweens(points, samples, count=INBETWEENS, per_segment=SAMPLES):
     """The shown in-betweens and the chord fraction each reaches."""
     chord = [0.0]
     for i in range(1, len(samples)):
         chord.append(chord[-1] + math.dist(samples[i - 1], samples[i]))
-    # Spans of equal a: boundaries where a changes (the last point's a is unused).
-    bounds = [0] + [k for k in range(1, len(points) - 1) if points[k][6] != points[k - 1][6]] + [len(points) - 1]
-    spans = list(zip(bounds, bounds[1:]))
-    lengths = [chord[e * SAMPLES] - chord[s * SAMPLES] for s, e in spans]
-    quotas = [INBETWEENS * length / sum(lengths) for length in lengths]
-    shares = [math.floor(q) for q in quotas]
-    order = sorted(range(len(spans)), key=lambda i: -(quotas[i] - shares[i]))
-    for i in order[: INBETWEENS - sum(shares)]:
-        shares[i] += 1
+    spans = span_bounds(points)
+    lengths = [chord[e * per_segment] - chord[s * per_segment] for s, e in spans]
     shown = []
-    for (s, _), length, count in zip(spans, lengths, shares):
-        a = points[s][6]
-        for j in range(1, count + 1):
-            tau = j / (count + 1)
-            warp = math.sin(math.pi * tau / 2) if a < 0 else 1 - math.cos(math.pi * tau / 2)
-            target = chord[s * SAMPLES] + length * ((1 - abs(a)) * tau + abs(a) * warp)
+    for (s, _), length, share in zip(spans, lengths, shares_by_largest_remainder(lengths, count)):
+        for j in range(1, share + 1):
+            target = chord[s * per_segment] + length * law(points[s][6], j / (share + 1))
             best = min(range(len(chord)), key=lambda i: (abs(chord[i] - target), i))
             shown.append((samples[best], chord[best] / chord[-1]))
     return shown
 
 
-def edge(points, key1_point, key2_point):
+# Exact spacing (SPEC 4.3, 4.4): the same targets on the true arc length, each in-between the point at
+# its target length. The length is integrated here by 5-point Gauss-Legendre on 64 pieces per
+# segment (the program uses adaptive Simpson) and inverted by bisection on u to 1e-15.
+GAUSS = [(-0.9061798459386640, 0.2369268850561891), (-0.5384693101056831, 0.4786286704993665),
+         (0.0, 0.5688888888888889), (0.5384693101056831, 0.4786286704993665),
+         (0.9061798459386640, 0.2369268850561891)]
+PIECES = 64
+
+
+def segments(points):
+    n = len(points) - 1
+    result = []
+    for k in range(n):
+        p0, p1 = points[k][:3], points[k + 1][:3]
+        t0 = mul(sub(p1, p0), SLOPES[0]) if k == 0 else tangents(points, k)[1]
+        t1 = mul(sub(p1, p0), SLOPES[1]) if k + 1 == n else tangents(points, k + 1)[0]
+        result.append((p0, p1, t0, t1))
+    return result
+
+
+def point_on(segment, u):
+    p0, p1, t0, t1 = segment
+    return add(add(mul(p0, f1(u)), mul(p1, f2(u))), add(mul(t0, u**3 - 2 * u**2 + u), mul(t1, u**3 - u**2)))
+
+
+def speed(segment, u):
+    p0, p1, t0, t1 = segment
+    d = add(add(mul(p0, 6 * u**2 - 6 * u), mul(p1, -6 * u**2 + 6 * u)),
+            add(mul(t0, 3 * u**2 - 4 * u + 1), mul(t1, 3 * u**2 - 2 * u)))
+    return math.sqrt(sum(x * x for x in d))
+
+
+def length_to(segment, u_end):
+    half = u_end / PIECES / 2
+    return math.fsum(w * half * speed(segment, (2 * i + 1) * half + x * half)
+                     for i in range(PIECES) for x, w in GAUSS)
+
+
+def exact_inbetweens(points):
+    parts = segments(points)
+    to_point = [0.0]
+    for segment in parts:
+        to_point.append(to_point[-1] + length_to(segment, 1.0))
+    spans = span_bounds(points)
+    lengths = [to_point[e] - to_point[s] for s, e in spans]
+    shown = []
+    for (s, _), length, share in zip(spans, lengths, shares_by_largest_remainder(lengths, INBETWEENS)):
+        for j in range(1, share + 1):
+            target = to_point[s] + length * law(points[s][6], j / (share + 1))
+            k = max(i for i in range(len(parts)) if to_point[i] <= target)
+            low, high = 0.0, 1.0
+            while high - low > 1e-15:
+                middle = (low + high) / 2
+                if to_point[k] + length_to(parts[k], middle) < target:
+                    low = middle
+                else:
+                    high = middle
+            shown.append(point_on(parts[k], (low + high) / 2))
+    return shown
+
+
+def edge(points, key1_point, key2_point, slopes=SLOPES, per_segment=SAMPLES, count=INBETWEENS):
     """Positions and progress of one edge path in frames 0 .. M+1."""
-    shown = inbetweens(points, curve(points))
+    shown = inbetweens(points, curve(points, slopes, per_segment), count, per_segment)
     return [key1_point] + [p for p, _ in shown] + [key2_point], [0.0] + [w for _, w in shown] + [1.0]
 
 
 def place_along(key):
+    """Normalised cumulative chord length (open graphic); a key whose points coincide: i/(n-1)."""
     chord = [0.0]
     for i in range(1, len(key)):
         chord.append(chord[-1] + math.dist(key[i - 1], key[i]))
+    if chord[-1] == 0:
+        return [i / (len(key) - 1) for i in range(len(key))]
     return [c / chord[-1] for c in chord]
 
 
-def surface_frames():
-    e0, w0 = edge(POINTS, KEY1[0], KEY2[0])
-    e1, w1 = edge(LAST_POINTS, KEY1[-1], KEY2[-1])
-    v = [(a + b) / 2 for a, b in zip(place_along(KEY1), place_along(KEY2))]
+def blend(key1, key2, first_edge, last_edge):
+    """The surface-fitting blend of SPEC 5.3 (open graphic): frames 0 .. M+1 from the two edges."""
+    (e0, w0), (e1, w1) = first_edge, last_edge
+    v = [(a + b) / 2 for a, b in zip(place_along(key1), place_along(key2))]
     frames = []
     for k in range(len(e0)):
-        d0 = sub(e0[k], lerp(KEY1[0], KEY2[0], w0[k]))
-        d1 = sub(e1[k], lerp(KEY1[-1], KEY2[-1], w1[k]))
+        d0 = sub(e0[k], lerp(key1[0], key2[0], w0[k]))
+        d1 = sub(e1[k], lerp(key1[-1], key2[-1], w1[k]))
         frame = []
-        for i in range(len(KEY1)):
+        for i in range(len(key1)):
             w = f1(v[i]) * w0[k] + f2(v[i]) * w1[k]
-            frame.append(add(lerp(KEY1[i], KEY2[i], w), add(mul(d0, f1(v[i])), mul(d1, f2(v[i])))))
+            frame.append(add(lerp(key1[i], key2[i], w), add(mul(d0, f1(v[i])), mul(d1, f2(v[i])))))
         frames.append(frame)
     return frames
+
+
+def surface_frames():
+    return blend(KEY1, KEY2, edge(POINTS, KEY1[0], KEY2[0]), edge(LAST_POINTS, KEY1[-1], KEY2[-1]))
 
 
 def row(values): return " ".join(repr(v) for v in values)
@@ -133,6 +213,9 @@ def main():
         print(row(p))
     print("# inbetweens")
     for p, _ in inbetweens(POINTS, samples):
+        print(row(p))
+    print("# inbetweens exact: the same with --spacing exact")
+    for p in exact_inbetweens(POINTS):
         print(row(p))
     print("# last path: x y z t c b a")
     for p in LAST_POINTS:
