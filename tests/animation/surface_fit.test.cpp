@@ -1,8 +1,10 @@
+#include "apcs/animation/hermite.h"
 #include "apcs/animation/surface_fit.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <vector>
 
 using namespace apcs;
 
@@ -139,13 +141,96 @@ TEST_CASE("a closed graphic stays closed in every frame and uses the first path 
     Graphic moved;
     moved.parts.push_back({"ring", Closure::closed, {{4, 1, 0}, {4, 4, 0}, {4, 4, 3}, {4, 1, 3}, {4, 1, 0}}});
     const EvaluatedPath first = evaluate_path(path_through({{0, 0, 0}, {2, -3, 1}, {4, 1, 0}}), settings);
+    // Two second paths as unlike as can be: neither may change a single point of any frame.
     const EvaluatedPath ignored = evaluate_path(path_through({{9, 9, 9}, {8, 8, 8}}), settings);
+    const EvaluatedPath other = evaluate_path(path_through({{0, 0, 0}, {-5, 7, 2}, {1, -6, 9}, {4, 1, 0}}), settings);
     const FrameSequence frames = fit_key_frames({ring, moved}, first, ignored);
+    const FrameSequence again = fit_key_frames({ring, moved}, first, other);
+    REQUIRE(frames.frame_count() == 7);
+    REQUIRE(again.frame_count() == frames.frame_count());
+    const std::vector<Vec3> key1 = ring.all_points();
+    const std::vector<Vec3> key2 = moved.all_points();
+    const EdgePath edge = edge_path_from(first, key1.front(), key2.front());
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
         const auto frame = frames.frame(k);
         REQUIRE(frame.front() == frame.back());
         if (k > 0 && k + 1 < frames.frame_count())
             REQUIRE(frame.front() == first.inbetweens[k - 1].position);
+        // With E1 = E0 and w1 = w0 the blend across the graphic is one: every point is
+        // lerp(K1_i, K2_i, w0) plus the first path's bend off its chord.
+        const Vec3 bend = edge.positions[k] - lerp(key1.front(), key2.front(), edge.progress[k]);
+        for (std::size_t i = 0; i < frames.points_per_frame(); ++i) {
+            CAPTURE(k, i);
+            REQUIRE(again.frame(k)[i] == frame[i]);
+            REQUIRE(distance(frame[i], lerp(key1[i], key2[i], edge.progress[k]) + bend) < 1e-12);
+        }
+    }
+    // v wraps: the closing segment counts, so a ring of four corners puts its last one at 3/4
+    // (and a ring that repeats its first point ends at 1, where it began).
+    const std::vector<Vec3> corners(key1.begin(), key1.end() - 1);
+    const std::vector<Vec3> moved_corners(key2.begin(), key2.end() - 1);
+    CHECK(graphic_parameters(corners, moved_corners, Closure::closed) == std::vector<double>{0.0, 0.25, 0.5, 0.75});
+    CHECK(graphic_parameters(key1, key2, Closure::closed) == std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0});
+    CHECK(graphic_parameters(corners, moved_corners, Closure::open) ==
+          std::vector<double>{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0});
+}
+
+TEST_CASE("a key whose points all coincide places them by index, v_i = i/(n-1)", "[animation][fit]")
+{
+    const std::vector<Vec3> dot{{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+    const std::vector<Vec3> line{{0, 0, 0}, {0, 1, 0}, {0, 3, 0}, {0, 6, 0}}; // chord places 0, 1/6, 1/2, 1
+    CHECK(graphic_parameters(dot, dot, Closure::open) == std::vector<double>{0.0, 1.0 / 3.0, 2.0 / 3.0, 1.0});
+    // Averaged with the other key's chord places: (1/3 + 1/6)/2 = 1/4, (2/3 + 1/2)/2 = 7/12.
+    const std::vector<double> v = graphic_parameters(dot, line, Closure::open);
+    REQUIRE(v.size() == 4);
+    CHECK(v[0] == 0.0);
+    CHECK(v[1] == Approx(0.25).epsilon(1e-15));
+    CHECK(v[2] == Approx(7.0 / 12.0).epsilon(1e-15));
+    CHECK(v[3] == 1.0);
+
+    // A fit from a key that is one point: KEY1's places 0, 1/2, 1, KEY2's 0, 1/4, 1, so the middle
+    // point's v = 3/8 as in the hand-worked blend above: straight edges at progress 1/4 and 3/4 give
+    // w = 350/512 · 1/4 + 162/512 · 3/4 = 209/512 and P = lerp((0,0,0), (1,0,4), 209/512).
+    const std::vector<Vec3> point{{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    const std::vector<Vec3> bar{{0, 0, 4}, {1, 0, 4}, {4, 0, 4}};
+    const EdgePath first{{{0, 0, 0}, {0, 0, 1}, {0, 0, 4}}, {0.0, 0.25, 1.0}};
+    const EdgePath last{{{0, 0, 0}, {3, 0, 3}, {4, 0, 4}}, {0.0, 0.75, 1.0}};
+    const FrameSequence frames = fit_surface(point, bar, Closure::open, first, last);
+    REQUIRE(distance(frames.frame(1)[1], Vec3{209.0 / 512.0, 0.0, 836.0 / 512.0}) < 1e-12);
+}
+
+TEST_CASE("the chord along a graphic of several parts runs through the pen-up jumps, in file order",
+          "[animation][fit]")
+{
+    // Parts a (0,0,0)-(0,1,0) and b (0,4,0)-(0,5,0): the jump of 3 between them counts, so
+    // v = 0, 1/5, 4/5, 1 (leaving it out would give 0, 1/2, 1/2, 1).
+    Graphic key1;
+    key1.parts = {{"a", Closure::open, {{0, 0, 0}, {0, 1, 0}}}, {"b", Closure::open, {{0, 4, 0}, {0, 5, 0}}}};
+    Graphic key2;
+    key2.parts = {{"a", Closure::open, {{6, 0, 0}, {6, 1, 0}}}, {"b", Closure::open, {{6, 4, 0}, {6, 5, 0}}}};
+    const std::vector<Vec3> points1 = key1.all_points();
+    const std::vector<Vec3> points2 = key2.all_points();
+    const double v[] = {0.0, 0.2, 0.8, 1.0};
+    // A straight first path and a last path that rises out of the plane: the interior points take
+    // F2(v) of its bend, so each shows its own v.
+    const EvaluatedPath first = evaluate_path(path_through({{0, 0, 0}, {6, 0, 0}}), settings);
+    const EvaluatedPath last = evaluate_path(path_through({{0, 5, 0}, {3, 5, 3}, {6, 5, 0}}), settings);
+    const FrameSequence frames = fit_key_frames({key1, key2}, first, last);
+    const EdgePath edge0 = edge_path_from(first, points1.front(), points2.front());
+    const EdgePath edge1 = edge_path_from(last, points1.back(), points2.back());
+    REQUIRE(frames.frame_count() == 7);
+    for (std::size_t k = 1; k + 1 < frames.frame_count(); ++k) {
+        const Vec3 bend0 = edge0.positions[k] - lerp(points1.front(), points2.front(), edge0.progress[k]);
+        const Vec3 bend1 = edge1.positions[k] - lerp(points1.back(), points2.back(), edge1.progress[k]);
+        for (std::size_t i = 0; i < 4; ++i) {
+            const HermiteBasis across = hermite_basis(v[i]);
+            const double w = across.f1 * edge0.progress[k] + across.f2 * edge1.progress[k];
+            const Vec3 expected = lerp(points1[i], points2[i], w) + bend0 * across.f1 + bend1 * across.f2;
+            CAPTURE(k, i);
+            REQUIRE(distance(frames.frame(k)[i], expected) < 1e-12);
+        }
+        // Point 1 rises by F2(1/5) = 0.104 of the bend, point 2 by F2(4/5) = 0.896 of it.
+        REQUIRE(frames.frame(k)[2].z > frames.frame(k)[1].z);
     }
 }
 

@@ -8,8 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <vector>
 
 using namespace apcs;
 using apcs::test::DatFiles;
@@ -33,6 +36,37 @@ Vec3 middle(std::span<const Vec3> points)
     BoundingBox box;
     box.add(points);
     return box.centre();
+}
+
+// The arc length from the curve's start to the curve point nearest `position`: each segment
+// scanned at 512 steps of u, then the best step refined by golden-section search.
+double arc_length_nearest(const ArcLengthTable& table, std::span<const HermiteSegment> segments, const Vec3& position)
+{
+    constexpr int steps = 512;
+    CurveParameter best;
+    double best_distance = distance(segments.front().start, position);
+    for (std::size_t s = 0; s < segments.size(); ++s)
+        for (int j = 0; j <= steps; ++j) {
+            const double u = static_cast<double>(j) / steps;
+            const double d = distance(segments[s].point_at(u), position);
+            if (d < best_distance) {
+                best_distance = d;
+                best = {s, u};
+            }
+        }
+    const HermiteSegment& segment = segments[best.segment];
+    double low = std::max(0.0, best.u - 1.0 / steps);
+    double high = std::min(1.0, best.u + 1.0 / steps);
+    const double golden = (std::sqrt(5.0) - 1.0) / 2.0;
+    for (int i = 0; i < 100; ++i) {
+        const double left = high - golden * (high - low);
+        const double right = low + golden * (high - low);
+        if (distance(segment.point_at(left), position) < distance(segment.point_at(right), position))
+            high = right;
+        else
+            low = left;
+    }
+    return table.length_at({best.segment, (low + high) / 2.0});
 }
 
 } // namespace
@@ -83,10 +117,19 @@ TEST_CASE("a scale about a centre other than the object's moves it by (1-F)(S-C)
     const double factor = 0.8;
     Vec3 centre = middle(animation.frame(0));
     for (int f = 1; f <= 8; ++f) {
-        const Vec3 next = middle(animation.frame(f));
+        CAPTURE(f);
+        const std::vector<Vec3> points = animation.frame(f);
+        const Vec3 next = middle(points);
         // The seed's dx = (1 − F)(S − C), C the centre before this frame's change.
         REQUIRE(near(next - centre, (about - centre) * (1.0 - factor)));
         centre = next;
+        // Its size: the 2 x 2 square's side is 2·0.8^f, in both directions it spans.
+        BoundingBox box;
+        box.add(points);
+        const double side = 2.0 * std::pow(factor, f);
+        REQUIRE(std::abs(box.high().y - box.low().y - side) <= tolerance);
+        REQUIRE(std::abs(box.high().z - box.low().z - side) <= tolerance);
+        REQUIRE(box.high().x - box.low().x <= tolerance);
     }
 }
 
@@ -161,13 +204,26 @@ TEST_CASE("timed waypoints: each control point at its frame, never running back,
     for (std::size_t k = 0; k < 4; ++k)
         REQUIRE(animation.frame(times[k])[0] == road[k].position);
     REQUIRE(animation.frame(70)[0] == road.back().position);
-    // Distance along the curve: the arc length at each frame's position never decreases.
-    const ArcLengthTable table(kb_segments(road, EndSlopes{}));
+    // Distance along the curve: the arc length at each frame's position, found on the curve itself,
+    // is S(f) of the distance-time function through the keys and never decreases.
+    const std::vector<HermiteSegment> segments = kb_segments(road, EndSlopes{});
+    const ArcLengthTable table(segments);
+    std::vector<double> keys(4);
+    for (std::size_t k = 0; k < 4; ++k)
+        keys[k] = table.length_to_segment_start(k);
+    const TimedDistance law(times, keys);
     std::vector<double> step(61);
-    for (int f = 1; f <= 60; ++f)
-        step[static_cast<std::size_t>(f)] = distance(animation.frame(f - 1)[0], animation.frame(f)[0]);
-    for (int f = 1; f <= 60; ++f)
-        REQUIRE(step[static_cast<std::size_t>(f)] > 0.0);
+    double previous = 0.0;
+    for (int f = 0; f <= 60; ++f) {
+        CAPTURE(f);
+        const Vec3 position = animation.frame(f)[0];
+        const double travelled = arc_length_nearest(table, segments, position);
+        REQUIRE(std::abs(travelled - law.at(f)) < 1e-6);
+        REQUIRE(travelled >= previous);
+        previous = travelled;
+        if (f > 0)
+            step[static_cast<std::size_t>(f)] = distance(animation.frame(f - 1)[0], position);
+    }
     for (const int key : {10, 35}) {
         CAPTURE(key);
         const double before = step[static_cast<std::size_t>(key)];
