@@ -45,7 +45,8 @@ constexpr std::size_t sequence_count()
 {
     std::size_t count = keypad_digits.size();
     for (const CursesKey& row : curses_keys)
-        count += static_cast<std::size_t>(std::ranges::count_if(row.sequences, [](const char* s) { return s != nullptr; }));
+        for (const char* sequence : row.sequences)
+            count += sequence != nullptr ? 1 : 0;
     return count;
 }
 
