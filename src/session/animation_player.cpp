@@ -2,6 +2,7 @@
 
 #include "apcs/formats/path_files.h"
 #include "apcs/raster/painter.h"
+#include "apcs/session/overloaded.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/session_text.h"
 #include "apcs/session/world_drawing.h"
@@ -49,39 +50,59 @@ AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::a
     , m_key_names(std::move(key_names))
     , m_view(ViewScene{}.add(m_frames).fit(angles, layout::view_area))
     , m_log(log)
-    , m_phase(m_frames.frame_count() == 0 ? SessionPhase::animation_done : SessionPhase::animating)
+    , m_mode(m_frames.frame_count() == 0 ? Mode(Stopped{}) : Mode(Showing{}))
 {
     m_log.log("animation: " + std::to_string(m_frames.frame_count()) + " frames, " + std::to_string(delay_ms) +
               " ms each");
 }
 
+SessionPhase AnimationPlayer::phase() const
+{
+    return std::visit(Overloaded{[](const Showing&) { return SessionPhase::animating; },
+                                 [](const Stopped&) { return SessionPhase::animation_done; },
+                                 [](const Overlaid&) { return SessionPhase::overlay; }},
+                      m_mode);
+}
+
+bool AnimationPlayer::playing() const
+{
+    const auto* showing = std::get_if<Showing>(&m_mode);
+    return showing != nullptr && !showing->paused;
+}
+
 KeyContext AnimationPlayer::key_context() const
 {
-    return m_phase == SessionPhase::animating ? KeyContext::animation : KeyContext::any_key_graphics;
+    return std::holds_alternative<Showing>(m_mode) ? KeyContext::animation : KeyContext::any_key_graphics;
 }
 
 AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
 {
     m_notice.clear();
-    switch (m_phase) {
-    case SessionPhase::animating:
-        if (std::holds_alternative<command::StopAnimation>(command)) {
-            m_phase = SessionPhase::animation_done;
-            m_paused = false;
-        } else if (std::holds_alternative<command::Pause>(command)) {
-            m_paused = !m_paused;
-        } else if (std::holds_alternative<command::Replay>(command)) {
-            m_frame = 0;
-            m_paused = false;
-        }
-        return Outcome::showing;
-    case SessionPhase::animation_done:
-        m_phase = SessionPhase::overlay;
-        m_log.log("showed all " + std::to_string(m_frames.frame_count()) + " frames overlaid");
-        return Outcome::showing;
-    default:
-        return Outcome::finished;
-    }
+    return std::visit(Overloaded{[&](Showing& showing) { return update_showing(showing, command); },
+                                 // The key map lets any key through after the last frame: it shows all frames.
+                                 [&](Stopped&) {
+                                     m_mode = Overlaid{};
+                                     m_log.log("showed all " + std::to_string(m_frames.frame_count()) +
+                                               " frames overlaid");
+                                     return Outcome::showing;
+                                 },
+                                 [](Overlaid&) { return Outcome::finished; }},
+                      m_mode);
+}
+
+AnimationPlayer::Outcome AnimationPlayer::update_showing(Showing& showing, const Command& command)
+{
+    std::visit(Overloaded{[&](const command::StopAnimation&) { m_mode = Stopped{}; },
+                          [&](const command::Pause&) { showing.paused = !showing.paused; },
+                          [&](const command::Replay&) {
+                              m_frame = 0;
+                              showing.paused = false;
+                          },
+                          // The animation's key map binds no other command (help, pictures and quitting are
+                          // the overlays').
+                          [](const auto&) {}},
+              command);
+    return Outcome::showing;
 }
 
 std::string AnimationPlayer::frame_label() const
@@ -105,29 +126,30 @@ void AnimationPlayer::tick()
     if (m_frame + 1 < m_frames.frame_count())
         ++m_frame;
     else
-        m_phase = SessionPhase::animation_done;
+        m_mode = Stopped{};
 }
 
 GraphicsScreen AnimationPlayer::view() const
 {
     assert(m_frames.frame_count() == 0 || m_frame < m_frames.frame_count());
-    const bool all_frames = m_phase == SessionPhase::overlay;
+    const bool all_frames = std::holds_alternative<Overlaid>(m_mode);
     const std::size_t first = all_frames ? 0 : m_frame;
     const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
     GraphicsScreen screen = draw_frames(m_frames, m_structure, m_view, first, last);
-    std::string message;
-    if (!m_notice.empty())
-        message = m_notice;
-    else if (m_phase == SessionPhase::animating)
-        message = frame_label() + (m_paused ? "  (paused)" : "");
-    else if (m_phase == SessionPhase::animation_done)
-        message = std::string(text::animation_done);
-    else
-        message = std::string(text::overlay_done);
-    screen.text.push_back({1, layout::message_row, message});
-    if (m_phase == SessionPhase::animating)
+    screen.text.push_back({1, layout::message_row, message()});
+    if (std::holds_alternative<Showing>(m_mode))
         screen.text.push_back({1, layout::key_help_row, key_help(KeyContext::animation)});
     return screen;
+}
+
+std::string AnimationPlayer::message() const
+{
+    if (!m_notice.empty())
+        return m_notice;
+    return std::visit(Overloaded{[&](const Showing& showing) { return frame_label() + (showing.paused ? "  (paused)" : ""); },
+                                 [](const Stopped&) { return std::string(text::animation_done); },
+                                 [](const Overlaid&) { return std::string(text::overlay_done); }},
+                      m_mode);
 }
 
 } // namespace apcs

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <string>
 #include <utility>
+#include <variant>
 
 namespace apcs {
 
@@ -33,8 +34,8 @@ public:
     void tick();
     GraphicsScreen view() const;
 
-    SessionPhase phase() const { return m_phase; }
-    bool playing() const { return m_phase == SessionPhase::animating && !m_paused; }
+    SessionPhase phase() const;
+    bool playing() const;
     KeyContext key_context() const;
 
     // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
@@ -54,9 +55,20 @@ private:
     std::string m_notice;
     ViewTransform m_view;
     SessionLog& m_log;
-    SessionPhase m_phase = SessionPhase::animating;
-    std::size_t m_frame = 0;
-    bool m_paused = false;
+    // The frames one at a time (Esc stops, Space pauses, R replays), the last frame shown until a
+    // key, then all frames overlaid until a key ends it.
+    struct Showing {
+        bool paused = false;
+    };
+    struct Stopped {};
+    struct Overlaid {};
+    using Mode = std::variant<Showing, Stopped, Overlaid>;
+
+    Outcome update_showing(Showing& showing, const Command& command);
+    std::string message() const;
+
+    Mode m_mode;
+    std::size_t m_frame = 0; // the frame on the screen while showing or stopped
 };
 
 // All `frames` overlaid as the player shows them after the last frame (figs. 5.1–5.2), fitted to
