@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cstddef>
 #include <cstring>
@@ -252,54 +253,132 @@ int usage_error(const std::string& line, const CLI::App* command, std::ostream& 
     return to_int(ExitStatus::bad_usage);
 }
 
-int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                  const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
+// Everything the command line sets as CLI11 parses it: the options, and each command's arguments.
+struct ParsedLine {
+    CommonOptions options;
+    std::vector<double> slopes;
+    std::filesystem::path path_file;
+    std::vector<std::filesystem::path> key_files;
+    InbetweenSettings inbetween;
+    std::vector<std::filesystem::path> fit_files;
+    std::vector<std::filesystem::path> draw_files;
+    PlayRequest play;
+
+    // The files the run reads: only the chosen command's are given, the others stay empty.
+    std::vector<std::filesystem::path> inputs() const
+    {
+        std::vector<std::filesystem::path> files = key_files;
+        files.insert(files.end(), fit_files.begin(), fit_files.end());
+        files.insert(files.end(), draw_files.begin(), draw_files.end());
+        files.push_back(path_file);
+        files.push_back(play.scene);
+        return files;
+    }
+};
+
+// What a command runs with besides the parsed line.
+struct RunPlace {
+    const CLI::App& app;
+    const CLI::App& command;
+    const TerminalSessionRunner& terminal;
+    const TerminalPlayerRunner& player;
+    std::ostream& out;
+    std::ostream& err;
+};
+
+// One row per command: its name and summary (in `apcs --help`, in this order), its arguments and
+// options, and how it runs. Without a command, apcs runs the session (run_session_command).
+struct Subcommand {
+    const char* name;
+    const char* summary;
+    void (*set_up)(CLI::App& command, ParsedLine& line);
+    int (*run)(ParsedLine& line, const RunPlace& place);
+};
+
+constexpr std::array<Subcommand, 6> subcommands{{
+    {"path", "one point's path: print its numbers or draw it",
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
+         add_path_command_options(command, line.options, line.slopes);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         return to_int(run_path_command(line.path_file, line.options, place.out, place.err));
+     }},
+    {"inbetween", "in-between frames by an interpolation law and a padding",
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("KEYS", line.key_files, "KEY1 KEY2: the key frames (.dat)")
+             ->expected(2)
+             ->required()
+             ->type_name("");
+         add_inbetween_command_options(command, line.options, line.inbetween);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         line.inbetween.key1 = line.key_files[0];
+         line.inbetween.key2 = line.key_files[1];
+         return to_int(run_inbetween_command(line.inbetween, line.options, place.out, place.err));
+     }},
+    {"fit", "surface fitting: the in-between frames of two key frames",
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("FILES", line.fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")
+             ->expected(4)
+             ->required()
+             ->type_name("");
+         add_fit_command_options(command, line.options, line.slopes);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         const std::vector<std::filesystem::path>& files = line.fit_files;
+         return to_int(run_fit_command({files[0], files[1], files[2], files[3]}, line.options, place.out, place.err));
+     }},
+    {"draw", "draw key frames and in-between files overlaid as a picture",
+     [](CLI::App& command, ParsedLine& line) {
+         command
+             .add_option("FILES", line.draw_files,
+                         "the graphics (.dat): the first solid, the last dashed, the others dotted")
+             ->required()
+             ->type_name("");
+         add_draw_command_options(command, line.options);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         if (!pictures_asked(line.options))
+             return usage_error("apcs draw writes a picture: give --png, --png-raw or --svg", &place.command,
+                                place.err);
+         return to_int(run_draw_command(line.draw_files, line.options, place.out, place.err));
+     }},
+    {"play", "play a scene of several objects and actors (.scn)",
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("SCENE", line.play.scene, "the scene file (.scn)")->required()->type_name("");
+         add_play_command_options(command, line.options, line.slopes, line.play.tree);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         line.play.spacing_given = given_count(place.app, "--spacing") > 0;
+         return to_int(run_play_command(line.play, line.options, place.player, place.out, place.err));
+     }},
+    {"figures", "redraw the thesis' figures and examples as PNG",
+     [](CLI::App& command, ParsedLine& line) { add_figures_command_options(command, line.options, line.slopes); },
+     [](ParsedLine& line, const RunPlace& place) {
+         return to_int(run_figures_command(line.options, place.out, place.err));
+     }},
+}};
+
+// The session's options on `app`, then one subcommand per row of the table.
+void set_up_command_line(CLI::App& app, ParsedLine& line)
 {
-    CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
-                 "Without a command, the interactive session of the thesis (manual.txt, section 4).",
-                 "apcs"};
     app.set_version_flag("--version", version_text());
     app.require_subcommand(0, 1);
     app.formatter(std::make_shared<PlainOptionFormatter>());
     app.footer("The user's manual: manual.txt (installed as share/doc/apcs/manual.txt); man apcs.");
-
-    CommonOptions options;
-    std::vector<double> slopes;
-    add_session_options(app, options, slopes);
-
-    std::filesystem::path path_file;
-    CLI::App* path = app.add_subcommand("path", "one point's path: print its numbers or draw it");
-    path->add_option("FILE", path_file, "the path file (.dat)")->required()->type_name("");
-    add_path_command_options(*path, options, slopes);
-
-    std::vector<std::filesystem::path> key_files;
-    InbetweenSettings inbetween_settings;
-    CLI::App* inbetween = app.add_subcommand("inbetween", "in-between frames by an interpolation law and a padding");
-    inbetween->add_option("KEYS", key_files, "KEY1 KEY2: the key frames (.dat)")->expected(2)->required()->type_name("");
-    add_inbetween_command_options(*inbetween, options, inbetween_settings);
-
-    std::vector<std::filesystem::path> fit_files;
-    CLI::App* fit = app.add_subcommand("fit", "surface fitting: the in-between frames of two key frames");
-    fit->add_option("FILES", fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")->expected(4)->required()->type_name("");
-    add_fit_command_options(*fit, options, slopes);
-
-    std::vector<std::filesystem::path> draw_files;
-    CLI::App* draw = app.add_subcommand("draw", "draw key frames and in-between files overlaid as a picture");
-    draw->add_option("FILES", draw_files, "the graphics (.dat): the first solid, the last dashed, the others dotted")
-        ->required()
-        ->type_name("");
-    add_draw_command_options(*draw, options);
-
-    PlayRequest play_request;
-    CLI::App* play = app.add_subcommand("play", "play a scene of several objects and actors (.scn)");
-    play->add_option("SCENE", play_request.scene, "the scene file (.scn)")->required()->type_name("");
-    add_play_command_options(*play, options, slopes, play_request.tree);
-
-    CLI::App* figures = app.add_subcommand("figures", "redraw the thesis' figures and examples as PNG");
-    add_figures_command_options(*figures, options, slopes);
-
-    for (CLI::App* command : app.get_subcommands({}))
+    add_session_options(app, line.options, line.slopes);
+    for (const Subcommand& row : subcommands) {
+        CLI::App* command = app.add_subcommand(row.name, row.summary);
+        row.set_up(*command, line);
         command->group("Commands");
+    }
+}
+
+// nullopt when the line parses; else the exit status of --help, --version or the usage error.
+std::optional<int> parse_or_refuse(CLI::App& app, int argc, const char* const* argv, std::ostream& out,
+                                   std::ostream& err)
+{
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -310,50 +389,57 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
         const std::span<const char* const> arguments(argv + 1, static_cast<std::size_t>(argc > 0 ? argc - 1 : 0));
         return usage_error(usage_error_text(app, *command, arguments, error), command, err);
     }
+    return std::nullopt;
+}
+
+// What CLI11 cannot check: an option before the command, the standard streams, the pictures'
+// targets. nullopt when all is well; else the exit status, the reason written to `err`.
+std::optional<int> refuse_clashes(const CLI::App& app, const CLI::App& chosen, const ParsedLine& line,
+                                  std::ostream& err)
+{
     for (const CLI::App* command : app.get_subcommands())
         if (const auto misplaced = session_option_before_command(app, *command))
             return usage_error(*misplaced, command, err);
-    std::vector<std::filesystem::path> inputs = key_files;
-    inputs.insert(inputs.end(), fit_files.begin(), fit_files.end());
-    inputs.insert(inputs.end(), draw_files.begin(), draw_files.end());
-    inputs.push_back(path_file);
-    inputs.push_back(play_request.scene);
-    const CLI::App* chosen = app.get_subcommands().empty() ? &app : app.get_subcommands().front();
-    if (const auto clash = standard_stream_clash(options, inputs, chosen == &app))
-        return usage_error(*clash, chosen, err);
+    const std::vector<std::filesystem::path> inputs = line.inputs();
+    if (const auto clash = standard_stream_clash(line.options, inputs, &chosen == &app))
+        return usage_error(*clash, &chosen, err);
     bool usage = false;
-    if (const Expected<void> targets = check_picture_targets(options, inputs, usage); !targets) {
+    if (const Expected<void> targets = check_picture_targets(line.options, inputs, usage); !targets) {
         if (usage)
-            return usage_error(targets.error().message, chosen, err);
+            return usage_error(targets.error().message, &chosen, err);
         return to_int(report_bad_input(targets.error(), err));
     }
-    if (slopes.size() == 2)
-        options.path.slopes = {slopes[0], slopes[1]};
-    const bool view_given = given_count(app, "--view") > 0;
-    options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
-                     given_count(app, "--delay") > 0, slopes.size() == 2};
+    return std::nullopt;
+}
 
-    if (path->parsed())
-        return to_int(run_path_command(path_file, options, out, err));
-    if (inbetween->parsed()) {
-        inbetween_settings.key1 = key_files[0];
-        inbetween_settings.key2 = key_files[1];
-        return to_int(run_inbetween_command(inbetween_settings, options, out, err));
-    }
-    if (fit->parsed())
-        return to_int(run_fit_command({fit_files[0], fit_files[1], fit_files[2], fit_files[3]}, options, out, err));
-    if (draw->parsed()) {
-        if (!pictures_asked(options))
-            return usage_error("apcs draw writes a picture: give --png, --png-raw or --svg", draw, err);
-        return to_int(run_draw_command(draw_files, options, out, err));
-    }
-    if (play->parsed()) {
-        play_request.spacing_given = given_count(app, "--spacing") > 0;
-        return to_int(run_play_command(play_request, options, player, out, err));
-    }
-    if (figures->parsed())
-        return to_int(run_figures_command(options, out, err));
-    return to_int(run_session_command(options, terminal, out, err));
+// The options that are known only once the whole line is read: the slopes, and which were given.
+void complete_options(const CLI::App& app, ParsedLine& line)
+{
+    if (line.slopes.size() == 2)
+        line.options.path.slopes = {line.slopes[0], line.slopes[1]};
+    const bool view_given = given_count(app, "--view") > 0;
+    line.options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
+                          given_count(app, "--delay") > 0, line.slopes.size() == 2};
+}
+
+int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                  const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
+{
+    CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
+                 "Without a command, the interactive session of the thesis (manual.txt, section 4).",
+                 "apcs"};
+    ParsedLine line;
+    set_up_command_line(app, line);
+    if (const std::optional<int> refused = parse_or_refuse(app, argc, argv, out, err))
+        return *refused;
+    const CLI::App* chosen = app.get_subcommands().empty() ? &app : app.get_subcommands().front();
+    if (const std::optional<int> refused = refuse_clashes(app, *chosen, line, err))
+        return *refused;
+    complete_options(app, line);
+    for (const Subcommand& row : subcommands)
+        if (chosen->get_name() == row.name)
+            return row.run(line, {app, *chosen, terminal, player, out, err});
+    return to_int(run_session_command(line.options, terminal, out, err));
 }
 
 } // namespace

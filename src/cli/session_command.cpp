@@ -7,6 +7,7 @@
 #include <cctype>
 #include <cstdlib>
 #include <langinfo.h>
+#include <optional>
 #include <ostream>
 #include <string_view>
 #include <unistd.h>
@@ -157,41 +158,49 @@ Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)
     return terminal_glyphs(asked, nl_langinfo(CODESET), term_of_environment());
 }
 
-ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
-                               std::ostream& err)
+namespace {
+
+// The steps of run_session_command. A step that refuses writes its reason to `err` and returns the
+// exit status; nullopt lets the session go on.
+
+std::optional<ExitStatus> refuse_work_folder(const std::filesystem::path& folder, std::ostream& err)
 {
-    const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
     std::error_code error;
-    if (!std::filesystem::is_directory(folder, error)) {
-        err << folder.string() << ": is not a folder; expected the folder to work in (--workdir)\n";
-        return ExitStatus::bad_input;
-    }
-    const Expected<std::uint64_t> limit = memory_limit(options);
-    if (!limit) {
-        err << limit.error().to_string() << '\n';
+    if (std::filesystem::is_directory(folder, error))
+        return std::nullopt;
+    err << folder.string() << ": is not a folder; expected the folder to work in (--workdir)\n";
+    return ExitStatus::bad_input;
+}
+
+// --keys FILE: its script into `script`; nothing without --keys.
+std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScript& script, std::ostream& err)
+{
+    if (!options.keys)
+        return std::nullopt;
+    // The terminal session reads its keys from standard input: a script cannot come from there too.
+    if (*options.keys == "-" && ::isatty(STDIN_FILENO)) {
+        err << "apcs: --keys -: standard input is a terminal; pipe the script in, or give --keys FILE\n";
         return ExitStatus::bad_usage;
     }
-    KeyScript script;
-    if (options.keys) {
-        // The terminal session reads its keys from standard input: a script cannot come from there too.
-        if (*options.keys == "-" && ::isatty(STDIN_FILENO)) {
-            err << "apcs: --keys -: standard input is a terminal; pipe the script in, or give --keys FILE\n";
-            return ExitStatus::bad_usage;
-        }
-        const Expected<std::string> text = read_script_text(*options.keys, max_key_script_bytes);
-        if (!text)
-            return report_bad_input(text.error(), err);
-        Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
-        if (!parsed)
-            return report_bad_input(parsed.error(), err);
-        script = std::move(*parsed);
-    }
+    const Expected<std::string> text = read_script_text(*options.keys, max_key_script_bytes);
+    if (!text)
+        return report_bad_input(text.error(), err);
+    Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
+    if (!parsed)
+        return report_bad_input(parsed.error(), err);
+    script = std::move(*parsed);
+    return std::nullopt;
+}
+
+// A replay needs a script; a paced one, a terminal; a session without a terminal, a script.
+std::optional<ExitStatus> refuse_replay_without_its_needs(const CommonOptions& options, bool headless,
+                                                          std::ostream& err)
+{
     const bool paced = options.pace.kind != ReplayPace::Kind::at_once;
     if (paced && !options.keys) {
         err << "apcs: --pace paces a --keys replay; give --keys FILE\n";
         return ExitStatus::bad_usage;
     }
-    const bool headless = !::isatty(STDIN_FILENO) || !terminal;
     if (headless && !options.keys) {
         err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
         return ExitStatus::terminal_problem;
@@ -200,14 +209,90 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         err << "apcs: --pace paces a replay on a terminal; without one the script plays at once (leave --pace out)\n";
         return ExitStatus::bad_usage;
     }
-    GlyphSet glyphs = options.glyphs == GlyphSet::automatic ? GlyphSet::ascii : options.glyphs;
-    if (!headless) {
-        const Expected<GlyphSet> shown = terminal_glyphs_here(options.glyphs);
-        if (!shown) {
-            err << shown.error().to_string() << '\n';
-            return ExitStatus::bad_usage;
-        }
-        glyphs = *shown;
+    return std::nullopt;
+}
+
+// The glyphs the screens are drawn in: ascii for a replay without a terminal unless --glyphs says
+// otherwise; on a terminal, what it can show.
+Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
+{
+    if (headless)
+        return asked == GlyphSet::automatic ? GlyphSet::ascii : asked;
+    return terminal_glyphs_here(asked);
+}
+
+// The script replayed at once, each step's screen on `out`. Nobody watched the screen: a file
+// that could not be written is the run's failure.
+ExitStatus replay_headless(Session& session, const KeyScript& script, GlyphSet glyphs, std::vector<KeyEvent>& recorded,
+                           std::ostream& out, std::ostream& err)
+{
+    recorded = run_headless_session(session, script, glyphs, out);
+    if (!session.finished())
+        err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+    if (session.write_problem()) {
+        err << "apcs: " << session.write_problem()->to_string() << '\n';
+        return ExitStatus::bad_input;
+    }
+    return ExitStatus::success;
+}
+
+// The session on the terminal; the files it wrote listed on `out` at its end.
+ExitStatus run_on_terminal(Session& session, const KeyScript& script, const CommonOptions& options, GlyphSet glyphs,
+                           const TerminalSessionRunner& terminal, std::vector<KeyEvent>& recorded, std::ostream& out,
+                           std::ostream& err)
+{
+    Diagnostic problem;
+    const ExitStatus status = terminal(session, script, options.pace, glyphs, recorded, problem);
+    if (status == ExitStatus::terminal_problem)
+        err << problem.to_string() << '\n';
+    else if (status == ExitStatus::stopped)
+        err << "apcs: stopped; every file written so far is whole\n";
+    else
+        for (const std::string& name : session.written_files())
+            out << name << '\n';
+    return status;
+}
+
+// --record FILE: the keys handled, as a script; never over a key file.
+std::optional<ExitStatus> record_keys(const CommonOptions& options, const FolderFiles& files,
+                                      const std::vector<KeyEvent>& recorded, std::ostream& err)
+{
+    if (!options.record)
+        return std::nullopt;
+    std::error_code ignored;
+    if (files.is_key_file(std::filesystem::absolute(*options.record, ignored).string()))
+        return report_bad_input({options.record->string(), 0, "is a key file; key files are never written (the "
+                                                              "keystrokes were not recorded)"},
+                                err);
+    const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
+    if (!written)
+        return report_bad_input(written.error(), err);
+    return std::nullopt;
+}
+
+} // namespace
+
+ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
+                               std::ostream& err)
+{
+    const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
+    if (const std::optional<ExitStatus> refused = refuse_work_folder(folder, err))
+        return *refused;
+    const Expected<std::uint64_t> limit = memory_limit(options);
+    if (!limit) {
+        err << limit.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
+    KeyScript script;
+    if (const std::optional<ExitStatus> refused = read_key_script(options, script, err))
+        return *refused;
+    const bool headless = !::isatty(STDIN_FILENO) || !terminal;
+    if (const std::optional<ExitStatus> refused = refuse_replay_without_its_needs(options, headless, err))
+        return *refused;
+    const Expected<GlyphSet> glyphs = session_glyphs(options.glyphs, headless);
+    if (!glyphs) {
+        err << glyphs.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
     }
     FolderFiles files(folder);
     files.log("session started");
@@ -215,39 +300,12 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     settings.memory_limit_bytes = *limit;
     Session session(std::move(settings), files);
     std::vector<KeyEvent> recorded;
-    ExitStatus status = ExitStatus::success;
-    if (headless) {
-        recorded = run_headless_session(session, script, glyphs, out);
-        if (!session.finished())
-            err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
-        // Nobody watched the screen: a file that could not be written is the run's failure.
-        if (session.write_problem()) {
-            err << "apcs: " << session.write_problem()->to_string() << '\n';
-            status = ExitStatus::bad_input;
-        }
-    } else {
-        Diagnostic problem;
-        status = terminal(session, script, options.pace, glyphs, recorded, problem);
-        if (status == ExitStatus::terminal_problem) {
-            err << problem.to_string() << '\n';
-            return ExitStatus::terminal_problem;
-        }
-        if (status == ExitStatus::stopped)
-            err << "apcs: stopped; every file written so far is whole\n";
-        else
-            for (const std::string& name : session.written_files())
-                out << name << '\n';
-    }
-    if (options.record) {
-        std::error_code ignored;
-        if (files.is_key_file(std::filesystem::absolute(*options.record, ignored).string()))
-            return report_bad_input({options.record->string(), 0, "is a key file; key files are never written (the "
-                                                                  "keystrokes were not recorded)"},
-                                    err);
-        const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
-        if (!written)
-            return report_bad_input(written.error(), err);
-    }
+    const ExitStatus status = headless ? replay_headless(session, script, *glyphs, recorded, out, err)
+                                       : run_on_terminal(session, script, options, *glyphs, terminal, recorded, out, err);
+    if (status == ExitStatus::terminal_problem)
+        return status;
+    if (const std::optional<ExitStatus> refused = record_keys(options, files, recorded, err))
+        return *refused;
     return status;
 }
 
