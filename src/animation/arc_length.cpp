@@ -1,34 +1,17 @@
 #include "apcs/animation/arc_length.h"
 
+#include "apcs/base/parallel_work.h"
+
 #include <algorithm>
+#include <cmath>
 
 namespace apcs {
 
-ArcLengthTable::ArcLengthTable(std::span<const HermiteSegment> segments)
-    : m_segments(segments.begin(), segments.end())
-{
-    m_cumulative.reserve(m_segments.size() + 1);
-    m_intervals.reserve(m_segments.size());
-    m_cumulative.push_back(0.0);
-    for (std::size_t k = 0; k < m_segments.size(); ++k) {
-        int intervals = first_simpson_intervals;
-        double sum = simpson(k, 1.0, intervals);
-        while (intervals < most_simpson_intervals) {
-            const double finer = simpson(k, 1.0, intervals * 2);
-            intervals *= 2;
-            const bool converged = std::abs(finer - sum) <= 1e-10 * finer;
-            sum = finer;
-            if (converged)
-                break;
-        }
-        m_intervals.push_back(intervals);
-        m_cumulative.push_back(m_cumulative.back() + sum);
-    }
-}
+namespace {
 
-double ArcLengthTable::simpson(std::size_t segment, double u_end, int intervals) const
+// Composite Simpson over [0, u_end] with `intervals` (even) intervals.
+double simpson(const HermiteSegment& curve, double u_end, int intervals)
 {
-    const HermiteSegment& curve = m_segments[segment];
     const double step = u_end / intervals;
     double sum = length(curve.derivative_at(0.0)) + length(curve.derivative_at(u_end));
     for (int i = 1; i < intervals; ++i)
@@ -36,33 +19,133 @@ double ArcLengthTable::simpson(std::size_t segment, double u_end, int intervals)
     return sum * step / 3.0;
 }
 
-double ArcLengthTable::segment_length(std::size_t segment, double u_end) const
+// The whole segment's Simpson sums as the interval count doubles: each count's speeds are the last
+// count's and one between each two, so a doubling evaluates only the new half. The parameters
+// i / n are exact in binary, so each speed, and each sum added in Simpson's order, is the one
+// simpson() gives, to the bit. Holds the speeds of the finest count: one per thread.
+class SegmentArcLength {
+public:
+    SegmentArcLength()
+    {
+        m_speeds.reserve(CurveArcLengths::most_simpson_intervals + 1);
+        m_finer.reserve(CurveArcLengths::most_simpson_intervals + 1);
+    }
+
+    // The length, and the interval count whose sum agreed with the one before it.
+    std::pair<double, int> operator()(const HermiteSegment& curve)
+    {
+        int intervals = CurveArcLengths::first_simpson_intervals;
+        m_speeds.clear();
+        for (int i = 0; i <= intervals; ++i)
+            m_speeds.push_back(speed(curve, intervals, i));
+        double sum = sum_of_speeds(intervals);
+        while (intervals < CurveArcLengths::most_simpson_intervals) {
+            double_the_intervals(curve, intervals);
+            intervals *= 2;
+            const double finer = sum_of_speeds(intervals);
+            const bool converged = std::abs(finer - sum) <= 1e-10 * finer;
+            sum = finer;
+            if (converged)
+                break;
+        }
+        return {sum, intervals};
+    }
+
+private:
+    static double speed(const HermiteSegment& curve, int intervals, int i)
+    {
+        if (i == intervals)
+            return length(curve.derivative_at(1.0));
+        return length(curve.derivative_at((1.0 / intervals) * i));
+    }
+
+    void double_the_intervals(const HermiteSegment& curve, int intervals)
+    {
+        m_finer.clear();
+        for (int i = 0; i < intervals; ++i) {
+            m_finer.push_back(m_speeds[static_cast<std::size_t>(i)]);
+            m_finer.push_back(speed(curve, 2 * intervals, 2 * i + 1));
+        }
+        m_finer.push_back(m_speeds.back());
+        std::swap(m_speeds, m_finer);
+    }
+
+    double sum_of_speeds(int intervals) const
+    {
+        const double step = 1.0 / intervals;
+        double sum = m_speeds.front() + m_speeds.back();
+        for (std::size_t i = 1; i + 1 < m_speeds.size(); ++i)
+            sum += (i % 2 == 1 ? 4.0 : 2.0) * m_speeds[i];
+        return sum * step / 3.0;
+    }
+
+    std::vector<double> m_speeds;
+    std::vector<double> m_finer;
+};
+
+} // namespace
+
+void CurveArcLengths::measure(std::span<const HermiteSegment> segments)
 {
-    return simpson(segment, u_end, m_intervals[segment]);
+    m_intervals.assign(segments.size(), 0);
+    m_segment_length.assign(segments.size(), 0.0);
+    m_cumulative.assign(segments.size() + 1, 0.0);
+    measure_range(segments, 0, segments.size());
+    add_up_from(0);
 }
 
-double ArcLengthTable::length_at(CurveParameter parameter) const
+void CurveArcLengths::remeasure(std::span<const HermiteSegment> segments, const SegmentSplice& change)
 {
-    if (m_segments.empty())
+    const bool fits = change.old_end() <= m_segment_length.size() &&
+                      m_segment_length.size() - change.removed + change.inserted == segments.size();
+    if (!fits)
+        return measure(segments);
+    splice_room(m_intervals, change);
+    splice_room(m_segment_length, change);
+    m_cumulative.resize(segments.size() + 1);
+    measure_range(segments, change.first, change.new_end());
+    add_up_from(change.first);
+}
+
+// A global change of 10^6 segments measures them on both cores; each segment alike either way.
+void CurveArcLengths::measure_range(std::span<const HermiteSegment> segments, std::size_t first, std::size_t end)
+{
+    split_across_cores(end - first, 1024, [&](std::size_t from, std::size_t to) {
+        SegmentArcLength measure;
+        for (std::size_t k = first + from; k < first + to; ++k)
+            std::tie(m_segment_length[k], m_intervals[k]) = measure(segments[k]);
+    });
+}
+
+void CurveArcLengths::add_up_from(std::size_t first)
+{
+    m_cumulative[0] = 0.0;
+    for (std::size_t k = first; k < m_segment_length.size(); ++k)
+        m_cumulative[k + 1] = m_cumulative[k] + m_segment_length[k];
+}
+
+double CurveArcLengths::length_at(std::span<const HermiteSegment> segments, CurveParameter parameter) const
+{
+    if (segments.empty())
         return 0.0;
-    const std::size_t segment = std::min(parameter.segment, m_segments.size() - 1);
-    return m_cumulative[segment] + segment_length(segment, std::clamp(parameter.u, 0.0, 1.0));
+    const std::size_t segment = std::min(parameter.segment, segments.size() - 1);
+    return m_cumulative[segment] + simpson(segments[segment], std::clamp(parameter.u, 0.0, 1.0), m_intervals[segment]);
 }
 
-CurveParameter ArcLengthTable::parameter_at(double arc_length) const
+CurveParameter CurveArcLengths::parameter_at(std::span<const HermiteSegment> segments, double arc_length) const
 {
-    if (m_segments.empty())
+    if (segments.empty())
         return {};
     const double total = total_length();
     if (arc_length <= 0.0)
         return {0, 0.0};
     if (arc_length >= total)
-        return {m_segments.size() - 1, 1.0};
+        return {segments.size() - 1, 1.0};
     const double target = arc_length;
     // The first segment whose end lies at or beyond the target.
     const auto end = std::lower_bound(m_cumulative.begin() + 1, m_cumulative.end(), target);
-    const std::size_t segment = std::min<std::size_t>(static_cast<std::size_t>(end - m_cumulative.begin()) - 1,
-                                                      m_segments.size() - 1);
+    const std::size_t segment =
+        std::min<std::size_t>(static_cast<std::size_t>(end - m_cumulative.begin()) - 1, segments.size() - 1);
     const double within = target - m_cumulative[segment];
     // Far below what a test or a picture can see, so that even steps come out even to 1e-9.
     const double tolerance = 1e-12 * total;
@@ -71,7 +154,7 @@ CurveParameter ArcLengthTable::parameter_at(double arc_length) const
     // 200 halvings reach the resolution of a double long before; the bound only guarantees an end.
     for (int iteration = 0; iteration < 200 && high - low > 1e-15; ++iteration) {
         const double middle = (low + high) / 2.0;
-        const double reached = segment_length(segment, middle);
+        const double reached = simpson(segments[segment], middle, m_intervals[segment]);
         if (std::abs(reached - within) <= tolerance)
             return {segment, middle};
         (reached < within ? low : high) = middle;
@@ -79,12 +162,20 @@ CurveParameter ArcLengthTable::parameter_at(double arc_length) const
     return {segment, (low + high) / 2.0};
 }
 
-Vec3 ArcLengthTable::point_at(CurveParameter parameter) const
+ArcLengthTable::ArcLengthTable(std::span<const HermiteSegment> segments)
+    : m_segments(segments.begin(), segments.end())
 {
-    if (m_segments.empty())
+    m_lengths.measure(m_segments);
+}
+
+Vec3 ArcLengthTable::point_at(CurveParameter parameter) const { return curve_point_at(m_segments, parameter); }
+
+Vec3 curve_point_at(std::span<const HermiteSegment> segments, CurveParameter parameter)
+{
+    if (segments.empty())
         return {};
-    const std::size_t segment = std::min(parameter.segment, m_segments.size() - 1);
-    return m_segments[segment].point_at(std::clamp(parameter.u, 0.0, 1.0));
+    const std::size_t segment = std::min(parameter.segment, segments.size() - 1);
+    return segments[segment].point_at(std::clamp(parameter.u, 0.0, 1.0));
 }
 
 } // namespace apcs

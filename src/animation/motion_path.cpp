@@ -92,6 +92,10 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 {
     kb_segments(points, settings.slopes, path.curve.segments);
     sample_curve(path.curve, settings.samples_per_segment);
+    if (settings.spacing == Spacing::exact)
+        path.arc_lengths.measure(path.curve.segments);
+    else
+        path.arc_lengths = {};
     place_inbetweens(points, settings, path);
 }
 
@@ -145,13 +149,15 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
     const bool exact = settings.spacing == Spacing::exact;
-    const ArcLengthTable arc_table = exact ? ArcLengthTable(path.curve.segments) : ArcLengthTable({});
+    const std::span<const HermiteSegment> segments = path.curve.segments;
+    CurveArcLengths& arc_lengths = path.arc_lengths;
+    if (exact && arc_lengths.segment_count() != segments.size())
+        arc_lengths.measure(segments);
     // Distance from the curve's start to control point k, in the measure the spacing uses.
     const auto boundary = [&](std::size_t control_point) {
-        return exact ? arc_table.length_to_segment_start(control_point)
-                     : path.curve.length_to_point[control_point];
+        return exact ? arc_lengths.length_to_segment_start(control_point) : path.curve.length_to_point[control_point];
     };
-    const double total = exact ? arc_table.total_length() : path.curve.total_length();
+    const double total = exact ? arc_lengths.total_length() : path.curve.total_length();
 
     path.inbetweens.reserve(static_cast<std::size_t>(inbetween_count));
     if (!(total > 0.0)) {
@@ -178,7 +184,7 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
         for (const double target : span_targets(start, span_lengths[s], shares[s], spans[s].acceleration)) {
             Inbetween shown;
             if (exact) {
-                shown.position = arc_table.point_at(arc_table.parameter_at(target));
+                shown.position = curve_point_at(segments, arc_lengths.parameter_at(segments, target));
                 shown.arc_fraction = target / total;
                 const double chord_target = shown.arc_fraction * path.curve.total_length();
                 shown.sample_index = path.curve.nearest_sample(chord_target);
@@ -196,43 +202,103 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
             path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
 }
 
-SegmentRange reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                             std::size_t first_changed, std::size_t last_changed)
+namespace {
+
+// Segment s runs from control point s to s + 1 and its tangents read points s − 1 … s + 2: the
+// segments whose window meets the changed points are made again, in the numbering before the
+// change and after it.
+SegmentSplice segments_touched(const PathChange& change, std::size_t old_segments, std::size_t new_segments)
 {
-    const bool same_shape_of_arrays = points.size() >= 2 && path.curve.segments.size() == points.size() - 1 &&
-                                      path.curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
-                                      path.curve.segment_length.size() == path.curve.segments.size();
-    if (!same_shape_of_arrays || first_changed > last_changed || first_changed >= points.size()) {
-        evaluate_path(points, settings, path);
-        return {0, path.curve.segments.size()};
-    }
-    std::vector<AccelerationSpan> spans = same_accelerations(points, path.span_timings, first_changed, last_changed)
-                                              ? spans_of(path.span_timings)
-                                              : acceleration_spans(points);
-    // Control point k's tangents shape segments k − 1 and k.
-    const std::size_t first = first_changed == 0 ? 0 : first_changed - 1;
-    const std::size_t end = std::min(last_changed + 1, path.curve.segments.size());
-    // Each half makes and measures its changed segments; a global change of 10^6 control points
-    // runs on two cores.
+    const std::size_t first = change.first >= 2 ? change.first - 2 : 0;
+    return {first, std::min(change.first + change.removed + 1, old_segments) - first,
+            std::min(change.first + change.inserted + 1, new_segments) - first};
+}
+
+bool change_fits(std::span<const ControlPoint> points, const PathSettings& settings, const EvaluatedPath& path,
+                 const PathChange& change)
+{
+    const SampledCurve& curve = path.curve;
+    const std::size_t old_points = curve.segments.size() + 1;
+    const bool exact = settings.spacing == Spacing::exact;
+    return points.size() >= 2 && !curve.segments.empty() &&
+           curve.samples_per_segment == std::max(settings.samples_per_segment, 1) &&
+           curve.segment_length.size() == curve.segments.size() && change.first + change.removed <= old_points &&
+           old_points - change.removed + change.inserted == points.size() &&
+           (!exact || path.arc_lengths.segment_count() == curve.segments.size());
+}
+
+// Makes and measures the touched segments after the curve's arrays were spliced; a segment that
+// came out as it was is not measured again. Returns the first whose chord length changed (end if
+// none). Each half of a global change of 10^6 control points runs on a core of its own.
+std::size_t remake_segments(std::span<const ControlPoint> points, const PathSettings& settings, SampledCurve& curve,
+                            std::size_t first, std::size_t end)
+{
     std::array<std::size_t, 2> changed_first{end, end};
     split_across_cores(end - first, 4096, [&](std::size_t from, std::size_t to) {
         // Kept here and stored once: the halves' entries share a cache line.
         std::size_t half_first = end;
-        SegmentMeasure measure(path.curve.basis);
+        SegmentMeasure measure(curve.basis);
         for (std::size_t s = first + from; s < first + to; ++s) {
             const HermiteSegment segment = kb_segment(points, settings.slopes, s);
-            if (segment == path.curve.segments[s])
+            if (segment == curve.segments[s])
                 continue;
-            path.curve.segments[s] = segment;
-            path.curve.segment_length[s] = measure(segment);
+            curve.segments[s] = segment;
+            curve.segment_length[s] = measure(segment);
             half_first = std::min(half_first, s);
         }
         changed_first[from == 0 ? 0 : 1] = half_first;
     });
-    if (const std::size_t changed = std::min(changed_first[0], changed_first[1]); changed < end)
-        add_up_lengths(path.curve, changed);
+    return std::min(changed_first[0], changed_first[1]);
+}
+
+SegmentSplice evaluated_afresh(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
+{
+    const std::size_t old_segments = path.curve.segments.size();
+    evaluate_path(points, settings, path);
+    return {0, old_segments, path.curve.segments.size()};
+}
+
+} // namespace
+
+SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                              const PathChange& change)
+{
+    const std::size_t old_segments = path.curve.segments.size();
+    if (!change_fits(points, settings, path, change))
+        return evaluated_afresh(points, settings, path);
+    const bool same_count = change.removed == change.inserted;
+    std::vector<AccelerationSpan> spans =
+        same_count && change.inserted > 0 &&
+                same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1)
+            ? spans_of(path.span_timings)
+            : acceleration_spans(points);
+    if (change.what == PathChange::What::accelerations) {
+        place_inbetweens_on(std::move(spans), points, settings, path);
+        return {change.first, 0, 0};
+    }
+    const SegmentSplice touched = segments_touched(change, old_segments, points.size() - 1);
+    SampledCurve& curve = path.curve;
+    splice_room(curve.segments, touched);
+    splice_room(curve.segment_length, touched);
+    curve.length_to_point.resize(curve.segments.size() + 1);
+    const std::size_t changed = remake_segments(points, settings, curve, touched.first, touched.new_end());
+    if (!same_count)
+        add_up_lengths(curve, touched.first);
+    else if (changed < touched.new_end())
+        add_up_lengths(curve, changed);
+    if (settings.spacing == Spacing::exact)
+        path.arc_lengths.remeasure(curve.segments, touched);
     place_inbetweens_on(std::move(spans), points, settings, path);
-    return {first, end};
+    return touched;
+}
+
+SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                              std::size_t first_changed, std::size_t last_changed)
+{
+    if (first_changed > last_changed || first_changed >= points.size())
+        return evaluated_afresh(points, settings, path);
+    const std::size_t count = std::min(last_changed, points.size() - 1) - first_changed + 1;
+    return reevaluate_path(points, settings, path, PathChange{first_changed, count, count, PathChange::What::staff});
 }
 
 } // namespace apcs

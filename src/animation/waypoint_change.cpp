@@ -46,22 +46,35 @@ std::size_t wrapped_point(std::size_t index, int by, std::size_t count)
     return static_cast<std::size_t>(((static_cast<long long>(index) + by) % n + n) % n);
 }
 
-void apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change)
+namespace {
+
+// What inserting, removing or moving the point at `index` does to the points.
+PathChange inserted_at(std::size_t index) { return {index, 0, 1, PathChange::What::positions}; }
+PathChange removed_at(std::size_t index) { return {index, 1, 0, PathChange::What::positions}; }
+PathChange moved_at(std::size_t index) { return {index, 1, 1, PathChange::What::positions}; }
+
+} // namespace
+
+PathChange apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change)
 {
     switch (change.kind) {
-    case Kind::insert: return insert_point(points, origins, change.index, change.point, new_point);
-    case Kind::remove: return remove_point(points, origins, change.index);
-    case Kind::move: return move_point(points, change.index, change.offset);
+    case Kind::insert: insert_point(points, origins, change.index, change.point, new_point); return inserted_at(change.index);
+    case Kind::remove: remove_point(points, origins, change.index); return removed_at(change.index);
+    case Kind::move: move_point(points, change.index, change.offset); return moved_at(change.index);
     }
+    return moved_at(change.index);
 }
 
-void revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change)
+PathChange revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change)
 {
     switch (change.kind) {
-    case Kind::insert: return remove_point(points, origins, change.index);
-    case Kind::remove: return insert_point(points, origins, change.index, change.point, change.origin);
-    case Kind::move: return move_point(points, change.index, -1.0 * change.offset);
+    case Kind::insert: remove_point(points, origins, change.index); return removed_at(change.index);
+    case Kind::remove:
+        insert_point(points, origins, change.index, change.point, change.origin);
+        return inserted_at(change.index);
+    case Kind::move: move_point(points, change.index, -1.0 * change.offset); return moved_at(change.index);
     }
+    return moved_at(change.index);
 }
 
 } // namespace apcs

@@ -4,48 +4,79 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
-#include <cassert>
 
 namespace apcs {
 
-void CurveRaster::forget(std::size_t first_segment, std::size_t end_segment)
+// A change that removes no segment lies in the block it starts in (the last, at the curve's end).
+void CurveRaster::splice(const SegmentSplice& change)
 {
-    if (first_segment >= end_segment)
+    if (m_blocks.empty())
         return;
-    const std::size_t last_block = (end_segment - 1) / segments_per_block;
-    for (std::size_t b = first_segment / segments_per_block; b <= last_block && b < m_blocks.size(); ++b)
-        m_blocks[b].current = false;
+    std::size_t block_first = 0;
+    bool inserted_placed = false;
+    for (Block& block : m_blocks) {
+        const std::size_t block_end = block_first + block.segment_count;
+        const std::size_t from = std::max(block_first, change.first);
+        const std::size_t to = std::min(block_end, change.old_end());
+        const bool holds_start = change.first >= block_first && (change.first < block_end || &block == &m_blocks.back());
+        block_first = block_end;
+        if (from >= to && !(change.removed == 0 && holds_start))
+            continue;
+        block.current = false;
+        block.segment_count -= from < to ? to - from : 0;
+        if (!inserted_placed)
+            block.segment_count += change.inserted;
+        inserted_placed = true;
+    }
+    std::erase_if(m_blocks, [](const Block& block) { return block.segment_count == 0; });
+    split_large_blocks();
+    m_segment_count = m_segment_count - change.removed + change.inserted;
 }
 
-void CurveRaster::forget_all()
+void CurveRaster::split_large_blocks()
 {
-    for (Block& block : m_blocks)
-        block.current = false;
+    for (std::size_t b = 0; b < m_blocks.size(); ++b) {
+        if (m_blocks[b].segment_count <= 2 * segments_per_block)
+            continue;
+        Block second;
+        second.segment_count = m_blocks[b].segment_count - segments_per_block;
+        m_blocks[b].segment_count = segments_per_block;
+        m_blocks[b].current = false;
+        m_blocks.insert(m_blocks.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(second));
+    }
+}
+
+void CurveRaster::start_blocks(std::size_t segment_count)
+{
+    m_blocks.resize((segment_count + segments_per_block - 1) / segments_per_block);
+    for (std::size_t b = 0; b < m_blocks.size(); ++b) {
+        m_blocks[b].segment_count = std::min(segments_per_block, segment_count - b * segments_per_block);
+        m_blocks[b].current = false;
+    }
 }
 
 void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip)
 {
     const std::size_t segment_count = curve.segments.size();
-    const std::size_t block_count = (segment_count + segments_per_block - 1) / segments_per_block;
     if (m_view != view || m_clip != clip || m_segment_count != segment_count ||
-        m_samples_per_segment != curve.samples_per_segment || m_blocks.size() != block_count) {
-        m_blocks.resize(block_count);
-        forget_all();
+        m_samples_per_segment != curve.samples_per_segment || (m_blocks.empty() && segment_count > 0)) {
+        start_blocks(segment_count);
         m_view = view;
         m_clip = clip;
         m_segment_count = segment_count;
         m_samples_per_segment = curve.samples_per_segment;
     }
-    std::vector<std::size_t> stale;
-    for (std::size_t b = 0; b < m_blocks.size(); ++b)
+    std::vector<std::pair<std::size_t, std::size_t>> stale; // block, its first segment
+    std::size_t first_segment = 0;
+    for (std::size_t b = 0; b < m_blocks.size(); first_segment += m_blocks[b].segment_count, ++b)
         if (!m_blocks[b].current)
-            stale.push_back(b);
+            stale.push_back({b, first_segment});
     if (stale.empty() && !m_blocks.empty())
         return;
     // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
     split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
         for (std::size_t i = first; i < end; ++i)
-            draw_block(m_blocks[stale[i]], curve, stale[i] * segments_per_block);
+            draw_block(m_blocks[stale[i].first], curve, stale[i].second);
     });
     compose();
 }
@@ -58,7 +89,7 @@ void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_
     Painter painter(block.raster, m_clip);
     // Solid lines: the phase only says whether a line's first pixel is the last one's end.
     int phase = first_segment > 0 ? 1 : 0;
-    for_each_curve_line(curve, *m_view, first_segment, std::min(first_segment + segments_per_block, m_segment_count),
+    for_each_curve_line(curve, *m_view, first_segment, first_segment + block.segment_count,
                         [&](const PixelLine& line) {
                             painter.styled_line(line.from, line.to, LineStyle::solid, phase);
                             block.first_row = std::min({block.first_row, line.from.y, line.to.y});
@@ -73,12 +104,6 @@ void CurveRaster::compose()
     m_composed.clear();
     for (const Block& block : m_blocks)
         m_composed.merge(block.raster, block.first_row, block.end_row);
-}
-
-void CurveRaster::draw(Bitmap& target) const
-{
-    assert(std::all_of(m_blocks.begin(), m_blocks.end(), [](const Block& block) { return block.current; }));
-    target.merge(m_composed);
 }
 
 } // namespace apcs

@@ -38,48 +38,36 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
     , m_origins(file_origins(m_setup.points.size()))
     , m_log(log)
-    , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
-    , m_view(fitted_view(m_setup, m_evaluated))
-    , m_tangent_scale(tangent_arrow_scale(m_setup.points, m_view))
+    , m_picture(m_setup.points, m_setup.settings)
 {
     assert(m_setup.points.size() >= 2);
-    mark_control_points();
-    m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
+    fit_view();
 }
 
 // Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
 // against a still picture; the waypoint editor fits it again when it is left.
 void PathEditor::fit_view()
 {
-    m_view = fitted_view(m_setup, m_evaluated);
-    m_tangent_scale = tangent_arrow_scale(m_setup.points, m_view);
-    mark_control_points();
+    m_picture.set_view(m_setup.points, fitted_view(m_setup, m_picture.evaluated()));
+    m_tangent_scale = tangent_arrow_scale(m_setup.points, m_picture.view());
 }
 
-// After the control points moved, were inserted or deleted: the whole path and its picture anew.
-void PathEditor::evaluate_whole_path()
+const PathPicture& PathEditor::picture() const
 {
-    evaluate_path(m_setup.points, m_setup.settings, m_evaluated);
-    m_curve_raster.forget_all();
-    mark_control_points();
+    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
+    return waypoints != nullptr ? waypoints->editor.picture() : m_picture;
 }
 
-// The control points or the view changed: their pixels, runs and marks anew.
-void PathEditor::mark_control_points()
+const ControlPoints& PathEditor::points() const
 {
-    m_point_runs = control_point_runs(m_setup.points, m_view);
-    m_marks_region.reset();
-    refresh_point_marks();
+    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
+    return waypoints != nullptr ? waypoints->editor.points() : m_setup.points;
 }
 
-// The marks change with the picked region only: made again when it changes, not at every key.
-void PathEditor::refresh_point_marks()
+const std::vector<std::size_t>& PathEditor::point_origins() const
 {
-    const std::optional<PickedRegion> region = picked_region();
-    if (m_marks_region && *m_marks_region == region)
-        return;
-    m_point_marks = control_point_marks(m_point_runs, region);
-    m_marks_region = region;
+    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
+    return waypoints != nullptr ? waypoints->editor.origins() : m_origins;
 }
 
 SessionPhase PathEditor::phase() const
@@ -119,8 +107,9 @@ void PathEditor::show_problem(const std::string& message)
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
     const Outcome outcome = take_command(command);
-    m_curve_raster.update(m_evaluated.curve, m_view, layout::inside_boundary);
-    refresh_point_marks();
+    // The waypoint editor boxes its chosen point in the picture it holds.
+    if (!std::holds_alternative<Waypoints>(m_mode))
+        m_picture.box_region(picked_region());
     return outcome;
 }
 
@@ -244,23 +233,19 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     change.points_before = apply_staff_to_region(m_setup.points, staff.region, staff.staff);
     if (staff.staff == change.staff && staff_runs(m_setup.points, staff.region) == change.points_before)
         return;
-    const RegionChange region_change =
-        runs_change_shape(change.points_before, staff.staff) ? RegionChange::shape : RegionChange::timing;
+    const PathChange::What what =
+        runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     m_history.push_back(std::move(change));
-    reevaluate_region(staff.region, region_change);
+    reevaluate_region(staff.region, what);
 }
 
 // A key changes the staff values of a region: only the segments their tangents shape are sampled
 // again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
 // interactive).
-void PathEditor::reevaluate_region(ControlRegion region, RegionChange change)
+void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what)
 {
-    if (change == RegionChange::timing) {
-        place_inbetweens(m_setup.points, m_setup.settings, m_evaluated);
-        return;
-    }
-    const SegmentRange remade = reevaluate_path(m_setup.points, m_setup.settings, m_evaluated, region.first, region.last);
-    m_curve_raster.forget(remade.first, remade.end);
+    const std::size_t count = region.last - region.first + 1;
+    m_picture.refresh(m_setup.points, PathChange{region.first, count, count, what});
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -349,11 +334,11 @@ PathEditor::Transition PathEditor::undo()
 // Back to the staff line the change was made on, with the staff as it was.
 PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
 {
-    const RegionChange region_change = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
-                                           ? RegionChange::shape
-                                           : RegionChange::timing;
+    const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
+                                      ? PathChange::What::staff
+                                      : PathChange::What::accelerations;
     restore_staff_runs(m_setup.points, change.region, change.points_before);
-    reevaluate_region(change.region, region_change);
+    reevaluate_region(change.region, what);
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
     return Transition{Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt}};
@@ -362,8 +347,7 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
 // A waypoint edit is undone at the choice of control, where the editor was opened.
 PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
-    revert_change(m_setup.points, m_origins, change);
-    evaluate_whole_path();
+    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_origins, change));
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;
@@ -377,8 +361,9 @@ PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 PathEditor::Waypoints PathEditor::open_waypoints()
 {
     m_log.log("waypoint editor");
-    return Waypoints{WaypointEditor(WaypointEditor::Setup{m_setup.points, m_origins, m_setup.settings, m_view,
-                                                          waypoint_step(shown_scene(m_setup, m_evaluated).bounds())})};
+    const double step = waypoint_step(shown_scene(m_setup, m_picture.evaluated()).bounds());
+    WaypointEditor::Setup setup{std::move(m_setup.points), std::move(m_origins), m_setup.settings, m_picture.view(), step};
+    return Waypoints{WaypointEditor(std::move(setup), std::move(m_picture))};
 }
 
 PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const Command& command)
@@ -388,12 +373,14 @@ PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const 
     if (outcome == WaypointEditor::Outcome::editing)
         return Transition{};
     const std::size_t changes = editor.changes().size();
-    if (outcome == WaypointEditor::Outcome::kept) {
+    if (outcome == WaypointEditor::Outcome::kept)
         m_history.insert(m_history.end(), editor.changes().begin(), editor.changes().end());
-        m_setup.points = editor.points();
-        m_origins = editor.origins();
-        m_evaluated = editor.evaluated();
-        m_curve_raster.forget_all();
+    // Esc has taken the editor's changes back: the path is handed back as it was.
+    WaypointEditor::Path path = std::move(editor).hand_back();
+    m_setup.points = std::move(path.points);
+    m_origins = std::move(path.origins);
+    m_picture = std::move(path.picture);
+    if (outcome == WaypointEditor::Outcome::kept) {
         m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
                    " control points";
     } else {

@@ -22,7 +22,7 @@ std::string PathEditor::message() const
             [](const ControlChoice&) { return std::string(text::choose_control); },
             [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
             [&](const Staff& staff) {
-                return m_show_tangents ? tangent_numbers(m_evaluated.curve.segments, m_tangent_point) : staff_message(staff);
+                return m_show_tangents ? tangent_numbers(m_picture.evaluated().curve.segments, m_tangent_point) : staff_message(staff);
             },
             [](const Waypoints& waypoints) { return waypoints.editor.message(); },
             [](const AskAgain&) { return std::string(text::ask_again); },
@@ -44,7 +44,7 @@ std::string PathEditor::staff_message(const Staff& staff) const
         message += "  control point " + std::to_string(region.first + 1) + of + " (no span, no ACCELERATION)";
     else
         message += "  control points " + std::to_string(region.first + 1) + " to " + std::to_string(region.last + 1) + of;
-    if (m_evaluated.frames_freeze)
+    if (m_picture.evaluated().frames_freeze)
         message += "  (" + std::string(text::frames_freeze) + ")";
     return message;
 }
@@ -63,21 +63,21 @@ std::size_t PathEditor::law_point() const
 }
 
 // The region boxed: the one adjusted, or its first point while the last is picked.
-std::optional<PickedRegion> PathEditor::picked_region() const
+std::optional<ControlRegion> PathEditor::picked_region() const
 {
     return std::visit(Overloaded{
-                          [](const ControlChoice&) -> std::optional<PickedRegion> { return std::nullopt; },
-                          [](const RegionPick& pick) -> std::optional<PickedRegion> {
+                          [](const ControlChoice&) -> std::optional<ControlRegion> { return std::nullopt; },
+                          [](const RegionPick& pick) -> std::optional<ControlRegion> {
                               if (!pick.first)
                                   return std::nullopt;
-                              return PickedRegion{*pick.first, *pick.first};
+                              return ControlRegion{*pick.first, *pick.first};
                           },
-                          [](const Staff& staff) -> std::optional<PickedRegion> {
-                              return PickedRegion{staff.region.first, staff.region.last};
+                          [](const Staff& staff) -> std::optional<ControlRegion> {
+                              return staff.region;
                           },
-                          [](const Waypoints&) -> std::optional<PickedRegion> { return std::nullopt; },
-                          [](const AskAgain& ask) -> std::optional<PickedRegion> {
-                              return PickedRegion{ask.region.first, ask.region.last};
+                          [](const Waypoints&) -> std::optional<ControlRegion> { return std::nullopt; },
+                          [](const AskAgain& ask) -> std::optional<ControlRegion> {
+                              return ask.region;
                           },
                       },
                       m_mode);
@@ -89,15 +89,13 @@ PathScreenContent PathEditor::screen_content() const
         const WaypointEditor& editor = waypoints->editor;
         PathScreenContent content = path_screen_content(editor.points(), editor.evaluated());
         content.record_strokes = false;
-        content.region = std::pair{editor.chosen(), editor.chosen()};
+        content.region = ControlRegion{editor.chosen(), editor.chosen()};
         content.arrow_at = editor.chosen();
         content.message = editor.message();
         return content;
     }
-    PathScreenContent content = path_screen_content(m_setup.points, m_evaluated);
-    content.curve_raster = &m_curve_raster;
+    PathScreenContent content = path_screen_content(m_setup.points, m_picture.evaluated());
     content.record_strokes = false;
-    content.control_point_marks = m_point_marks;
     content.region = picked_region();
     std::visit(Overloaded{
                    [](const ControlChoice&) {},
@@ -127,7 +125,7 @@ GraphicsScreen PathEditor::view() const
     if (m_show_law)
         content.law_span = span_of_point(*content.path, law_point());
     content.key_help = key_help(key_context());
-    return draw_path_screen(content, m_view);
+    return picture().draw(content);
 }
 
 } // namespace apcs

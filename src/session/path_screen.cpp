@@ -6,6 +6,7 @@
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/world_drawing.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace apcs {
@@ -41,21 +42,57 @@ std::vector<ControlPointRun> control_point_runs(std::span<const ControlPoint> po
     return runs;
 }
 
+void update_control_point_runs(std::vector<ControlPointRun>& runs, std::span<const ControlPoint> points,
+                               const ViewTransform& view, const PathChange& change)
+{
+    if (change.what != PathChange::What::positions)
+        return;
+    const std::size_t old_count = points.size() - change.inserted + change.removed;
+    if (runs.empty() || runs.back().last + 1 != old_count || points.empty())
+        return void(runs = control_point_runs(points, view));
+    // The runs from the one before the change to the one after it (old numbering) are made again.
+    const auto ending_at_or_after = [&](std::size_t point) {
+        return std::partition_point(runs.begin(), runs.end(), [&](const ControlPointRun& run) { return run.last < point; });
+    };
+    const auto first_run = ending_at_or_after(change.first > 0 ? change.first - 1 : 0);
+    const auto last_run = ending_at_or_after(std::min(change.first + change.removed, old_count - 1));
+    const std::size_t from = first_run->first;
+    const std::size_t to = last_run->last + change.inserted - change.removed; // inclusive, new numbering
+    std::vector<ControlPointRun> remade = control_point_runs(points.subspan(from, to - from + 1), view);
+    for (ControlPointRun& run : remade) {
+        run.first += from;
+        run.last += from;
+    }
+    const auto after = runs.erase(first_run, last_run + 1);
+    for (auto run = after; run != runs.end(); ++run) {
+        run->first = run->first + change.inserted - change.removed;
+        run->last = run->last + change.inserted - change.removed;
+    }
+    const auto index = after - runs.begin();
+    runs.insert(after, remade.begin(), remade.end());
+    // The remade runs may end on the pixel the next run starts on: one run then.
+    const auto joint = static_cast<std::size_t>(index) + remade.size();
+    if (joint > 0 && joint < runs.size() && runs[joint - 1].at == runs[joint].at) {
+        runs[joint - 1].last = runs[joint].last;
+        runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(joint));
+    }
+}
+
 namespace {
 
 // Each run's mark, split where the picked region starts or ends.
-std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std::optional<PickedRegion> region)
+std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std::optional<ControlRegion> region)
 {
     std::vector<PixelMark> marks;
     for (const ControlPointRun& run : runs) {
-        if (!region || run.last < region->first || run.first > region->second) {
+        if (!region || run.last < region->first || run.first > region->last) {
             marks.push_back({run.at, MarkKind::control_point});
             continue;
         }
         if (run.first < region->first)
             marks.push_back({run.at, MarkKind::control_point});
         marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse});
-        if (run.last > region->second)
+        if (run.last > region->last)
             marks.push_back({run.at, MarkKind::control_point});
     }
     return marks;
@@ -66,7 +103,7 @@ std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std:
 // A cell shows the last control point mark laid in it, and a picture draws every mark's x and box:
 // so of a pixel's marks the last is kept where it stands, after a boxed copy when an earlier one
 // was boxed and the last is not. Marks off the raster are kept as they are (part of an x may show).
-std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs, std::optional<PickedRegion> region)
+std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs, std::optional<ControlRegion> region)
 {
     std::vector<PixelMark> all = marks_of_runs(runs, region);
     // A few thousand marks cost less laid twice than a table of every pixel.
@@ -144,14 +181,8 @@ void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const View
 }
 
 // Pre_Draw: every control point marked with an x; those of the picked region in reverse video.
-void pre_draw(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
+void pre_draw(GraphicsScreen& screen, std::span<const PixelMark> marks)
 {
-    if (!content.control_point_marks.empty()) {
-        screen.marks.insert(screen.marks.end(), content.control_point_marks.begin(), content.control_point_marks.end());
-        return;
-    }
-    const std::vector<PixelMark> marks =
-        control_point_marks(control_point_runs(content.control_points, view), content.region);
     screen.marks.insert(screen.marks.end(), marks.begin(), marks.end());
 }
 
@@ -165,9 +196,10 @@ void draw_arrow(GraphicsScreen& screen, const PathScreenContent& content, const 
         screen.marks.push_back({{2 * hercules::cell_width, hercules::text_row_top(1)}, MarkKind::arrow});
 }
 
-} // namespace
 
-GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view)
+// The screen, with the curve and the control points' marks either drawn here (kept == nullptr) or
+// laid as an editor kept them.
+GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform& view, const KeptPathLayers* kept)
 {
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
@@ -182,8 +214,8 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
-        if (content.curve_raster != nullptr)
-            content.curve_raster->draw(screen.bitmap);
+        if (kept != nullptr)
+            screen.bitmap.merge(kept->curve);
         else
             draw_world_curve(inside, content.path->curve, view);
         draw_ani_path(screen, *content.path, view);
@@ -195,7 +227,10 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
             });
         }
     }
-    pre_draw(screen, content, view);
+    if (kept != nullptr)
+        pre_draw(screen, kept->control_point_marks);
+    else
+        pre_draw(screen, control_point_marks(control_point_runs(content.control_points, view), content.region));
     draw_arrow(screen, content, view);
     draw_staff(painter, screen, content);
     if (!content.message.empty())
@@ -205,6 +240,18 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
     if (content.path != nullptr && content.law_span)
         draw_law_inset(screen, *content.path, *content.law_span);
     return screen;
+}
+
+} // namespace
+
+GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view)
+{
+    return draw_screen(content, view, nullptr);
+}
+
+GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view, const KeptPathLayers& kept)
+{
+    return draw_screen(content, view, &kept);
 }
 
 } // namespace apcs

@@ -12,12 +12,34 @@ namespace apcs {
 
 WaypointEditor::WaypointEditor(Setup setup)
     : m_setup(std::move(setup))
-    , m_evaluated(evaluate_path(m_setup.points, m_setup.settings))
+    , m_picture(m_setup.points, m_setup.settings)
 {
     assert(m_setup.points.size() >= 2 && m_setup.origins.size() == m_setup.points.size());
+    m_picture.set_view(m_setup.points, m_setup.view);
+    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
+}
+
+WaypointEditor::WaypointEditor(Setup setup, PathPicture picture)
+    : m_setup(std::move(setup))
+    , m_picture(std::move(picture))
+{
+    assert(m_setup.points.size() >= 2 && m_setup.origins.size() == m_setup.points.size());
+    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
+}
+
+WaypointEditor::Path WaypointEditor::hand_back() &&
+{
+    return {std::move(m_setup.points), std::move(m_setup.origins), std::move(m_picture)};
 }
 
 WaypointEditor::Outcome WaypointEditor::update(const Command& command)
+{
+    const Outcome outcome = take_command(command);
+    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
+    return outcome;
+}
+
+WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
 {
     m_problem.clear();
     const auto editing = [](auto&& edit) {
@@ -44,17 +66,15 @@ WaypointEditor::Outcome WaypointEditor::update(const Command& command)
 WaypointEditor::Outcome WaypointEditor::discard()
 {
     for (auto change = m_changes.rbegin(); change != m_changes.rend(); ++change)
-        revert_change(m_setup.points, m_setup.origins, *change);
+        m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, *change));
     m_changes.clear();
-    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
     return Outcome::discarded;
 }
 
 void WaypointEditor::apply(const WaypointChange& change)
 {
-    apply_change(m_setup.points, m_setup.origins, change);
+    m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change));
     m_changes.push_back(change);
-    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
 }
 
 bool WaypointEditor::is_key_frame_point(std::size_t index)
@@ -75,7 +95,7 @@ void WaypointEditor::insert_point()
     WaypointChange change;
     change.kind = WaypointChange::Kind::insert;
     change.index = from + 1;
-    change.point = {halfway_along(m_evaluated.curve.segments, from), m_setup.points[m_chosen].staff};
+    change.point = {halfway_along(m_picture.evaluated().curve.segments, from), m_setup.points[m_chosen].staff};
     apply(change);
     m_chosen = change.index;
 }
@@ -114,8 +134,7 @@ void WaypointEditor::undo()
     }
     const WaypointChange change = m_changes.back();
     m_changes.pop_back();
-    revert_change(m_setup.points, m_setup.origins, change);
-    m_evaluated = evaluate_path(m_setup.points, m_setup.settings);
+    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change));
     m_chosen = std::min(change.index, m_setup.points.size() - 1);
 }
 

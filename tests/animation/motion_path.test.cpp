@@ -2,6 +2,7 @@
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/sampled_curve.h"
+#include "apcs/animation/waypoint_change.h"
 
 #include <catch2/catch.hpp>
 
@@ -377,4 +378,73 @@ TEST_CASE("the acceleration spans of 300000 control points, found in two halves,
         REQUIRE(spans[s].last_point == expected[s].last_point);
         REQUIRE(spans[s].acceleration == expected[s].acceleration);
     }
+}
+
+TEST_CASE("a path re-evaluated after control points were inserted, deleted or moved is the path evaluated afresh, "
+          "to the bit",
+          "[animation][path]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 12000; ++k)
+        points.push_back({{std::sin(k * 0.9), k * 2.0, std::cos(k * 0.7)}, {0.2, 0, 0, k < 6000 ? 0.5 : -0.3}});
+    std::vector<std::size_t> origins = file_origins(points.size());
+    const auto inserted = [](std::size_t index) {
+        WaypointChange change;
+        change.kind = WaypointChange::Kind::insert;
+        change.index = index;
+        change.point = {{0.5, static_cast<double>(index) * 2.0 - 1.0, 3.0}, {0.1, 0.2, 0.3, 0.4}};
+        return change;
+    };
+    const auto removed = [&](std::size_t index) {
+        WaypointChange change;
+        change.kind = WaypointChange::Kind::remove;
+        change.index = index;
+        change.point = points[index];
+        return change;
+    };
+    const auto moved = [](std::size_t index) {
+        WaypointChange change;
+        change.index = index;
+        change.offset = {0.3, -0.2, 0.7};
+        return change;
+    };
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        const PathSettings settings{{0.5, 1}, 8, 12, spacing};
+        EvaluatedPath path = evaluate_path(points, settings);
+        for (const std::size_t index : {std::size_t{1}, std::size_t{2}, std::size_t{5000}, std::size_t{5999},
+                                        std::size_t{6000}, std::size_t{11998}}) {
+            CAPTURE(index);
+            for (const WaypointChange& change : {moved(index), inserted(index), removed(index), inserted(index + 1)}) {
+                CAPTURE(static_cast<int>(change.kind));
+                const PathChange touched = apply_change(points, origins, change);
+                reevaluate_path(points, settings, path, touched);
+                const EvaluatedPath fresh = evaluate_path(points, settings);
+                require_same_path(path, fresh);
+                REQUIRE(path.arc_lengths.total_length() == fresh.arc_lengths.total_length());
+                REQUIRE(path.arc_lengths.length_to_segment_start(index) == fresh.arc_lengths.length_to_segment_start(index));
+            }
+        }
+    }
+}
+
+TEST_CASE("the segments a change reports made again are the only ones that differ from before", "[animation][path]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 40; ++k)
+        points.push_back({{std::sin(k * 0.9), k * 2.0, std::cos(k * 0.7)}, {}});
+    std::vector<std::size_t> origins = file_origins(points.size());
+    const PathSettings settings{{0.5, 1}, 8, 12, Spacing::exact};
+    EvaluatedPath path = evaluate_path(points, settings);
+    const std::vector<HermiteSegment> before = path.curve.segments;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::insert;
+    change.index = 20;
+    change.point = {{3, 39, 1}, {}};
+    const SegmentSplice touched = reevaluate_path(points, settings, path, apply_change(points, origins, change));
+    REQUIRE(touched.inserted == touched.removed + 1);
+    REQUIRE(path.curve.segments.size() == before.size() + 1);
+    for (std::size_t s = 0; s < touched.first; ++s)
+        REQUIRE(path.curve.segments[s] == before[s]);
+    for (std::size_t s = touched.old_end(); s < before.size(); ++s)
+        REQUIRE(path.curve.segments[s + 1] == before[s]);
 }

@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <tuple>
 
 #include <string>
 #include <vector>
@@ -210,4 +211,72 @@ TEST_CASE("the animation player shows one frame per tick, then all frames, then 
     REQUIRE(player.phase() == SessionPhase::overlay);
     REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::finished);
     REQUIRE(log.lines == std::vector<std::string>{"animation: 3 frames, 50 ms each", "showed all 3 frames overlaid"});
+}
+
+TEST_CASE("a long path's screen and numbers, kept across waypoint keys and exact spacing, are those drawn and "
+          "evaluated afresh",
+          "[session][editor][waypoints]")
+{
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        CAPTURE(static_cast<int>(spacing));
+        PathEditor::Setup setup;
+        setup.path_name = "way1.dat";
+        for (int k = 0; k < 10000; ++k)
+            setup.points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.001, std::cos(k * 0.37) * 2.0}, {}});
+        setup.settings = {{1, 1}, 8, 12, spacing};
+        const PathSettings settings = setup.settings;
+        LogLines log;
+        PathEditor editor(std::move(setup), log);
+        // `region`: the one boxed (the waypoint editor's chosen point is read from its message).
+        const auto matches_fresh = [&](const char* after, std::optional<ControlRegion> region) {
+            CAPTURE(after);
+            const EvaluatedPath fresh = evaluate_path(editor.points(), settings);
+            REQUIRE(editor.evaluated().curve.segments == fresh.curve.segments);
+            REQUIRE(editor.evaluated().curve.length_to_point == fresh.curve.length_to_point);
+            REQUIRE(editor.evaluated().inbetweens.size() == fresh.inbetweens.size());
+            for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j)
+                REQUIRE(editor.evaluated().inbetweens[j].position == fresh.inbetweens[j].position);
+            const GraphicsScreen shown = editor.view();
+            PathScreenContent content = path_screen_content(editor.points(), fresh);
+            content.region = region;
+            if (editor.phase() == SessionPhase::waypoints) {
+                // The waypoint editor boxes its chosen point: "control point N of M  depth …".
+                const std::size_t chosen = std::stoul(message_of(shown).substr(std::string("control point ").size())) - 1;
+                content.region = ControlRegion{chosen, chosen};
+            }
+            const GraphicsScreen drawn = draw_path_screen(content, editor.view_transform());
+            REQUIRE(shown.bitmap == drawn.bitmap);
+            const auto control_marks = [](const GraphicsScreen& screen) {
+                std::vector<std::tuple<int, int, CellStyle>> marks;
+                for (const PixelMark& mark : screen.marks)
+                    if (mark.kind == MarkKind::control_point)
+                        marks.emplace_back(mark.at.x, mark.at.y, mark.style);
+                return marks;
+            };
+            REQUIRE(control_marks(shown).size() == control_marks(drawn).size());
+            REQUIRE((control_marks(shown) == control_marks(drawn)));
+        };
+        apply(editor, {cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
+        matches_fresh("a global key", ControlRegion{0, 9999});
+        apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{-2}});
+        matches_fresh("a global key on ACCELERATION", ControlRegion{0, 9999});
+        apply(editor, {cmd::Accept{}, cmd::Yes{}, cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{4094},
+                       cmd::Accept{}, cmd::ArrowMove{3}, cmd::Accept{}, cmd::StaffStep{-4}});
+        matches_fresh("a local key across two blocks", ControlRegion{4094, 4097});
+        apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Yes{}, cmd::OpenWaypoints{},
+                       cmd::ChoosePoint{4095}, cmd::MovePoint{2, -1, 1}});
+        matches_fresh("a waypoint moved", std::nullopt);
+        apply(editor, {cmd::InsertPoint{}, cmd::InsertPoint{}});
+        matches_fresh("two waypoints inserted", std::nullopt);
+        apply(editor, {cmd::ChoosePoint{-3}, cmd::DeletePoint{}, cmd::ChoosePoint{4000}, cmd::DeletePoint{}});
+        matches_fresh("two waypoints deleted, one in the last block", std::nullopt);
+        apply(editor, {cmd::Undo{}});
+        matches_fresh("a deletion undone in the waypoint editor", std::nullopt);
+        apply(editor, {cmd::Accept{}});
+        matches_fresh("the waypoints kept", std::nullopt);
+        apply(editor, {cmd::Undo{}, cmd::Undo{}});
+        matches_fresh("two waypoint changes undone after", std::nullopt);
+        apply(editor, {cmd::OpenWaypoints{}, cmd::InsertPoint{}, cmd::MovePoint{0, 3, 0}, cmd::Back{}});
+        matches_fresh("waypoint changes discarded with Esc", std::nullopt);
+    }
 }

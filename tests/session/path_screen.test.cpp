@@ -96,7 +96,7 @@ GraphicsScreen picking_screen(std::optional<std::size_t> arrow)
     static EvaluatedPath path;
     path = evaluate_path(points, {{}, 32, 12, Spacing::nearest});
     PathScreenContent content = path_screen_content(points, path);
-    content.region = std::pair<std::size_t, std::size_t>{1, 2};
+    content.region = ControlRegion{1, 2};
     content.arrow_at = arrow;
     content.arrow_home = !arrow;
     content.active_line = StaffLine::tension;
@@ -240,7 +240,7 @@ TEST_CASE("of many control point marks on one pixel the last is kept, boxed firs
         runs.push_back({{10 + i % 700, 10 + i / 700}, static_cast<std::size_t>(i), static_cast<std::size_t>(i)});
     runs.push_back({{10, 10}, 5000, 5000});
     runs.push_back({{-3, 20}, 5001, 5001}); // off the raster: kept as it is
-    const std::vector<PixelMark> marks = control_point_marks(runs, PickedRegion{0, 0});
+    const std::vector<PixelMark> marks = control_point_marks(runs, ControlRegion{0, 0});
     REQUIRE(marks.size() == 5002);
     CHECK(marks.front().at == PixelPoint{11, 10}); // the first pixel's marks moved to its last
     CHECK(marks[4999].at == PixelPoint{10, 10});
@@ -251,4 +251,37 @@ TEST_CASE("of many control point marks on one pixel the last is kept, boxed firs
     // Few marks are laid as they come.
     const std::vector<PixelMark> few = control_point_marks(std::span(runs).first(10), std::nullopt);
     CHECK(few.size() == 10);
+}
+
+TEST_CASE("control point runs updated around inserted, deleted and moved points are the runs made afresh",
+          "[session][path]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 3000; ++k) // runs of a few points on one pixel, and points of their own
+        points.push_back({{std::sin(k * 0.9) * (k % 7 == 0 ? 3.0 : 0.001), k * 0.0005, 0.0}, {}});
+    const ViewTransform view = ViewTransform::fit({0, 90}, std::vector<Vec3>{{-3, 0, -1}, {3, 1.5, 1}}, {0, 0, 720, 259});
+    std::vector<ControlPointRun> runs = control_point_runs(points, view);
+    const auto same_runs = [](const std::vector<ControlPointRun>& left, const std::vector<ControlPointRun>& right) {
+        REQUIRE(left.size() == right.size());
+        for (std::size_t r = 0; r < left.size(); ++r) {
+            CAPTURE(r);
+            REQUIRE(left[r].at == right[r].at);
+            REQUIRE(left[r].first == right[r].first);
+            REQUIRE(left[r].last == right[r].last);
+        }
+    };
+    const std::vector<PathChange> changes{{0, 0, 1}, {1, 1, 0}, {700, 1, 1}, {1400, 0, 1},
+                                          {1401, 1, 0}, {2999, 0, 1}, {3000, 1, 0}, {5, 1, 1}};
+    for (const PathChange& change : changes) {
+        CAPTURE(change.first, change.removed, change.inserted);
+        const auto at = points.begin() + static_cast<std::ptrdiff_t>(change.first);
+        if (change.inserted > change.removed)
+            points.insert(at, ControlPoint{{0.5, static_cast<double>(change.first) * 0.0005, 0.0}, {}});
+        else if (change.removed > change.inserted)
+            points.erase(at);
+        else
+            at->position = at->position + Vec3{0.0, 0.0005, 0.0};
+        update_control_point_runs(runs, points, view, change);
+        same_runs(runs, control_point_runs(points, view));
+    }
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/animation/hermite.h"
+#include "apcs/animation/path_change.h"
 
 #include <algorithm>
 #include <span>
@@ -18,34 +19,64 @@ struct CurveParameter {
 // Simpson per segment, a cumulative table over segments, and the parameter for a given length by
 // bisection to 1e-9·L. Each segment's interval count doubles from 32 until two successive sums
 // agree to 1e-10 of the length (at most 8192), because a tightly bent segment needs many more
-// intervals than a flat one. The table keeps a copy of the segments, so it outlives its argument.
-class ArcLengthTable {
+// intervals than a flat one.
+//
+// Kept beside the curve's segments, which it does not hold: every call takes the segments it was
+// measured on. A change to some segments (a SegmentSplice) measures those again and adds up the
+// lengths after them, so that exact spacing stays interactive on a path of 10^6 control points;
+// the numbers are those of measuring afresh, to the bit (each segment is measured alike either way,
+// and the sums are added in the same order).
+class CurveArcLengths {
 public:
     static constexpr int first_simpson_intervals = 32;
     static constexpr int most_simpson_intervals = 8192;
 
-    explicit ArcLengthTable(std::span<const HermiteSegment> segments);
+    // Every segment measured (on both cores for a long curve).
+    void measure(std::span<const HermiteSegment> segments);
+    // `segments` is the curve after `change`; the curve before it was the one last measured.
+    void remeasure(std::span<const HermiteSegment> segments, const SegmentSplice& change);
 
+    std::size_t segment_count() const { return m_segment_length.size(); }
     double total_length() const { return m_cumulative.empty() ? 0.0 : m_cumulative.back(); }
     // Arc length from the curve's start to the start of segment k (k = segment count: the end).
     double length_to_segment_start(std::size_t segment) const
     {
-        return m_cumulative[std::min(segment, m_cumulative.size() - 1)];
+        return m_cumulative.empty() ? 0.0 : m_cumulative[std::min(segment, m_cumulative.size() - 1)];
     }
-    // Arc length from the curve's start to the given parameter.
-    double length_at(CurveParameter parameter) const;
+    double length_at(std::span<const HermiteSegment> segments, CurveParameter parameter) const;
     // The parameter whose arc length from the start is `arc_length`, clamped to [0, L].
-    CurveParameter parameter_at(double arc_length) const;
-    Vec3 point_at(CurveParameter parameter) const;
+    CurveParameter parameter_at(std::span<const HermiteSegment> segments, double arc_length) const;
 
 private:
-    double simpson(std::size_t segment, double u_end, int intervals) const;
-    double segment_length(std::size_t segment, double u_end) const;
+    void measure_range(std::span<const HermiteSegment> segments, std::size_t first, std::size_t end);
+    void add_up_from(std::size_t first);
 
-    std::vector<HermiteSegment> m_segments;
     std::vector<int> m_intervals; // Simpson intervals chosen for each segment
+    std::vector<double> m_segment_length;
     // m_cumulative[k] = length of segments 0 … k−1; size = segments + 1.
     std::vector<double> m_cumulative;
 };
+
+// The arc lengths of a copy of `segments`, so that the table outlives its argument.
+class ArcLengthTable {
+public:
+    static constexpr int first_simpson_intervals = CurveArcLengths::first_simpson_intervals;
+    static constexpr int most_simpson_intervals = CurveArcLengths::most_simpson_intervals;
+
+    explicit ArcLengthTable(std::span<const HermiteSegment> segments);
+
+    double total_length() const { return m_lengths.total_length(); }
+    double length_to_segment_start(std::size_t segment) const { return m_lengths.length_to_segment_start(segment); }
+    double length_at(CurveParameter parameter) const { return m_lengths.length_at(m_segments, parameter); }
+    CurveParameter parameter_at(double arc_length) const { return m_lengths.parameter_at(m_segments, arc_length); }
+    Vec3 point_at(CurveParameter parameter) const;
+
+private:
+    std::vector<HermiteSegment> m_segments;
+    CurveArcLengths m_lengths;
+};
+
+// The point of `segments` at `parameter` (segment and u clamped into the curve).
+Vec3 curve_point_at(std::span<const HermiteSegment> segments, CurveParameter parameter);
 
 } // namespace apcs

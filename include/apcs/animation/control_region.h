@@ -16,6 +16,7 @@ struct ControlRegion {
     static ControlRegion whole(const ControlPoints& points) { return {0, points.empty() ? 0 : points.size() - 1}; }
     bool is_whole(const ControlPoints& points) const { return first == 0 && last + 1 == points.size(); }
     bool contains(std::size_t point) const { return point >= first && point <= last; }
+    friend bool operator==(const ControlRegion&, const ControlRegion&) = default;
 };
 
 // The staff values of a region's control points, run-length encoded (a run of equal values is one

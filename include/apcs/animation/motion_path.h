@@ -1,6 +1,8 @@
 #pragma once
 
+#include "apcs/animation/arc_length.h"
 #include "apcs/animation/control_point.h"
+#include "apcs/animation/path_change.h"
 #include "apcs/animation/hermite.h"
 #include "apcs/animation/sampled_curve.h"
 
@@ -60,6 +62,9 @@ struct SpanTiming {
 // in-betweens (thesis DRAW, Cal_tangent_vector, Cal_INBETWEENS, Decide_Show_Inbetween).
 struct EvaluatedPath {
     SampledCurve curve; // its segments, and how they are sampled
+    // Exact spacing: the arc lengths of curve.segments, kept so that a change measures only the
+    // segments it made again. Empty for nearest spacing.
+    CurveArcLengths arc_lengths;
     std::vector<Inbetween> inbetweens;
     // The spans in path order (empty for a path of zero length or of fewer than two points).
     std::vector<SpanTiming> span_timings;
@@ -77,19 +82,18 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 // The same into `path`, whose arrays keep their room: an editor that evaluates a long path at
 // every key neither allocates nor faults in the pages of millions of samples again.
 void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
-// `path` was evaluated from `points` with `settings`, and since then only the staff values of
-// control points first_changed … last_changed have changed (not their number or positions): only
-// the segments whose tangents they set are made and sampled again, the lengths after them added
-// up again, and the in-betweens placed anew. An acceleration changes no segment. The result is
-// evaluate_path's, to the bit; arrays of another size, or a region outside the path, are evaluated
-// afresh.
-// Returns the segments it may have made again, first … end − 1 (all of them when evaluated afresh).
-struct SegmentRange {
-    std::size_t first = 0;
-    std::size_t end = 0;
-};
-SegmentRange reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                             std::size_t first_changed, std::size_t last_changed);
+// `path` was evaluated from the points before `change` with `settings`; `points` are those after
+// it. Only the segments whose tangents the changed points set are made and measured again (and
+// their arc lengths, with exact spacing), the lengths after them added up again, and the
+// in-betweens placed anew; segments after a change of the points' number are moved, not made. An
+// acceleration changes no segment. The result is evaluate_path's, to the bit; arrays that do not
+// fit the change, or a change outside the path, are evaluated afresh.
+// Returns the segments it made again (all of them when evaluated afresh: removed = the old count).
+SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                              const PathChange& change);
+// The same for a change of staff values of control points first_changed … last_changed.
+SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                              std::size_t first_changed, std::size_t last_changed);
 // The shown in-betweens of a path whose segments and curve are made (Cal_INBETWEENS,
 // Decide_Show_Inbetween): the spans share them by length, each places its own by its law. All an
 // acceleration changes: the editor calls it alone for a key on the ACCELERATION line.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/animation/control_point.h"
+#include "apcs/animation/path_change.h"
 
 #include <cstddef>
 #include <vector>
@@ -30,8 +31,8 @@ struct WaypointChange {
 };
 
 // `origins` runs parallel to `points`; both change together. An index outside the points is a
-// programming error (asserted).
-void apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
-void revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
+// programming error (asserted). Returns the points changed, for the path's picture to follow.
+PathChange apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
+PathChange revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
 
 } // namespace apcs

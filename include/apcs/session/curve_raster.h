@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/animation/path_change.h"
 #include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/bitmap.h"
@@ -46,27 +47,28 @@ void for_each_curve_line(const SampledCurve& curve, const ViewTransform& view, s
 }
 
 // A KB curve drawn solid, as draw_world_curve draws it, kept between keys as one raster per block
-// of segments: a key that changes a few segments of a path of 10^6 control points draws those
-// blocks again and lays the others over them as they were. A change of every segment draws all
-// blocks again, on both cores. The pixels are draw_world_curve's for a curve that starts inside
-// the clip (as a fitted view's does); no strokes are recorded (the editor's screen is never
-// written as SVG).
+// of consecutive segments: a key that changes a few segments of a path of 10^6 control points draws
+// those blocks again and lays the others over them as they were. Blocks hold about
+// segments_per_block segments each; a control point inserted or deleted grows or shrinks the block
+// it falls in, and the blocks after it keep their pixels. A change of every segment draws all blocks
+// again, on both cores. The pixels are draw_world_curve's for a curve that starts inside the clip (as
+// a fitted view's does): a block's lines continue from its first segment's start, where the lines
+// before it end. No strokes are recorded (the editor's screen is never written as SVG).
 class CurveRaster {
 public:
-    // The curve's segments first … end − 1 have changed since the last update.
-    void forget(std::size_t first_segment, std::size_t end_segment);
-    // The control points moved, or their number changed.
-    void forget_all();
-    // Draws the blocks forgotten; all of them when the view, the clip, the number of segments or of
-    // samples per segment is not the last update's.
+    // The curve's segments changed as `change` says since the last update.
+    void splice(const SegmentSplice& change);
+    // Draws the blocks changed; all of them when the view, the clip, the number of segments or of
+    // samples per segment is not the last update's (after its splices).
     void update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip);
-    // Lights the curve's pixels in `target` (a 720x348 raster).
-    void draw(Bitmap& target) const;
+    // The curve's pixels as of the last update (a 720x348 raster).
+    const Bitmap& pixels() const { return m_composed; }
 
     static constexpr std::size_t segments_per_block = 4096;
 
 private:
     struct Block {
+        std::size_t segment_count = 0;
         bool current = false;
         Bitmap raster;
         // The rows its lines reach: first … end − 1.
@@ -74,6 +76,8 @@ private:
         int end_row = 0;
     };
 
+    void start_blocks(std::size_t segment_count);
+    void split_large_blocks();
     void draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const;
     void compose();
 

@@ -8,6 +8,7 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
 #include "apcs/session/key_map.h"
+#include "apcs/session/path_picture.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/session_log.h"
 #include "apcs/session/session_phase.h"
@@ -53,13 +54,14 @@ public:
     SessionPhase phase() const;
     KeyContext key_context() const;
     const std::string& path_name() const { return m_setup.path_name; }
-    const ControlPoints& points() const { return m_setup.points; }
+    // The path as edited (in the waypoint editor: as it stands there).
+    const ControlPoints& points() const;
     // Parallel to points(): each point's index among the path file's points, or new_point for one
     // the waypoint editor inserted (waypoint_change.h). The file's comments stay with their points.
-    const std::vector<std::size_t>& point_origins() const { return m_origins; }
-    const EvaluatedPath& evaluated() const { return m_evaluated; }
+    const std::vector<std::size_t>& point_origins() const;
+    const EvaluatedPath& evaluated() const { return picture().evaluated(); }
     // The view fixed when the path was opened (fitted again when the waypoint editor is left).
-    const ViewTransform& view_transform() const { return m_view; }
+    const ViewTransform& view_transform() const { return picture().view(); }
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);
 
@@ -109,8 +111,6 @@ private:
     using Change = std::variant<StaffChange, WaypointChange>;
     // Enter takes the line's value as shown; Esc keeps the value the line had when it became active.
     enum class LineEnding { accepted, kept };
-    // What a change of staff values did to the path: moved only its in-betweens, or reshaped it.
-    enum class RegionChange { timing, shape };
 
     Outcome take_command(const Command& command);
     bool update_views(const Command& command);
@@ -124,15 +124,14 @@ private:
     Staff start_staff(ControlRegion region);
     Waypoints open_waypoints();
     void set_staff_value(Staff& staff, double value);
-    void reevaluate_region(ControlRegion region, RegionChange change);
+    void reevaluate_region(ControlRegion region, PathChange::What what);
     Transition undo();
     Transition undo_change(const StaffChange& change);
     Transition undo_change(const WaypointChange& change);
     void fit_view();
-    void evaluate_whole_path();
-    void mark_control_points();
-    void refresh_point_marks();
-    std::optional<PickedRegion> picked_region() const;
+    // The picture shown: the waypoint editor's while it is open (it holds the path then).
+    const PathPicture& picture() const;
+    std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message() const;
     std::string staff_message(const Staff& staff) const;
@@ -141,15 +140,12 @@ private:
     Setup m_setup;
     std::vector<std::size_t> m_origins;
     SessionLog& m_log;
-    EvaluatedPath m_evaluated;
-    ViewTransform m_view;
-    // The picture of the path kept between keys: only what a key changed is projected again.
-    CurveRaster m_curve_raster;
-    std::vector<ControlPointRun> m_point_runs;
-    std::vector<PixelMark> m_point_marks;
-    std::optional<std::optional<PickedRegion>> m_marks_region; // the region m_point_marks show
+    // The path evaluated and drawn in the view fixed for the adjusting, kept between keys: every
+    // change refreshes only what it touched. The waypoint editor holds it (with the points) while
+    // it is open.
+    PathPicture m_picture;
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
-    double m_tangent_scale;
+    double m_tangent_scale = 0.0;
     Mode m_mode;
     // What is shown over every mode (K, T, G and the point T numbers) and said on the message line:
     // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped

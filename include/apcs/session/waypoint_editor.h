@@ -6,6 +6,7 @@
 #include "apcs/animation/waypoint_change.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/session/command.h"
+#include "apcs/session/path_picture.h"
 
 #include <cstddef>
 #include <span>
@@ -29,14 +30,25 @@ public:
     };
     enum class Outcome { editing, kept, discarded };
 
-    // Chooses the first control point.
+    // Chooses the first control point; evaluates and draws the path.
     explicit WaypointEditor(Setup setup);
+    // The same with the path's picture as the path editor keeps it (of setup.points in setup.view):
+    // the editor refreshes it at each edit and hands it back when it is left.
+    WaypointEditor(Setup setup, PathPicture picture);
 
     Outcome update(const Command& command);
 
     const ControlPoints& points() const { return m_setup.points; }
     const std::vector<std::size_t>& origins() const { return m_setup.origins; }
-    const EvaluatedPath& evaluated() const { return m_evaluated; }
+    const EvaluatedPath& evaluated() const { return m_picture.evaluated(); }
+    const PathPicture& picture() const { return m_picture; }
+    // Once left: the points with their origins and their picture, as kept or as they were.
+    struct Path {
+        ControlPoints points;
+        std::vector<std::size_t> origins;
+        PathPicture picture;
+    };
+    Path hand_back() &&;
     std::size_t chosen() const { return m_chosen; }
     // The changes applied since the editor opened, oldest first.
     const std::vector<WaypointChange>& changes() const { return m_changes; }
@@ -44,6 +56,7 @@ public:
     std::string message() const;
 
 private:
+    Outcome take_command(const Command& command);
     void insert_point();
     void delete_point();
     void move_point(const command::MovePoint& move);
@@ -55,7 +68,7 @@ private:
     bool is_key_frame_point(std::size_t index);
 
     Setup m_setup;
-    EvaluatedPath m_evaluated;
+    PathPicture m_picture;
     std::size_t m_chosen = 0;
     std::vector<WaypointChange> m_changes;
     std::string m_problem;

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace apcs {
+
+// What a change did to a path's control points: points first … first + removed − 1 were replaced
+// by first … first + inserted − 1 (a staff key: as many as it changed, by themselves; a waypoint
+// moved: one by one; inserted: none by one; deleted: one by none). `what` says which of their
+// values may differ: only accelerations (the in-betweens move, no segment), tension, continuity
+// and bias too (the segments change, no point moves), or positions (points moved, inserted or
+// deleted).
+struct PathChange {
+    enum class What { accelerations, staff, positions };
+    std::size_t first = 0;
+    std::size_t removed = 0;
+    std::size_t inserted = 0;
+    What what = What::positions;
+};
+
+// What a change did to a curve's segments: segments first … first + removed − 1 were replaced by
+// first … first + inserted − 1, and those before and after are as they were (shifted by
+// inserted − removed). A change of values only has removed == inserted; a control point inserted
+// into a path replaces a few segments by one more. Whoever keeps something per segment (lengths,
+// arc lengths, rasters) splices it alike and makes again only what the range covers.
+struct SegmentSplice {
+    std::size_t first = 0;
+    std::size_t removed = 0;
+    std::size_t inserted = 0;
+
+    std::size_t old_end() const { return first + removed; }
+    std::size_t new_end() const { return first + inserted; }
+    friend bool operator==(const SegmentSplice&, const SegmentSplice&) = default;
+};
+
+// Per-segment `values` made to fit the curve after `change`: the entries of the segments after it
+// move with them; those of the inserted segments are T{} until they are made.
+template <typename T>
+void splice_room(std::vector<T>& values, const SegmentSplice& change)
+{
+    const auto at = values.begin() + static_cast<std::ptrdiff_t>(change.first);
+    if (change.inserted > change.removed)
+        values.insert(at, change.inserted - change.removed, T{});
+    else
+        values.erase(at, at + static_cast<std::ptrdiff_t>(change.removed - change.inserted));
+}
+
+} // namespace apcs

@@ -1,0 +1,56 @@
+#pragma once
+
+#include "apcs/animation/control_region.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/animation/path_change.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/session/curve_raster.h"
+#include "apcs/session/path_screen.h"
+
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace apcs {
+
+// The picture of a path being edited, kept beside its control points (the model) for a still view:
+// the path evaluated (with its arc lengths under exact spacing), its curve drawn block by block, the
+// control points' pixels and their marks. Every change of the points goes through refresh(change),
+// which makes again only what the change touched: the segments whose tangents the changed points
+// set, the blocks of the curve that hold them, the runs of control points around them. What it keeps
+// is what evaluating and drawing afresh gives, to the bit and to the pixel.
+class PathPicture {
+public:
+    // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
+    PathPicture(std::span<const ControlPoint> points, const PathSettings& settings);
+
+    // The points changed as `change` says (`points` are those after it).
+    void refresh(std::span<const ControlPoint> points, const PathChange& change);
+    // Another view: the curve and the control points projected again.
+    void set_view(std::span<const ControlPoint> points, const ViewTransform& view);
+    // The region whose control points' marks are boxed; the marks are made again only when it
+    // changes (a path of 10^6 points scribbled over the screen has up to one mark per pixel).
+    void box_region(std::optional<ControlRegion> region);
+
+    const EvaluatedPath& evaluated() const { return m_evaluated; }
+    const PathSettings& settings() const { return m_settings; }
+    // Only after set_view.
+    const ViewTransform& view() const { return *m_view; }
+    // The path screen of `content` (whose path is evaluated()) in this view, with the curve and the
+    // marks as kept.
+    GraphicsScreen draw(const PathScreenContent& content) const;
+
+private:
+    void draw_curve();
+
+    PathSettings m_settings;
+    EvaluatedPath m_evaluated;
+    std::optional<ViewTransform> m_view;
+    CurveRaster m_curve;
+    std::vector<ControlPointRun> m_point_runs;
+    std::optional<ControlRegion> m_region;
+    std::vector<PixelMark> m_point_marks;
+};
+
+} // namespace apcs

@@ -1,0 +1,48 @@
+#include "apcs/session/path_picture.h"
+
+#include "apcs/session/screen_layout.h"
+
+namespace apcs {
+
+PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings)
+    : m_settings(settings)
+    , m_evaluated(evaluate_path(points, settings))
+{
+}
+
+void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change)
+{
+    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change));
+    if (!m_view)
+        return;
+    draw_curve();
+    if (change.what != PathChange::What::positions)
+        return;
+    update_control_point_runs(m_point_runs, points, *m_view, change);
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+void PathPicture::set_view(std::span<const ControlPoint> points, const ViewTransform& view)
+{
+    m_view = view;
+    m_point_runs = control_point_runs(points, *m_view);
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+    draw_curve();
+}
+
+void PathPicture::box_region(std::optional<ControlRegion> region)
+{
+    if (region == m_region)
+        return;
+    m_region = region;
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+void PathPicture::draw_curve() { m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary); }
+
+GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
+{
+    return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks});
+}
+
+} // namespace apcs
