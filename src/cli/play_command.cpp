@@ -112,11 +112,12 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
         err << glyphs.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
-    Diagnostic problem;
-    const ExitStatus status = terminal(player, options.delay_ms, *glyphs, save_screen_picture, problem);
-    if (status == ExitStatus::terminal_problem)
-        err << problem.to_string() << '\n';
-    return status;
+    const Expected<ExitStatus> played = terminal(player, options.delay_ms, *glyphs, save_screen_picture);
+    if (!played) {
+        err << played.error().to_string() << '\n';
+        return ExitStatus::terminal_problem;
+    }
+    return *played;
 }
 
 } // namespace

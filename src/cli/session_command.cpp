@@ -241,11 +241,13 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
                            const TerminalSessionRunner& terminal, std::vector<KeyEvent>& recorded, std::ostream& out,
                            std::ostream& err)
 {
-    Diagnostic problem;
-    const ExitStatus status = terminal(session, script, options.pace, glyphs, recorded, problem);
-    if (status == ExitStatus::terminal_problem)
-        err << problem.to_string() << '\n';
-    else if (status == ExitStatus::stopped)
+    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, recorded);
+    if (!ran) {
+        err << ran.error().to_string() << '\n';
+        return ExitStatus::terminal_problem;
+    }
+    const ExitStatus status = *ran;
+    if (status == ExitStatus::stopped)
         err << "apcs: stopped; every file written so far is whole\n";
     else
         for (const std::string& name : session.written_files())

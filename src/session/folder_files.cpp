@@ -83,7 +83,7 @@ std::string FolderFiles::name_read(const std::string& name) const
 
 void FolderFiles::protect_key_file(const std::string& name) { m_key_files.protect(m_folder / name); }
 
-std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std::string& content)
+Expected<void> FolderFiles::write(const std::string& name, const std::string& content)
 {
     if (m_key_files.guards(m_folder / name))
         return Diagnostic{name, 0, "is a key file; key files are never written"};
@@ -93,7 +93,7 @@ std::optional<Diagnostic> FolderFiles::write(const std::string& name, const std:
         return Diagnostic{name, 0, result.error().message};
     if (!result->backup.empty() && result->backup.extension() != ".bak")
         log("kept the old " + name + " as " + result->backup.filename().string() + ", since its .bak is a key file");
-    return std::nullopt;
+    return ok;
 }
 
 Expected<std::vector<std::string>> FolderFiles::write_inbetweens(const FrameSequence& frames, const Graphic& structure)
@@ -113,19 +113,16 @@ std::vector<std::string> FolderFiles::earlier_inbetweens(std::size_t written_cou
     return inbetweens_beyond(m_folder, written_count);
 }
 
-std::optional<Diagnostic> FolderFiles::end_batch()
+Expected<void> FolderFiles::end_batch()
 {
     m_in_batch = false;
-    // SessionFiles still says optional<Diagnostic>; it becomes Expected<void> with the session.
-    if (Expected<void> flushed = flush_file_system(m_folder); !flushed)
-        return flushed.error();
-    return std::nullopt;
+    return flush_file_system(m_folder);
 }
 
 FolderFiles::~FolderFiles()
 {
     if (m_in_batch)
-        [[maybe_unused]] const std::optional<Diagnostic> ignored = end_batch();
+        [[maybe_unused]] const Expected<void> ignored = end_batch();
 }
 
 void FolderFiles::log(const std::string& line)

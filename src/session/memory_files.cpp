@@ -14,13 +14,13 @@ Expected<std::string> MemoryFiles::read_text(const std::string& name)
 
 void MemoryFiles::protect_key_file(const std::string& name) { m_key_files.protect(name); }
 
-std::optional<Diagnostic> MemoryFiles::write(const std::string& name, const std::string& content)
+Expected<void> MemoryFiles::write(const std::string& name, const std::string& content)
 {
     if (m_key_files.guards(name))
         return Diagnostic{name, 0, "is a key file; key files are never written"};
     files[name] = content;
     writes.push_back(name);
-    return std::nullopt;
+    return ok;
 }
 
 Expected<std::vector<std::string>> MemoryFiles::write_inbetweens(const FrameSequence& frames, const Graphic& structure)

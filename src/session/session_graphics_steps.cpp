@@ -55,8 +55,9 @@ StepResult Shaping::update(StepContext& context, const Command& command)
 StepResult Shaping::accept(StepContext& context)
 {
     SessionPath& shaped = context.model.paths[static_cast<std::size_t>(path)];
-    if (auto problem = context.write_file(editor.path_name(), rewritten_path_file(shaped, editor))) {
-        editor.show_problem(problem->to_string());
+    if (const Expected<void> written = context.write_file(editor.path_name(), rewritten_path_file(shaped, editor));
+        !written) {
+        editor.show_problem(written.error().to_string());
         return {};
     }
     context.model.written.add(editor.path_name());

@@ -10,12 +10,12 @@ void WrittenFiles::add(const std::string& name)
         m_names.push_back(name);
 }
 
-std::optional<Diagnostic> StepContext::write_file(const std::string& name, const std::string& content)
+Expected<void> StepContext::write_file(const std::string& name, const std::string& content)
 {
-    std::optional<Diagnostic> problem = files.write(name, content);
-    if (problem)
-        model.written.set_problem(*problem);
-    return problem;
+    Expected<void> written = files.write(name, content);
+    if (!written)
+        model.written.set_problem(written.error());
+    return written;
 }
 
 PathSettings StepContext::path_settings(int path) const

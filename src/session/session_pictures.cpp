@@ -17,8 +17,8 @@ void write_picture(StepContext& context, const std::string& name, const Graphics
 
 void store_picture(StepContext& context, const std::string& name, const std::string& bytes, const std::string& log_line)
 {
-    if (auto problem = context.write_file(name, bytes)) {
-        context.notice = problem->to_string();
+    if (const Expected<void> written = context.write_file(name, bytes); !written) {
+        context.notice = written.error().to_string();
         return;
     }
     context.model.written.add(name);

@@ -36,9 +36,9 @@ StepResult Splitting::work(StepContext& context)
     const std::size_t batch_end = std::min(total(), written + split_batch_files);
     while (written < batch_end) {
         const NamedText file = split_path_file(written + 1, key1[written], key2[written]);
-        if (auto problem = context.write_file(file.name, file.content)) {
+        if (const Expected<void> wrote = context.write_file(file.name, file.content); !wrote) {
             static_cast<void>(close(context));
-            return StepResult::refused(problem->to_string());
+            return StepResult::refused(wrote.error().to_string());
         }
         context.model.written.add(file.name);
         ++written;
@@ -48,8 +48,8 @@ StepResult Splitting::work(StepContext& context)
 
 StepResult Splitting::finish(StepContext& context)
 {
-    if (const std::optional<Diagnostic> problem = close(context))
-        return StepResult::refused(problem->to_string());
+    if (const Expected<void> closed = close(context); !closed)
+        return StepResult::refused(closed.error().to_string());
     const SessionModel& model = context.model;
     context.files.log("added points: both keys have " + std::to_string(model.point_count) + " points in " +
                       std::to_string(model.keys.key1.parts.size()) + " parts; wrote ani1.dat … " +
@@ -59,21 +59,21 @@ StepResult Splitting::finish(StepContext& context)
 
 StepResult Splitting::submit(StepContext& context, const std::string&)
 {
-    const std::optional<Diagnostic> problem = close(context);
+    const Expected<void> closed = close(context);
     const std::string files = written == 0 ? std::string("no path file")
                                            : "ani1.dat … " + path_file_name(written) + " (" + std::to_string(written) +
                                                  " of " + std::to_string(total()) + ")";
     context.files.log("split stopped: " + files + " written");
     return {StepOutcome::stopped,
-            problem ? problem->to_string() : "Split stopped: " + files + " written, none half-written"};
+            closed ? "Split stopped: " + files + " written, none half-written" : closed.error().to_string()};
 }
 
-std::optional<Diagnostic> Splitting::close(StepContext& context)
+Expected<void> Splitting::close(StepContext& context)
 {
-    std::optional<Diagnostic> problem = context.files.end_batch();
-    if (problem)
-        context.model.written.set_problem(*problem);
-    return problem;
+    Expected<void> closed = context.files.end_batch();
+    if (!closed)
+        context.model.written.set_problem(closed.error());
+    return closed;
 }
 
 std::string Splitting::progress() const

@@ -77,8 +77,8 @@ StepResult Key2Prompt::submit(StepContext& context, const std::string& answer)
         return StepResult::refused(std::move(*refused));
     const auto& keys = context.model.key_frames;
     const std::size_t key_points = std::max(keys[0].point_count(), keys[1].point_count());
-    if (std::optional<std::string> refused = frames_refusal(key_points, context.settings))
-        return StepResult::refused(std::move(*refused));
+    if (const Expected<void> fits = check_frames_fit(key_points, context.settings); !fits)
+        return StepResult::refused(fits.error().message);
     return {StepOutcome::answered};
 }
 
@@ -150,8 +150,8 @@ StepResult PathPrompt::submit(StepContext& context, const std::string& name)
         point_path_from(read->file, name, path == 0 ? PathEnd::first : PathEnd::last, model.keys, defaults);
     if (!points)
         return StepResult::refused(points.error().to_string());
-    if (std::optional<std::string> refused = path_refusal(points->size(), context.settings))
-        return StepResult::refused(name + ": " + *refused);
+    if (const Expected<void> fits = check_path_fits(points->size(), context.settings); !fits)
+        return StepResult::refused(name + ": " + fits.error().message);
     SessionPath& shaped = model.paths[static_cast<std::size_t>(path)];
     // Accepting rewrites the file that was read, whatever case the name was typed in.
     shaped.name = context.files.name_read(name);

@@ -5,12 +5,12 @@
 
 namespace apcs {
 
-ExitStatus run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs, const PictureSaver& save_picture,
-                               Diagnostic& problem)
+Expected<ExitStatus> run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs,
+                                         const PictureSaver& save_picture)
 {
     ScenePlayer program(player, delay_ms, save_picture);
     std::vector<KeyEvent> typed;
-    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, typed, problem);
+    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, typed);
 }
 
 } // namespace apcs

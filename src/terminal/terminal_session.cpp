@@ -110,22 +110,13 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
     return area ? render_cells(screen, *area, glyphs, cache) : too_small_grid(size);
 }
 
-std::unique_ptr<Terminal> open_terminal(Diagnostic& problem)
+Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace,
+                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
-    if (!opened) {
-        problem = opened.error();
-        return nullptr;
-    }
-    return std::move(*opened);
-}
-
-ExitStatus run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                std::vector<KeyEvent>& recorded, Diagnostic& problem)
-{
-    const std::unique_ptr<Terminal> terminal = open_terminal(problem);
-    if (!terminal)
-        return ExitStatus::terminal_problem;
+    if (!opened)
+        return opened.error();
+    const std::unique_ptr<Terminal> terminal = std::move(*opened);
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {

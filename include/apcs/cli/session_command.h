@@ -15,11 +15,10 @@
 namespace apcs {
 
 // The terminal shell of the session, supplied by the executable (the only part linked with
-// ncurses); see run_terminal_session. Returns success, stopped, or terminal_problem with
-// `problem` set.
-using TerminalSessionRunner =
-    std::function<ExitStatus(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                             std::vector<KeyEvent>& recorded, Diagnostic& problem)>;
+// ncurses); see run_terminal_session. Returns success or stopped, or why there is no usable
+// terminal ("apcs: PROBLEM").
+using TerminalSessionRunner = std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace,
+                                                                 GlyphSet glyphs, std::vector<KeyEvent>& recorded)>;
 
 // Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
 bool is_utf8_codeset(std::string_view codeset);

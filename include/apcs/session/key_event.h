@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/session/physical_key.h"
 
 #include <cstdint>

@@ -3,7 +3,7 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/formats/dat_file.h"
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/session/session_log.h"
 
@@ -43,12 +43,12 @@ public:
     // From now on `name` is a key file, which no write may replace (SPEC §2.1).
     virtual void protect_key_file(const std::string& name) = 0;
     // Atomic, keeping a differing old file as .bak; refuses a key file. The problem, if any.
-    [[nodiscard]] virtual std::optional<Diagnostic> write(const std::string& name, const std::string& content) = 0;
+    [[nodiscard]] virtual Expected<void> write(const std::string& name, const std::string& content) = 0;
     // Many writes in a row (the split's path files, one per point): from begin_batch() on, each
     // write stays atomic but does not wait for the disk; end_batch() then flushes them all at
     // once, one barrier instead of one per file. The problem of the barrier, if any.
     virtual void begin_batch() {}
-    [[nodiscard]] virtual std::optional<Diagnostic> end_batch() { return std::nullopt; }
+    [[nodiscard]] virtual Expected<void> end_batch() { return ok; }
     // The in-betweens inb001.dat … (every frame but the first and the last), each a whole graphic
     // with the parts of `structure`; nothing is written if any of them is a key file. Returns the
     // names written.
@@ -74,9 +74,9 @@ public:
     bool lies_in_folder(const std::string& name) const override;
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(m_folder / name); }
     void protect_key_file(const std::string& name) override;
-    std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    Expected<void> write(const std::string& name, const std::string& content) override;
     void begin_batch() override { m_in_batch = true; }
-    std::optional<Diagnostic> end_batch() override;
+    Expected<void> end_batch() override;
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
     std::vector<std::string> earlier_inbetweens(std::size_t written_count) const override;
     void log(const std::string& line) override;
@@ -106,12 +106,12 @@ public:
     bool exists(const std::string& name) const override { return files.count(name) > 0; }
     bool is_key_file(const std::string& name) const override { return m_key_files.guards(name); }
     void protect_key_file(const std::string& name) override;
-    std::optional<Diagnostic> write(const std::string& name, const std::string& content) override;
+    Expected<void> write(const std::string& name, const std::string& content) override;
     void begin_batch() override { ++batches_begun; }
-    std::optional<Diagnostic> end_batch() override
+    Expected<void> end_batch() override
     {
         ++batches_ended;
-        return std::nullopt;
+        return ok;
     }
     Expected<std::vector<std::string>> write_inbetweens(const FrameSequence& frames, const Graphic& structure) override;
     std::vector<std::string> earlier_inbetweens(std::size_t written_count) const override;

@@ -67,7 +67,7 @@ struct StepContext {
 
     void say(const std::string& line) { console.print_line(line); }
     // Writes through SessionFiles; a failure is remembered as the model's write problem.
-    [[nodiscard]] std::optional<Diagnostic> write_file(const std::string& name, const std::string& content);
+    [[nodiscard]] Expected<void> write_file(const std::string& name, const std::string& content);
     PathSettings path_settings(int path) const;
 };
 

@@ -85,7 +85,7 @@ struct Splitting {
     // The message line while it writes.
     std::string progress() const;
     // Ends the batch of writes: the one disk barrier for all its files.
-    std::optional<Diagnostic> close(StepContext& context);
+    Expected<void> close(StepContext& context);
 
     static Splitting after(const Key2Prompt&, StepContext& context);
 

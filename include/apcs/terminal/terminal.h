@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/session/key_event.h"
 

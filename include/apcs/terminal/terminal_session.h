@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/formats/diagnostic.h"
+#include "apcs/base/diagnostic.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
@@ -12,25 +12,22 @@
 
 namespace apcs {
 
-// Runs the session (or apcs play's ScenePlayer) in the terminal: the script's keys first, as if typed, at `pace` (at once; one
-// key every N ms; one key per Space) with its captions on the message line, then the keyboard, the
-// graphics screen in `glyphs` (already chosen: not GlyphSet::automatic). Every key handled is
-// appended to `recorded`; Ctrl-L (Key::redraw) also repaints the whole terminal. Below the least
-// size (text_screen_columns x text_screen_rows) the screen says how large it must be. Returns
-// success when the session ended, stopped when stopped by a signal or a lost terminal,
-// terminal_problem with `problem` set ("apcs: PROBLEM") when there is no usable terminal. The
-// terminal is given back on every way out, exceptions included.
-// While a paced replay plays, Esc ends it (the keyboard takes over) and other keys are ignored.
 // The screen of a terminal smaller than the graphics mode's least size: how large it must be.
 CellGrid too_small_grid(TerminalSize size);
 
 // `screen` in the cells of a terminal of `size`, or too_small_grid below the least size.
 CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache);
 
-// The terminal, or nullptr with `problem` set ("apcs: PROBLEM") when there is no usable one.
-std::unique_ptr<Terminal> open_terminal(Diagnostic& problem);
-
-ExitStatus run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                std::vector<KeyEvent>& recorded, Diagnostic& problem);
+// Runs `program` (the session, or apcs play's ScenePlayer) in the terminal: the script's keys
+// first, as if typed, at `pace` (at once; one key every N ms; one key per Space) with its captions
+// on the message line, then the keyboard, the graphics screen in `glyphs` (already chosen: not
+// GlyphSet::automatic). Every key handled is appended to `recorded`; Ctrl-L (Key::redraw) also
+// repaints the whole terminal. Below the least size (text_screen_columns x text_screen_rows) the
+// screen says how large it must be, and keys wait. While a paced replay plays, Esc ends it (the
+// keyboard takes over) and other keys are ignored. Returns success when the program ended,
+// stopped when stopped by a signal or a lost terminal, or why there is no usable terminal
+// ("apcs: PROBLEM"). The terminal is given back on every way out, exceptions included.
+Expected<ExitStatus> run_terminal_session(InteractiveProgram& program, const KeyScript& script, ReplayPace pace,
+                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded);
 
 } // namespace apcs
