@@ -1,12 +1,22 @@
 #!/usr/bin/env bash
 # Installs the Debian packages APCS needs to build, test and run, skipping those already present.
-# Usage: scripts/install-deps.sh [extra-package ...]   (README.md says why each package is needed)
+# Usage: scripts/install-deps.sh [--packaging] [extra-package ...]   (README.md says why each is needed)
+# --packaging adds what building and checking the Debian package needs (scripts/package.sh,
+# tests/e2e/debian_package.sh): debhelper and its bash-completion add-on, dpkg-dev, fakeroot,
+# lintian, and man-db for `man apcs`.
 set -euo pipefail
 
+packaging=()
+if [ "${1:-}" = --packaging ]; then
+  packaging=(debhelper dpkg-dev fakeroot bash-completion lintian man-db)
+  shift
+fi
+
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
-# `script`, a terminal for keys_from_pipe.sh) and mount (the full-disk case of batch_faults.sh).
+# `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
+# librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do).
 packages=(g++ cmake make catch2 libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux tmux procps groff-base
-          python3 bsdutils mount "$@")
+          python3 bsdutils mount librsvg2-bin imagemagick "${packaging[@]}" "$@")
 
 missing=()
 for package in "${packages[@]}"; do
