@@ -1,6 +1,7 @@
 #include "apcs/raster/painter.h"
 
 #include "apcs/raster/font.h"
+#include "apcs/raster/line_pixels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -27,39 +28,6 @@ void apply(Bitmap& target, int x, int y, DrawMode mode)
     }
 }
 
-// Liang–Barsky: clips the segment to [low, high] in both axes; false when nothing is left.
-bool clip_segment(double& x0, double& y0, double& x1, double& y1, double x_low, double y_low, double x_high,
-                  double y_high)
-{
-    double enter = 0.0;
-    double leave = 1.0;
-    const double dx = x1 - x0;
-    const double dy = y1 - y0;
-    const double p[4] = {-dx, dx, -dy, dy};
-    const double q[4] = {x0 - x_low, x_high - x0, y0 - y_low, y_high - y0};
-    for (int i = 0; i < 4; ++i) {
-        if (p[i] == 0.0) {
-            if (q[i] < 0.0)
-                return false;
-            continue;
-        }
-        const double r = q[i] / p[i];
-        if (p[i] < 0.0)
-            enter = std::max(enter, r);
-        else
-            leave = std::min(leave, r);
-    }
-    if (enter > leave)
-        return false;
-    const double start_x = x0 + enter * dx;
-    const double start_y = y0 + enter * dy;
-    x1 = x0 + leave * dx;
-    y1 = y0 + leave * dy;
-    x0 = start_x;
-    y0 = start_y;
-    return true;
-}
-
 void toggle_once(Bitmap& target, std::vector<PixelPoint>& pixels)
 {
     std::sort(pixels.begin(), pixels.end(), [](PixelPoint a, PixelPoint b) { return a.y != b.y ? a.y < b.y : a.x < b.x; });
@@ -76,49 +44,6 @@ bool same_clip(const std::optional<PixelRect>& a, const std::optional<PixelRect>
 }
 
 } // namespace
-
-template <typename Plot>
-void Painter::each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const
-{
-    const PixelRect box = bounds();
-    int x = from.x;
-    int y = from.y;
-    int end_x = to.x;
-    int end_y = to.y;
-    // A line inside the box needs no clipping (clipping would give back its own ends): a long
-    // curve draws millions of short lines.
-    if (!box.contains(from) || !box.contains(to)) {
-        double x0 = from.x;
-        double y0 = from.y;
-        double x1 = to.x;
-        double y1 = to.y;
-        if (!clip_segment(x0, y0, x1, y1, box.left, box.top, box.right - 1, box.bottom - 1))
-            return;
-        x = static_cast<int>(std::lround(x0));
-        y = static_cast<int>(std::lround(y0));
-        end_x = static_cast<int>(std::lround(x1));
-        end_y = static_cast<int>(std::lround(y1));
-    }
-    const int dx = std::abs(end_x - x);
-    const int dy = -std::abs(end_y - y);
-    const int step_x = x < end_x ? 1 : -1;
-    const int step_y = y < end_y ? 1 : -1;
-    int error = dx + dy;
-    while (true) {
-        plot(x, y);
-        if (x == end_x && y == end_y)
-            break;
-        const int doubled = 2 * error;
-        if (doubled >= dy) {
-            error += dy;
-            x += step_x;
-        }
-        if (doubled <= dx) {
-            error += dx;
-            y += step_y;
-        }
-    }
-}
 
 PixelRect Painter::bounds() const
 {
@@ -165,24 +90,15 @@ void Painter::line(PixelPoint from, PixelPoint to, DrawMode mode)
 {
     if (mode == DrawMode::set)
         record(from, to, LineStyle::solid);
-    each_line_pixel(from, to, [&](int x, int y) { apply(m_target, x, y, mode); });
+    each_line_pixel(from, to, bounds(), [&](int x, int y) { apply(m_target, x, y, mode); });
 }
 
 void Painter::styled_line(PixelPoint from, PixelPoint to, LineStyle style, int& phase)
 {
     record(from, to, style);
-    bool first = true;
-    each_line_pixel(from, to, [&](int x, int y) {
-        // A segment's first pixel is the previous segment's last: counted once.
-        if (first && phase > 0) {
-            first = false;
-            return;
-        }
-        first = false;
-        const bool on = style == LineStyle::solid || (style == LineStyle::dashed ? phase % 10 < 6 : phase % 3 == 0);
-        if (on)
+    each_styled_pixel(from, to, bounds(), style, phase, [&](int x, int y, bool lit) {
+        if (lit)
             m_target.set(x, y, true);
-        ++phase;
     });
 }
 
@@ -210,7 +126,7 @@ void Painter::arrow(PixelPoint tip, DrawMode mode)
 {
     std::vector<PixelPoint> pixels;
     const auto collect = [&](PixelPoint from, PixelPoint to) {
-        each_line_pixel(from, to, [&](int x, int y) { pixels.push_back({x, y}); });
+        each_line_pixel(from, to, bounds(), [&](int x, int y) { pixels.push_back({x, y}); });
     };
     collect(tip, {tip.x + 8, tip.y + 8});
     collect(tip, {tip.x + 4, tip.y});

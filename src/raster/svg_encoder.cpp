@@ -2,9 +2,12 @@
 
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/cell_grid.h"
+#include "apcs/raster/line_pixels.h"
 #include "apcs/raster/painter.h"
 
+#include <algorithm>
 #include <charconv>
+#include <cstdlib>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -15,8 +18,15 @@ namespace {
 
 // The top of a text cell to its baseline, in raster rows: the VGA font's letters end on row 11.
 constexpr int text_baseline_row = 11;
-// The monospace font size whose advance (about 0.6 em) is near a 9-pixel cell; textLength makes it exact.
+// The monospace font size whose advance (about 0.6 em) is near a 9-pixel cell; textLength makes it
+// exact. Bold, as the VGA font's strokes are two pixels wide: a rendering then lights nearly every
+// pixel the PNG's text lights (tests/e2e/svg_renders.sh).
 constexpr int text_font_size = 15;
+// Lines a little wider than a pixel, so that a diagonal's pixels are covered; their square caps
+// (half the width past each end) cover a run's first and last pixels.
+constexpr double stroke_width = 1.25;
+// Half the length of a dot's line: with its caps 1.5 tall, a raster row as the monitor showed it.
+constexpr double dot_half_length = svg_row_height / 2 - stroke_width / 2;
 
 std::string number(double value)
 {
@@ -56,58 +66,95 @@ std::string escaped_text(std::string_view utf8)
     return text;
 }
 
-// Each distinct clip rectangle becomes one <clipPath>; strokes name theirs by index.
-class ClipPaths {
-public:
-    std::string attribute(const std::optional<PixelRect>& clip)
-    {
-        if (!clip)
-            return {};
-        std::size_t index = 0;
-        while (index < m_rects.size() && !same(m_rects[index], *clip))
-            ++index;
-        if (index == m_rects.size())
-            m_rects.push_back(*clip);
-        return " clip-path=\"url(#clip" + std::to_string(index) + ")\"";
-    }
-    std::string definitions() const
-    {
-        std::string text = "<defs>\n";
-        for (std::size_t i = 0; i < m_rects.size(); ++i)
-            text += "<clipPath id=\"clip" + std::to_string(i) + "\"><rect " + rect_attributes(m_rects[i]) +
-                    "/></clipPath>\n";
-        return text + "</defs>\n";
-    }
+// Whether two raster pixels are the same or neighbours (diagonals included).
+bool touching(PixelPoint a, PixelPoint b) { return std::abs(a.x - b.x) <= 1 && std::abs(a.y - b.y) <= 1; }
 
-private:
-    static bool same(PixelRect a, PixelRect b)
-    {
-        return a.left == b.left && a.top == b.top && a.right == b.right && a.bottom == b.bottom;
-    }
-    std::vector<PixelRect> m_rects;
-};
-
-std::string dash_attribute(LineStyle style)
+// The pieces of a stroke that the Painter lit inside `box`: runs of lit pixels that follow one
+// another, each kept as its first pixel, the last pixel it lit on each segment it passes through,
+// and its last pixel. A dashed or dotted stroke's runs are its dashes and dots, with the PNG's
+// pattern and phase; a solid stroke's are the pieces left by clipping.
+std::vector<std::vector<PixelPoint>> lit_runs(const Stroke& stroke, PixelRect box)
 {
-    switch (style) {
-    case LineStyle::solid: return {};
-    case LineStyle::dashed: return " stroke-dasharray=\"6 4\"";
-    case LineStyle::dotted: return " stroke-dasharray=\"1 2\"";
+    if (stroke.points.size() == 1)
+        return box.contains(stroke.points.front()) ? std::vector<std::vector<PixelPoint>>{stroke.points}
+                                                   : std::vector<std::vector<PixelPoint>>{};
+    std::vector<std::vector<PixelPoint>> runs;
+    std::vector<PixelPoint> run;
+    PixelPoint last_lit;
+    std::size_t last_lit_segment = 0;
+    const auto close_run = [&] {
+        if (run.empty())
+            return;
+        if (run.back() != last_lit)
+            run.push_back(last_lit);
+        runs.push_back(std::move(run));
+        run.clear();
+    };
+    int phase = 0;
+    for (std::size_t segment = 1; segment < stroke.points.size(); ++segment) {
+        const auto take = [&](int x, int y, bool lit) {
+            const PixelPoint pixel{x, y};
+            if (!lit || (!run.empty() && !touching(last_lit, pixel)))
+                close_run();
+            if (!lit)
+                return;
+            if (run.empty())
+                run.push_back(pixel);
+            else if (segment != last_lit_segment && run.back() != last_lit)
+                run.push_back(last_lit);
+            last_lit = pixel;
+            last_lit_segment = segment;
+        };
+        each_styled_pixel(stroke.points[segment - 1], stroke.points[segment], box, stroke.style, phase, take);
     }
-    return {};
+    close_run();
+    return runs;
 }
 
-std::string stroke_element(const Stroke& stroke, ClipPaths& clips)
+// Where the raster may be drawn on: the bitmap, and the stroke's clip within it (Painter::bounds).
+PixelRect visible_box(const std::optional<PixelRect>& clip, int width, int height)
 {
-    if (stroke.points.size() == 1) {
-        const PixelPoint at = stroke.points.front();
-        return "<rect " + rect_attributes({at.x, at.y, at.x + 1, at.y + 1}) + " fill=\"white\" stroke=\"none\"" +
-               clips.attribute(stroke.clip) + "/>\n";
+    if (!clip)
+        return {0, 0, width, height};
+    return {std::max(0, clip->left), std::max(0, clip->top), std::min(width, clip->right), std::min(height, clip->bottom)};
+}
+
+// A run as path data. A run of one pixel is a short upright line whose square caps fill the pixel
+// (1.25 wide, 1.5 tall): a zero-length line is drawn by some renderers and not by others.
+std::string run_data(const std::vector<PixelPoint>& run)
+{
+    if (run.size() == 1) {
+        const PixelPoint at = run.front();
+        const double centre_y = svg_y(at.y + 0.5);
+        return "M" + number(svg_x(at.x + 0.5)) + "," + number(centre_y - dot_half_length) + " V" +
+               number(centre_y + dot_half_length);
     }
-    std::string points;
-    for (const PixelPoint point : stroke.points)
-        points += (points.empty() ? "" : " ") + svg_point_text(point);
-    return "<polyline points=\"" + points + "\"" + dash_attribute(stroke.style) + clips.attribute(stroke.clip) + "/>\n";
+    std::string data;
+    for (const PixelPoint point : run)
+        data += (data.empty() ? "M" : " L") + svg_point_text(point);
+    return data;
+}
+
+std::string_view style_name(LineStyle style)
+{
+    switch (style) {
+    case LineStyle::solid: return "solid";
+    case LineStyle::dashed: return "dashed";
+    case LineStyle::dotted: return "dotted";
+    }
+    return "solid";
+}
+
+// One <path> per stroke, its visible pieces as subpaths; nothing when none of it is visible.
+std::string stroke_element(const Stroke& stroke, int width, int height)
+{
+    std::string data;
+    for (const std::vector<PixelPoint>& run : lit_runs(stroke, visible_box(stroke.clip, width, height)))
+        data += (data.empty() ? "" : " ") + run_data(run);
+    if (data.empty())
+        return {};
+    const std::string clipped = stroke.clip ? " clipped" : "";
+    return "<path class=\"" + std::string(style_name(stroke.style)) + clipped + "\" d=\"" + data + "\"/>\n";
 }
 
 // Path data of straight segments between pixel centres.
@@ -142,7 +189,7 @@ std::string mark_element(const PixelMark& mark)
         break;
     }
     path.pop_back();
-    return "<path d=\"" + path + "\"/>\n";
+    return "<path class=\"mark\" d=\"" + path + "\"/>\n";
 }
 
 std::string text_element(const TextLine& line)
@@ -165,20 +212,19 @@ std::string encode_svg(const GraphicsScreen& screen)
 {
     const int width = screen.bitmap.width();
     const std::string height = number(svg_y(screen.bitmap.height()));
-    ClipPaths clips;
     std::string lines;
     for (const Stroke& stroke : screen.strokes)
-        lines += stroke_element(stroke, clips);
+        lines += stroke_element(stroke, width, screen.bitmap.height());
     std::string text = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
                        height + "\" viewBox=\"0 0 " + std::to_string(width) + " " + height + "\">\n";
     text += "<rect x=\"0\" y=\"0\" width=\"" + std::to_string(width) + "\" height=\"" + height + "\" fill=\"black\"/>\n";
-    text += clips.definitions();
-    text += "<g fill=\"none\" stroke=\"white\" stroke-width=\"1.2\">\n" + lines;
+    text += "<g fill=\"none\" stroke=\"white\" stroke-width=\"" + number(stroke_width) +
+            "\" stroke-linecap=\"square\">\n" + lines;
     for (const PixelMark& mark : screen.marks)
         text += mark_element(mark);
     text += "</g>\n<g fill=\"white\" font-family=\"monospace\" font-size=\"" + std::to_string(text_font_size) +
-            "\" xml:space=\"preserve\">\n";
+            "\" font-weight=\"bold\" xml:space=\"preserve\">\n";
     for (const TextLine& line : screen.text)
         if (!line.text.empty())
             text += text_element(line);

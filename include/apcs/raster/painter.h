@@ -46,8 +46,6 @@ public:
     void text(PixelPoint top_left, std::string_view utf8, DrawMode mode = DrawMode::set);
 
 private:
-    template <typename Plot>
-    void each_line_pixel(PixelPoint from, PixelPoint to, Plot plot) const;
     PixelRect bounds() const;
     void record(PixelPoint from, PixelPoint to, LineStyle style);
 

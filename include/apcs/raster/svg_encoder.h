@@ -15,11 +15,14 @@ inline constexpr double svg_row_height = 1.5;
 // write it: "X,Y" with X = x + 0.5 and Y = (y + 0.5) × 1.5, in the shortest decimal form.
 std::string svg_point_text(PixelPoint pixel);
 
-// The screen as an SVG document, white on black like the PNG: its recorded strokes as polylines
-// (stroke-dasharray "6 4" for dashed, "1 2" for dotted; a stroke of one point is one pixel's
-// square), its marks as small vector shapes (the x of 5x5, the 3x3 square, the arrow, the staff
-// marker) and its text as <text> in a monospace font at its 9x14 cells. Lines the drawing did
-// not record (GraphicsScreen::strokes) are not in it.
+// The screen as an SVG document, white on black like the PNG: each recorded stroke as one <path>
+// (class "solid", "dashed" or "dotted", and "clipped" when the drawing was clipped to a rectangle)
+// whose subpaths are the pieces the Painter lit: cut where the clip rectangle and the raster's
+// edges cut the line, and dashed or dotted with the PNG's pattern and phase, so that every viewer
+// draws what the PNG shows without clip paths or dash arrays; its marks as small vector shapes
+// (class "mark": the x of 5x5, the 3x3 square, the arrow, the staff marker) and its text as
+// <text> in a monospace font at its 9x14 cells. Lines the drawing did not record
+// (GraphicsScreen::strokes) are not in it.
 std::string encode_svg(const GraphicsScreen& screen);
 
 } // namespace apcs

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# The SVG pictures are drawn by common viewers as the PNG shows them: for a path, a fit's overlay of
+# every frame, a scene and apcs draw's overlay (solid, dotted and dashed lines), the SVG rendered by librsvg's
+# rsvg-convert and by ImageMagick's convert lights at least 95 % of the PNG's lit pixels within one
+# pixel. Usage: svg_renders.sh APCS DATA_FOLDER (skips, exit 77, without rsvg-convert or convert).
+set -uo pipefail
+apcs=$1
+data=$2
+here=$(cd "$(dirname "$0")" && pwd)
+for tool in rsvg-convert convert python3; do
+  command -v "$tool" > /dev/null || { echo "skipped: no $tool (scripts/install-deps.sh installs it)"; exit 77; }
+done
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAILED: $*"; exit 1; }
+cp "$data"/n-to-l/*.dat "$work"/
+cd "$work" || fail "cannot enter $work"
+
+"$apcs" path way1.dat --png path.png --svg path.svg || fail "apcs path"
+"$apcs" fit key1.dat key2.dat way1.dat way4.dat --inbetweens 5 --png fit.png --svg fit.svg > /dev/null || fail "apcs fit"
+"$apcs" play "$data"/robot/robot.scn --png scene.png --svg scene.svg > /dev/null || fail "apcs play"
+"$apcs" draw key1.dat way1.dat way4.dat key2.dat --png draw.png --svg draw.svg || fail "apcs draw"
+grep -l 'clip-path\|stroke-dasharray' ./*.svg && fail "an SVG leans on clip-path or stroke-dasharray"
+
+plain_pgm() { convert "$1" -colorspace gray -depth 8 -compress none "pgm:$2" || fail "convert $1"; }
+for picture in path fit scene draw; do
+  plain_pgm "$picture.png" "$picture.pgm"
+  rsvg-convert "$picture.svg" -o "$picture-rsvg.png" || fail "rsvg-convert $picture.svg"
+  convert "$picture.svg" "$picture-magick.png" || fail "convert $picture.svg"
+  for renderer in rsvg magick; do
+    plain_pgm "$picture-$renderer.png" "$picture-$renderer.pgm"
+    read -r lit covered share < <(python3 "$here/svg_coverage.py" "$picture.pgm" "$picture-$renderer.pgm") ||
+      fail "svg_coverage.py $picture"
+    echo "$picture.svg by $renderer: $covered of the PNG's $lit lit pixels within one pixel ($share)"
+    [ "$lit" -gt 1000 ] || fail "$picture.png has only $lit lit pixels"
+    python3 -c "import sys; sys.exit(0 if $share >= 0.95 else 1)" || fail "$picture.svg by $renderer covers $share < 0.95"
+  done
+done
+echo "passed: rsvg-convert and ImageMagick draw the path, the fit overlay, the scene and the dashes as the PNGs"
