@@ -1,22 +1,23 @@
 #!/usr/bin/env bash
 # Installs the Debian packages APCS needs to build, test and run, skipping those already present.
-# Usage: scripts/install-deps.sh [--packaging] [extra-package ...]   (README.md says why each is needed)
-# --packaging adds what building and checking the Debian package needs (scripts/package.sh,
-# tests/e2e/debian_package.sh): debhelper and its bash-completion add-on, dpkg-dev, fakeroot,
-# lintian, and man-db for `man apcs`.
+# Usage: scripts/install-deps.sh [--run | --packaging] [extra-package ...]   (README.md says why)
+# Without an option: what building, running and testing need (scripts/test.sh). --run: only what
+# building and running need (scripts/run.sh). --packaging: all that, and what building and checking
+# the Debian package needs (scripts/package.sh, tests/e2e/debian_package.sh): debhelper and its
+# bash-completion add-on, dpkg-dev, fakeroot, lintian, and man-db for `man apcs`.
 set -euo pipefail
 
-packaging=()
-if [ "${1:-}" = --packaging ]; then
-  packaging=(debhelper dpkg-dev fakeroot bash-completion lintian man-db)
-  shift
-fi
-
+build_and_run=(g++ cmake make libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux)
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
 # `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
 # librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do).
-packages=(g++ cmake make catch2 libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux tmux procps groff-base
-          python3 bsdutils mount librsvg2-bin imagemagick "${packaging[@]}" "$@")
+testing=(catch2 tmux procps groff-base python3 bsdutils mount librsvg2-bin imagemagick)
+case "${1:-}" in
+  --run) testing=(); shift ;;
+  --packaging) testing+=(debhelper dpkg-dev fakeroot bash-completion lintian man-db); shift ;;
+esac
+
+packages=("${build_and_run[@]}" "${testing[@]}" "$@")
 
 missing=()
 for package in "${packages[@]}"; do
