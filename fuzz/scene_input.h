@@ -38,9 +38,14 @@ inline SceneOutcome read_and_play_scene(std::string_view text)
     if (scene->last_frame > 500)
         return SceneOutcome::read_not_played;
     const SceneAnimation animation(*scene, {});
+    // What apcs play refuses (composed transforms past what a frame file holds) is a refusal; a
+    // frame that passed that check must read back: finite and within the .dat files' 1e9.
+    if (animation.first_out_of_reach(max_dat_magnitude))
+        return SceneOutcome::refused;
+    const auto readable = [](double value) { return std::isfinite(value) && std::abs(value) <= max_dat_magnitude; };
     for (int f = 0; f <= animation.last_frame(); ++f)
         for (const Vec3& point : animation.frame(f))
-            if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z))
+            if (!readable(point.x) || !readable(point.y) || !readable(point.z))
                 return SceneOutcome::broken;
     return SceneOutcome::played;
 }

@@ -412,7 +412,8 @@ std::optional<int> refuse_clashes(const CLI::App& app, const CLI::App& chosen, c
     return std::nullopt;
 }
 
-// The options that are known only once the whole line is read: the slopes, and which were given.
+// The options that are known only once the whole line is read: the slopes, which were given, and
+// the files the run reads.
 void complete_options(const CLI::App& app, ParsedLine& line)
 {
     if (line.slopes.size() == 2)
@@ -420,6 +421,7 @@ void complete_options(const CLI::App& app, ParsedLine& line)
     const bool view_given = given_count(app, "--view") > 0;
     line.options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
                           given_count(app, "--delay") > 0, line.slopes.size() == 2};
+    line.options.read_files = line.inputs();
 }
 
 int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,

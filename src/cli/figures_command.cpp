@@ -125,7 +125,8 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         return report_bad_input(robot.error(), err);
     pictures.emplace_back("fig-3-3-3.png", std::move(*robot));
     for (const auto& [name, screen] : pictures) {
-        if (Expected<void> done = write_png_file(target / name, screen, PngShape::monitor, out); !done)
+        if (Expected<void> done = write_png_file(target / name, screen, PngShape::monitor, read_files_guard(options), out);
+            !done)
             return report_bad_input(done.error(), err);
         out << (target / name).string() << '\n';
     }

@@ -50,13 +50,15 @@ Expected<void> write_animation_gif(const FrameSequence& frames, const Graphic& s
     UnloggedSteps log;
     AnimationPlayer player(frames, structure, {key_files.front().filename().string(), key_files.back().filename().string()},
                            options.view, options.delay_ms, log);
-    return write_player_gif(player, frames.frame_count(), *options.gif, options.delay_ms, out);
+    return write_player_gif(player, frames.frame_count(), *options.gif, options.delay_ms, read_files_guard(options),
+                            out);
 }
 
 } // namespace
 
 Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
-                                const std::filesystem::path& target, int delay_ms, std::ostream& out)
+                                const std::filesystem::path& target, int delay_ms, const KeyFileGuard& inputs,
+                                std::ostream& out)
 {
     std::size_t shown = 0;
     const auto frame_at = [&](std::size_t k) {
@@ -67,7 +69,7 @@ Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count
     const std::optional<std::string> gif = encode_gif(frame_count, frame_at, gif_delay_centiseconds(delay_ms));
     if (!gif)
         return Diagnostic{target.string(), 0, "cannot encode the GIF image"};
-    return write_picture_bytes(target, *gif, out);
+    return write_picture_bytes(target, *gif, inputs, out);
 }
 
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
@@ -94,7 +96,7 @@ ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure,
 ExitStatus deliver_inbetween_files(const InbetweenWriter& write, const CommonOptions& options,
                                    std::span<const std::filesystem::path> key_files, std::ostream& err)
 {
-    KeyFileGuard guard;
+    KeyFileGuard guard = read_files_guard(options);
     for (const std::filesystem::path& key_file : key_files)
         guard.protect(key_file);
     const std::filesystem::path folder = options.out.value_or(".");

@@ -27,31 +27,41 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
-Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes, std::ostream& out)
+KeyFileGuard read_files_guard(const CommonOptions& options)
+{
+    KeyFileGuard guard;
+    for (const std::filesystem::path& input : options.read_files)
+        if (!input.empty() && input != standard_stream_name)
+            guard.protect(input);
+    return guard;
+}
+
+Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
+                                   const KeyFileGuard& inputs, std::ostream& out)
 {
     if (target == standard_stream_name) {
         out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
         return ok;
     }
-    const Expected<WriteResult> written = write_file_atomically(target, bytes);
+    const Expected<WriteResult> written = write_file_atomically(target, bytes, &inputs);
     if (!written)
         return written.error();
     return ok;
 }
 
 Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                              PngShape shape, std::ostream& out)
+                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out)
 {
     const std::optional<std::string> png = encode_png(render_raster(screen), shape);
     if (!png)
         return Diagnostic{target.string(), 0, "cannot encode the PNG image"};
-    return write_picture_bytes(target, *png, out);
+    return write_picture_bytes(target, *png, inputs, out);
 }
 
 Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                              std::ostream& out)
+                              const KeyFileGuard& inputs, std::ostream& out)
 {
-    return write_picture_bytes(target, encode_svg(screen), out);
+    return write_picture_bytes(target, encode_svg(screen), inputs, out);
 }
 
 std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
@@ -76,12 +86,13 @@ Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::sp
 
 Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out)
 {
+    const KeyFileGuard inputs = read_files_guard(options);
     for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}})
         if (target)
-            if (auto outcome = write_png_file(*target, screen, shape, out); !outcome)
+            if (auto outcome = write_png_file(*target, screen, shape, inputs, out); !outcome)
                 return outcome.error();
     if (options.svg)
-        return write_svg_file(*options.svg, screen, out);
+        return write_svg_file(*options.svg, screen, inputs, out);
     return ok;
 }
 

@@ -19,6 +19,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -89,6 +91,27 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
     return ok;
 }
 
+// A scene whose frames a frame file could not hold (values past 1e9, or not numbers) is refused
+// before anything is printed or written, at the line of the object that goes out of reach.
+Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scene& scene,
+                                     const std::filesystem::path& scene_file)
+{
+    const std::optional<OutOfReach> beyond = animation.first_out_of_reach(max_dat_magnitude);
+    if (!beyond)
+        return ok;
+    const SceneObject& object = scene.objects[beyond->object];
+    std::ostringstream reach;
+    if (std::isnan(beyond->magnitude))
+        reach << "values that are not numbers";
+    else
+        reach << "|value| " << std::setprecision(3) << beyond->magnitude;
+    return Diagnostic{scene_file.string(), object.line,
+                      "object " + object.name + " reaches " + reach.str() + " at frame " +
+                          std::to_string(beyond->frame) +
+                          " (its MOVE, ROTATE and SCALE composed with its parents'); a frame holds |value| <= 1e9, "
+                          "as a .dat file does"};
+}
+
 ViewAngles view_of(const Scene& scene, const CommonOptions& options)
 {
     ViewAngles view = scene.view.value_or(ViewAngles{});
@@ -97,6 +120,17 @@ ViewAngles view_of(const Scene& scene, const CommonOptions& options)
     if (options.given.phi)
         view.phi_degrees = options.view.phi_degrees;
     return view;
+}
+
+// The options the outputs use: the scene's VIEW unless --theta or --phi says otherwise, and the
+// files the scene reads (`inputs`) among those no output or backup replaces.
+CommonOptions scene_shown_options(const Scene& scene, const CommonOptions& options,
+                                  const std::vector<std::filesystem::path>& inputs)
+{
+    CommonOptions shown = options;
+    shown.view = view_of(scene, options);
+    shown.read_files.insert(shown.read_files.end(), inputs.begin(), inputs.end());
+    return shown;
 }
 
 ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& options,
@@ -130,7 +164,10 @@ std::string save_screen_picture(const GraphicsScreen& screen)
         if (std::filesystem::exists(std::filesystem::symlink_status(name, error)))
             continue;
         std::ostringstream unused;
-        if (const Expected<void> written = write_png_file(name, screen, PngShape::monitor, unused); !written)
+        // A name not taken: no old picture is replaced, so no backup needs guarding.
+        const KeyFileGuard nothing_read;
+        if (const Expected<void> written = write_png_file(name, screen, PngShape::monitor, nothing_read, unused);
+            !written)
             return written.error().to_string();
         return "wrote " + name;
     }
@@ -173,19 +210,16 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
                                                 options, "use fewer FRAMES or drawings of fewer points", err))
         return *refused;
     const SceneAnimation animation(*scene, settings);
+    if (Expected<void> reachable = check_frames_in_reach(animation, *scene, request.scene); !reachable)
+        return report_bad_input(reachable.error(), err);
     if (options.print)
         print_frames(animation, *scene, out);
-    if (options.out) {
-        KeyFileGuard guard;
-        for (const std::filesystem::path& input : inputs)
-            guard.protect(input);
-        if (Expected<void> done = write_frame_files(animation, *options.out, guard); !done)
+    const CommonOptions shown = scene_shown_options(*scene, options, inputs);
+    if (options.out)
+        if (Expected<void> done = write_frame_files(animation, *options.out, read_files_guard(shown)); !done)
             return report_bad_input(done.error(), err);
-    }
     if (!all_frames)
         return ExitStatus::success;
-    CommonOptions shown = options;
-    shown.view = view_of(*scene, options);
     FrameSequence frames = animation.all_frames();
     const std::size_t frame_count = frames.frame_count();
     if (options.png || options.png_raw || options.svg) {
@@ -199,7 +233,9 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
                            options.delay_ms, log);
     player.name_frames_by_scene(scene_name);
     if (options.gif)
-        if (Expected<void> done = write_player_gif(player, frame_count, *options.gif, options.delay_ms, out); !done)
+        if (Expected<void> done =
+                write_player_gif(player, frame_count, *options.gif, options.delay_ms, read_files_guard(shown), out);
+            !done)
             return report_bad_input(done.error(), err);
     if (!played)
         return ExitStatus::success;

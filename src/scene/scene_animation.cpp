@@ -210,4 +210,50 @@ FrameSequence SceneAnimation::all_frames() const
     return frames;
 }
 
+namespace {
+
+// The largest |coordinate| of the box's points moved by `world`: an affine map's largest is at a
+// corner. NaN when one is not a number.
+double largest_coordinate(const Affine& world, const BoundingBox& box)
+{
+    double largest = 0;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Vec3 point = world(Vec3{(corner & 1) != 0 ? box.high().x : box.low().x,
+                                      (corner & 2) != 0 ? box.high().y : box.low().y,
+                                      (corner & 4) != 0 ? box.high().z : box.low().z});
+        for (const double value : {point.x, point.y, point.z}) {
+            if (std::isnan(value))
+                return value;
+            largest = std::max(largest, std::abs(value));
+        }
+    }
+    return largest;
+}
+
+} // namespace
+
+std::optional<OutOfReach> SceneAnimation::first_out_of_reach(double limit) const
+{
+    // Each drawing's box over all its frames, moved by the object's world transform at each frame:
+    // objects x frames x 8 corners, not every point of every frame.
+    std::vector<BoundingBox> boxes(m_scene.objects.size());
+    for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+        boxes[i].add(m_drawings[i]);
+        for (std::size_t k = 0; k < m_key_frames[i].frame_count(); ++k)
+            boxes[i].add(m_key_frames[i].frame(k));
+    }
+    std::vector<Affine> world_of(m_scene.objects.size());
+    for (int f = 0; f <= m_scene.last_frame; ++f)
+        for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+            const std::optional<std::size_t> parent = m_scene.objects[i].parent;
+            world_of[i] = parent ? world_of[*parent] * own_transform(i, f) : own_transform(i, f);
+            if (boxes[i].empty())
+                continue;
+            const double reach = largest_coordinate(world_of[i], boxes[i]);
+            if (std::isnan(reach) || reach > limit)
+                return OutOfReach{i, f, reach};
+        }
+    return std::nullopt;
+}
+
 } // namespace apcs

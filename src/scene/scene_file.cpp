@@ -662,7 +662,10 @@ Expected<Scene> parse_scene(std::string_view text, const std::string& file_name,
 Expected<Scene> read_scene_file(const std::filesystem::path& name, const StaffValues& default_staff,
                                 std::vector<std::filesystem::path>* inputs)
 {
-    Expected<std::string> text = read_text_file(name);
+    // "-" is standard input, read as a keystroke script is (a pipe, once, to its end); its SHAPE
+    // and KEYS files are found from the current folder.
+    const bool standard_input = name == "-";
+    Expected<std::string> text = standard_input ? read_script_text(name) : read_text_file(name);
     if (!text)
         return text.error();
     if (inputs != nullptr)
@@ -675,7 +678,7 @@ Expected<Scene> read_scene_file(const std::filesystem::path& name, const StaffVa
             inputs->push_back(path);
         return read_dat_file(path, 1);
     };
-    return parse_scene(*text, name.string(), read, default_staff);
+    return parse_scene(*text, standard_input ? "standard input" : name.string(), read, default_staff);
 }
 
 } // namespace apcs

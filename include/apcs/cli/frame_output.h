@@ -22,10 +22,11 @@ namespace apcs {
 std::string format_frames_print(const FrameSequence& frames);
 
 // The frames `player` shows, from its first, `frame_count` of them, as an animated GIF to `target`
-// (standard output for "-"), each shown `delay_ms`.
+// (standard output for "-"), each shown `delay_ms`; an old GIF's backup never replaces one of
+// `inputs`.
 Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count,
                                 const std::filesystem::path& target, int delay_ms,
-                                std::ostream& out);
+                                const KeyFileGuard& inputs, std::ostream& out);
 
 // The end of a batch command: all frames overlaid in the pictures --png and --png-raw name, the
 // numbers to `out` with --print, and the in-between files into --out (write_inbetween_files) —
@@ -34,7 +35,8 @@ Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count
 ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure, const CommonOptions& options,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err);
 
-// Writes in-between files with `write` into --out (or the current folder), the key files guarded,
+// Writes in-between files with `write` into --out (or the current folder), the key files and
+// options.read_files guarded,
 // and notes in-betweens an earlier run left beyond them: the files part of deliver_frames, also
 // for frames streamed as they are made (apcs fit without pictures or --print).
 using InbetweenWriter = std::function<Expected<std::vector<std::filesystem::path>>(const std::filesystem::path& folder,

@@ -44,6 +44,9 @@ struct CommonOptions {
     GivenOptions given;
     // The memory budget of one request (memory_budget.h); unset, APCS_MEMORY_LIMIT or the default.
     std::optional<std::uint64_t> memory_limit;
+    // The files the run reads: the command's own (set by the command line, not an option) and a
+    // scene's SHAPE and KEYS files (added by play). No output, picture or backup replaces one.
+    std::vector<std::filesystem::path> read_files;
 };
 
 // Whether a picture was asked for (--png, --png-raw, --svg or --gif).

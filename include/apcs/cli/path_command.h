@@ -3,6 +3,7 @@
 #include "apcs/session/exit_status.h"
 #include "apcs/cli/options.h"
 #include "apcs/formats/dat_file.h"
+#include "apcs/formats/key_file_guard.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/png_encoder.h"
 
@@ -23,16 +24,24 @@ std::string format_path_print(const EvaluatedPath& path);
 // The name "-": standard input where a file is read, standard output where one is written.
 inline constexpr std::string_view standard_stream_name = "-";
 
-// A picture's bytes to `target` atomically, or to `out` when `target` is "-".
-Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes, std::ostream& out);
+// The files of options.read_files, guarded: a picture's backup goes to NAME.b01 … rather than
+// replace one of them (write_file_atomically).
+KeyFileGuard read_files_guard(const CommonOptions& options);
+
+// A picture's bytes to `target` atomically, or to `out` when `target` is "-". An old picture is
+// kept as NAME.bak, or as NAME.b01 … when NAME.bak is one of `inputs`.
+Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
+                                   const KeyFileGuard& inputs, std::ostream& out);
 
 // Writes the screen's raster (text drawn in the font) as a PNG, atomically; to `out` when
-// `target` is "-".
+// `target` is "-". The old picture's backup never replaces one of `inputs`.
 Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                              PngShape shape, std::ostream& out);
+                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out);
 
-// Writes the screen as an SVG (encode_svg), atomically; to `out` when `target` is "-".
-Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen, std::ostream& out);
+// Writes the screen as an SVG (encode_svg), atomically; to `out` when `target` is "-". The old
+// picture's backup never replaces one of `inputs`.
+Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                              const KeyFileGuard& inputs, std::ostream& out);
 
 // The picture options and where each writes: --png, --png-raw, --svg, --gif.
 std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
@@ -42,7 +51,8 @@ picture_targets(const CommonOptions& options);
 // extension); then "TARGET: is an input of this run; --png never writes over an input".
 Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs);
 
-// Every picture `options` asks for (--png, --png-raw, --svg) of `screen`; the first problem.
+// Every picture `options` asks for (--png, --png-raw, --svg) of `screen`, no backup replacing
+// one of options.read_files; the first problem.
 Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the

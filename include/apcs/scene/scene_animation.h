@@ -7,6 +7,7 @@
 #include "apcs/scene/scene.h"
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +18,16 @@ namespace apcs {
 struct ObjectPoints {
     std::size_t first = 0;
     std::size_t count = 0;
+};
+
+// An object whose world points leave what a .dat file holds (|value| <= max_dat_magnitude, and
+// finite) at `frame`: its transforms composed with its parents' (ten nested SCALE 1.148 over 100
+// frames reach 1e57) or its drawing moved far enough (SHAPE at 1e9 with MOVE 1e9). `magnitude`
+// is the largest |value| (NaN when one is not a number).
+struct OutOfReach {
+    std::size_t object = 0;
+    int frame = 0;
+    double magnitude = 0;
 };
 
 // A scene's frames, one at a time (SPEC §8.2): each object's transform
@@ -38,6 +49,10 @@ public:
     std::vector<Vec3> frame(int f) const;
     // The transform W_f of object `index`, without joint corrections.
     Affine transform(std::size_t index, int f) const;
+    // The first frame, and in it the first object in file order, whose drawing W_f moves past
+    // `limit` (or to values that are not numbers); nullopt when every frame can be written and
+    // read back. Joint corrections, which move a part onto its parent's point, are not counted.
+    std::optional<OutOfReach> first_out_of_reach(double limit) const;
     std::span<const ObjectPoints> object_points() const { return m_object_points; }
     // The parts of all objects' drawings in file order, each named "OBJECT/PART" ("OBJECT/P1" … for
     // parts without a name): the structure that draws a frame.

@@ -28,7 +28,9 @@ Expected<Scene> parse_scene(std::string_view text, const std::string& file_name,
                             const StaffValues& default_staff);
 
 // parse_scene on the file `name`, its .dat files named relative to the folder it is in (an
-// absolute name as it is). The files read, the scene's own first, are added to `inputs` if given.
+// absolute name as it is); "-" is standard input ("standard input:LINE" in messages), its files
+// named relative to the current folder. The files read, the scene's own first, are added to
+// `inputs` if given.
 Expected<Scene> read_scene_file(const std::filesystem::path& name, const StaffValues& default_staff,
                                 std::vector<std::filesystem::path>* inputs = nullptr);
 

@@ -1,0 +1,88 @@
+#include "support/run_apcs.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+using namespace apcs;
+using test::run_apcs;
+using test::TempFolder;
+
+namespace {
+
+// Ten objects, each the child of the one before, each with SCALE 1.148 over 100 frames: each
+// within its own bound (1.148^100 < 1e6), composed they reach 1e57 (issue 33).
+std::string nested_scale_scene()
+{
+    std::string scene = "FRAMES 100\n";
+    for (int depth = 0; depth < 10; ++depth) {
+        scene += "OBJECT o" + std::to_string(depth);
+        if (depth > 0)
+            scene += " PARENT o" + std::to_string(depth - 1);
+        scene += "\nSHAPE s.dat\nSCALE 1.148\n";
+    }
+    return scene;
+}
+
+} // namespace
+
+TEST_CASE("a scene whose composed transforms leave what a frame holds is refused at the object's line",
+          "[cli][play][scene]")
+{
+    const TempFolder folder;
+    folder.write("s.dat", "0 0 0\n1 1 1\n");
+    folder.write("b.scn", nested_scale_scene());
+    const std::string mode = GENERATE("--print", "--out");
+    CAPTURE(mode);
+    std::vector<std::string> arguments{"play", (folder / "b.scn").string(), mode};
+    if (mode == "--out")
+        arguments.push_back(folder.path().string());
+
+    const auto run = run_apcs(arguments);
+
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.out.empty()); // not 19 lines of NUL bytes
+    CHECK(run.err.find("b.scn:") != std::string::npos);
+    CHECK(run.err.find(": object o") != std::string::npos);
+    CHECK(run.err.find("a frame holds |value| <= 1e9") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(folder / "frm000.dat"));
+}
+
+TEST_CASE("a SHAPE at 1e9 moved by 1e9 is refused, since apcs draw could not read its frames back",
+          "[cli][play][scene]")
+{
+    const TempFolder folder;
+    folder.write("far.dat", "1e9 0 0\n1e9 1 0\n");
+    folder.write("m.dat", "0 0 0\n1e9 0 0\n");
+    folder.write("far.scn", "FRAMES 4\nOBJECT far\nSHAPE far.dat\nMOVE m.dat\n");
+    const auto run = run_apcs({"play", (folder / "far.scn").string(), "--print"});
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.starts_with((folder / "far.scn").string() + ":2: object far reaches |value| "));
+    CHECK(run.out.empty());
+}
+
+TEST_CASE("play - reads the scene from standard input", "[cli][play][scene]")
+{
+    // Issue 33: play - looked for a file named '-'.
+    const TempFolder folder;
+    folder.write("s.dat", "0 0 0\n1 1 1\n");
+    const std::string scene = "FRAMES 1\nOBJECT a\nSHAPE " + (folder / "s.dat").string() + "\n";
+    int ends[2];
+    REQUIRE(::pipe(ends) == 0);
+    REQUIRE(::write(ends[1], scene.data(), scene.size()) == static_cast<ssize_t>(scene.size()));
+    ::close(ends[1]);
+    const int saved = ::dup(STDIN_FILENO);
+    ::dup2(ends[0], STDIN_FILENO);
+    ::close(ends[0]);
+    const auto run = run_apcs({"play", "-", "--print"});
+    ::dup2(saved, STDIN_FILENO);
+    ::close(saved);
+    CAPTURE(run.err);
+    CHECK(run.status == 0);
+    CHECK(run.out.starts_with("# frame 0\n"));
+}
