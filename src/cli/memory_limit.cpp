@@ -14,7 +14,8 @@ Expected<std::uint64_t> memory_limit(const CommonOptions& options)
         return *options.memory_limit;
     const std::string variable(memory::limit_variable);
     const char* value = std::getenv(variable.c_str());
-    if (value == nullptr)
+    // Empty means unset, as for APCS_DATA: `APCS_MEMORY_LIMIT= apcs ...` takes the default.
+    if (value == nullptr || *value == '\0')
         return memory::default_limit_bytes;
     if (const std::optional<std::uint64_t> bytes = memory::parse_byte_count(value))
         return *bytes;

@@ -3,7 +3,9 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/key_file_guard.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <langinfo.h>
@@ -172,8 +174,9 @@ std::optional<ExitStatus> refuse_work_folder(const std::filesystem::path& folder
     return ExitStatus::bad_input;
 }
 
-// --keys FILE: its script into `script`; nothing without --keys.
-std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScript& script, std::ostream& err)
+// --keys FILE: its script into `script`, its text into `script_text`; nothing without --keys.
+std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScript& script, std::string& script_text,
+                                          std::ostream& err)
 {
     if (!options.keys)
         return std::nullopt;
@@ -189,6 +192,7 @@ std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScrip
     if (!parsed)
         return report_bad_input(parsed.error(), err);
     script = std::move(*parsed);
+    script_text = *text;
     return std::nullopt;
 }
 
@@ -255,17 +259,104 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
     return status;
 }
 
-// --record FILE: the keys handled, as a script; never over a key file.
-std::optional<ExitStatus> record_keys(const CommonOptions& options, const FolderFiles& files,
-                                      const std::vector<KeyEvent>& recorded, std::ostream& err)
+// ani1.dat …, inb001.dat …: names the session writes frames under, whatever the answers (any case).
+bool is_session_frame_name(const std::filesystem::path& target)
+{
+    std::string name = target.filename().string();
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+    return name.ends_with(".dat") && (name.starts_with("ani") || name.starts_with("inb"));
+}
+
+// The names the script's TEXT lines type (SPEC §3: line ends LF, CRLF or CR), cut at spaces.
+std::vector<std::string> typed_names(std::string_view script_text)
+{
+    std::vector<std::string> names;
+    constexpr std::string_view text_token = "TEXT ";
+    while (!script_text.empty()) {
+        const std::size_t end = std::min(script_text.find_first_of("\r\n"), script_text.size());
+        std::string_view line = script_text.substr(0, end);
+        script_text.remove_prefix(std::min(end + 1, script_text.size()));
+        if (!line.starts_with(text_token))
+            continue;
+        line.remove_prefix(text_token.size());
+        while (!line.empty()) {
+            const std::size_t space = std::min(line.find(' '), line.size());
+            if (space > 0)
+                names.emplace_back(line.substr(0, space));
+            line.remove_prefix(std::min(space + 1, line.size()));
+        }
+    }
+    return names;
+}
+
+// Why --record may not write its target: a file the session reads or writes (the key script,
+// the example key files, apcs.log, a frame file, a name the script types), found at start so the
+// session never runs for a recording that would replace one; nullopt for none.
+std::optional<std::string> record_target_clash(const CommonOptions& options, std::string_view script_text,
+                                               const std::filesystem::path& folder)
+{
+    const std::filesystem::path& target = *options.record;
+    KeyFileGuard script_file;
+    if (options.keys && *options.keys != "-")
+        script_file.protect(*options.keys);
+    const std::string never = "; --record never writes over it";
+    if (script_file.guards(target))
+        return "is the key script of this session (--keys)" + never;
+    if (is_session_frame_name(target))
+        return "is a name the session writes its frames under (ani*.dat, inb*.dat)" + never;
+    const auto names = [&](const std::string& name) {
+        KeyFileGuard used;
+        used.protect(folder / name);
+        return used.guards(target);
+    };
+    if (names("apcs.log"))
+        return "is the session's log" + never;
+    if (names("key1.dat") || names("key2.dat"))
+        return std::string("is a key file; key files are never written (the session did not start)");
+    for (const std::string& name : typed_names(script_text))
+        if (names(name))
+            return "is a file the key script names at a prompt (" + name + ")" + never;
+    return std::nullopt;
+}
+
+// --record checked before the session runs: "-" is standard output, which must not be the
+// terminal nor the session's screen; a file is neither one the session uses nor unwritable.
+std::optional<ExitStatus> refuse_record_target(const CommonOptions& options, std::string_view script_text,
+                                               const std::filesystem::path& folder, bool headless,
+                                               std::ostream& err)
 {
     if (!options.record)
         return std::nullopt;
-    std::error_code ignored;
-    if (files.is_key_file(std::filesystem::absolute(*options.record, ignored).string()))
-        return report_bad_input({options.record->string(), 0, "is a key file; key files are never written (the "
-                                                              "keystrokes were not recorded)"},
-                                err);
+    if (*options.record == "-") {
+        if (::isatty(STDOUT_FILENO)) {
+            err << "apcs: --record -: standard output is a terminal; redirect it, or give --record FILE\n";
+            return ExitStatus::bad_usage;
+        }
+        if (!headless) {
+            err << "apcs: --record -: the session's screen is standard output; give --record FILE\n";
+            return ExitStatus::bad_usage;
+        }
+        return std::nullopt;
+    }
+    if (const std::optional<std::string> clash = record_target_clash(options, script_text, folder))
+        return report_bad_input({options.record->string(), 0, *clash}, err);
+    if (const Expected<void> writable = check_writable(*options.record); !writable)
+        return report_bad_input(writable.error(), err);
+    return std::nullopt;
+}
+
+// --record FILE: the keys handled, as a script; "-" writes them to `out`. The target was checked
+// before the session (refuse_record_target) and guarded during it, so the session wrote nothing
+// there.
+std::optional<ExitStatus> record_keys(const CommonOptions& options, const std::vector<KeyEvent>& recorded,
+                                      std::ostream& out, std::ostream& err)
+{
+    if (!options.record)
+        return std::nullopt;
+    if (*options.record == "-") {
+        out << format_key_script(recorded);
+        return std::nullopt;
+    }
     const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
     if (!written)
         return report_bad_input(written.error(), err);
@@ -286,7 +377,8 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         return ExitStatus::bad_usage;
     }
     KeyScript script;
-    if (const std::optional<ExitStatus> refused = read_key_script(options, script, err))
+    std::string script_text;
+    if (const std::optional<ExitStatus> refused = read_key_script(options, script, script_text, err))
         return *refused;
     const bool headless = !::isatty(STDIN_FILENO) || !terminal;
     if (const std::optional<ExitStatus> refused = refuse_replay_without_its_needs(options, headless, err))
@@ -296,18 +388,27 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
         err << glyphs.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
+    if (const std::optional<ExitStatus> refused = refuse_record_target(options, script_text, folder, headless, err))
+        return *refused;
     FolderFiles files(folder);
+    // An answer typed at a prompt that names the recording is refused there, as a key file is.
+    if (options.record && *options.record != "-")
+        files.protect_key_file(std::filesystem::absolute(*options.record).string());
     files.log("session started");
     SessionSettings settings = session_settings(options);
     settings.memory_limit_bytes = *limit;
     Session session(std::move(settings), files);
     std::vector<KeyEvent> recorded;
-    const ExitStatus status = headless ? replay_headless(session, script, *glyphs, recorded, out, err)
+    // With --record -, standard output holds the keystrokes, not the headless screens.
+    std::ostream no_screens(nullptr);
+    std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
+    const ExitStatus status = headless ? replay_headless(session, script, *glyphs, recorded, screens, err)
                                        : run_on_terminal(session, script, options, *glyphs, terminal, recorded, out, err);
     if (status == ExitStatus::terminal_problem)
         return status;
-    if (const std::optional<ExitStatus> refused = record_keys(options, files, recorded, err))
-        return *refused;
+    // A recording that fails is reported; a session stopped by a signal still ends as stopped.
+    if (const std::optional<ExitStatus> refused = record_keys(options, recorded, out, err))
+        return status == ExitStatus::stopped ? status : *refused;
     return status;
 }
 

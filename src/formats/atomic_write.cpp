@@ -203,13 +203,12 @@ private:
         }
         const fs::path folder = m_target.path.has_parent_path() ? m_target.path.parent_path() : fs::path(".");
         std::string temporary = (folder / temporary_name_for(folder, m_target.path.filename().string())).string();
-        const int descriptor = ::mkstemp(temporary.data());
+        // Known from its making until it is renamed or removed: a signal meanwhile removes it.
+        const int descriptor = create_unfinished_file(temporary, m_unfinished);
         if (descriptor < 0)
             return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
         m_file.reset(descriptor);
         m_temporary = std::move(temporary);
-        // Known until it is renamed or removed: a signal meanwhile removes it.
-        m_unfinished.emplace(m_temporary);
         return copy_same_part();
     }
 
@@ -325,6 +324,25 @@ Expected<WriteResult> write_file_atomically(const fs::path& requested, std::stri
 {
     return write_file_atomically(
         requested, [content](const ContentSink& sink) { sink(content); }, inputs, durability);
+}
+
+Expected<void> check_writable(const fs::path& requested, ReadOnlyTarget read_only)
+{
+    const std::string shown = requested.string();
+    const Expected<ReplaceableTarget> target = replaceable_target(requested, shown);
+    if (!target)
+        return target.error();
+    if (read_only == ReadOnlyTarget::refused && target->exists && is_read_only(target->path, target->status))
+        return Diagnostic{shown, 0, "is read-only (mode " + octal_mode(target->status.st_mode) + "); not replaced"};
+    const fs::path folder = target->path.has_parent_path() ? target->path.parent_path() : fs::path(".");
+    struct stat folder_status {};
+    if (::stat(folder.c_str(), &folder_status) != 0)
+        return Diagnostic{shown, 0, "cannot be written: its folder " + folder.string() + ": " + system_reason(errno)};
+    if (!S_ISDIR(folder_status.st_mode))
+        return Diagnostic{shown, 0, "cannot be written: " + folder.string() + " is not a folder"};
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        return Diagnostic{shown, 0, "cannot be written: its folder " + folder.string() + ": " + system_reason(errno)};
+    return ok;
 }
 
 Expected<void> flush_file_system(const fs::path& folder)

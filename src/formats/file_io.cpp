@@ -2,6 +2,7 @@
 
 #include "apcs/animation/memory_budget.h"
 #include "apcs/formats/text_fields.h"
+#include "apcs/formats/text_lines.h"
 #include "posix_files.h"
 
 #include <algorithm>
@@ -143,11 +144,61 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
 
 namespace {
 
+// The limits of a .dat file checked on a stream as it is read, since a stream has no size to
+// refuse up front: a line over max_text_line_bytes is refused once that many bytes of it have come
+// (`yes 1 | tr -d '\n'` never ends one), and more data lines than max_dat_points (and a count line)
+// at the first past them, so that standard input costs no more memory than the largest file.
+class DatStreamLimits {
+public:
+    Expected<void> operator()(std::string_view chunk)
+    {
+        for (const char byte : chunk) {
+            if (byte == '\n' || byte == '\r') {
+                end_line();
+                continue;
+            }
+            if (byte == ';' || byte == '#')
+                m_in_comment = true;
+            else if (!m_in_comment && byte != ' ' && byte != '\t')
+                m_has_data = true;
+            if (++m_line_bytes > max_text_line_bytes)
+                return Diagnostic{"standard input", m_line + 1,
+                                  "line is more than " + std::to_string(max_text_line_bytes) +
+                                      " bytes long; expected at most " + std::to_string(max_text_line_bytes)};
+        }
+        if (m_data_lines > max_dat_points + 1)
+            return Diagnostic{"standard input", m_line,
+                              "more than " + std::to_string(max_dat_points) + " points; expected at most that many"};
+        return ok;
+    }
+
+private:
+    void end_line()
+    {
+        ++m_line;
+        m_data_lines += m_has_data ? 1 : 0;
+        m_line_bytes = 0;
+        m_in_comment = false;
+        m_has_data = false;
+    }
+
+    int m_line = 0; // lines ended so far (at most 2^30, the bytes a stream may have)
+    std::size_t m_line_bytes = 0;
+    std::size_t m_data_lines = 0;
+    bool m_in_comment = false;
+    bool m_has_data = false;
+};
+
+Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown, std::uintmax_t most_bytes,
+                                       const TextPieceSink& check = {});
+
 // A .dat file's text and the name its messages use; "-" is standard input, read like a keystroke
-// script: a pipe, once, to its end.
+// script (a pipe, once, to its end) within a file's limits (DatStreamLimits).
 Expected<std::pair<std::string, std::string>> dat_text(const fs::path& name)
 {
-    Expected<std::string> text = name == "-" ? read_script_text(name) : read_text_file(name);
+    Expected<std::string> text = name == "-" ? read_pipe_to_end(STDIN_FILENO, "standard input", max_input_bytes,
+                                                                DatStreamLimits{})
+                                             : read_text_file(name);
     if (!text)
         return text.error();
     return std::pair{std::move(*text), name == "-" ? std::string("standard input") : name.string()};
@@ -186,8 +237,10 @@ Expected<Graphic> read_key_frame(const fs::path& name)
 
 namespace {
 
-// Everything a pipe holds until its writer closes it, at most `most_bytes`.
-Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown, std::uintmax_t most_bytes)
+// Everything a pipe holds until its writer closes it, at most `most_bytes`; each chunk first
+// passes `check`, when given, whose problem ends the reading.
+Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown, std::uintmax_t most_bytes,
+                                       const TextPieceSink& check)
 {
     std::string content;
     std::size_t lines = 0;
@@ -206,6 +259,9 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
             return outcome.error();
         if (content.size() + chunk.size() > most_bytes)
             return too_large(shown, content.size() + chunk.size(), most_bytes);
+        if (check)
+            if (auto outcome = check(chunk); !outcome)
+                return outcome.error();
         lines += static_cast<std::size_t>(std::count(chunk.begin(), chunk.end(), '\n'));
         content.append(chunk);
     }

@@ -1,13 +1,67 @@
 #include "apcs/formats/numbered_files.h"
 
+#include "apcs/animation/memory_budget.h"
 #include "apcs/base/parallel_work.h"
 #include "apcs/formats/file_io.h"
 
 #include <algorithm>
 #include <cstdio>
+#include <sys/statvfs.h>
 #include <thread>
 
 namespace apcs {
+
+namespace {
+
+std::uintmax_t content_bytes(std::size_t index, const std::function<void(std::size_t, const ContentSink&)>& writer_of)
+{
+    std::uintmax_t bytes = 0;
+    writer_of(index, [&bytes](std::string_view chunk) {
+        bytes += chunk.size();
+        return true;
+    });
+    return bytes;
+}
+
+// Files that a full disk would stop halfway through the run are refused before the first: what
+// the folder's file system has free for the user against the estimate. Unknown free space lets
+// the writes go on (a write that then fails leaves every file whole).
+Expected<void> check_room(const std::filesystem::path& folder, std::size_t count,
+                          const std::function<void(std::size_t, const ContentSink&)>& writer_of,
+                          std::string_view purpose)
+{
+    struct statvfs space {};
+    if (count == 0 || ::statvfs(folder.c_str(), &space) != 0)
+        return ok;
+    const std::uintmax_t free_bytes = static_cast<std::uintmax_t>(space.f_bavail) * space.f_frsize;
+    return room_for_files(estimated_files_bytes(count, writer_of), free_bytes, count, folder, purpose);
+}
+
+} // namespace
+
+std::uintmax_t estimated_files_bytes(std::size_t count,
+                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of)
+{
+    if (count == 0)
+        return 0;
+    const long double first = static_cast<long double>(content_bytes(0, writer_of));
+    const long double last = static_cast<long double>(content_bytes(count - 1, writer_of));
+    const long double average = (first + last) / 2;
+    const long double total = average * static_cast<long double>(count);
+    constexpr long double most = static_cast<long double>(UINTMAX_MAX);
+    return total >= most ? UINTMAX_MAX : static_cast<std::uintmax_t>(total);
+}
+
+Expected<void> room_for_files(std::uintmax_t needed, std::uintmax_t free_bytes, std::size_t count,
+                              const std::filesystem::path& folder, std::string_view purpose)
+{
+    if (needed <= free_bytes)
+        return ok;
+    return Diagnostic{folder.string(), 0,
+                      std::string(purpose) + " need about " + memory::byte_count_text(needed) + " (" +
+                          std::to_string(count) + " files); the folder has " + memory::byte_count_text(free_bytes) +
+                          " free"};
+}
 
 Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
@@ -24,7 +78,11 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
         targets.push_back(folder / name_of(index));
         if (Expected<void> writable = guard.may_write(targets.back()); !writable)
             return writable.error();
+        if (Expected<void> writable = check_writable(targets.back(), ReadOnlyTarget::left_to_the_write); !writable)
+            return writable.error();
     }
+    if (Expected<void> room = check_room(folder, count, writer_of, purpose); !room)
+        return room.error();
     // The files are independent: making, formatting and flushing them is shared among the cores.
     std::vector<Expected<void>> outcomes(count, ok);
     std::vector<char> written(count, 0);

@@ -3,7 +3,11 @@
 #include <array>
 #include <atomic>
 #include <climits>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
 #include <cstring>
+#include <pthread.h>
 #include <unistd.h>
 
 namespace apcs {
@@ -25,6 +29,11 @@ std::array<Slot, slot_count>& slots()
     static std::array<Slot, slot_count> all;
     return all;
 }
+
+// Set when a stop begins: no temporary file is made after it.
+std::atomic<bool> stopping{false};
+// Temporary files being made right now (between mkstemp and their slot), which a stop waits for.
+std::atomic<int> being_made{0};
 
 } // namespace
 
@@ -53,8 +62,37 @@ UnfinishedFile::~UnfinishedFile()
     slot.claimed.store(false, std::memory_order_release);
 }
 
+int create_unfinished_file(std::string& pattern, std::optional<UnfinishedFile>& known) noexcept
+{
+    // With every signal blocked here, a stop's handler runs on another thread (or after this),
+    // which then waits for being_made to fall to 0: it cannot wait on its own thread.
+    sigset_t all;
+    sigset_t previous;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &previous);
+    being_made.fetch_add(1);
+    int descriptor = -1;
+    if (stopping.load()) {
+        errno = EINTR;
+    } else {
+        descriptor = ::mkstemp(pattern.data());
+        if (descriptor >= 0)
+            known.emplace(pattern);
+    }
+    being_made.fetch_sub(1);
+    const int reason = errno;
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    errno = reason;
+    return descriptor;
+}
+
 void remove_unfinished_files() noexcept
 {
+    stopping.store(true);
+    // A file being made is in its slot within one mkstemp: a short wait, spun (sleeping and
+    // yielding are not async-signal-safe in every libc).
+    while (being_made.load() > 0) {
+    }
     for (Slot& slot : slots())
         if (slot.in_use.load(std::memory_order_acquire))
             ::unlink(slot.path);

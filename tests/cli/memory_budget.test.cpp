@@ -153,6 +153,17 @@ TEST_CASE("an APCS_MEMORY_LIMIT that is no byte count is a usage error, exit 2",
     CHECK(refused.err == "APCS_MEMORY_LIMIT: expected a byte count above 0 such as 4294967296, 512M or 4G; found 'lots'\n");
 }
 
+TEST_CASE("an empty APCS_MEMORY_LIMIT means unset, as an empty APCS_DATA does", "[cli][memory]")
+{
+    // Issue 33: APCS_MEMORY_LIMIT='' was exit 2.
+    const TempFolder folder;
+    folder.write("way.dat", "0 0 0\n1 1 0\n2 0 0\n");
+    const MemoryLimitVariable limit("");
+    const auto run = run_apcs({"path", (folder / "way.dat").string()});
+    CHECK(run.status == 0);
+    CHECK(run.err.empty());
+}
+
 TEST_CASE("a key script over 16 MiB is refused before it is read, exit 1", "[cli][memory]")
 {
     const TempFolder folder;

@@ -77,6 +77,16 @@ Expected<WriteResult> write_file_atomically(const std::filesystem::path& target,
                                             const KeyFileGuard* inputs = nullptr,
                                             Durability durability = Durability::each_file);
 
+// Whether check_writable refuses a read-only target now, or leaves it to the write, which refuses
+// it only when its content would change.
+enum class ReadOnlyTarget { refused, left_to_the_write };
+
+// What write_file_atomically would refuse before writing anything, checked ahead of a run that
+// writes `target` only at its end (--record) or after other files (in-betweens): a target that is
+// not a regular file (or a link to one), a read-only one (as `read_only` says), or a folder that
+// does not exist or cannot be written. The problem, if any.
+Expected<void> check_writable(const std::filesystem::path& target, ReadOnlyTarget read_only = ReadOnlyTarget::refused);
+
 // A file's content in chunks: the writer calls the sink with each chunk in order and stops when
 // it says false (the write failed; the problem is in write_file_atomically's result).
 using ContentSink = std::function<bool(std::string_view chunk)>;

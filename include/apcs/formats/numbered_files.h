@@ -4,6 +4,7 @@
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -17,14 +18,27 @@ namespace apcs {
 // it is written. Every target is checked against `guard` before any file is written (a guarded
 // one stops the whole writing); each file is written atomically, the files spread over the cores,
 // and one barrier (flush_file_system) puts them all on the disk before this returns, not one
-// flush per file. Returns the files written, or the first problem: a `folder` that is not a
-// folder ("expected an existing folder for PURPOSE"), a guarded file, or a file that could not be
-// written.
+// flush per file. Before any is written, every target must be writable (check_writable: a folder
+// named inb002.dat stops the run before inb001.dat is written) and the folder's free space must
+// hold the files (estimated_files_bytes, room_for_files). Returns the files written, or the first
+// problem: a `folder` that is not a folder ("expected an existing folder for PURPOSE"), a guarded
+// or unwritable target, too little space, or a file that could not be written.
 [[nodiscard]] Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
                      std::string_view purpose);
+
+// The bytes `count` files made by writer_of take: the first's and the last's, made once and
+// counted (nothing kept), stand for all, since the files of a run differ only in their numbers'
+// digits.
+std::uintmax_t estimated_files_bytes(std::size_t count,
+                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of);
+
+// ok when `needed` bytes fit in `free_bytes`; else "FOLDER: PURPOSE need about 52 GiB (100000
+// files); the folder has 3.1 GiB free".
+Expected<void> room_for_files(std::uintmax_t needed, std::uintmax_t free_bytes, std::size_t count,
+                              const std::filesystem::path& folder, std::string_view purpose);
 
 // The same with each file's whole text made by content_of(k) when it is written, so that one
 // file's text per core is in memory at once.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 namespace apcs {
@@ -18,8 +19,15 @@ private:
     int m_slot = -1;
 };
 
-// Removes every temporary file being written now. Async-signal-safe: for a signal handler that
-// then ends the program.
+// mkstemp(pattern), the file made known in `known` before any signal can end the program: the
+// descriptor, or -1 with errno (EINTR once remove_unfinished_files has begun, so that no file is
+// made while the program is being stopped). Signals wait while the file is made.
+int create_unfinished_file(std::string& pattern, std::optional<UnfinishedFile>& known) noexcept;
+
+// Removes every temporary file being written now, first waiting for any being made on another
+// thread, and makes no more from then on (the threads writing run until the program ends: one
+// made after the removal would stay). Async-signal-safe: for a signal handler that then ends the
+// program.
 void remove_unfinished_files() noexcept;
 
 } // namespace apcs

@@ -1,0 +1,79 @@
+#include "support/run_apcs.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <unistd.h>
+
+using namespace apcs;
+using test::read_all;
+using test::run_apcs;
+using test::TempFolder;
+
+namespace {
+
+// A copy of the N to L example, so that the session's writes do not touch data/.
+void copy_n_to_l(const TempFolder& folder)
+{
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) / "data" / "n-to-l"))
+        std::filesystem::copy_file(entry.path(), folder / entry.path().filename().string());
+}
+
+test::CommandRun record_n_to_l(const TempFolder& folder, const std::string& target)
+{
+    return run_apcs({"--keys", (folder / "session.keys").string(), "--workdir", folder.path().string(), "--glyphs",
+                     "ascii", "--record", target});
+}
+
+} // namespace
+
+TEST_CASE("a recording (--record) refuses, before the session runs, every file the session uses", "[cli][session][record][files]")
+{
+    // Issue 33: each of these was replaced by the recorded keys (session.keys 1525 → 227 bytes).
+    const char* name = GENERATE("session.keys", "way1.dat", "WAY4.DAT", "ani1.dat", "inb001.dat", "apcs.log");
+    CAPTURE(name);
+    const TempFolder folder;
+    copy_n_to_l(folder);
+    folder.write("apcs.log", "an earlier session\n");
+    folder.write("ani1.dat", "0 0 0\n1 1 1\n");
+    folder.write("inb001.dat", "0 0 0\n1 1 1\n");
+    const std::string before = read_all(folder / name);
+    const std::string way1 = read_all(folder / "way1.dat");
+
+    const auto run = record_n_to_l(folder, (folder / name).string());
+
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.find("--record never writes over it") != std::string::npos);
+    CHECK(run.out.empty()); // the session never ran
+    CHECK(read_all(folder / name) == before);
+    CHECK(read_all(folder / "way1.dat") == way1);
+}
+
+TEST_CASE("a recording (--record) into a folder that does not exist is refused before the session runs", "[cli][session][record][files]")
+{
+    const TempFolder folder;
+    copy_n_to_l(folder);
+    const auto run = record_n_to_l(folder, (folder / "missing" / "again.keys").string());
+    CHECK(run.status == 1);
+    CHECK(run.err.find("again.keys: cannot be written: its folder") != std::string::npos);
+    CHECK(run.out.empty());
+    CHECK_FALSE(std::filesystem::exists(folder / "way1.bak")); // the session wrote nothing
+}
+
+TEST_CASE("a recording to - (--record -) goes to standard output, not to a file named -", "[cli][session][record]")
+{
+    if (::isatty(STDOUT_FILENO)) {
+        WARN("standard output is a terminal, where --record - is refused: not checked");
+        return;
+    }
+    const TempFolder folder;
+    copy_n_to_l(folder);
+    const auto recorded = record_n_to_l(folder, "-");
+    CAPTURE(recorded.err);
+    REQUIRE(recorded.status == 0);
+    CHECK_FALSE(std::filesystem::exists("-"));
+    CHECK(recorded.out.starts_with("ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT way1.dat\n")); // keys, no screens
+}
