@@ -3,6 +3,7 @@
 #include "apcs/base/parallel_work.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace apcs {
@@ -19,28 +20,53 @@ double simpson(const HermiteSegment& curve, double u_end, int intervals)
     return sum * step / 3.0;
 }
 
-// The whole segment's Simpson sums as the interval count doubles: each count's speeds are the last
-// count's and one between each two, so a doubling evaluates only the new half. The parameters
-// i / n are exact in binary, so each speed, and each sum added in Simpson's order, is the one
-// simpson() gives, to the bit. Holds the speeds of the finest count: one per thread.
+// The derivative basis (Eq. of hermite_basis_derivative) at the parameters each interval count adds:
+// all n + 1 of u = i / n for the first count, the n / 2 odd ones for each doubling after. Every u is
+// exact in binary, so these are the numbers derivative_at(step · i) would use.
+struct NewParameters {
+    std::array<std::vector<double>, 4> basis; // f1' … f4', one column each
+};
+
+std::vector<NewParameters> basis_of_each_count()
+{
+    std::vector<NewParameters> counts;
+    for (int n = CurveArcLengths::first_simpson_intervals; n <= CurveArcLengths::most_simpson_intervals; n *= 2) {
+        NewParameters added;
+        const bool first = n == CurveArcLengths::first_simpson_intervals;
+        for (int i = first ? 0 : 1; i <= n; i += first ? 1 : 2) {
+            const HermiteBasis weights = hermite_basis_derivative(i == n ? 1.0 : (1.0 / n) * i);
+            added.basis[0].push_back(weights.f1);
+            added.basis[1].push_back(weights.f2);
+            added.basis[2].push_back(weights.f3);
+            added.basis[3].push_back(weights.f4);
+        }
+        counts.push_back(std::move(added));
+    }
+    return counts;
+}
+
+// A segment's Simpson sums as the interval count doubles: each count's speeds are the last count's
+// and the new ones between them, found a column at a time from the tabulated basis (so that the
+// compiler does several at once) as length(derivative_at(u)) finds them, to the bit, and summed in
+// Simpson's order. Holds the speeds of the finest count: one per thread.
 class SegmentArcLength {
 public:
     SegmentArcLength()
+        : m_counts(counts())
     {
-        m_speeds.reserve(CurveArcLengths::most_simpson_intervals + 1);
-        m_finer.reserve(CurveArcLengths::most_simpson_intervals + 1);
+        for (std::vector<double>* room : {&m_speeds, &m_finer, &m_new, &m_x, &m_y, &m_z})
+            room->reserve(CurveArcLengths::most_simpson_intervals + 1);
     }
 
     // The length, and the interval count whose sum agreed with the one before it.
     std::pair<double, int> operator()(const HermiteSegment& curve)
     {
         int intervals = CurveArcLengths::first_simpson_intervals;
-        m_speeds.clear();
-        for (int i = 0; i <= intervals; ++i)
-            m_speeds.push_back(speed(curve, intervals, i));
+        speeds_at(curve, m_counts[0], m_speeds);
         double sum = sum_of_speeds(intervals);
-        while (intervals < CurveArcLengths::most_simpson_intervals) {
-            double_the_intervals(curve, intervals);
+        for (std::size_t level = 1; intervals < CurveArcLengths::most_simpson_intervals; ++level) {
+            speeds_at(curve, m_counts[level], m_new);
+            interleave();
             intervals *= 2;
             const double finer = sum_of_speeds(intervals);
             const bool converged = std::abs(finer - sum) <= 1e-10 * finer;
@@ -52,19 +78,40 @@ public:
     }
 
 private:
-    static double speed(const HermiteSegment& curve, int intervals, int i)
+    static const std::vector<NewParameters>& counts()
     {
-        if (i == intervals)
-            return length(curve.derivative_at(1.0));
-        return length(curve.derivative_at((1.0 / intervals) * i));
+        static const std::vector<NewParameters> tabulated = basis_of_each_count();
+        return tabulated;
     }
 
-    void double_the_intervals(const HermiteSegment& curve, int intervals)
+    // HermiteSegment::apply on one coordinate: the same operations in the same order.
+    static void coordinate(double start, double end, double start_tangent, double end_tangent,
+                           const NewParameters& at, std::vector<double>& out)
+    {
+        const std::size_t count = at.basis[0].size();
+        out.resize(count);
+        for (std::size_t j = 0; j < count; ++j)
+            out[j] = start * at.basis[0][j] + end * at.basis[1][j] + start_tangent * at.basis[2][j] +
+                     end_tangent * at.basis[3][j];
+    }
+
+    void speeds_at(const HermiteSegment& curve, const NewParameters& at, std::vector<double>& out)
+    {
+        coordinate(curve.start.x, curve.end.x, curve.start_tangent.x, curve.end_tangent.x, at, m_x);
+        coordinate(curve.start.y, curve.end.y, curve.start_tangent.y, curve.end_tangent.y, at, m_y);
+        coordinate(curve.start.z, curve.end.z, curve.start_tangent.z, curve.end_tangent.z, at, m_z);
+        out.resize(m_x.size());
+        for (std::size_t j = 0; j < m_x.size(); ++j) // length(): sqrt(dot(v, v))
+            out[j] = std::sqrt(m_x[j] * m_x[j] + m_y[j] * m_y[j] + m_z[j] * m_z[j]);
+    }
+
+    // m_speeds (count n + 1) and m_new (the n odd ones of 2n) into m_speeds (2n + 1).
+    void interleave()
     {
         m_finer.clear();
-        for (int i = 0; i < intervals; ++i) {
-            m_finer.push_back(m_speeds[static_cast<std::size_t>(i)]);
-            m_finer.push_back(speed(curve, 2 * intervals, 2 * i + 1));
+        for (std::size_t i = 0; i < m_new.size(); ++i) {
+            m_finer.push_back(m_speeds[i]);
+            m_finer.push_back(m_new[i]);
         }
         m_finer.push_back(m_speeds.back());
         std::swap(m_speeds, m_finer);
@@ -79,8 +126,13 @@ private:
         return sum * step / 3.0;
     }
 
+    const std::vector<NewParameters>& m_counts;
     std::vector<double> m_speeds;
     std::vector<double> m_finer;
+    std::vector<double> m_new;
+    std::vector<double> m_x;
+    std::vector<double> m_y;
+    std::vector<double> m_z;
 };
 
 } // namespace

@@ -285,3 +285,36 @@ TEST_CASE("control point runs updated around inserted, deleted and moved points 
         same_runs(runs, control_point_runs(points, view));
     }
 }
+
+TEST_CASE("a scene's view, fitted past the segments that cannot reach further, is the view fitted to every sample",
+          "[session][path]")
+{
+    for (const double wiggle : {0.001, 0.5, 4.0}) {
+        CAPTURE(wiggle);
+        ControlPoints points;
+        for (int k = 0; k < 3000; ++k) // a trajectory, a scribble and between, cusps included
+            points.push_back({{std::sin(k * 0.9) * 3.0, k * wiggle, std::cos(k * 0.7) * wiggle},
+                              {k % 5 == 0 ? -1.0 : 0.3, std::sin(k * 0.2), 0.0, 0.0}});
+        const EvaluatedPath path = evaluate_path(points, {{1, 1}, 16, 12, Spacing::nearest});
+        ViewScene scene;
+        scene.add(std::span<const ControlPoint>(points)).add(path.curve);
+        const std::vector<Vec3> every = path.curve.samples();
+        for (const ViewAngles angles : {ViewAngles{30, 40}, ViewAngles{0, 90}, ViewAngles{-70, 10}}) {
+            const ViewTransform visited = ViewTransform::fit_visiting(
+                angles,
+                [&](const auto& visit) {
+                    for (const ControlPoint& point : points)
+                        visit(point.position);
+                    for (const Vec3& sample : every)
+                        visit(sample);
+                },
+                layout::view_area);
+            REQUIRE(scene.fit(angles, layout::view_area) == visited);
+        }
+        BoundingBox box;
+        for (const Vec3& sample : every)
+            box.add(sample);
+        REQUIRE(scene.bounds().low() == box.low());
+        REQUIRE(scene.bounds().high() == box.high());
+    }
+}

@@ -86,9 +86,13 @@ public:
     Vec3 centre() const { return m_centre; }
     bool operator==(const ViewTransform&) const = default;
 
-private:
+    // fit's two steps, for a scene that finds its extremes itself (world_drawing.h's ViewScene):
+    // the view centred on the scene's box, then focused so that the largest |x_e/z_e| and |y_e/z_e|
+    // of its points fill 90 % of the drawing area.
     static ViewTransform centred_on(ViewAngles angles, const BoundingBox& box, PixelRect drawing_area);
     void focus_on(double widest, double tallest, PixelRect drawing_area);
+
+private:
     ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);
 
     double m_sin_theta = 0.0;

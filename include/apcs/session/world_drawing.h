@@ -27,14 +27,30 @@ public:
     BoundingBox bounds() const;
 
 private:
+    // The points, and the curves' control points (samples too: a segment's first and last).
     template <typename Visit>
-    void for_each_point(const Visit& visit) const
+    void for_each_control_point(const Visit& visit) const
     {
         for (const Vec3& point : m_points)
             visit(point);
-        for (const SampledCurve* curve : m_curves)
-            for (std::size_t i = 0; i < curve->sample_count(); ++i)
-                visit(curve->sample(i));
+        for (const SampledCurve* curve : m_curves) {
+            for (const HermiteSegment& segment : curve->segments)
+                visit(segment.start);
+            if (!curve->segments.empty())
+                visit(curve->segments.back().end);
+        }
+    }
+    // The samples of every segment for which within(segment) is false.
+    template <typename Within, typename Visit>
+    void for_each_sample_beyond(const Within& within, const Visit& visit) const
+    {
+        for (const SampledCurve* curve : m_curves) {
+            const auto per_segment = static_cast<std::size_t>(curve->samples_per_segment);
+            for (std::size_t s = 0; s < curve->segments.size(); ++s)
+                if (!within(curve->segments[s]))
+                    for (std::size_t j = 0; j <= per_segment; ++j)
+                        visit(curve->segment_sample(s, j));
+        }
     }
 
     std::vector<Vec3> m_points;
