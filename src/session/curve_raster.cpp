@@ -10,7 +10,8 @@ namespace apcs {
 // A change that removes no segment lies in the block it starts in (the last, at the curve's end).
 void CurveRaster::splice(const SegmentSplice& change)
 {
-    if (m_blocks.empty())
+    // An acceleration changes no segment: no block is drawn again.
+    if (m_blocks.empty() || (change.removed == 0 && change.inserted == 0))
         return;
     std::size_t block_first = 0;
     bool inserted_placed = false;
