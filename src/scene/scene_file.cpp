@@ -626,6 +626,12 @@ Expected<void> SceneParser::finish_joints()
                              std::to_string(first.joint->line) + ") and '" + b.name +
                              "', which is not its part or its parent; expected a part and its parent",
                          second.joint->line);
+        // Two different values would leave one silently unused (SPEC §8.2).
+        if (first.joint->tolerance && second.joint->tolerance && *first.joint->tolerance != *second.joint->tolerance)
+            return error("joint " + quote_field(name) + " has TOLERANCE " + shortest_number(*second.joint->tolerance) +
+                             " here and " + shortest_number(*first.joint->tolerance) + " on line " +
+                             std::to_string(first.joint->line) + "; expected one value (or the same on both lines)",
+                         second.joint->line);
         const Vec3 pa = point_of(*a.first_drawing(), first.joint->point);
         const Vec3 pb = point_of(*b.first_drawing(), second.joint->point);
         const double tolerance =

@@ -92,6 +92,9 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {"FRAMES 0\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
         {"FRAMES 100001\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
         {"FRAMES 5\n", "t.scn: expected at least one OBJECT line; the file has none"},
+        // Issue 33: the last TOLERANCE of a joint silently won.
+        {head + "JOINT j 1 TOLERANCE 0.5\nOBJECT b PARENT a\nSHAPE square.dat\nJOINT j 1 TOLERANCE 0.25\n",
+         "t.scn:7: joint 'j' has TOLERANCE 0.25 here and 0.5 on line 4; expected one value (or the same on both lines)"},
         {"FRAMES 5\nSHAPE square.dat\n", "t.scn:2: SHAPE before the first OBJECT line; expected 'OBJECT NAME' first"},
         {head + "WIGGLE 3\n",
          "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT or VIEW"},
