@@ -24,12 +24,12 @@ _apcs_options()
     local pictures="--png --png-raw --svg"
     case $1 in
         path) echo "$staff $curve $view $pictures --print --help" ;;
-        fit) echo "$staff $curve $view $pictures --gif --delay --print --out --help" ;;
+        fit) echo "$staff $curve --surface $view $pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures --help" ;;
         play) echo "$staff --slopes --samples --spacing $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
-        *) echo "$staff $curve $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
+        *) echo "$staff $curve --surface $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
     esac
 }
 
@@ -42,6 +42,7 @@ _apcs()
     case $previous in
         --glyphs) _apcs_words "ascii braille blocks" "$current"; return ;;
         --spacing) _apcs_words "nearest exact" "$current"; return ;;
+        --surface) _apcs_words "blend ferguson" "$current"; return ;;
         --view) _apcs_words "front side top" "$current"; return ;;
         --pace) _apcs_words "step 500 1000 2000" "$current"; return ;;
         --law) _apcs_words "linear sqrt square ease-in ease-out ease-in-out" "$current"; return ;;

@@ -22,9 +22,7 @@ EdgePath edge_path_from(const EvaluatedPath& path, const Vec3& key1_position, co
     return edge;
 }
 
-namespace {
-
-std::vector<double> chord_fractions(std::span<const Vec3> points, Closure closure)
+std::vector<double> chord_places(std::span<const Vec3> points, Closure closure)
 {
     std::vector<double> fractions(points.size(), 0.0);
     if (points.size() < 2)
@@ -39,12 +37,10 @@ std::vector<double> chord_fractions(std::span<const Vec3> points, Closure closur
     return fractions;
 }
 
-} // namespace
-
 std::vector<double> graphic_parameters(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure)
 {
-    const std::vector<double> first = chord_fractions(key1, closure);
-    const std::vector<double> second = chord_fractions(key2, closure);
+    const std::vector<double> first = chord_places(key1, closure);
+    const std::vector<double> second = chord_places(key2, closure);
     std::vector<double> parameters(std::min(first.size(), second.size()));
     for (std::size_t i = 0; i < parameters.size(); ++i)
         parameters[i] = (first[i] + second[i]) / 2.0;
@@ -74,6 +70,13 @@ SurfaceFitter::SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> k
     m_last_follows_edge = !m_closed || (m_key1.back() == m_key1.front() && m_key2.back() == m_key2.front());
 }
 
+SurfaceFitter::SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure,
+                             EdgePath first_edge, EdgePath last_edge, const FergusonCorners& corners)
+    : SurfaceFitter(key1, key2, closure, std::move(first_edge), std::move(last_edge))
+{
+    m_ferguson_paths = ferguson_point_paths(m_key1, m_key2, closure, corners);
+}
+
 void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) const
 {
     if (k == 0 || k + 1 == m_frame_count) {
@@ -97,7 +100,9 @@ void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) c
         const std::size_t i = first + j;
         const auto [f1, f2] = m_across[i];
         const double progress = f1 * progress0 + f2 * progress1;
-        out[j] = lerp(m_key1[i], m_key2[i], progress) + f1 * bend0 + f2 * bend1;
+        // SPEC §5.3.1: the thesis' surface places the point on its own Ferguson path instead.
+        out[j] = m_ferguson_paths.empty() ? lerp(m_key1[i], m_key2[i], progress) + f1 * bend0 + f2 * bend1
+                                          : point_at_arc_fraction(m_ferguson_paths[i], progress);
     }
     // The edge points follow their paths exactly (for v = 0 and v = 1 the blend already does, up
     // to rounding).
@@ -134,21 +139,27 @@ std::span<const Vec3> contiguous_points(const Graphic& graphic, std::vector<Vec3
 }
 
 SurfaceFitter key_frames_fitter(const EqualisedKeys& keys, const EvaluatedPath& first_path,
-                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage)
+                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage,
+                                SurfaceConstruction construction)
 {
     const std::span<const Vec3> key1 = contiguous_points(keys.key1, storage[0]);
     const std::span<const Vec3> key2 = contiguous_points(keys.key2, storage[1]);
     const Closure closure = keys.key1.is_closed() ? Closure::closed : Closure::open;
     if (key1.empty() || key2.empty())
         return SurfaceFitter(key1, key2, closure, {}, {});
-    return SurfaceFitter(key1, key2, closure, edge_path_from(first_path, key1.front(), key2.front()),
-                         edge_path_from(last_path, key1.back(), key2.back()));
+    EdgePath first_edge = edge_path_from(first_path, key1.front(), key2.front());
+    EdgePath last_edge = edge_path_from(last_path, key1.back(), key2.back());
+    if (construction == SurfaceConstruction::blend)
+        return SurfaceFitter(key1, key2, closure, std::move(first_edge), std::move(last_edge));
+    const FergusonCorners corners{edge_tangents_of(first_path), edge_tangents_of(last_path)};
+    return SurfaceFitter(key1, key2, closure, std::move(first_edge), std::move(last_edge), corners);
 }
 
-FrameSequence fit_key_frames(const EqualisedKeys& keys, const EvaluatedPath& first_path, const EvaluatedPath& last_path)
+FrameSequence fit_key_frames(const EqualisedKeys& keys, const EvaluatedPath& first_path, const EvaluatedPath& last_path,
+                             SurfaceConstruction construction)
 {
     std::array<std::vector<Vec3>, 2> storage;
-    return all_frames(key_frames_fitter(keys, first_path, last_path, storage));
+    return all_frames(key_frames_fitter(keys, first_path, last_path, storage, construction));
 }
 
 } // namespace apcs

@@ -46,6 +46,15 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
                               err);
 }
 
+// SPEC §2.1: an explicit --slopes overrides the path file's SLOPES; else the file's; else 1 1.
+PathSettings settings_of_path(const DatFile& file, const CommonOptions& options)
+{
+    PathSettings settings = options.path;
+    if (!options.given.slopes && file.slopes)
+        settings.slopes = *file.slopes;
+    return settings;
+}
+
 } // namespace
 
 ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
@@ -80,21 +89,21 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
 
     if (const auto refused = refuse_over_budget_of_fit(keys, *first, *last, options, err))
         return *refused;
-    const EvaluatedPath first_path = evaluate_path(*first, options.path);
-    const EvaluatedPath last_path = evaluate_path(*last, options.path);
+    const EvaluatedPath first_path = evaluate_path(*first, settings_of_path(*first_file, options));
+    const EvaluatedPath last_path = evaluate_path(*last, settings_of_path(*last_file, options));
     warn_if_frames_freeze(first_path.frames_freeze ? first_path : last_path, options.path.inbetween_count, err);
     const std::array<std::filesystem::path, 2> key_files{files.key1, files.key2};
     if (!all_frames_needed(options)) {
         // Each in-between is made, formatted and written a chunk at a time, a file per core.
         std::array<std::vector<Vec3>, 2> storage;
-        const SurfaceFitter fitter = key_frames_fitter(keys, first_path, last_path, storage);
+        const SurfaceFitter fitter = key_frames_fitter(keys, first_path, last_path, storage, options.surface);
         return deliver_inbetween_files(
             [&](const std::filesystem::path& folder, const KeyFileGuard& guard) {
                 return write_inbetween_files(fitter, keys.key1, folder, guard);
             },
             options, key_files, err);
     }
-    const FrameSequence frames = fit_key_frames(keys, first_path, last_path);
+    const FrameSequence frames = fit_key_frames(keys, first_path, last_path, options.surface);
     return deliver_frames(frames, keys.key1, options, key_files, out, err);
 }
 

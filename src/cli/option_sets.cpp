@@ -146,6 +146,22 @@ void add_curve(CLI::App& command, CommonOptions& options, std::vector<double>& s
         ->type_name(alternatives(spacings));
 }
 
+// SPEC §5.3: the blend (default) or the thesis' own Ferguson surface (§5.3.1).
+void add_surface(CLI::App& command, CommonOptions& options)
+{
+    const std::vector<std::string> surfaces{"blend", "ferguson"};
+    command
+        .add_option_function<std::string>(
+            "--surface",
+            [&options](const std::string& name) {
+                options.surface = name == "ferguson" ? SurfaceConstruction::ferguson : SurfaceConstruction::blend;
+            },
+            "surface fitting: a blend keeping both edge paths' whole shape (default), or the thesis' Ferguson "
+            "surface from their end tangents (fig. 3.2.1)")
+        ->check(one_of(surfaces))
+        ->type_name(alternatives(surfaces));
+}
+
 void add_inbetween_count(CLI::App& command, CommonOptions& options)
 {
     command
@@ -246,6 +262,7 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
 {
     add_staff(app, options);
     add_curve(app, options, slopes);
+    add_surface(app, options);
     add_inbetween_count(app, options);
     add_view(app, options);
     add_delay(app, options);
@@ -299,6 +316,7 @@ void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vec
 {
     add_staff(command, options);
     add_curve(command, options, slopes);
+    add_surface(command, options);
     add_inbetween_count(command, options);
     add_view(command, options);
     add_pictures(command, options, "all frames overlaid");

@@ -89,6 +89,7 @@ SessionSettings session_settings(const CommonOptions& options)
     settings.inbetween_count = options.path.inbetween_count;
     settings.spacing = options.path.spacing;
     settings.step = options.step;
+    settings.surface = options.surface;
     if (options.given.theta)
         settings.theta_degrees = options.view.theta_degrees;
     if (options.given.phi)

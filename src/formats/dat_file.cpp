@@ -68,6 +68,7 @@ public:
 private:
     Expected<void> parse_line(std::string_view line);
     Expected<void> parse_count(std::string_view field);
+    Expected<void> parse_slopes(const Fields& fields);
     Expected<void> parse_part(const Fields& fields);
     Expected<void> parse_point(const Fields& fields);
     Expected<void> finish();
@@ -171,6 +172,8 @@ Expected<void> DatParser::parse_line(std::string_view content)
         return ok;
     if (equals_ignoring_case(fields[0], "PART"))
         return parse_part(fields);
+    if (equals_ignoring_case(fields[0], "SLOPES"))
+        return parse_slopes(fields);
     if (!m_seen_data && fields.size() == 1)
         return parse_count(fields[0]);
     return parse_point(fields);
@@ -188,6 +191,27 @@ Expected<void> DatParser::parse_count(std::string_view field)
         return error("point count " + std::to_string(*count) + " is over the limit of " +
                      std::to_string(max_dat_points));
     m_declared_count = *count;
+    return ok;
+}
+
+// SLOPES S0 S1 (SPEC §2.1): once, before the first point, each slope in [0, 1] as --slopes.
+Expected<void> DatParser::parse_slopes(const Fields& fields)
+{
+    if (m_file.slopes)
+        return error("a second SLOPES line; expected one at most");
+    if (m_points > 0)
+        return error("SLOPES after a point; expected it before the first point");
+    if (fields.size() != 3)
+        return error("expected 'SLOPES S0 S1', two end slopes in " + range_text(limits::end_slope));
+    std::array<double, 2> slopes{};
+    for (std::size_t i = 0; i < slopes.size(); ++i) {
+        const std::optional<double> value = parse_number(fields[i + 1]);
+        if (!value || !limits::end_slope.contains(*value))
+            return error("expected an end slope in " + range_text(limits::end_slope) + ", found " +
+                         quote_field(fields[i + 1]));
+        slopes[i] = *value;
+    }
+    m_file.slopes = EndSlopes{slopes[0], slopes[1]};
     return ok;
 }
 
@@ -341,6 +365,8 @@ std::string format_dat(const DatFile& file)
     std::string text;
     // About 40 bytes a point: one allocation for the whole file.
     text.reserve(file.point_count() * 40 + file.parts.size() * 24);
+    if (file.slopes)
+        text += slopes_line(*file.slopes) + '\n';
     const bool part_lines =
         !file.parts.empty() && needs_part_lines(file.parts.size(), file.parts[0].name, file.parts[0].closure);
     for (std::size_t i = 0; i < file.parts.size(); ++i) {
@@ -352,6 +378,15 @@ std::string format_dat(const DatFile& file)
             text += '\n';
         }
     }
+    return text;
+}
+
+std::string slopes_line(const EndSlopes& slopes)
+{
+    std::string text = "SLOPES ";
+    append_shortest(text, slopes.start);
+    text += ' ';
+    append_shortest(text, slopes.end);
     return text;
 }
 

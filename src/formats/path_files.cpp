@@ -1,6 +1,7 @@
 #include "apcs/formats/path_files.h"
 
 #include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
 
 #include <algorithm>
 #include <cmath>
@@ -153,7 +154,7 @@ std::vector<std::string_view> lines_of(std::string_view text)
 } // namespace
 
 std::string format_path_file(std::string_view original_text, const DatFile& original, const ControlPoints& points,
-                             std::span<const std::size_t> origins)
+                             std::span<const std::size_t> origins, std::optional<EndSlopes> slopes)
 {
     const std::vector<std::string_view> lines = lines_of(original_text);
     const std::string line_end = original_text.find("\r\n") != std::string_view::npos ? "\r\n" : "\n";
@@ -168,10 +169,20 @@ std::string format_path_file(std::string_view original_text, const DatFile& orig
     std::string text;
     text.reserve(original_text.size() + points.size() * 16);
     std::size_t next_line = 1; // the first line not written yet
-    // The other lines before `line` (comments, PART lines); a deleted point's own line goes.
+    // The other lines before `line` (comments, PART lines); a deleted point's own line goes, and
+    // an old SLOPES line when new slopes are written.
+    const auto replaced = [&](std::string_view content) {
+        bool first_field = true;
+        bool is_slopes = false;
+        for_each_field(content, [&](std::string_view field) {
+            is_slopes = is_slopes || (first_field && equals_ignoring_case(field, "SLOPES"));
+            first_field = false;
+        });
+        return slopes && is_slopes;
+    };
     const auto copy_lines_before = [&](std::size_t line) {
         for (; next_line < line && next_line <= lines.size(); ++next_line)
-            if (!is_point_line[next_line])
+            if (!is_point_line[next_line] && !replaced(lines[next_line - 1]))
                 text.append(lines[next_line - 1]).append(line_end);
     };
     for (std::size_t j = 0; j < points.size(); ++j) {
@@ -183,6 +194,8 @@ std::string format_path_file(std::string_view original_text, const DatFile& orig
             if (line >= 1 && line <= lines.size() && lines[line - 1].find(';') != std::string_view::npos)
                 comment = lines[line - 1].substr(lines[line - 1].find(';'));
         }
+        if (j == 0 && slopes)
+            text.append(slopes_line(*slopes)).append(line_end);
         append_point_line(text, points[j].position, points[j].staff);
         if (!comment.empty())
             text.append(" ").append(comment);

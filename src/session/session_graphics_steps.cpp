@@ -22,9 +22,13 @@ namespace {
 std::string rewritten_path_file(const SessionPath& path, const PathEditor& editor)
 {
     const Expected<DatFile> original = parse_dat(path.text, editor.path_name());
-    if (!original)
-        return format_dat(dat_from(editor.points()));
-    return format_path_file(path.text, *original, editor.points(), editor.point_origins());
+    if (!original) {
+        DatFile adjusted = dat_from(editor.points());
+        adjusted.slopes = path.slopes;
+        return format_dat(adjusted);
+    }
+    // SPEC §2.1: the slopes it was adjusted with go along, so that `apcs fit` regenerates the frames.
+    return format_path_file(path.text, *original, editor.points(), editor.point_origins(), path.slopes);
 }
 
 } // namespace
@@ -83,7 +87,7 @@ StepResult Fitted::start(StepContext& context)
 {
     const SessionModel& model = context.model;
     frames = fit_key_frames(model.keys, evaluate_path(model.paths[0].points, context.path_settings(0)),
-                            evaluate_path(model.paths[1].points, context.path_settings(1)));
+                            evaluate_path(model.paths[1].points, context.path_settings(1)), context.settings.surface);
     const Expected<std::vector<std::string>> written = context.files.write_inbetweens(frames, model.keys.key1);
     if (!written) {
         context.model.written.set_problem(written.error());

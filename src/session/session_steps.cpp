@@ -157,6 +157,7 @@ StepResult PathPrompt::submit(StepContext& context, const std::string& name)
     shaped.name = context.files.name_read(name);
     shaped.text = std::move(read->text);
     shaped.points = std::move(*points);
+    shaped.file_slopes = read->file.slopes;
     context.files.log("path " + name + ": " + std::to_string(read->file.point_count()) + " control points");
     return {StepOutcome::answered};
 }
@@ -167,7 +168,9 @@ Lines SlopesPrompt::again(const StepContext&) const { return lines_of({text::ask
 
 std::string SlopesPrompt::default_answer(const StepContext& context) const
 {
-    const EndSlopes slopes = context.settings.slopes.value_or(EndSlopes{});
+    // SPEC §2.1: an explicit --slopes, else the path file's SLOPES, else 1 1.
+    const EndSlopes slopes = context.settings.slopes.value_or(
+        context.model.paths[static_cast<std::size_t>(path)].file_slopes.value_or(EndSlopes{}));
     return first ? shortest_number(slopes.end) : shortest_number(slopes.start) + " " + shortest_number(slopes.end);
 }
 

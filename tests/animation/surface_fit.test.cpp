@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace apcs;
@@ -249,4 +250,104 @@ TEST_CASE("a graphic of several parts is fitted as one sequence", "[animation][f
     for (std::size_t k = 1; k + 1 < frames.frame_count(); ++k)
         for (std::size_t i = 1; i < 4; ++i)
             REQUIRE(frames.frame(k)[i].x == Approx(frames.frame(k)[0].x));
+}
+
+// SPEC §5.3.1, the thesis' Ferguson surface (Ch. 3.2, fig. 3.2.1).
+
+TEST_CASE("a 3-point key's interior Ferguson path has the zero-twist end tangents worked by hand",
+          "[animation][fit][ferguson]")
+{
+    // KEY1 (0,0,0) (1,0,0) (2,0,0): the middle point's v1 = 1/2, F1 = F2 = 1/2.
+    // KEY2 (0,0,2) (0.5,0,2) (2,0,2): v2 = 0.5/2 = 1/4, F1(1/4) = 2/64 − 3/16 + 1 = 0.84375, F2 = 0.15625.
+    // First path (0,0,0) → (0,0,2), slopes 0.5 1: T_first,start = 0.5·(0,0,2) = (0,0,1),
+    // T_first,end = (0,0,2). Last path (2,0,0) → (3,0,1) → (2,0,2), slopes 0.5 1:
+    // T_last,start = 0.5·(1,0,1) = (0.5,0,0.5), T_last,end = (2,0,2) − (3,0,1) = (−1,0,1).
+    const PathSettings slopes{{0.5, 1.0}, 16, 5, Spacing::nearest};
+    const EvaluatedPath first = evaluate_path(path_through({{0, 0, 0}, {0, 0, 2}}), slopes);
+    const EvaluatedPath last = evaluate_path(path_through({{2, 0, 0}, {3, 0, 1}, {2, 0, 2}}), slopes);
+    const FergusonCorners corners{edge_tangents_of(first), edge_tangents_of(last)};
+    REQUIRE(corners.first.start == Vec3{0, 0, 1});
+    REQUIRE(corners.first.end == Vec3{0, 0, 2});
+    REQUIRE(corners.last.start == Vec3{0.5, 0, 0.5});
+    REQUIRE(corners.last.end == Vec3{-1, 0, 1});
+    const std::vector<Vec3> key1{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};
+    const std::vector<Vec3> key2{{0, 0, 2}, {0.5, 0, 2}, {2, 0, 2}};
+    const std::vector<HermiteSegment> paths = ferguson_point_paths(key1, key2, Closure::open, corners);
+    REQUIRE(paths.size() == 3);
+    const HermiteSegment& middle = paths[1];
+    REQUIRE(middle.start == Vec3{1, 0, 0});
+    REQUIRE(middle.end == Vec3{0.5, 0, 2});
+    // Pu1(1/2) = 0.5·(0,0,1) + 0.5·(0.5,0,0.5) = (0.25, 0, 0.75).
+    REQUIRE(distance(middle.start_tangent, Vec3{0.25, 0, 0.75}) < 1e-15);
+    // Pu2(1/4) = 0.84375·(0,0,2) + 0.15625·(−1,0,1) = (−0.15625, 0, 1.84375).
+    REQUIRE(distance(middle.end_tangent, Vec3{-0.15625, 0, 1.84375}) < 1e-15);
+    // The end points' own paths get their own corners' tangents (v = 0 and v = 1).
+    REQUIRE(paths[0].start_tangent == Vec3{0, 0, 1});
+    REQUIRE(paths[2].end_tangent == Vec3{-1, 0, 1});
+}
+
+TEST_CASE("a translated key with straight 2-point edges and slopes 1: every Ferguson path is its chord",
+          "[animation][fit][ferguson]")
+{
+    // KEY2 = KEY1 + d, d = (1,2,3); both edges 2-point with slopes 1, so every corner tangent is d
+    // and Pu1 = Pu2 = (F1 + F2)·d = d: the Hermite segment K1 → K1 + d with tangents d is the chord.
+    const Vec3 d{1, 2, 3};
+    const Graphic key1 = open_graphic({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {3, 1, 0}});
+    Graphic key2 = key1;
+    for (Vec3& point : key2.parts.front().points)
+        point = point + d;
+    const EqualisedKeys keys{key1, key2};
+    const PathSettings exact{{}, 32, 6, Spacing::exact};
+    const EvaluatedPath first = evaluate_path(path_through({{0, 0, 0}, {1, 2, 3}}), exact);
+    const EvaluatedPath last = evaluate_path(path_through({{3, 1, 0}, {4, 3, 3}}), exact);
+    const FrameSequence frames = fit_key_frames(keys, first, last, SurfaceConstruction::ferguson);
+    REQUIRE(frames.frame_count() == 8);
+    for (std::size_t i = 0; i < 4; ++i) {
+        double previous = 0.0;
+        for (std::size_t k = 1; k < 8; ++k) {
+            const Vec3 moved = frames.frame(k)[i] - key1.parts.front().points[i];
+            // On the chord: moved = s·d for one s, growing from frame to frame.
+            const double along = dot(moved, d) / dot(d, d);
+            REQUIRE(distance(moved, along * d) < 1e-9);
+            REQUIRE(along > previous);
+            previous = along;
+        }
+    }
+}
+
+TEST_CASE("KEY1 along y and KEY2 along z: the Ferguson paths bend off their chords",
+          "[animation][fit][ferguson]")
+{
+    // KEY1 (0,0,0) (0,1,0) (0,4,0): v1 = 1/4; KEY2 (1,0,0) (1,0,1) (1,0,4): v2 = 1/4.
+    // Edges 2-point, slopes 1: d0 = (1,0,0), d1 = (1,0,4) − (0,4,0) = (1,−4,4).
+    // Pu1 = Pu2 = 0.84375·d0 + 0.15625·d1 = (1, −0.625, 0.625); the chord is (1,−1,1).
+    // P(u) = K1 + F2(u)·chord + (F3(u) + F4(u))·T with F3 + F4 = u(2u − 1)(u − 1) = 0.09375 at
+    // u = 1/4: P(1/4) = (0,1,0) + 0.15625·(1,−1,1) + 0.09375·(1,−0.625,0.625)
+    //                = (0.25, 0.78515625, 0.21484375), off the chord.
+    const std::vector<Vec3> key1{{0, 0, 0}, {0, 1, 0}, {0, 4, 0}};
+    const std::vector<Vec3> key2{{1, 0, 0}, {1, 0, 1}, {1, 0, 4}};
+    const PathSettings plain{{}, 16, 5, Spacing::nearest};
+    const FergusonCorners corners{edge_tangents_of(evaluate_path(path_through({key1[0], key2[0]}), plain)),
+                                  edge_tangents_of(evaluate_path(path_through({key1[2], key2[2]}), plain))};
+    const HermiteSegment middle = ferguson_point_paths(key1, key2, Closure::open, corners)[1];
+    REQUIRE(distance(middle.start_tangent, Vec3{1, -0.625, 0.625}) < 1e-15);
+    REQUIRE(distance(middle.end_tangent, Vec3{1, -0.625, 0.625}) < 1e-15);
+    const Vec3 quarter = middle.point_at(0.25);
+    REQUIRE(distance(quarter, Vec3{0.25, 0.78515625, 0.21484375}) < 1e-15);
+    // Off the chord by (0.25, −0.21484375, 0.21484375) − (0.6796875 / 3)·(1,−1,1)
+    // = (3/128, 3/256, −3/256), a distance of 3·√6 / 256.
+    const Vec3 chord = key2[1] - key1[1];
+    const Vec3 off = quarter - key1[1];
+    REQUIRE(std::abs(distance(off, dot(off, chord) / dot(chord, chord) * chord) - 3.0 * std::sqrt(6.0) / 256.0) < 1e-15);
+}
+
+TEST_CASE("Ferguson in-betweens sit at the blended arc fraction of each point's path",
+          "[animation][fit][ferguson]")
+{
+    // A straight segment (tangents equal to its chord) has arc fraction = parameter share, so the
+    // point at fraction 0.3 of (0,0,0) → (10,0,0) is (3,0,0); a segment of no length gives its start.
+    const HermiteSegment straight{{0, 0, 0}, {10, 0, 0}, {10, 0, 0}, {10, 0, 0}};
+    REQUIRE(distance(point_at_arc_fraction(straight, 0.3), Vec3{3, 0, 0}) < 1e-8);
+    const HermiteSegment still{{1, 1, 1}, {1, 1, 1}, {}, {}};
+    REQUIRE(point_at_arc_fraction(still, 0.5) == Vec3{1, 1, 1});
 }

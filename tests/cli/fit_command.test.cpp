@@ -248,3 +248,54 @@ TEST_CASE("the overlay of more frames lights more pixels: every frame is drawn",
     CHECK(five > two + 3 * 100);
     CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
 }
+
+TEST_CASE("apcs fit takes each path file's SLOPES; an explicit --slopes overrides them (SPEC 2.1)", "[cli][fit][slopes]")
+{
+    // The first path (0,0,0) → (0,0,10) with SLOPES 0 0 has zero end tangents: P(u) = F2(u)·(0,0,10), so
+    // with 4 samples they lie at z = 0, 1.5625, 5, 8.4375, 10 (F2(1/4) = 0.15625), and in-between 1 of 3
+    // (chord length 2.5) is the sample at 1.5625. The last path has no SLOPES: slopes 1 1, a straight
+    // even line, in-between 1 at z = 2.5. --slopes 1 1 puts the first at 2.5 too.
+    const TempFolder folder;
+    folder.write("key1.dat", "0 0 0\n0 1 0\n");
+    folder.write("key2.dat", "0 0 10\n0 1 10\n");
+    folder.write("first.dat", "SLOPES 0 0\n0 0 0\n0 0 10\n");
+    folder.write("last.dat", "0 1 0\n0 1 10\n");
+    std::vector<std::string> arguments{"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                       (folder / "first.dat").string(), (folder / "last.dat").string(),
+                                       "--inbetweens", "3", "--samples", "4", "--print"};
+    const auto from_files = run_apcs(arguments);
+    REQUIRE(from_files.status == 0);
+    CHECK(from_files.out.find("# frame 1\n0.000000 0.000000 1.562500\n0.000000 1.000000 2.500000\n") !=
+          std::string::npos);
+    arguments.insert(arguments.end(), {"--slopes", "1", "1"});
+    const auto overridden = run_apcs(arguments);
+    REQUIRE(overridden.status == 0);
+    CHECK(overridden.out.find("# frame 1\n0.000000 0.000000 2.500000\n0.000000 1.000000 2.500000\n") !=
+          std::string::npos);
+}
+
+TEST_CASE("apcs fit --surface ferguson: the end points follow their paths, the option is checked", "[cli][fit][ferguson]")
+{
+    const TempFolder folder;
+    write_example(folder);
+    const std::vector<std::string> files{"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                         (folder / "way1.dat").string(), (folder / "way4.dat").string()};
+    std::vector<std::string> blend = files;
+    blend.insert(blend.end(), {"--print", "--surface", "blend"});
+    std::vector<std::string> ferguson = files;
+    ferguson.insert(ferguson.end(), {"--print", "--surface", "ferguson"});
+    const auto by_blend = run_apcs(blend);
+    const auto by_ferguson = run_apcs(ferguson);
+    REQUIRE(by_blend.status == 0);
+    REQUIRE(by_ferguson.status == 0);
+    CHECK(by_blend.out == run_apcs({files[0], files[1], files[2], files[3], files[4], "--print"}).out);
+    CHECK(by_ferguson.out != by_blend.out);
+    // Frame 1's first point is way1's in-between 1 either way.
+    const std::string frame1 = "# frame 1\n";
+    const std::size_t at = by_blend.out.find(frame1) + frame1.size();
+    const std::string first_line = by_blend.out.substr(at, by_blend.out.find('\n', at) - at + 1);
+    CHECK(by_ferguson.out.find(frame1 + first_line) != std::string::npos);
+    std::vector<std::string> wrong = files;
+    wrong.insert(wrong.end(), {"--surface", "coons"});
+    CHECK(run_apcs(wrong).status == 2);
+}

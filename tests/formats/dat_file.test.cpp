@@ -176,3 +176,17 @@ TEST_CASE("a single open unnamed part is written without a PART line", "[formats
     file.parts.push_back({"", Closure::open, {{{1, 2, 3}, std::nullopt, 0}, {{4, 5, 6}, std::nullopt, 0}}});
     REQUIRE(format_dat(file) == "1 2 3\n4 5 6\n");
 }
+
+TEST_CASE("a path file's SLOPES S0 S1 line is read before the first point and written first", "[formats][dat][slopes]")
+{
+    const DatFile file = accepted("; way4 as adjusted\nslopes 0.5 1\n0 6 10\n0 5 0\n");
+    REQUIRE(file.slopes.has_value());
+    CHECK(file.slopes->start == 0.5);
+    CHECK(file.slopes->end == 1.0);
+    CHECK_FALSE(accepted("0 0 0\n1 1 1\n").slopes.has_value());
+    CHECK(format_dat(file) == "SLOPES 0.5 1\n0 6 10\n0 5 0\n");
+    CHECK(rejection("0 0 0\nSLOPES 1 1\n1 1 1\n") == "key1.dat:2: SLOPES after a point; expected it before the first point");
+    CHECK(rejection("SLOPES 1 1\nSLOPES 1 1\n0 0 0\n1 1 1\n") == "key1.dat:2: a second SLOPES line; expected one at most");
+    CHECK(rejection("SLOPES 1.5 1\n0 0 0\n1 1 1\n") == "key1.dat:1: expected an end slope in [0, 1], found '1.5'");
+    CHECK(rejection("SLOPES 1\n0 0 0\n1 1 1\n") == "key1.dat:1: expected 'SLOPES S0 S1', two end slopes in [0, 1]");
+}

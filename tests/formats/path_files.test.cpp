@@ -90,3 +90,16 @@ TEST_CASE("a CRLF path file stays CRLF; one without comments is exactly format_d
     REQUIRE(format_path_file(plain, plain_file, points_of(plain_file), file_origins(3)) ==
             format_dat(dat_from(points_of(plain_file))));
 }
+
+TEST_CASE("a rewritten path file carries the slopes it was adjusted with, in place of its old SLOPES line",
+          "[formats][path-files][slopes]")
+{
+    const std::string text = "; way4\nSLOPES 1 1\n0 6 10 ; KEY1\n0 5 0\n";
+    const DatFile file = *parse_dat(text, "way4.dat");
+    REQUIRE(format_path_file(text, file, points_of(file), file_origins(2), EndSlopes{0.5, 1.0}) ==
+            "; way4\nSLOPES 0.5 1\n0 6 10 0 0 0 0 ; KEY1\n0 5 0 0 0 0 0\n");
+    const std::string without = "0 6 10\n0 5 0\n";
+    const DatFile plain = *parse_dat(without, "ani4.dat");
+    REQUIRE(format_path_file(without, plain, points_of(plain), file_origins(2), EndSlopes{0, 0.25}) ==
+            "SLOPES 0 0.25\n0 6 10 0 0 0 0\n0 5 0 0 0 0 0\n");
+}

@@ -1,3 +1,4 @@
+#include "apcs/formats/path_files.h"
 #include "apcs/session/key_event.h"
 
 #include "support/golden.h"
@@ -10,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 using namespace apcs;
@@ -219,5 +221,34 @@ TEST_CASE("the N to L lesson (T, G, =, W, U) replays headless to its approved sc
         test::check_golden(std::string("lesson/screens-") + glyphs + ".txt", result.out);
         // The waypoint inserted and moved 12 steps left is in the file, with the typed staff values.
         test::check_golden("lesson/ani1.dat", test::read_all(folder / "ani1.dat"));
+    }
+}
+
+TEST_CASE("apcs fit regenerates every shipped session's in-betweens byte for byte from the files it wrote",
+          "[session][headless][slopes]")
+{
+    // SPEC §2.1: the session writes each adjusted path file with its SLOPES, so batch fitting of the
+    // same files gives the same frames (N-to-L's way4 was adjusted with slopes 0.5 1, the snake's
+    // way7 with 1 0.5, the stick's way1 with 0 0).
+    const std::tuple<const char*, const char*, const char*> examples[] = {
+        {"n-to-l", "way1.dat", "way4.dat"}, {"stick", "way1.dat", "way5.dat"}, {"snake-apple", "way1.dat", "way7.dat"}};
+    for (const auto& [example, first, last] : examples) {
+        CAPTURE(example);
+        const test::TempFolder folder;
+        copy_example(example, folder);
+        const auto session = test::run_apcs({"--keys", (folder / "session.keys").string(), "--workdir",
+                                             folder.path().string()});
+        REQUIRE(session.status == 0);
+        const std::filesystem::path batch = folder / "batch";
+        std::filesystem::create_directory(batch);
+        const auto fitted = test::run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                            (folder / first).string(), (folder / last).string(), "--out",
+                                            batch.string()});
+        REQUIRE(fitted.status == 0);
+        for (int k = 1; k <= 12; ++k) {
+            const std::string name = inbetween_file_name(static_cast<std::size_t>(k));
+            CAPTURE(name);
+            REQUIRE(test::read_all(batch / name) == test::read_all(folder / name));
+        }
     }
 }

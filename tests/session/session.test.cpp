@@ -162,7 +162,7 @@ TEST_CASE("global control applies every staff key to all control points", "[sess
     REQUIRE(session.phase() == SessionPhase::ask_again);
     press(session, {ch('N')});
     REQUIRE(session.phase() == SessionPhase::ask_next_path);
-    REQUIRE(files.files["way1.dat"] == "0 0 0 0.15 0 -0.05 0.3\n3 -4 5 0.15 0 -0.05 0.3\n1 1 7 0.15 0 -0.05 0.3\n"
+    REQUIRE(files.files["way1.dat"] == "SLOPES 1 1\n0 0 0 0.15 0 -0.05 0.3\n3 -4 5 0.15 0 -0.05 0.3\n1 1 7 0.15 0 -0.05 0.3\n"
                                        "0 0 10 0.15 0 -0.05 0.3\n");
 }
 
@@ -178,7 +178,7 @@ TEST_CASE("staff values clamp at -1 and +1", "[session][staff]")
     for (int i = 0; i < 30; ++i)
         press(session, {ch('J')});
     press(session, {enter, enter, enter, ch('n')});
-    REQUIRE(files.files["way1.dat"].starts_with("0 0 0 1 -1 0 0\n"));
+    REQUIRE(files.files["way1.dat"].starts_with("SLOPES 1 1\n0 0 0 1 -1 0 0\n"));
 }
 
 TEST_CASE("local control changes the picked middle region only", "[session][staff]")
@@ -198,7 +198,7 @@ TEST_CASE("local control changes the picked middle region only", "[session][staf
     REQUIRE(session.phase() == SessionPhase::staff);
     press(session, {ch('6'), ch('6'), enter, enter, enter, ch('6'), enter, ch('N')});
     // Points 2 and 3 (indices 1, 2) get t = 0.1; a = 0.05 starts at point 2 and ends at point 3.
-    REQUIRE(files.files["way1.dat"] == "0 0 0 0 0 0 0\n3 -4 5 0.1 0 0 0.05\n1 1 7 0.1 0 0 0\n0 0 10 0 0 0 0\n");
+    REQUIRE(files.files["way1.dat"] == "SLOPES 1 1\n0 0 0 0 0 0 0\n3 -4 5 0.1 0 0 0.05\n1 1 7 0.1 0 0 0\n0 0 10 0 0 0 0\n");
 }
 
 TEST_CASE("Y adjusts the path again from the control choice", "[session]")
@@ -477,7 +477,7 @@ TEST_CASE("the command line's values are the answers Enter takes, and seed 3-col
     type(session, "");
     REQUIRE(files.log_lines.back() == "slopes DS[0] 0.5, DD[N] 0.25");
     press(session, {ch('8'), enter, enter, enter, enter, ch('n')});
-    REQUIRE(files.files["way1.dat"].starts_with("0 0 0 0.1 0 0 0\n"));
+    REQUIRE(files.files["way1.dat"].starts_with("SLOPES 0.5 0.25\n0 0 0 0.1 0 0 0\n"));
 }
 
 TEST_CASE("the session's --png writes the overlay of all frames when the animation ends", "[session][picture]")

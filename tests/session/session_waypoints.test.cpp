@@ -99,9 +99,12 @@ TEST_CASE("undoing every change and accepting writes the path file as it was", "
     for (const TextLine& line : session.screen().picture.text)
         nothing_left = nothing_left || line.text == "Nothing to undo: the path is as it was opened";
     REQUIRE(nothing_left);
-    // Through the staff of one point and out without a change: the file comes back as it was read.
+    // Through the staff of one point and out without a change: the file comes back as it was read,
+    // with the slopes it was shaped with (1 1) before its first point (SPEC §2.1).
     press(session, "2" "6\n\n");
     press(session, "\n\n\n\n");
     REQUIRE(session.phase() == SessionPhase::ask_next_path);
-    REQUIRE(files.files["two.dat"] == original);
+    std::string with_slopes = original;
+    with_slopes.insert(with_slopes.find('\n') + 1, "SLOPES 1 1\n");
+    REQUIRE(files.files["two.dat"] == with_slopes);
 }

@@ -3,7 +3,9 @@
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/animation/hermite.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/animation/surface_construction.h"
 
 #include <array>
 #include <span>
@@ -19,8 +21,39 @@ struct EdgePath {
     std::vector<double> progress;
 };
 
+// An edge path's end tangents as evaluated (§4.2): the outgoing tangent at its first control point
+// (S0·(P_1 − P_0), the prompt's DS[0]) and the incoming one at its last (S1·(P_n − P_{n−1})).
+struct EdgeTangents {
+    Vec3 start;
+    Vec3 end;
+};
+EdgeTangents edge_tangents_of(const EvaluatedPath& path);
+
+// The corners of the thesis' Ferguson surface (Ch. 3.2, fig. 3.2.1): the u-tangents of the first
+// and the last point's path at KEY1 (start) and at KEY2 (end).
+struct FergusonCorners {
+    EdgeTangents first;
+    EdgeTangents last;
+};
+
+// Point i's path on the Ferguson surface (SPEC §5.3.1): with zero twist the u-tangent along KEY1
+// at v is Pu1(v) = F1(v)·T_first,start + F2(v)·T_last,start, along KEY2 Pu2(v) likewise with the
+// end tangents; the path is the Hermite segment from K1_i to K2_i with tangents Pu1(v1_i) and
+// Pu2(v2_i), v1_i and v2_i the point's chord places along KEY1 and KEY2 (thesis: "the boundary
+// through A and B of the sub-surface on 1, 2, A, B"). A closed graphic's last path is its first.
+std::vector<HermiteSegment> ferguson_point_paths(std::span<const Vec3> key1, std::span<const Vec3> key2,
+                                                 Closure closure, const FergusonCorners& corners);
+
+// The point at `fraction` (clamped to [0, 1]) of a segment's arc length (§4.4); a segment of no
+// length gives its start.
+Vec3 point_at_arc_fraction(const HermiteSegment& segment, double fraction);
+
 // Frame 0 = the KEY1 position, frames 1 … M = the path's in-betweens, frame M+1 = the KEY2 position.
 EdgePath edge_path_from(const EvaluatedPath& path, const Vec3& key1_position, const Vec3& key2_position);
+
+// Each point's place along one key: the normalised cumulative chord length of its point sequence
+// (with the closing segment for a closed graphic); a key of zero length gives i / (n − 1).
+std::vector<double> chord_places(std::span<const Vec3> points, Closure closure);
 
 // Each point's place v_i ∈ [0, 1] along the graphic: the normalised cumulative chord length of the
 // point sequence, averaged over both keys. A closed graphic includes its closing segment, so v
@@ -50,6 +83,11 @@ class SurfaceFitter {
 public:
     SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure, EdgePath first_edge,
                   EdgePath last_edge);
+    // The thesis' construction (SPEC §5.3.1): interior point i's in-between k lies at the arc
+    // fraction F1(v_i)·w0_k + F2(v_i)·w1_k of its Ferguson path (ferguson_point_paths). Cost:
+    // O(points × frames) arc-length inversions.
+    SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> key2, Closure closure, EdgePath first_edge,
+                  EdgePath last_edge, const FergusonCorners& corners);
 
     std::size_t frame_count() const { return m_frame_count; }
     std::size_t point_count() const { return m_point_count; }
@@ -68,6 +106,7 @@ private:
     EdgePath m_second_edge;
     std::vector<std::pair<double, double>> m_across; // F1(v_i), F2(v_i)
     bool m_last_follows_edge = true;
+    std::vector<HermiteSegment> m_ferguson_paths; // empty for the blend
 };
 
 // A graphic's points as one span: its only part's own, or all parts' copied into `storage`.
@@ -76,10 +115,12 @@ std::span<const Vec3> contiguous_points(const Graphic& graphic, std::vector<Vec3
 // The fitter of a key-frame pair (see fit_key_frames); it refers to the keys' points, or to
 // `storage` for keys of several parts, and must not outlive them.
 SurfaceFitter key_frames_fitter(const EqualisedKeys& keys, const EvaluatedPath& first_path,
-                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage);
+                                const EvaluatedPath& last_path, std::array<std::vector<Vec3>, 2>& storage,
+                                SurfaceConstruction construction = SurfaceConstruction::blend);
 
 // All frames of a key-frame pair: the edges come from the evaluated paths of the first and last
 // graphic point (the last is ignored for a closed graphic), the keys must be equalised.
-FrameSequence fit_key_frames(const EqualisedKeys& keys, const EvaluatedPath& first_path, const EvaluatedPath& last_path);
+FrameSequence fit_key_frames(const EqualisedKeys& keys, const EvaluatedPath& first_path, const EvaluatedPath& last_path,
+                             SurfaceConstruction construction = SurfaceConstruction::blend);
 
 } // namespace apcs

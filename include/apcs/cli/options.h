@@ -2,6 +2,7 @@
 
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/animation/surface_construction.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/session/key_event.h"
@@ -27,6 +28,7 @@ struct GivenOptions {
 struct CommonOptions {
     StaffValues staff;
     PathSettings path;
+    SurfaceConstruction surface = SurfaceConstruction::blend; // --surface (SPEC §5.3)
     ViewAngles view;
     int delay_ms = 200;
     std::filesystem::path workdir;

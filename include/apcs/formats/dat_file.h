@@ -33,6 +33,8 @@ struct DatPart {
 // The text format of SPEC §2.1, shared by key, path (ani) and in-between files.
 struct DatFile {
     std::vector<DatPart> parts;
+    // A path file's `SLOPES S0 S1` line (SPEC §2.1): the end slopes it was adjusted with.
+    std::optional<EndSlopes> slopes;
 
     std::size_t point_count() const;
 };
@@ -51,6 +53,9 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 // or closed, each point with the shortest decimal form that reads back exactly. Points with staff
 // values get all seven columns.
 std::string format_dat(const DatFile& file);
+
+// "SLOPES S0 S1" with the shortest exact numbers, without its line end (SPEC §2.1).
+std::string slopes_line(const EndSlopes& slopes);
 
 // One point line as format_dat writes it (three columns, or seven with staff values), without
 // its line end.

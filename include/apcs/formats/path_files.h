@@ -81,9 +81,10 @@ DatFile dat_from(const ControlPoints& points);
 // lines) stays where it was among the points. `origins` runs parallel to `points`: each point's
 // index among the original's points, or new_point (waypoint_change.h) for an inserted one, which
 // gets a line of its own after the point before it. The comments before a deleted point stay,
-// before the next point kept. CRLF line ends stay CRLF.
+// before the next point kept. CRLF line ends stay CRLF. With `slopes`, a `SLOPES S0 S1` line goes
+// just before the first point and any SLOPES line of the original goes (SPEC §2.1).
 std::string format_path_file(std::string_view original_text, const DatFile& original, const ControlPoints& points,
-                             std::span<const std::size_t> origins);
+                             std::span<const std::size_t> origins, std::optional<EndSlopes> slopes = std::nullopt);
 
 // "(x, y, z)" with the shortest exact numbers, for messages.
 std::string describe_point(const Vec3& point);

@@ -25,6 +25,8 @@ struct SessionPath {
     std::string text;
     ControlPoints points;
     EndSlopes slopes;
+    // The file's own SLOPES line (SPEC §2.1): an empty slope answer takes it when --slopes is not given.
+    std::optional<EndSlopes> file_slopes;
 };
 
 // The files the session wrote, in order, for the last screen; and the last write that failed.

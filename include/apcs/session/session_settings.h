@@ -3,6 +3,7 @@
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/memory_budget.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/animation/surface_construction.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/graphics_screen.h"
 
@@ -16,6 +17,7 @@ struct SessionSettings {
     int samples_per_segment = 32;
     int inbetween_count = 12;
     Spacing spacing = Spacing::nearest;
+    SurfaceConstruction surface = SurfaceConstruction::blend; // --surface (SPEC §5.3)
     double step = 0.05; // staff step per key
     // What an empty answer takes where the command line gave it (--theta, --phi, --delay,
     // --slopes); else the thesis' example (30 40 200, 1 1).
