@@ -88,8 +88,8 @@ SessionSettings session_settings(const CommonOptions& options)
     settings.samples_per_segment = options.path.samples_per_segment;
     settings.inbetween_count = options.path.inbetween_count;
     settings.spacing = options.path.spacing;
-    settings.step = options.step;
     settings.surface = options.surface;
+    settings.step = options.step;
     if (options.given.theta)
         settings.theta_degrees = options.view.theta_degrees;
     if (options.given.phi)
