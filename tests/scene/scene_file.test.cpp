@@ -162,3 +162,20 @@ TEST_CASE("the scene tree (--tree) prints the scene as the thesis' data structur
             "    `-- hand  t c b a +0.50 +0.00 +0.00 +0.00 (inherited)  N=1\n"
             "        `-- arm  t c b a +0.50 +0.00 +0.00 +0.00 (inherited)  N=0  SHAPE 2 points\n");
 }
+
+TEST_CASE("the scene tree of a deep chain is indented 32 levels at most, deeper nodes saying their depth", "[scene]")
+{
+    // Issue 33: a 10,000-deep chain printed 200 MB of indentation.
+    std::string text = "FRAMES 1\nOBJECT o1\nSHAPE square.dat\n";
+    for (int depth = 2; depth <= 100; ++depth)
+        text += "OBJECT o" + std::to_string(depth) + " PARENT o" + std::to_string(depth - 1) + "\n";
+    const std::string tree = format_scene_tree(scene_from(text, example_files()), "deep.scn");
+    std::size_t longest = 0;
+    for (std::size_t start = 0, end = 0; start < tree.size(); start = end + 1) {
+        end = tree.find('\n', start);
+        longest = std::max(longest, end - start);
+    }
+    CHECK(longest < 4 * 32 + 80);
+    CHECK(tree.find("`-- (depth 100) o100  t c b a") != std::string::npos);
+    CHECK(tree.find("`-- o32  t c b a") != std::string::npos);
+}
