@@ -234,3 +234,33 @@ TEST_CASE("a script token that names no key is refused with the list of every ke
     REQUIRE(parsed.error().message == "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
                                       "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L; found 'F2'");
 }
+
+TEST_CASE("a key script's lines may end with LF, CR LF or CR alone, as a .dat file's", "[session][keys]")
+{
+    const std::vector<KeyEvent> expected{KeyEvent::typed('Y'), KeyEvent::of(Key::enter), KeyEvent::typed('8'),
+                                         KeyEvent::of(Key::escape)};
+    for (const char* text : {"Y\nENTER\n8\nESC\n", "Y\r\nENTER\r\n8\r\nESC\r\n", "Y\rENTER\r8\rESC\r", "Y\rENTER\r\n8\nESC"}) {
+        const Expected<std::vector<KeyEvent>> parsed = parse_key_script(text, "keys.txt");
+        REQUIRE(parsed);
+        REQUIRE(*parsed == expected);
+    }
+    // TEXT types the rest of its line only: a CR ends it.
+    const Expected<std::vector<KeyEvent>> typed = parse_key_script("TEXT ab\rENTER\r", "keys.txt");
+    REQUIRE(typed);
+    REQUIRE(*typed == std::vector<KeyEvent>{KeyEvent::typed('a'), KeyEvent::typed('b'), KeyEvent::of(Key::enter)});
+}
+
+TEST_CASE("a DOS editor's Ctrl-Z ends a key script; more keys after it are refused at its line", "[session][keys]")
+{
+    const Expected<std::vector<KeyEvent>> ended = parse_key_script("Y\r\nENTER\r\n\x1A\r\n", "keys.txt");
+    REQUIRE(ended);
+    REQUIRE(*ended == std::vector<KeyEvent>{KeyEvent::typed('Y'), KeyEvent::of(Key::enter)});
+    const Expected<std::vector<KeyEvent>> last_line = parse_key_script("Y\nENTER\x1A", "keys.txt");
+    REQUIRE(last_line);
+    REQUIRE(last_line->size() == 2);
+
+    const Expected<std::vector<KeyEvent>> more = parse_key_script("Y\r\nENTER\x1A\r\nN\r\n", "keys.txt");
+    REQUIRE_FALSE(more);
+    REQUIRE(more.error().to_string() ==
+            "keys.txt:2: Ctrl-Z (end of file) followed by more data; expected it only at the end");
+}
