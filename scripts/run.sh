@@ -13,7 +13,8 @@ work=build/session-n-to-l
 mkdir -p "$work"
 cp data/n-to-l/*.dat "$work"/
 hint="Press Enter at each prompt for the thesis' example answers; answer way1.dat for the first
-path to see the staff bend it (README: your first session). ? shows the keys, q quits."
+path to see the staff bend it (README: your first session). ? shows the keys; Ctrl-C ends APCS
+at any step, q on a graphics screen (at a text prompt q is typed)."
 # The session's full screen covers whatever was printed before it: on a terminal the hint waits
 # for Enter, and it is printed again after the session.
 echo "APCS works in $work. $hint"
