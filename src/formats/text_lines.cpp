@@ -13,6 +13,8 @@ constexpr char dos_end_of_file = '\x1A';
 
 bool is_trailer(char c) { return c == dos_end_of_file || c == '\r' || c == '\n' || is_field_blank(c); }
 
+constexpr const char* more_after_end_of_file = "Ctrl-Z (end of file) followed by more data; expected it only at the end";
+
 } // namespace
 
 DataLineReader::DataLineReader(const std::string& file_name, DataLineHandler handle)
@@ -116,8 +118,7 @@ void DataLineReader::handle_line(std::string_view content)
 void DataLineReader::check_trailer(std::string_view bytes)
 {
     if (m_outcome && !std::all_of(bytes.begin(), bytes.end(), is_trailer))
-        m_outcome = Diagnostic{m_file_name, m_end_line,
-                               "Ctrl-Z (end of file) followed by more data; expected it only at the end"};
+        m_outcome = Diagnostic{m_file_name, m_end_line, more_after_end_of_file};
 }
 
 Expected<void> for_each_data_line(std::string_view text, const std::string& file_name, const DataLineHandler& handle)
@@ -126,6 +127,33 @@ Expected<void> for_each_data_line(std::string_view text, const std::string& file
     if (Expected<void> fed = reader.feed(text); !fed)
         return fed;
     return reader.finish();
+}
+
+std::string_view take_line(std::string_view& text)
+{
+    const std::size_t end = text.find_first_of("\r\n");
+    const std::string_view line = text.substr(0, end);
+    const bool crlf =
+        end != std::string_view::npos && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
+    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + (crlf ? 2 : 1));
+    return line;
+}
+
+Expected<void> cut_at_end_of_file(std::string_view& text, const std::string& file_name)
+{
+    const std::size_t end_of_file = text.find(dos_end_of_file);
+    if (end_of_file == std::string_view::npos)
+        return ok;
+    const std::string_view after = text.substr(end_of_file + 1);
+    if (!std::all_of(after.begin(), after.end(), is_trailer)) {
+        int line = 1; // the Ctrl-Z's: one more than the line ends before it
+        for (std::string_view before = text.substr(0, end_of_file);
+             before.find_first_of("\r\n") != std::string_view::npos; ++line)
+            take_line(before);
+        return Diagnostic{file_name, line, more_after_end_of_file};
+    }
+    text = text.substr(0, end_of_file);
+    return ok;
 }
 
 } // namespace apcs

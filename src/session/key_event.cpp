@@ -1,6 +1,7 @@
 #include "apcs/session/key_event.h"
 
 #include "apcs/formats/text_fields.h"
+#include "apcs/formats/text_lines.h"
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/painter.h"
 
@@ -46,36 +47,6 @@ std::optional<std::string> caption_of(std::string_view comment)
     return std::string(comment.substr(first, last - first + 1));
 }
 
-// The next line of `text`, taken off it: lines end with LF, CR LF or CR alone (SPEC §3, as the
-// .dat and .scn readers take them).
-std::string_view take_script_line(std::string_view& text)
-{
-    const std::size_t end = text.find_first_of("\r\n");
-    const std::string_view line = text.substr(0, end);
-    const bool crlf =
-        end != std::string_view::npos && text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n';
-    text = end == std::string_view::npos ? std::string_view{} : text.substr(end + (crlf ? 2 : 1));
-    return line;
-}
-
-// A DOS editor's Ctrl-Z ends the script (`text` is cut before it); only line ends and blanks may
-// follow it, as in a .dat file.
-Expected<void> cut_at_end_of_file(std::string_view& text, const std::string& file_name)
-{
-    const std::size_t end_of_file = text.find('\x1A');
-    if (end_of_file == std::string_view::npos)
-        return ok;
-    if (text.find_first_not_of(" \t\r\n", end_of_file + 1) != std::string_view::npos) {
-        int line = 1; // the Ctrl-Z's: one more than the line ends before it
-        for (std::string_view before = text.substr(0, end_of_file);
-             before.find_first_of("\r\n") != std::string_view::npos; ++line)
-            take_script_line(before);
-        return Diagnostic{file_name, line, "Ctrl-Z (end of file) followed by more data; expected it only at the end"};
-    }
-    text = text.substr(0, end_of_file);
-    return ok;
-}
-
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name,
                                              std::vector<ScriptCaption>* captions)
 {
@@ -88,7 +59,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     int line_number = 0;
     while (!text.empty()) {
         ++line_number;
-        std::string_view line = take_script_line(text);
+        std::string_view line = take_line(text);
         if (line.starts_with("TEXT ")) {
             for (const char32_t character : decode_utf8(line.substr(5)))
                 events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));

@@ -156,7 +156,9 @@ bool KeyPattern::matches(const KeyEvent& event) const
     case Kind::letter: return event.key == Key::character && upper_case(event.character) == character;
     case Kind::keypad: return event.key == key || (event.key == Key::character && event.character == character);
     case Kind::printable: return event.key == Key::character && event.character >= 0x20;
-    case Kind::any: return true;
+    // Ctrl-L repaints the terminal wherever it is typed (the help screen says so): it is no
+    // "any key" that closes a screen or goes on.
+    case Kind::any: return event.key != Key::redraw;
     }
     return false;
 }

@@ -98,9 +98,7 @@ Session::Session(SessionSettings settings, SessionFiles& files)
     , m_files(files)
     , m_step(step::Key1Prompt{})
 {
-    StepContext step_context = context();
-    for (const std::string& line : std::get<step::Key1Prompt>(m_step).lines(step_context))
-        step_context.say(line);
+    ask({});
 }
 
 StepContext Session::context()
@@ -148,41 +146,35 @@ void Session::dispatch_to_step(const Command& command)
         Overloaded{[&](step::Shaping& shaping) { return shaping.update(step_context, command); },
                    [&](step::Playing& playing) { return playing.update(step_context, command); },
                    [](step::Finished&) { return StepResult{}; },
-                   [&](auto& prompt) {
-                       // Y, Enter or any key, as the question asks: the key map let only those through.
-                       if (prompt.key_context() != KeyContext::text_line)
+                   [&](auto& prompt) -> StepResult {
+                       if constexpr (requires { prompt.default_answer(step_context); }) {
+                           const std::optional<std::string> typed = typed_answer(command);
+                           if (!typed)
+                               return {};
+                           // An empty answer takes the thesis' example, and the console shows it as typed.
+                           const std::string answer = typed->empty() ? prompt.default_answer(step_context) : *typed;
+                           m_console.set_input(answer);
+                           m_console.commit_input();
+                           return prompt.submit(step_context, answer);
+                       } else {
+                           // Y, Enter or any key, as the question asks: the key map let only those through.
                            return prompt.submit(step_context, {});
-                       return update_text_step(command);
+                       }
                    }},
         m_step);
     follow(result);
 }
 
-StepResult Session::update_text_step(const Command& command)
+// The line typed at a text prompt when `command` ends it; nullopt while it is being typed, and
+// for the answer ? alone, which asks for the help screen (SPEC §7.3) and is no answer.
+std::optional<std::string> Session::typed_answer(const Command& command)
 {
     const std::optional<std::string> typed = edit_line(m_console, command);
-    if (!typed)
-        return {};
-    if (*typed == "?") {
-        // The answer ? alone asks for the help screen (SPEC §7.3); it is no answer.
-        m_console.set_input("");
-        m_overlays.open_help(KeyContext::text_line);
-        return {};
-    }
-    StepContext step_context = context();
-    return std::visit(
-        [&](auto& prompt) -> StepResult {
-            if constexpr (requires { prompt.default_answer(step_context); }) {
-                // An empty answer takes the thesis' example, and the console shows it as typed.
-                const std::string answer = typed->empty() ? prompt.default_answer(step_context) : *typed;
-                m_console.set_input(answer);
-                m_console.commit_input();
-                return prompt.submit(step_context, answer);
-            } else {
-                return {};
-            }
-        },
-        m_step);
+    if (typed != "?")
+        return typed;
+    m_console.set_input("");
+    m_overlays.open_help(KeyContext::text_line);
+    return std::nullopt;
 }
 
 void Session::follow(StepResult result)
@@ -190,8 +182,15 @@ void Session::follow(StepResult result)
     while (result.outcome != StepOutcome::stay) {
         StepContext step_context = context();
         std::optional<Step> next = next_step(m_step, result.outcome, step_context);
-        if (!next)
+        if (!next) {
+            // A row missing from the graph (an assert in debug builds): say so, never drop a
+            // refusal unread.
+            m_files.log("no step follows " + std::string(phase_name(phase())) + " on outcome " +
+                        std::to_string(static_cast<int>(result.outcome)));
+            if (!result.problem.empty())
+                step_context.say(result.problem);
             return;
+        }
         // Steps that keep a reference (to the log) cannot be assigned: each is made in place.
         std::visit([this](auto&& made) { m_step.emplace<std::decay_t<decltype(made)>>(std::move(made)); },
                    std::move(*next));

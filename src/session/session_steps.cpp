@@ -42,18 +42,18 @@ std::optional<std::vector<double>> numbers_in(const std::string& line)
     return numbers;
 }
 
-// KEY1 (which 0) or KEY2 (1) read into the model; the refusal otherwise.
-std::optional<std::string> read_key_file(StepContext& context, const std::string& name, std::size_t which)
+// KEY1 (which 0) or KEY2 (1) read into the model, or why not.
+Expected<void> read_key_file(StepContext& context, const std::string& name, std::size_t which)
 {
     const Expected<DatFile> file = context.files.read_dat(name, 2);
     if (!file)
-        return file.error().to_string();
+        return file.error();
     context.files.protect_key_file(name);
     context.model.key_names[which] = name;
     context.model.key_frames[which] = graphic_from(*file);
     context.files.log("KEY" + std::to_string(which + 1) + " " + name + ": " + std::to_string(file->point_count()) +
                       " points in " + std::to_string(file->parts.size()) + " parts");
-    return std::nullopt;
+    return ok;
 }
 
 } // namespace
@@ -64,8 +64,8 @@ Lines Key1Prompt::lines(const StepContext&) const { return lines_of({text::ask_k
 
 StepResult Key1Prompt::submit(StepContext& context, const std::string& answer)
 {
-    if (std::optional<std::string> refused = read_key_file(context, answer, 0))
-        return StepResult::refused(std::move(*refused));
+    if (const Expected<void> read = read_key_file(context, answer, 0); !read)
+        return StepResult::refused(read.error().to_string());
     return {StepOutcome::answered};
 }
 
@@ -73,8 +73,8 @@ Lines Key2Prompt::lines(const StepContext&) const { return lines_of({text::ask_k
 
 StepResult Key2Prompt::submit(StepContext& context, const std::string& answer)
 {
-    if (std::optional<std::string> refused = read_key_file(context, answer, 1))
-        return StepResult::refused(std::move(*refused));
+    if (const Expected<void> read = read_key_file(context, answer, 1); !read)
+        return StepResult::refused(read.error().to_string());
     const auto& keys = context.model.key_frames;
     const std::size_t key_points = std::max(keys[0].point_count(), keys[1].point_count());
     if (const Expected<void> fits = check_frames_fit(key_points, context.settings); !fits)

@@ -248,6 +248,9 @@ TEST_CASE("apcs fit regenerates every shipped session's in-betweens byte for byt
         for (int k = 1; k <= 12; ++k) {
             const std::string name = inbetween_file_name(static_cast<std::size_t>(k));
             CAPTURE(name);
+            // read_all gives "" for a file that is not there: both runs must have written it.
+            REQUIRE(std::filesystem::exists(folder / name));
+            REQUIRE(std::filesystem::exists(batch / name));
             REQUIRE(test::read_all(batch / name) == test::read_all(folder / name));
         }
     }

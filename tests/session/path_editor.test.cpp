@@ -13,6 +13,7 @@
 
 using namespace apcs;
 using apcs::test::apply;
+using apcs::test::stick_player;
 using apcs::test::LogLines;
 using apcs::test::message_of;
 namespace cmd = apcs::command;
@@ -185,14 +186,7 @@ TEST_CASE("a path that could not be written is asked about again with the reason
 TEST_CASE("the animation player shows one frame per tick, then all frames, then finishes", "[session][animation]")
 {
     LogLines log;
-    FrameSequence frames(3, 2);
-    for (std::size_t k = 0; k < 3; ++k) {
-        frames.frame(k)[0] = {0, static_cast<double>(k), 0};
-        frames.frame(k)[1] = {0, static_cast<double>(k), 1};
-    }
-    Graphic structure;
-    structure.parts.push_back({"stick", Closure::open, {{0, 0, 0}, {0, 0, 1}}});
-    AnimationPlayer player(frames, structure, {"k1.dat", "k2.dat"}, {0, 90}, 50, log);
+    AnimationPlayer player = stick_player(log);
     REQUIRE(player.playing());
     REQUIRE(message_of(player.view()) == "KEY1: k1.dat");
     player.tick();

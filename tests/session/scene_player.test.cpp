@@ -12,17 +12,10 @@ using apcs::test::message_of;
 
 namespace {
 
-// Three frames of a stick moving up, as a scene's player shows them.
-AnimationPlayer stick_player(SessionLog& log)
+// The stick's three frames as a scene's player shows them.
+AnimationPlayer scene_stick_player(SessionLog& log)
 {
-    FrameSequence frames(3, 2);
-    for (std::size_t k = 0; k < 3; ++k) {
-        frames.frame(k)[0] = {0, static_cast<double>(k), 0};
-        frames.frame(k)[1] = {0, static_cast<double>(k), 1};
-    }
-    Graphic structure;
-    structure.parts.push_back({"stick", Closure::open, {{0, 0, 0}, {0, 0, 1}}});
-    AnimationPlayer player(frames, structure, {"k1.dat", "k2.dat"}, {0, 90}, 50, log);
+    AnimationPlayer player = test::stick_player(log);
     player.name_frames_by_scene("stick.scn");
     return player;
 }
@@ -39,7 +32,7 @@ std::string message_of(const ScenePlayer& program)
 TEST_CASE("apcs play's q ends the player at once, without the session's quit question", "[session][play]")
 {
     test::LogLines log;
-    AnimationPlayer player = stick_player(log);
+    AnimationPlayer player = scene_stick_player(log);
     ScenePlayer program(player, 50, [](const GraphicsScreen&) { return std::string(); });
     REQUIRE(program.animating());
     program.handle(KeyEvent::typed('q'));
@@ -50,7 +43,7 @@ TEST_CASE("apcs play's help screen lists the player's keys and holds the frames 
           "[session][play]")
 {
     test::LogLines log;
-    AnimationPlayer player = stick_player(log);
+    AnimationPlayer player = scene_stick_player(log);
     ScenePlayer program(player, 50, [](const GraphicsScreen&) { return std::string(); });
     program.handle(KeyEvent::typed('?'));
     const SessionScreen help = program.screen();
@@ -67,7 +60,7 @@ TEST_CASE("apcs play's help screen lists the player's keys and holds the frames 
 TEST_CASE("apcs play's P hands the screen shown to the picture saver and says what it answered", "[session][play]")
 {
     test::LogLines log;
-    AnimationPlayer player = stick_player(log);
+    AnimationPlayer player = scene_stick_player(log);
     int pictures = 0;
     ScenePlayer program(player, 50, [&pictures](const GraphicsScreen& screen) {
         ++pictures;
@@ -82,7 +75,7 @@ TEST_CASE("apcs play's P hands the screen shown to the picture saver and says wh
 TEST_CASE("apcs play ends after the frames overlaid, as the session's animation does", "[session][play]")
 {
     test::LogLines log;
-    AnimationPlayer player = stick_player(log);
+    AnimationPlayer player = scene_stick_player(log);
     ScenePlayer program(player, 50, [](const GraphicsScreen&) { return std::string(); });
     program.handle(KeyEvent::of(Key::escape));
     REQUIRE_FALSE(program.animating());
@@ -91,4 +84,20 @@ TEST_CASE("apcs play ends after the frames overlaid, as the session's animation 
     REQUIRE_FALSE(program.finished());
     program.handle(KeyEvent::typed('x'));
     REQUIRE(program.finished());
+}
+
+TEST_CASE("Ctrl-L repaints apcs play's screen and neither closes its help nor ends it", "[session][play]")
+{
+    test::LogLines log;
+    AnimationPlayer player = scene_stick_player(log);
+    ScenePlayer program(player, 50, [](const GraphicsScreen&) { return std::string(); });
+    program.handle(KeyEvent::typed('?'));
+    program.handle(KeyEvent::of(Key::redraw));
+    REQUIRE_FALSE(program.screen().graphics);
+    program.handle(KeyEvent::typed('x'));
+    program.handle(KeyEvent::of(Key::escape));
+    program.handle(KeyEvent::typed('x'));
+    REQUIRE(player.phase() == SessionPhase::overlay);
+    program.handle(KeyEvent::of(Key::redraw));
+    REQUIRE_FALSE(program.finished());
 }

@@ -33,6 +33,19 @@ inline std::string message_of(const GraphicsScreen& screen)
     return {};
 }
 
+// Three frames of a stick moving up (KEY1 k1.dat, one in-between, KEY2 k2.dat), 50 ms each.
+inline AnimationPlayer stick_player(SessionLog& log)
+{
+    FrameSequence frames(3, 2);
+    for (std::size_t k = 0; k < 3; ++k) {
+        frames.frame(k)[0] = {0, static_cast<double>(k), 0};
+        frames.frame(k)[1] = {0, static_cast<double>(k), 1};
+    }
+    Graphic structure;
+    structure.parts.push_back({"stick", Closure::open, {{0, 0, 0}, {0, 0, 1}}});
+    return AnimationPlayer(frames, structure, {"k1.dat", "k2.dat"}, {0, 90}, 50, log);
+}
+
 // A path editor's setup for path file way1.dat with control points at `positions` (staff values 0).
 inline PathEditor::Setup path_setup(std::initializer_list<Vec3> positions, const PathSettings& settings)
 {

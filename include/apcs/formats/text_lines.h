@@ -23,6 +23,14 @@ using DataLineHandler = std::function<Expected<void>(int line_number, std::strin
 // The problem is the first in the file's order: a line before a misplaced Ctrl-Z is read first.
 Expected<void> for_each_data_line(std::string_view text, const std::string& file_name, const DataLineHandler& handle);
 
+// The same line ends and Ctrl-Z for a text whose lines are not data lines (a key script, whose
+// TEXT lines keep ';' and '#'):
+// the next line of `text`, taken off it (LF, CR LF or a lone CR ends it);
+std::string_view take_line(std::string_view& text);
+// `text` cut before a Ctrl-Z that ends it, or the problem "FILE:LINE: Ctrl-Z …" when more than
+// line ends and blanks follow the Ctrl-Z.
+Expected<void> cut_at_end_of_file(std::string_view& text, const std::string& file_name);
+
 // for_each_data_line for text that comes in pieces (a file read a block at a time): each line
 // goes to the handler as soon as it is whole, so only an unfinished line is ever held. feed()
 // and finish() return the first problem (and every later call returns it again).

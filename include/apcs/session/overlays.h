@@ -16,7 +16,7 @@ namespace overlay {
 struct HelpScreen {
     KeyContext keys;
 };
-// "Quit without saving this path ? (Y/N)": Y quits, any other key goes back.
+// "Quit without saving this path ? (Y/N)": Y quits, N or Enter goes back, other keys do nothing.
 struct QuitQuestion {};
 } // namespace overlay
 

@@ -48,7 +48,7 @@ private:
     StepContext context();
     KeyContext step_key_context() const;
     void dispatch_to_step(const Command& command);
-    StepResult update_text_step(const Command& command);
+    std::optional<std::string> typed_answer(const Command& command);
     // Follows the transition table from the step on the screen for `result`.
     void follow(StepResult result);
     void ask(const std::string& problem);
