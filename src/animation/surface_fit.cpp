@@ -74,7 +74,8 @@ SurfaceFitter::SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> k
                              EdgePath first_edge, EdgePath last_edge, const FergusonCorners& corners)
     : SurfaceFitter(key1, key2, closure, std::move(first_edge), std::move(last_edge))
 {
-    m_ferguson_paths = ferguson_point_paths(m_key1, m_key2, closure, corners);
+    for (const HermiteSegment& path : ferguson_point_paths(m_key1, m_key2, closure, corners))
+        m_ferguson_paths.emplace_back(path);
 }
 
 void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) const
@@ -102,7 +103,7 @@ void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) c
         const double progress = f1 * progress0 + f2 * progress1;
         // SPEC §5.3.1: the thesis' surface places the point on its own Ferguson path instead.
         out[j] = m_ferguson_paths.empty() ? lerp(m_key1[i], m_key2[i], progress) + f1 * bend0 + f2 * bend1
-                                          : point_at_arc_fraction(m_ferguson_paths[i], progress);
+                                          : m_ferguson_paths[i].at_arc_fraction(progress);
     }
     // The edge points follow their paths exactly (for v = 0 and v = 1 the blend already does, up
     // to rounding).

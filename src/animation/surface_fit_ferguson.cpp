@@ -43,15 +43,41 @@ std::vector<HermiteSegment> ferguson_point_paths(std::span<const Vec3> key1, std
     return paths;
 }
 
+MeasuredSegment::MeasuredSegment(const HermiteSegment& segment)
+    : m_segment(segment)
+{
+    m_lengths.measure(std::span(&m_segment, 1));
+}
+
+// Newton's steps on s(u) − target, s' = |P'(u)|, from u = fraction (the place on an evenly
+// moving path), kept inside the bracket that bisection would keep: a handful of measurings where
+// bisection takes about forty.
+Vec3 MeasuredSegment::at_arc_fraction(double fraction) const
+{
+    const std::span<const HermiteSegment> segments(&m_segment, 1);
+    const double total = m_lengths.total_length();
+    if (!(total > 0.0))
+        return m_segment.start;
+    const double target = std::clamp(fraction, 0.0, 1.0) * total;
+    const double tolerance = 1e-12 * total;
+    double low = 0.0;
+    double high = 1.0;
+    double u = std::clamp(fraction, 0.0, 1.0);
+    for (int step = 0; step < 100 && high - low > 1e-15; ++step) {
+        const double error = m_lengths.length_at(segments, {0, u}) - target;
+        if (std::abs(error) <= tolerance)
+            break;
+        (error < 0.0 ? low : high) = u;
+        const double speed = length(m_segment.derivative_at(u));
+        const double newton = speed > 0.0 ? u - error / speed : low;
+        u = newton > low && newton < high ? newton : (low + high) / 2.0;
+    }
+    return m_segment.point_at(u);
+}
+
 Vec3 point_at_arc_fraction(const HermiteSegment& segment, double fraction)
 {
-    const std::span<const HermiteSegment> segments(&segment, 1);
-    CurveArcLengths lengths;
-    lengths.measure(segments);
-    if (!(lengths.total_length() > 0.0))
-        return segment.start;
-    const double clamped = std::clamp(fraction, 0.0, 1.0);
-    return curve_point_at(segments, lengths.parameter_at(segments, clamped * lengths.total_length()));
+    return MeasuredSegment(segment).at_arc_fraction(fraction);
 }
 
 } // namespace apcs

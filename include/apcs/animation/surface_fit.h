@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/animation/add_points.h"
+#include "apcs/animation/arc_length.h"
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/hermite.h"
@@ -44,8 +45,21 @@ struct FergusonCorners {
 std::vector<HermiteSegment> ferguson_point_paths(std::span<const Vec3> key1, std::span<const Vec3> key2,
                                                  Closure closure, const FergusonCorners& corners);
 
-// The point at `fraction` (clamped to [0, 1]) of a segment's arc length (§4.4); a segment of no
-// length gives its start.
+// One Hermite segment measured once (§4.4), so that the points at many arc fractions cost a
+// search each, not a measuring: a Ferguson path is asked for every in-between.
+class MeasuredSegment {
+public:
+    explicit MeasuredSegment(const HermiteSegment& segment);
+    // The point at `fraction` (clamped to [0, 1]) of the arc length, to 1e-12 of it; a segment of
+    // no length gives its start.
+    Vec3 at_arc_fraction(double fraction) const;
+
+private:
+    HermiteSegment m_segment;
+    CurveArcLengths m_lengths;
+};
+
+// MeasuredSegment(segment).at_arc_fraction(fraction), for one point.
 Vec3 point_at_arc_fraction(const HermiteSegment& segment, double fraction);
 
 // Frame 0 = the KEY1 position, frames 1 … M = the path's in-betweens, frame M+1 = the KEY2 position.
@@ -106,7 +120,7 @@ private:
     EdgePath m_second_edge;
     std::vector<std::pair<double, double>> m_across; // F1(v_i), F2(v_i)
     bool m_last_follows_edge = true;
-    std::vector<HermiteSegment> m_ferguson_paths; // empty for the blend
+    std::vector<MeasuredSegment> m_ferguson_paths; // empty for the blend
 };
 
 // A graphic's points as one span: its only part's own, or all parts' copied into `storage`.
