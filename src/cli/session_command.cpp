@@ -346,11 +346,24 @@ std::optional<ExitStatus> refuse_record_target(const CommonOptions& options, std
     return std::nullopt;
 }
 
+// The files the session read that a recording (or its backup) must never replace: the key script
+// and the key frames as typed at the KEY prompts.
+KeyFileGuard files_read(const CommonOptions& options, const Session& session, const std::filesystem::path& folder)
+{
+    KeyFileGuard read;
+    if (options.keys && *options.keys != "-")
+        read.protect(*options.keys);
+    for (const std::string& key : session.key_names())
+        if (!key.empty())
+            read.protect(folder / key);
+    return read;
+}
+
 // --record FILE: the keys handled, as a script; "-" writes them to `out`. The target was checked
 // before the session (refuse_record_target) and guarded during it, so the session wrote nothing
-// there.
-std::optional<ExitStatus> record_keys(const CommonOptions& options, const std::vector<KeyEvent>& recorded,
-                                      std::ostream& out, std::ostream& err)
+// there; a KEY answer typed live may still have named it, and then it is a key file.
+std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFileGuard& read,
+                                      const std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
 {
     if (!options.record)
         return std::nullopt;
@@ -358,7 +371,11 @@ std::optional<ExitStatus> record_keys(const CommonOptions& options, const std::v
         out << format_key_script(recorded);
         return std::nullopt;
     }
-    const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded));
+    if (read.guards(*options.record))
+        return report_bad_input({options.record->string(), 0,
+                                 "is a key file; key files are never written (the keystrokes were not recorded)"},
+                                err);
+    const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded), &read);
     if (!written)
         return report_bad_input(written.error(), err);
     return std::nullopt;
@@ -408,7 +425,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     if (status == ExitStatus::terminal_problem)
         return status;
     // A recording that fails is reported; a session stopped by a signal still ends as stopped.
-    if (const std::optional<ExitStatus> refused = record_keys(options, recorded, out, err))
+    if (const std::optional<ExitStatus> refused = record_keys(options, files_read(options, session, folder), recorded, out, err))
         return status == ExitStatus::stopped ? status : *refused;
     return status;
 }

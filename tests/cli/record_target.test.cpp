@@ -77,3 +77,31 @@ TEST_CASE("a recording to - (--record -) goes to standard output, not to a file 
     CHECK_FALSE(std::filesystem::exists("-"));
     CHECK(recorded.out.starts_with("ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT way1.dat\n")); // keys, no screens
 }
+
+TEST_CASE("a recording (--record) never replaces a key file whose name was typed key by key, nor backs up over one",
+          "[cli][session][record][files]")
+{
+    const TempFolder folder;
+    copy_n_to_l(folder);
+    const std::string key = read_all(folder / "key1.dat");
+
+    // KEY1 typed one character at a time names the record target: no start-up check sees it.
+    folder.write("n.dat", key);
+    folder.write("typed.keys", "n . d a t ENTER\nENTER\n");
+    const auto typed = run_apcs({"--keys", (folder / "typed.keys").string(), "--workdir", folder.path().string(),
+                                 "--record", (folder / "n.dat").string()});
+    CHECK(typed.status == 1);
+    CHECK(typed.err.find("n.dat: is a key file; key files are never written (the keystrokes were not recorded)") !=
+          std::string::npos);
+    CHECK(read_all(folder / "n.dat") == key);
+
+    // KEY1 is k.bak: the old recording k.keys is kept as k.b01, never as the key's k.bak.
+    folder.write("k.bak", key);
+    folder.write("k.keys", "old recording\n");
+    folder.write("kb.keys", "TEXT k.bak\nENTER\nENTER\n");
+    const auto backed = run_apcs({"--keys", (folder / "kb.keys").string(), "--workdir", folder.path().string(),
+                                  "--record", (folder / "k.keys").string()});
+    CHECK(backed.status == 0);
+    CHECK(read_all(folder / "k.bak") == key);
+    CHECK(read_all(folder / "k.b01") == "old recording\n");
+}

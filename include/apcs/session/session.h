@@ -11,6 +11,7 @@
 #include "apcs/session/session_steps.h"
 #include "apcs/session/text_console.h"
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,6 +42,8 @@ public:
 
     SessionPhase phase() const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
+    // The KEY1 and KEY2 files as typed (empty until read), relative to the session's folder.
+    const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
     // The last write that failed, if any did (the step that tried it was asked again).
     const std::optional<Diagnostic>& write_problem() const { return m_model.written.problem(); }
 
