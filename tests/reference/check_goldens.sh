@@ -3,7 +3,7 @@
 # code, so that a wrong approval fails: the N-to-L session's (tests/golden/n-to-l, from its own
 # approved way1.dat and way4.dat) and every example's 12 (tests/golden/examples, from the path
 # files the example's session writes when APCS replays it). The end slopes are the ones each
-# session.keys types, since path files do not record them. Without python3 it exits 77, which
+# session.keys types; the path files the session writes hold them too (SLOPES), so the two agree. Without python3 it exits 77, which
 # CTest reports as a skip (scripts/install-deps.sh installs python3).
 # Usage: check_goldens.sh APCS SOURCE_DIR
 set -uo pipefail

@@ -9,8 +9,8 @@ nearest-sample in-betweens, from kb_reference.py) and 5.3 (the blend across the 
 Usage: fit_model.py KEY1 KEY2 FIRST_PATH LAST_PATH --inbetweens M [--first-slopes S0 S1]
                     [--last-slopes S0 S1] K:INB_FILE...
   FIRST_PATH, LAST_PATH: the path files of the first and last graphic point as the session wrote
-  them (their t c b a columns, and SLOPES if they have it; the slope options override it: the
-  session does not write SLOPES yet); K:INB_FILE: in-between file K of M.
+  them (their t c b a columns, and SLOPES if they have it; the slope options override it);
+  K:INB_FILE: in-between file K of M.
 Exits 1, naming file, point and coordinate, when a file's part or point count differs or a number
 is more than 1e-7 off (in-between files keep 8 decimals).
 """
@@ -53,8 +53,9 @@ def read_dat(name):
 
 
 def added_points(points, more):
-    """Algorithm 2 on the smaller graphic: RT = more div segments, RS = more mod segments; the first
-    RS segments get RT new points each, the others RT - 1, evenly along the segment."""
+    """Algorithm 2 on the smaller graphic: RT = (segments + more) div segments, RS = (segments +
+    more) mod segments, i.e. (NP1 - 1) div and mod (NP2 - 1); the first RS segments get RT new
+    points each, the others RT - 1, evenly along the segment."""
     segments = len(points) - 1
     rt, rs = (len(points) - 1 + more) // segments, (len(points) - 1 + more) % segments
     result = [points[0]]
