@@ -40,6 +40,30 @@ private:
     std::vector<std::exception_ptr> m_problems;
 };
 
+// Runs task(thread) for the threads 0 … threads − 1, this one as number 0, and returns once all
+// have ended, with how many started (this one included): a thread that cannot be started (out of
+// threads or address space) is not, and its number's work is left to the caller. Rethrows the
+// lowest-numbered thread's exception.
+std::size_t run_on_threads(std::size_t threads, const std::function<void(std::size_t thread)>& task)
+{
+    ThreadProblems problems(threads);
+    std::size_t started = 1;
+    {
+        std::vector<std::jthread> helpers;
+        try {
+            for (std::size_t thread = 1; thread < threads; ++thread) {
+                helpers.emplace_back([&, thread] { problems.run(thread, [&] { task(thread); }); });
+                ++started;
+            }
+        } catch (const std::system_error&) {
+            // The threads started do their numbers' work; the caller sees how many there were.
+        }
+        problems.run(0, [&] { task(0); });
+    }
+    problems.rethrow_first();
+    return started;
+}
+
 } // namespace
 
 void split_across_cores(std::size_t count, std::size_t worth_a_thread,
@@ -50,23 +74,16 @@ void split_across_cores(std::size_t count, std::size_t worth_a_thread,
         return;
     }
     const std::size_t middle = count / 2;
-    ThreadProblems problems(2);
-    std::jthread second_half;
-    try {
-        second_half = std::jthread([&] { problems.run(1, [&] { work(middle, count); }); });
-    } catch (const std::system_error&) {
-        work(0, count);
-        return;
-    }
-    problems.run(0, [&] { work(0, middle); });
-    second_half.join();
-    problems.rethrow_first();
+    const std::size_t started =
+        run_on_threads(2, [&](std::size_t thread) { thread == 0 ? work(0, middle) : work(middle, count); });
+    if (started < 2)
+        work(middle, count);
 }
 
 void for_each_index_in_parallel(std::size_t count, std::size_t workers, const std::function<void(std::size_t)>& work)
 {
     std::atomic<std::size_t> next{0};
-    const auto take_indices = [&] {
+    const auto take_indices = [&](std::size_t) {
         try {
             for (std::size_t index = next++; index < count; index = next++)
                 work(index);
@@ -75,19 +92,8 @@ void for_each_index_in_parallel(std::size_t count, std::size_t workers, const st
             throw;
         }
     };
-    const std::size_t threads = std::max<std::size_t>(1, std::min(workers, count));
-    ThreadProblems problems(threads);
-    {
-        std::vector<std::jthread> helpers;
-        try {
-            for (std::size_t thread = 1; thread < threads; ++thread)
-                helpers.emplace_back([&, thread] { problems.run(thread, take_indices); });
-        } catch (const std::system_error&) {
-            // The threads started share the indices with this one.
-        }
-        problems.run(0, take_indices);
-    }
-    problems.rethrow_first();
+    // The threads started share the indices, however many could be.
+    run_on_threads(std::max<std::size_t>(1, std::min(workers, count)), take_indices);
 }
 
 } // namespace apcs

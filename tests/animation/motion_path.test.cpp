@@ -441,6 +441,10 @@ TEST_CASE("the segments a change reports made again are the only ones that diffe
     change.index = 20;
     change.point = {{3, 39, 1}, {}};
     const SegmentSplice touched = reevaluate_path(points, settings, path, apply_change(points, origins, change));
+    // A segment's shape depends on the points around its ends (s − 1 … s + 2): the new point 20
+    // shapes new segments 18 … 21, in place of old 18 … 20, whose end tangents at old points 19
+    // and 20 saw the neighbour it now stands between. No more: "everything" would pass the rest.
+    REQUIRE(touched == SegmentSplice{18, 3, 4});
     REQUIRE(touched.inserted == touched.removed + 1);
     REQUIRE(path.curve.segments.size() == before.size() + 1);
     for (std::size_t s = 0; s < touched.first; ++s)

@@ -26,6 +26,14 @@ Graphic open_graphic(std::vector<Vec3> points)
     return graphic;
 }
 
+// `graphic` moved by `d` (a translation).
+Graphic moved(Graphic graphic, const Vec3& d)
+{
+    for (Vec3& point : graphic.parts.front().points)
+        point = point + d;
+    return graphic;
+}
+
 const PathSettings settings{{}, 16, 5, Spacing::nearest};
 
 } // namespace
@@ -293,9 +301,7 @@ TEST_CASE("a translated key with straight 2-point edges and slopes 1: every Ferg
     // and Pu1 = Pu2 = (F1 + F2)·d = d: the Hermite segment K1 → K1 + d with tangents d is the chord.
     const Vec3 d{1, 2, 3};
     const Graphic key1 = open_graphic({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {3, 1, 0}});
-    Graphic key2 = key1;
-    for (Vec3& point : key2.parts.front().points)
-        point = point + d;
+    const Graphic key2 = moved(key1, d);
     const EqualisedKeys keys{key1, key2};
     const PathSettings exact{{}, 32, 6, Spacing::exact};
     const EvaluatedPath first = evaluate_path(path_through({{0, 0, 0}, {1, 2, 3}}), exact);
@@ -311,6 +317,39 @@ TEST_CASE("a translated key with straight 2-point edges and slopes 1: every Ferg
             REQUIRE(distance(moved, along * d) < 1e-9);
             REQUIRE(along > previous);
             previous = along;
+        }
+    }
+}
+
+TEST_CASE("Ferguson in-betweens lie at F1(v)·w0 + F2(v)·w1 of each path, w0 and w1 the edges' own progress",
+          "[animation][fit][ferguson]")
+{
+    // A translation with straight 2-point edges: every path is its chord (the test above), so the
+    // arc fraction reached is the share of the move. KEY1's chord places 0, 1/4, 3/4, 1 (lengths
+    // 1, 2, 1 of 4) are KEY2's too: v = 1/4 gives F1 = 0.84375, F2 = 0.15625. The first edge
+    // accelerates (+0.8) and the last slows (−0.8), so w0 ≠ w1 in every in-between: a point placed
+    // by w0 alone, or by v1 for v, would miss.
+    const Vec3 d{0, 2, 0};
+    const Graphic key1 = open_graphic({{0, 0, 0}, {1, 0, 0}, {3, 0, 0}, {4, 0, 0}});
+    const Graphic key2 = moved(key1, d);
+    ControlPoints first_path = path_through({{0, 0, 0}, {0, 2, 0}});
+    first_path.front().staff.acceleration = 0.8;
+    ControlPoints last_path = path_through({{4, 0, 0}, {4, 2, 0}});
+    last_path.front().staff.acceleration = -0.8;
+    const PathSettings exact{{}, 32, 6, Spacing::exact};
+    const EvaluatedPath first = evaluate_path(first_path, exact);
+    const EvaluatedPath last = evaluate_path(last_path, exact);
+    const std::vector<double> w0 = edge_path_from(first, {0, 0, 0}, {0, 2, 0}).progress;
+    const std::vector<double> w1 = edge_path_from(last, {4, 0, 0}, {4, 2, 0}).progress;
+    const FrameSequence frames = fit_key_frames({key1, key2}, first, last, SurfaceConstruction::ferguson);
+    REQUIRE(frames.frame_count() == 8);
+    const double f1[] = {1.0, 0.84375, 0.15625, 0.0};
+    for (std::size_t k = 1; k + 1 < 8; ++k) {
+        CAPTURE(k);
+        REQUIRE(std::abs(w0[k] - w1[k]) > 0.01);
+        for (std::size_t i = 1; i < 3; ++i) {
+            const double along = (frames.frame(k)[i] - key1.parts.front().points[i]).y / d.y;
+            REQUIRE(std::abs(along - (f1[i] * w0[k] + (1.0 - f1[i]) * w1[k])) < 1e-9);
         }
     }
 }
@@ -341,7 +380,7 @@ TEST_CASE("KEY1 along y and KEY2 along z: the Ferguson paths bend off their chor
     REQUIRE(std::abs(distance(off, dot(off, chord) / dot(chord, chord) * chord) - 3.0 * std::sqrt(6.0) / 256.0) < 1e-15);
 }
 
-TEST_CASE("Ferguson in-betweens sit at the blended arc fraction of each point's path",
+TEST_CASE("the point at an arc fraction of a straight segment is that share of it; of a still segment, its start",
           "[animation][fit][ferguson]")
 {
     // A straight segment (tangents equal to its chord) has arc fraction = parameter share, so the

@@ -13,7 +13,8 @@ namespace apcs {
 
 // Calls work(first, end) for the indices 0 … count − 1: in two halves on two threads (this one
 // included) when count is at least twice `worth_a_thread` and the machine has two cores, else once
-// for all (also when no thread can be started). The halves are [0, count / 2) and [count / 2, count).
+// for all. The halves are [0, count / 2) and [count / 2, count); when the second thread cannot be
+// started, this one does both, one after the other.
 void split_across_cores(std::size_t count, std::size_t worth_a_thread,
                         const std::function<void(std::size_t first, std::size_t end)>& work);
 

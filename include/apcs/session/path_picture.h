@@ -34,7 +34,6 @@ public:
     void box_region(std::optional<ControlRegion> region);
 
     const EvaluatedPath& evaluated() const { return m_evaluated; }
-    const PathSettings& settings() const { return m_settings; }
     // Only after set_view.
     const ViewTransform& view() const { return *m_view; }
     // The path screen of `content` (whose path is evaluated()) in this view, with the curve and the
