@@ -5,6 +5,7 @@
 #include "apcs/animation/memory_budget.h"
 #include "apcs/cli/frame_output.h"
 #include "apcs/cli/memory_limit.h"
+#include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/inbetween_files.h"
@@ -44,15 +45,6 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
                                         "), the in-betweens made one at a time " + inbetweens + ", and their paths";
     return refuse_over_budget(asked, needed, options, "lower --inbetweens or --samples, or use key frames of fewer points",
                               err);
-}
-
-// SPEC §2.1: an explicit --slopes overrides the path file's SLOPES; else the file's; else 1 1.
-PathSettings settings_of_path(const DatFile& file, const CommonOptions& options)
-{
-    PathSettings settings = options.path;
-    if (!options.given.slopes && file.slopes)
-        settings.slopes = *file.slopes;
-    return settings;
 }
 
 } // namespace

@@ -102,6 +102,14 @@ GraphicsScreen draw_path_file_screen(const ControlPoints& points, const Evaluate
     return draw_path_screen(content, path_screen_scene(content).fit(angles, layout::view_area));
 }
 
+PathSettings settings_of_path(const DatFile& file, const CommonOptions& options)
+{
+    PathSettings settings = options.path;
+    if (!options.given.slopes && file.slopes)
+        settings.slopes = *file.slopes;
+    return settings;
+}
+
 ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,
                             std::ostream& err)
 {
@@ -114,7 +122,7 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
     if (const auto refused = refuse_over_budget(memory::describe(request), memory::path_bytes(request), options,
                                                 "lower --samples or --inbetweens", err))
         return *refused;
-    const EvaluatedPath path = evaluate_path(points, options.path);
+    const EvaluatedPath path = evaluate_path(points, settings_of_path(*dat, options));
     warn_if_frames_freeze(path, options.path.inbetween_count, err);
     if (pictures_asked(options))
         if (Expected<void> written = write_pictures(draw_path_file_screen(points, path, options.view), options, out);

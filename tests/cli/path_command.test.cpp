@@ -39,6 +39,31 @@ TEST_CASE("apcs path --print writes the curve then the in-betweens, worked by ha
                           "3.000000 0.000000 1.500000\n");
 }
 
+TEST_CASE("apcs path takes the file's SLOPES line unless --slopes is given, worked by hand", "[cli][path]")
+{
+    const TempFolder folder;
+    // SLOPES 0 0: both end tangents vanish, P(u) = F2(u)·(4, 0, 2) with F2 = 3u² − 2u³: 0.15625,
+    // 0.5, 0.84375 at u = 1/4, 1/2, 3/4. The targets 1/4, 1/2, 3/4 of the length take the nearest
+    // samples: 0.15625, 0.5 and 0.84375 of the way.
+    const auto file = folder.write("ani1.dat", "SLOPES 0 0\n0 0 0\n4 0 2\n");
+    const auto own = run_apcs({"path", file.string(), "--samples", "4", "--inbetweens", "3", "--print"});
+    REQUIRE(own.status == 0);
+    REQUIRE(own.out == "# curve\n"
+                       "0.000000 0.000000 0.000000\n"
+                       "0.625000 0.000000 0.312500\n"
+                       "2.000000 0.000000 1.000000\n"
+                       "3.375000 0.000000 1.687500\n"
+                       "4.000000 0.000000 2.000000\n"
+                       "# inbetweens\n"
+                       "0.625000 0.000000 0.312500\n"
+                       "2.000000 0.000000 1.000000\n"
+                       "3.375000 0.000000 1.687500\n");
+    // --slopes 1 1 overrides the line: the evenly moving path of the test above.
+    const auto given = run_apcs({"path", file.string(), "--samples", "4", "--inbetweens", "3", "--slopes", "1", "1"});
+    REQUIRE(given.status == 0);
+    REQUIRE(given.out.find("1.000000 0.000000 0.500000\n") != std::string::npos);
+}
+
 TEST_CASE("apcs path agrees with the Catmull-Rom midpoint to 1e-9", "[cli][path]")
 {
     const TempFolder folder;

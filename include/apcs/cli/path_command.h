@@ -18,6 +18,10 @@
 
 namespace apcs {
 
+// The path settings of a path file (SPEC §2.1): --slopes where given, else the file's SLOPES line,
+// else the default 1 1.
+PathSettings settings_of_path(const DatFile& file, const CommonOptions& options);
+
 // `# curve` (every sample) then `# inbetweens` (SPEC §4.3, §7.4).
 std::string format_path_print(const EvaluatedPath& path);
 
