@@ -44,9 +44,13 @@ std::uintmax_t estimated_files_bytes(std::size_t count,
 {
     if (count == 0)
         return 0;
-    const long double first = static_cast<long double>(content_bytes(0, writer_of));
-    const long double last = static_cast<long double>(content_bytes(count - 1, writer_of));
-    const long double average = (first + last) / 2;
+    const std::size_t last = count - 1;
+    std::vector<std::size_t> samples{0, last / 4, last / 2, last - last / 4, last};
+    samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+    long double sampled = 0;
+    for (const std::size_t index : samples)
+        sampled += static_cast<long double>(content_bytes(index, writer_of));
+    const long double average = sampled / static_cast<long double>(samples.size());
     const long double total = average * static_cast<long double>(count);
     constexpr long double most = static_cast<long double>(UINTMAX_MAX);
     return total >= most ? UINTMAX_MAX : static_cast<std::uintmax_t>(total);

@@ -29,9 +29,9 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
                      std::string_view purpose);
 
-// The bytes `count` files made by writer_of take: the first's and the last's, made once and
-// counted (nothing kept), stand for all, since the files of a run differ only in their numbers'
-// digits.
+// The bytes `count` files made by writer_of take, estimated from five spread over the run (the
+// first, at a quarter, half and three quarters, the last), each made once and counted, nothing
+// kept: their mean for every file. The middle frames of a move carry more digits than its ends.
 std::uintmax_t estimated_files_bytes(std::size_t count,
                                      const std::function<void(std::size_t, const ContentSink&)>& writer_of);
 
