@@ -34,6 +34,13 @@ for picture in path fit scene draw; do
     echo "$picture.svg by $renderer: $covered of the PNG's $lit lit pixels within one pixel ($share)"
     [ "$lit" -gt 1000 ] || fail "$picture.png has only $lit lit pixels"
     python3 -c "import sys; sys.exit(0 if $share >= 0.95 else 1)" || fail "$picture.svg by $renderer covers $share < 0.95"
+    # And the other way: what the rendering lights lies on the PNG's pixels, so that a rendering
+    # that lights everything (a background, a line the clip should have cut) cannot pass.
+    read -r drawn kept back_share < <(python3 "$here/svg_coverage.py" "$picture-$renderer.pgm" "$picture.pgm") ||
+      fail "svg_coverage.py $picture, the other way"
+    echo "  and $kept of its $drawn lit pixels lie within one pixel of the PNG's ($back_share)"
+    python3 -c "import sys; sys.exit(0 if $back_share >= 0.9 else 1)" ||
+      fail "$picture.svg by $renderer lights pixels the PNG does not: $back_share < 0.9"
   done
 done
 echo "passed: rsvg-convert and ImageMagick draw the path, the fit overlay, the scene and the dashes as the PNGs"

@@ -205,7 +205,9 @@ TEST_CASE("timed waypoints: each control point at its frame, never running back,
         REQUIRE(animation.frame(times[k])[0] == road[k].position);
     REQUIRE(animation.frame(70)[0] == road.back().position);
     // Distance along the curve: the arc length at each frame's position, found on the curve itself,
-    // is S(f) of the distance-time function through the keys and never decreases.
+    // is S(f) of the distance-time function through the keys and never decreases. S itself comes
+    // from TimedDistance, which the next test holds to its properties; here the frames are held
+    // to it, and at the keys (above) to the control points by hand.
     const std::vector<HermiteSegment> segments = kb_segments(road, EndSlopes{});
     const ArcLengthTable table(segments);
     std::vector<double> keys(4);

@@ -119,6 +119,10 @@ TEST_CASE("the bicycle example turns each wheel and the pedals about their own c
     const std::size_t road = example.object("road");
     const std::pair<std::size_t, double> turning[] = {
         {example.object("rear-wheel"), -12.0}, {example.object("front-wheel"), -12.0}, {example.object("pedals"), -6.0}};
+    // The ride itself, from bump.dat by hand: MOVE carries the bicycle from the path's first
+    // control point (0, 0, 0), where it stands in frame 0, to its last, (0, 15, 0), in the last.
+    REQUIRE(near(animation.transform(bicycle, 0)(Vec3{}), Vec3{0, 0, 0}));
+    REQUIRE(near(animation.transform(bicycle, animation.last_frame())(Vec3{}), Vec3{0, 15, 0}));
     std::size_t checked = 0;
     for (int f = 0; f <= animation.last_frame(); ++f) {
         CAPTURE(f);
