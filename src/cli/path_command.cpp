@@ -27,14 +27,21 @@ std::string format_path_print(const EvaluatedPath& path)
     return text;
 }
 
-KeyFileGuard read_files_guard(const CommonOptions& options)
+namespace {
+
+// `inputs` guarded, standard input ("-") and empty names left out.
+KeyFileGuard guard_of(std::span<const std::filesystem::path> inputs)
 {
     KeyFileGuard guard;
-    for (const std::filesystem::path& input : options.read_files)
+    for (const std::filesystem::path& input : inputs)
         if (!input.empty() && input != standard_stream_name)
             guard.protect(input);
     return guard;
 }
+
+} // namespace
+
+KeyFileGuard read_files_guard(const CommonOptions& options) { return guard_of(options.read_files); }
 
 Expected<void> write_picture_bytes(const std::filesystem::path& target, const std::string& bytes,
                                    const KeyFileGuard& inputs, std::ostream& out)
@@ -73,10 +80,7 @@ picture_targets(const CommonOptions& options)
 Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs)
 {
     const std::filesystem::path dash(standard_stream_name);
-    KeyFileGuard read;
-    for (const std::filesystem::path& input : inputs)
-        if (!input.empty() && input != dash)
-            read.protect(input);
+    const KeyFileGuard read = guard_of(inputs);
     for (const auto& [option, target] : picture_targets(options))
         if (*target && **target != dash && read.guards(**target))
             return Diagnostic{(*target)->string(), 0, "is an input of this run; " + std::string(option) +
