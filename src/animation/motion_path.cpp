@@ -137,6 +137,19 @@ std::vector<AccelerationSpan> spans_of(const std::vector<SpanTiming>& timings)
     return spans;
 }
 
+// Consecutive frames at one point (SPEC §4.3): KEY1, the in-betweens and KEY2 in order.
+void list_frozen_frames(EvaluatedPath& path)
+{
+    Vec3 previous = path.curve.sample(0);
+    for (std::size_t j = 0; j < path.inbetweens.size(); ++j) {
+        if (path.inbetweens[j].position == previous)
+            path.frozen_frames.push_back(j);
+        previous = path.inbetweens[j].position;
+    }
+    if (previous == path.curve.sample(path.curve.sample_count() - 1))
+        path.frozen_frames.push_back(path.inbetweens.size());
+}
+
 } // namespace
 
 void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const ControlPoint> points,
@@ -144,7 +157,7 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
 {
     path.inbetweens.clear();
     path.span_timings.clear();
-    path.frames_freeze = false;
+    path.frozen_frames.clear();
     if (path.curve.segments.empty())
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
@@ -196,10 +209,24 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
             path.inbetweens.push_back(shown);
         }
     }
-    // With the thesis' nearest samples two in-betweens can fall on one sample: that frame repeats.
-    if (!exact)
-        for (std::size_t j = 1; j < path.inbetweens.size(); ++j)
-            path.frames_freeze = path.frames_freeze || path.inbetweens[j].sample_index == path.inbetweens[j - 1].sample_index;
+    list_frozen_frames(path);
+}
+
+std::string describe_frozen_frames(const EvaluatedPath& path, std::size_t most_named)
+{
+    const std::size_t key2 = path.inbetweens.size() + 1;
+    const auto frame_name = [key2](std::size_t frame) {
+        return frame == 0 ? std::string("KEY1") : frame == key2 ? std::string("KEY2") : std::to_string(frame);
+    };
+    std::string text;
+    const std::size_t named = std::min(most_named, path.frozen_frames.size());
+    for (std::size_t i = 0; i < named; ++i) {
+        const std::size_t frame = path.frozen_frames[i];
+        text += (i == 0 ? "" : ", ") + frame_name(frame) + "=" + frame_name(frame + 1);
+    }
+    if (named < path.frozen_frames.size())
+        text += " and " + std::to_string(path.frozen_frames.size() - named) + " more";
+    return text;
 }
 
 namespace {

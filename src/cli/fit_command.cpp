@@ -83,7 +83,9 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
         return *refused;
     const EvaluatedPath first_path = evaluate_path(*first, settings_of_path(*first_file, options));
     const EvaluatedPath last_path = evaluate_path(*last, settings_of_path(*last_file, options));
-    warn_if_frames_freeze(first_path.frames_freeze ? first_path : last_path, options.path.inbetween_count, err);
+    warn_if_frames_freeze(first_path, files.path_first.string(), err);
+    if (!keys.key1.is_closed())
+        warn_if_frames_freeze(last_path, files.path_last.string(), err);
     const std::array<std::filesystem::path, 2> key_files{files.key1, files.key2};
     if (!all_frames_needed(options)) {
         // Each in-between is made, formatted and written a chunk at a time, a file per core.

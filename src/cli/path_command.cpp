@@ -127,7 +127,7 @@ ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptio
                                                 "lower --samples or --inbetweens", err))
         return *refused;
     const EvaluatedPath path = evaluate_path(points, settings_of_path(*dat, options));
-    warn_if_frames_freeze(path, options.path.inbetween_count, err);
+    warn_if_frames_freeze(path, file.string(), err);
     if (pictures_asked(options))
         if (Expected<void> written = write_pictures(draw_path_file_screen(points, path, options.view), options, out);
             !written)

@@ -10,11 +10,15 @@ ExitStatus report_bad_input(const Diagnostic& problem, std::ostream& err)
     return ExitStatus::bad_input;
 }
 
-void warn_if_frames_freeze(const EvaluatedPath& path, int inbetween_count, std::ostream& err)
+void warn_if_frames_freeze(const EvaluatedPath& path, const std::string& file, std::ostream& err)
 {
-    if (path.frames_freeze)
-        err << "apcs: " << inbetween_count << " in-betweens from " << path.curve.sample_count() - 1
-            << " curve samples: frames will freeze\n";
+    if (!path.frames_freeze())
+        return;
+    err << "apcs: " << file << ": frames will freeze at " << describe_frozen_frames(path, 8);
+    const std::size_t intervals = path.curve.sample_count() - 1;
+    if (path.inbetweens.size() > intervals)
+        err << " (" << path.inbetweens.size() << " in-betweens, " << intervals << " curve samples)";
+    err << '\n';
 }
 
 } // namespace apcs

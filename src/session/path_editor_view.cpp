@@ -37,15 +37,17 @@ std::string PathEditor::staff_message(const Staff& staff) const
     // animator sees nothing move and cannot tell why.
     if (m_setup.points.size() == 2 && staff.line != StaffLine::acceleration)
         return line + std::string(text::no_interior_points);
-    const std::string of = " of " + std::to_string(m_setup.points.size());
     std::string message = m_setup.path_name + ": " + line;
+    // The frames that freeze matter more than the region, whose marks the picture shows: the two
+    // do not fit one 79-column line together.
+    if (m_picture.evaluated().frames_freeze())
+        return message + "  " + std::string(text::frames_freeze) + " at " + describe_frozen_frames(m_picture.evaluated(), 1);
+    const std::string of = " of " + std::to_string(m_setup.points.size());
     const ControlRegion& region = staff.region;
     if (region.first == region.last)
         message += "  control point " + std::to_string(region.first + 1) + of + " (no span, no ACCELERATION)";
     else
         message += "  control points " + std::to_string(region.first + 1) + " to " + std::to_string(region.last + 1) + of;
-    if (m_picture.evaluated().frames_freeze)
-        message += "  (" + std::string(text::frames_freeze) + ")";
     return message;
 }
 

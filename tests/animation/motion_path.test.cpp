@@ -57,7 +57,7 @@ void require_same_path(const EvaluatedPath& left, const EvaluatedPath& right)
         REQUIRE(left.span_timings[s].span.acceleration == right.span_timings[s].span.acceleration);
         REQUIRE(left.span_timings[s].inbetween_count == right.span_timings[s].inbetween_count);
     }
-    REQUIRE(left.frames_freeze == right.frames_freeze);
+    REQUIRE(left.frozen_frames == right.frozen_frames);
 }
 
 } // namespace
@@ -66,7 +66,7 @@ TEST_CASE("acceleration 0 spaces the in-betweens equally to within one sample", 
 {
     const EvaluatedPath path = evaluate_path(curved_path(), {{}, 32, 12, Spacing::nearest});
     REQUIRE(path.inbetweens.size() == 12);
-    REQUIRE_FALSE(path.frames_freeze);
+    REQUIRE_FALSE(path.frames_freeze());
     const double length = path.curve.total_length();
     const double tolerance = widest_sample_gap(path.curve) / 2.0 + 1e-12;
     const std::vector<double> distances = positions_along(path);
@@ -186,7 +186,7 @@ TEST_CASE("more in-betweens than samples freeze frames", "[animation][accelerati
 {
     const EvaluatedPath path = evaluate_path(curved_path(), {{}, 2, 10, Spacing::nearest});
     REQUIRE(path.curve.sample_count() == 7);
-    REQUIRE(path.frames_freeze);
+    REQUIRE(path.frames_freeze());
     REQUIRE(path.inbetweens.size() == 10);
 }
 
@@ -196,15 +196,15 @@ TEST_CASE("two in-betweens on one sample freeze frames even when there are fewer
     // A straight 2-point path, 4 samples (chord 0, 1/4 … 1 of the length) and 3 in-betweens.
     ControlPoints points{{{0, 0, 0}, {}}, {{0, 8, 0}, {}}};
     // a = 0: targets 1/4, 1/2, 3/4 of the length land on samples 1, 2, 3: no two alike.
-    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 3, Spacing::nearest}).frames_freeze);
+    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 3, Spacing::nearest}).frames_freeze());
     // a = 1, 5 in-betweens: targets 1 − cos(πτ/2) for τ = 2/6 and 3/6 are 0.134 and 0.293 of the
     // length, both nearest to sample 1 (0.25): a repeated frame.
     points[0].staff.acceleration = 1.0;
     const EvaluatedPath repeated = evaluate_path(points, {{}, 4, 5, Spacing::nearest});
     REQUIRE(repeated.inbetweens[1].sample_index == repeated.inbetweens[2].sample_index);
-    REQUIRE(repeated.frames_freeze);
+    REQUIRE(repeated.frames_freeze());
     // The exact spacing never repeats a position on a path of length.
-    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 5, Spacing::exact}).frames_freeze);
+    REQUIRE_FALSE(evaluate_path(points, {{}, 4, 5, Spacing::exact}).frames_freeze());
 }
 
 TEST_CASE("an evaluated path clamps what it is given: staff values of 3 and slopes of 3 act as 1",
@@ -451,4 +451,36 @@ TEST_CASE("the segments a change reports made again are the only ones that diffe
         REQUIRE(path.curve.segments[s] == before[s]);
     for (std::size_t s = touched.old_end(); s < before.size(); ++s)
         REQUIRE(path.curve.segments[s + 1] == before[s]);
+}
+
+TEST_CASE("frames that freeze are named by the pair, KEY1 and KEY2 included", "[animation][acceleration]")
+{
+    // A straight path of 4 samples (0, 1/4 … 1 of the length) and 3 in-betweens.
+    ControlPoints points{{{0, 0, 0}, {}}, {{0, 8, 0}, {}}};
+    // a = +1: 1 − cos(πτ/2) for τ = 1/4, 2/4, 3/4 is 0.076, 0.293, 0.617: samples 0, 1, 2.
+    points[0].staff.acceleration = 1.0;
+    const EvaluatedPath slow_start = evaluate_path(points, {{}, 4, 3, Spacing::nearest});
+    REQUIRE(slow_start.frozen_frames == std::vector<std::size_t>{0});
+    REQUIRE(describe_frozen_frames(slow_start, 8) == "KEY1=1");
+    // a = −1: sin(πτ/2) is 0.383, 0.707, 0.924: samples 2, 3, 4, the last being KEY2's.
+    points[0].staff.acceleration = -1.0;
+    const EvaluatedPath slow_end = evaluate_path(points, {{}, 4, 3, Spacing::nearest});
+    REQUIRE(slow_end.frozen_frames == std::vector<std::size_t>{3});
+    REQUIRE(describe_frozen_frames(slow_end, 8) == "3=KEY2");
+    // 2 samples, 5 in-betweens at a = 0: 1/6 … 5/6 land on samples 0, 1, 1, 1, 2.
+    points[0].staff.acceleration = 0.0;
+    const EvaluatedPath crowded = evaluate_path(points, {{}, 2, 5, Spacing::nearest});
+    REQUIRE(crowded.frozen_frames == std::vector<std::size_t>{0, 2, 3, 5});
+    REQUIRE(describe_frozen_frames(crowded, 8) == "KEY1=1, 2=3, 3=4, 5=KEY2");
+    REQUIRE(describe_frozen_frames(crowded, 1) == "KEY1=1 and 3 more");
+    REQUIRE_FALSE(evaluate_path(points, {{}, 2, 5, Spacing::exact}).frames_freeze());
+}
+
+TEST_CASE("a path of zero length says nothing of freezing: its frames are one point by nature",
+          "[animation][acceleration]")
+{
+    const ControlPoints still{{{1, 2, 3}, {}}, {{1, 2, 3}, {}}};
+    const EvaluatedPath path = evaluate_path(still, {{}, 4, 3, Spacing::nearest});
+    REQUIRE(path.inbetweens.size() == 3);
+    REQUIRE_FALSE(path.frames_freeze());
 }

@@ -299,3 +299,23 @@ TEST_CASE("apcs fit --surface ferguson: the end points follow their paths, the o
     wrong.insert(wrong.end(), {"--surface", "coons"});
     CHECK(run_apcs(wrong).status == 2);
 }
+
+TEST_CASE("apcs fit names each path whose frames freeze", "[cli][fit]")
+{
+    // Straight paths of 4 samples, 3 in-betweens at acceleration +1: in-between 1 lands on KEY1's
+    // sample (1 − cos(π/8) = 0.076 of the length is nearer 0 than 1/4).
+    const TempFolder folder;
+    const auto key1 = folder.write("key1.dat", "0 0 0\n0 0 10\n");
+    const auto key2 = folder.write("key2.dat", "0 8 0\n0 8 10\n");
+    const auto first = folder.write("way1.dat", "0 0 0\n0 8 0\n");
+    const auto last = folder.write("way2.dat", "0 0 10\n0 8 10\n");
+    const auto result = run_apcs({"fit", key1.string(), key2.string(), first.string(), last.string(), "--samples",
+                                  "4", "--inbetweens", "3", "--accel", "1", "--print"});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.err == "apcs: " + first.string() + ": frames will freeze at KEY1=1\napcs: " + last.string() +
+                              ": frames will freeze at KEY1=1\n");
+    // At acceleration 0 the frames are 1/4, 1/2, 3/4 of the way: nothing to say.
+    REQUIRE(run_apcs({"fit", key1.string(), key2.string(), first.string(), last.string(), "--samples", "4",
+                      "--inbetweens", "3", "--print"})
+                .err.empty());
+}

@@ -136,7 +136,8 @@ TEST_CASE("more in-betweens than samples warn that frames will freeze", "[cli][p
     const auto file = folder.write("ani1.dat", "0 0 0\n4 0 2\n");
     const auto result = run_apcs({"path", file.string(), "--samples", "2", "--inbetweens", "5"});
     REQUIRE(result.status == 0);
-    REQUIRE(result.err == "apcs: 5 in-betweens from 2 curve samples: frames will freeze\n");
+    REQUIRE(result.err ==
+            "apcs: " + file.string() + ": frames will freeze at KEY1=1, 2=3, 3=4, 5=KEY2 (5 in-betweens, 2 curve samples)\n");
 }
 
 TEST_CASE("apcs path --png draws the path screen as a 720x522 PNG", "[cli][path][png]")

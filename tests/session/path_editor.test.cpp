@@ -274,3 +274,18 @@ TEST_CASE("a long path's screen and numbers, kept across waypoint keys and exact
         matches_fresh("waypoint changes discarded with Esc", std::nullopt);
     }
 }
+
+TEST_CASE("the message line names the frames that freeze as the staff makes them", "[session][editor]")
+{
+    // A straight path of 4 samples and 3 in-betweens. At acceleration +1 the targets are
+    // 1 − cos(πτ/2) = 0.076, 0.293, 0.617 of the length: the first is nearest sample 0, KEY1 itself.
+    LogLines log;
+    PathEditor editor(apcs::test::path_setup({Vec3{0, 0, 0}, Vec3{0, 8, 0}}, {{1, 1}, 4, 3, Spacing::nearest}), log);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}});
+    REQUIRE(message_of(editor.view()) == "way1.dat: ACCELERATION  control points 1 to 2 of 2");
+    apply(editor, {cmd::StaffStep{+20}});
+    REQUIRE(message_of(editor.view()) ==
+            "way1.dat: ACCELERATION  frames will freeze at KEY1=1");
+    apply(editor, {cmd::StaffStep{-20}});
+    REQUIRE(message_of(editor.view()) == "way1.dat: ACCELERATION  control points 1 to 2 of 2");
+}

@@ -7,6 +7,7 @@
 #include "apcs/animation/sampled_curve.h"
 
 #include <span>
+#include <string>
 #include <vector>
 
 namespace apcs {
@@ -68,11 +69,18 @@ struct EvaluatedPath {
     std::vector<Inbetween> inbetweens;
     // The spans in path order (empty for a path of zero length or of fewer than two points).
     std::vector<SpanTiming> span_timings;
-    // Some frames repeat ("freeze"): with nearest spacing two in-betweens fall on the same sample
-    // (more in-betweens than samples, or a strong acceleration on a short span). Exact spacing
-    // never repeats a position on a path of some length.
-    bool frames_freeze = false;
+    // The frames that repeat ("freeze"): f in this list means frame f and frame f + 1 are one point,
+    // frames numbered 0 (KEY1), 1 … M (the in-betweens), M + 1 (KEY2), in increasing order. With
+    // nearest spacing two in-betweens can fall on one sample (more in-betweens than samples, or a
+    // strong acceleration on a short span), or in-between 1 on KEY1's. Exact spacing never repeats
+    // a position on a path of some length; a path of zero length, all one point by nature, lists none.
+    std::vector<std::size_t> frozen_frames;
+    bool frames_freeze() const { return !frozen_frames.empty(); }
 };
+
+// The frozen frames named as the animator counts them, "KEY1=1, 5=6, 12=KEY2" (in-betweens by the
+// number of their inb file), at most `most_named` pairs and then "and K more".
+std::string describe_frozen_frames(const EvaluatedPath& path, std::size_t most_named);
 
 // Fewer than two control points give an empty path. Every input is clamped, never refused: the
 // end slopes to [0, 1] (limits::end_slope), each control point's tension, continuity, bias and

@@ -5,14 +5,15 @@
 #include "apcs/session/exit_status.h"
 
 #include <iosfwd>
+#include <string>
 
 namespace apcs {
 
 // Writes "FILE:LINE: message" on its own line to `err`; the exit status of bad input.
 ExitStatus report_bad_input(const Diagnostic& problem, std::ostream& err);
 
-// "apcs: M in-betweens from N curve samples: frames will freeze" when the path has fewer samples
-// than in-betweens asked for (SPEC §4.3).
-void warn_if_frames_freeze(const EvaluatedPath& path, int inbetween_count, std::ostream& err);
+// "apcs: FILE: frames will freeze at KEY1=1, 5=6" ("=" joins two consecutive frames at one point,
+// SPEC §4.3); with more in-betweens than curve samples it says so too.
+void warn_if_frames_freeze(const EvaluatedPath& path, const std::string& file, std::ostream& err);
 
 } // namespace apcs
