@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""The manual's sentences about the four-line staff, held against the program.
+
+Each claim runs `apcs path … --print` on the N-to-L example's way1.dat, measures what the sentence
+says (the path's length, the angle of a corner, the gaps between frames), formats the numbers as the
+manual writes them and requires that exact sentence in manual.txt (line breaks read as spaces).
+A changed number in the manual, or a program that no longer does what it says, fails.
+
+Usage: manual_staff_claims.py APCS MANUAL DATA_FOLDER   (prints each sentence it checked)
+"""
+import math
+import re
+import subprocess
+import sys
+
+
+def path_print(apcs, path_file, *options):
+    out = subprocess.run([apcs, "path", path_file, "--print", *options], check=True, capture_output=True,
+                         text=True).stdout.split("\n")
+    curve_at, inbetweens_at = out.index("# curve"), out.index("# inbetweens")
+    rows = lambda lines: [tuple(map(float, line.split()[:3])) for line in lines if line.strip()]
+    return rows(out[curve_at + 1:inbetweens_at]), rows(out[inbetweens_at + 1:])
+
+
+def length(points):
+    return sum(math.dist(a, b) for a, b in zip(points, points[1:]))
+
+
+def angle(u, v):
+    dot = sum(a * b for a, b in zip(u, v))
+    return math.degrees(math.acos(max(-1.0, min(1.0, dot / (math.hypot(*u) * math.hypot(*v))))))
+
+
+def minus(a, b):
+    return tuple(x - y for x, y in zip(a, b))
+
+
+SAMPLES = 2000  # per segment: the curve's direction at a control point read off its neighbouring samples
+
+
+def derivatives_at_point_2(apcs, path_file, *options):
+    """dP/du arriving at and leaving the middle control point, from its neighbouring samples."""
+    curve, _ = path_print(apcs, path_file, "--samples", str(SAMPLES), *options)
+    k = SAMPLES  # control point 2 is sample 1 x SAMPLES
+    scale = lambda v: tuple(x * SAMPLES for x in v)
+    return scale(minus(curve[k], curve[k - 1])), scale(minus(curve[k + 1], curve[k]))
+
+
+def tangent_length_at_point_2(apcs, path_file, *options):
+    """A central difference: exact to O(h^2) where the curve has one tangent (continuity 0)."""
+    arriving, leaving = derivatives_at_point_2(apcs, path_file, *options)
+    return math.hypot(*[(a + b) / 2 for a, b in zip(arriving, leaving)])
+
+
+def claims(apcs, data):
+    way1 = f"{data}/n-to-l/way1.dat"
+    with open(way1) as source:
+        points = [tuple(map(float, line.split()[:3])) for line in source if line.strip() and not line.startswith(";")]
+    incoming, outgoing = minus(points[1], points[0]), minus(points[2], points[1])
+
+    yield (f"tension +0.15 shortens the tangent at control point 2 from "
+           f"{tangent_length_at_point_2(apcs, way1):.2f} to "
+           f"{tangent_length_at_point_2(apcs, way1, '--tension', '0.15'):.2f} units")
+
+    corner = angle(*derivatives_at_point_2(apcs, way1, "--continuity", "-1"))
+    smooth = angle(*derivatives_at_point_2(apcs, way1))
+    yield (f"continuity -1 breaks the curve at control point 2 into a corner of {corner:.0f} degrees "
+           f"(at 0 it turns {smooth:.0f} degrees there)")
+
+    for bias in (1, -1):
+        _, leaving = derivatives_at_point_2(apcs, way1, "--bias", str(bias))
+        yield (f"with bias {bias:+d} the curve leaves control point 2 {angle(leaving, incoming):.0f} degrees off "
+               f"the incoming chord and {angle(leaving, outgoing):.0f} off the outgoing")
+
+    curve, inbetweens = path_print(apcs, way1, "--tension", "0.15", "--accel", "0.15")
+    along = [0.0]
+    for a, b in zip(curve, curve[1:]):
+        along.append(along[-1] + math.dist(a, b))
+    place = {point: distance for point, distance in zip(curve, along)}
+    frames = [0.0] + [place[point] for point in inbetweens] + [along[-1]]
+    gaps = [b - a for a, b in zip(frames, frames[1:])]
+    yield (f"along the path the first gap between frames is {gaps[0]:.2f} units and the last {gaps[-1]:.2f}: "
+           f"the * marks crowd toward KEY1, where the point now starts slowly")
+
+
+def main():
+    apcs, manual, data = sys.argv[1:4]
+    with open(manual) as text:
+        flowing = re.sub(r"\s+", " ", text.read())
+    failed = 0
+    for sentence in claims(apcs, data):
+        if sentence in flowing:
+            print("ok:", sentence)
+        else:
+            print("FAILED: manual.txt does not say:", sentence)
+            failed += 1
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
