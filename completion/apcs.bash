@@ -27,7 +27,7 @@ _apcs_options()
         fit) echo "$staff $curve --surface $view $pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures --help" ;;
-        play) echo "$staff --slopes --samples --spacing $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
+        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
         *) echo "$staff $curve --surface $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
     esac

@@ -365,6 +365,7 @@ void add_play_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_staff(command, options);
     add_curve(command, options, slopes, "frames at the sample nearest each distance (the thesis) or exactly on it "
                                         "(default for scenes)");
+    add_surface(command, options);
     add_view(command, options);
     add_glyphs(command, options);
     add_pictures(command, options, "all frames overlaid");

@@ -209,7 +209,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     if (const auto refused = refuse_over_budget("the frames of " + scene_name, scene_bytes(*scene, settings, all_frames),
                                                 options, "use fewer FRAMES or drawings of fewer points", err))
         return *refused;
-    const SceneAnimation animation(*scene, settings);
+    const SceneAnimation animation(*scene, settings, options.surface);
     if (Expected<void> reachable = check_frames_in_reach(animation, *scene, request.scene); !reachable)
         return report_bad_input(reachable.error(), err);
     if (options.print)

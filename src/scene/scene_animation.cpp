@@ -65,7 +65,7 @@ std::vector<Vec3> move_offsets(const SceneMove& move, const PathSettings& settin
     return offsets;
 }
 
-SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings)
+SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings, SurfaceConstruction construction)
     : m_scene(scene)
     , m_centres(scene.objects.size())
     , m_key_frames(scene.objects.size())
@@ -96,7 +96,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings)
             const SceneKeys& keys = *object.keys;
             const PathSettings spread = spread_over(settings, keys.frames);
             m_key_frames[i] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, spread),
-                                             evaluate_path(keys.last_path, spread));
+                                             evaluate_path(keys.last_path, spread), construction);
         }
         if (object.move)
             m_move_offsets[i] = move_offsets(*object.move, settings);

@@ -2,6 +2,7 @@
 
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/kochanek_bartels.h"
+#include "apcs/animation/surface_fit.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/timed_distance.h"
@@ -284,4 +285,39 @@ TEST_CASE("a joint the key frames would break moves the part, and its parts, wit
         moved = moved || !near(points[2], animation.transform(1, f)(scene.objects[1].keys->keys.key1.all_points()[0]), 1e-6);
     }
     REQUIRE(moved);
+}
+
+TEST_CASE("a KEYS object is fitted by the construction asked for: the thesis' Ferguson surface or the blend",
+          "[scene][keys]")
+{
+    // Three points along y; KEY2 the same moved along x. The first path bows out in z, the last
+    // runs straight: the interior point's path depends on the construction.
+    DatFiles files;
+    files.texts["k1.dat"] = "0 0 0\n0 2 0\n0 4 0\n";
+    files.texts["k2.dat"] = "6 0 0\n6 2 0\n6 4 0\n";
+    files.texts["first.dat"] = "0 0 0\n3 0 3\n6 0 0\n";
+    files.texts["last.dat"] = "0 4 0\n6 4 0\n";
+    const Scene scene = scene_from("FRAMES 6\nOBJECT sheet\nKEYS k1.dat k2.dat\nPATHS first.dat last.dat\n", files);
+    PathSettings settings = exact_settings();
+    const SceneAnimation ferguson(scene, settings, SurfaceConstruction::ferguson);
+    const SceneAnimation blend(scene, settings);
+    // FROM 0 TO 6: five in-betweens, as apcs fit --inbetweens 5 makes them.
+    settings.inbetween_count = 5;
+    const SceneKeys& keys = *scene.objects[0].keys;
+    const EvaluatedPath first = evaluate_path(keys.first_path, settings);
+    const EvaluatedPath last = evaluate_path(keys.last_path, settings);
+    const FrameSequence by_ferguson = fit_key_frames(keys.keys, first, last, SurfaceConstruction::ferguson);
+    const FrameSequence by_blend = fit_key_frames(keys.keys, first, last);
+    double apart = 0;
+    for (int f = 0; f <= 6; ++f) {
+        CAPTURE(f);
+        const std::vector<Vec3> ferguson_points = ferguson.frame(f);
+        const std::vector<Vec3> blend_points = blend.frame(f);
+        for (std::size_t i = 0; i < 3; ++i) {
+            REQUIRE(near(ferguson_points[i], by_ferguson.frame(static_cast<std::size_t>(f))[i]));
+            REQUIRE(near(blend_points[i], by_blend.frame(static_cast<std::size_t>(f))[i]));
+        }
+        apart = std::max(apart, distance(ferguson_points[1], blend_points[1]));
+    }
+    REQUIRE(apart > 0.01);
 }

@@ -3,6 +3,7 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/animation/surface_construction.h"
 #include "apcs/geometry/affine.h"
 #include "apcs/scene/scene.h"
 
@@ -38,8 +39,10 @@ struct OutOfReach {
 class SceneAnimation {
 public:
     // `settings` give the KB sampling, the end slopes and the spacing of MOVE and KEYS paths;
-    // their in-between counts come from the frames of each behaviour.
-    SceneAnimation(const Scene& scene, const PathSettings& settings);
+    // their in-between counts come from the frames of each behaviour. KEYS objects are fitted by
+    // `construction` (SPEC §5.3, §5.3.1).
+    SceneAnimation(const Scene& scene, const PathSettings& settings,
+                   SurfaceConstruction construction = SurfaceConstruction::blend);
 
     int last_frame() const { return m_scene.last_frame; }
     std::size_t frame_count() const { return static_cast<std::size_t>(m_scene.last_frame) + 1; }
