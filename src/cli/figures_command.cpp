@@ -10,6 +10,7 @@
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_joints.h"
 #include "apcs/session/figures.h"
+#include "apcs/session/surface_figures.h"
 
 #include <ostream>
 #include <string>
@@ -33,9 +34,9 @@ const std::vector<ExampleFigure>& example_figures()
 
 namespace {
 
-// The example's frames: keys equalised, shipped paths (3 columns: staff values 0).
-Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::filesystem::path& data_folder,
-                                      const CommonOptions& options)
+// An example's keys as read and equalised, and its shipped paths evaluated (3 columns: staff values 0).
+Expected<SurfaceFigureSource> read_example(const ExampleFigure& example, const std::filesystem::path& data_folder,
+                                           const CommonOptions& options)
 {
     const std::filesystem::path folder = data_folder / example.folder;
     const Expected<Graphic> key1 = read_key_frame(folder / "key1.dat");
@@ -44,27 +45,46 @@ Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::f
     const Expected<Graphic> key2 = read_key_frame(folder / "key2.dat");
     if (!key2)
         return key2.error();
-    const EqualisedKeys keys = equalise_key_frames(*key1, *key2);
-    std::vector<ControlPoints> paths;
+    SurfaceFigureSource source{*key1, *key2, equalise_key_frames(*key1, *key2), {}, {}};
     for (const auto& [name, end] : {std::pair{example.path_first, PathEnd::first}, std::pair{example.path_last, PathEnd::last}}) {
         const Expected<DatFile> file = read_dat_file(folder / name);
         if (!file)
             return file.error();
-        Expected<ControlPoints> points = point_path_from(*file, (folder / name).string(), end, keys, options.staff);
+        const Expected<ControlPoints> points =
+            point_path_from(*file, (folder / name).string(), end, source.keys, options.staff);
         if (!points)
             return points.error();
-        paths.push_back(std::move(*points));
+        (end == PathEnd::first ? source.first_path : source.last_path) = evaluate_path(*points, options.path);
     }
+    return source;
+}
+
+// The example's frames, its still objects drawn once.
+Expected<GraphicsScreen> draw_example(const ExampleFigure& example, const std::filesystem::path& data_folder,
+                                      const CommonOptions& options)
+{
+    const Expected<SurfaceFigureSource> source = read_example(example, data_folder, options);
+    if (!source)
+        return source.error();
     std::vector<Graphic> still;
     if (!example.still_file.empty()) {
-        Expected<Graphic> object = read_key_frame(folder / example.still_file);
+        Expected<Graphic> object = read_key_frame(data_folder / example.folder / example.still_file);
         if (!object)
             return object.error();
         still.push_back(std::move(*object));
     }
-    const FrameSequence frames =
-        fit_key_frames(keys, evaluate_path(paths[0], options.path), evaluate_path(paths[1], options.path));
-    return draw_frames_figure(example.title, frames, keys.key1, example.view, still);
+    const FrameSequence frames = fit_key_frames(source->keys, source->first_path, source->last_path);
+    return draw_frames_figure(example.title, frames, source->keys.key1, example.view, still);
+}
+
+// Both surface constructions side by side on Example 1 (N becomes L), in fig. 5.1.a's view.
+Expected<GraphicsScreen> draw_surfaces_example(const std::filesystem::path& data_folder, const CommonOptions& options)
+{
+    const ExampleFigure n_to_l{"n-to-l", "way1.dat", "way4.dat", {0, 90}, "", ""};
+    const Expected<SurfaceFigureSource> source = read_example(n_to_l, data_folder, options);
+    if (!source)
+        return source.error();
+    return draw_surfaces_figure("Example 1  N becomes L by both surfaces, THETA 0 PHI 90", *source, n_to_l.view);
 }
 
 // "neck: torso point 7 = head point 1" (points numbered from 1, as in the .scn file).
@@ -120,6 +140,12 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
             return report_bad_input(screen.error(), err);
         pictures.emplace_back(example.file_name, std::move(*screen));
     }
+    pictures.emplace_back("fig-3-2-1.png", draw_ferguson_figure("Fig. 3.2.1  Surface fitting on a Ferguson surface",
+                                                                thesis_surface_example(options.path), {20, 70}));
+    Expected<GraphicsScreen> surfaces = draw_surfaces_example(examples, options);
+    if (!surfaces)
+        return report_bad_input(surfaces.error(), err);
+    pictures.emplace_back("example-1-n-to-l-surfaces.png", std::move(*surfaces));
     Expected<GraphicsScreen> robot = draw_robot_figure(examples, options);
     if (!robot)
         return report_bad_input(robot.error(), err);

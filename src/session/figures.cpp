@@ -21,9 +21,6 @@ FigureCurve curve(const std::string& label, StaffValues staff, LineStyle style)
     return {label, zigzag(staff), style};
 }
 
-constexpr PixelRect figure_area{0, hercules::text_row_top(2), hercules::screen_width, hercules::text_row_top(21)};
-constexpr int legend_row = 22;
-
 const char* style_name(LineStyle style)
 {
     switch (style) {
@@ -80,7 +77,7 @@ GraphicsScreen draw_curve_figure(const CurveFigure& figure)
         for (const ControlPoint& point : figure.curves.front().points)
             painter.cross_marker(view.to_device(point.position).rounded());
     screen.text.push_back({1, 0, figure.title});
-    screen.text.push_back({1, legend_row, legend});
+    screen.text.push_back({1, figure_legend_row, legend});
     return screen;
 }
 
@@ -97,16 +94,20 @@ GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence&
     for (const Graphic& object : still)
         for (const std::vector<Vec3>& polyline : object.polylines(object.all_points()))
             draw_world_polyline(painter, polyline, view);
+    draw_frames(painter, frames, structure, view);
+    screen.text.push_back({1, 0, title});
+    screen.text.push_back({1, figure_legend_row, std::string(frames_legend) +
+                                              (still.empty() ? "" : "   the apple stands still")});
+    return screen;
+}
+
+void draw_frames(Painter& painter, const FrameSequence& frames, const Graphic& structure, const ViewTransform& view)
+{
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
-        // KEY1 and KEY2 solid, the in-betweens dotted, so the keys stand out as in fig. 5.1.
         const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
         for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k)))
             draw_world_polyline(painter, polyline, view, style);
     }
-    screen.text.push_back({1, 0, title});
-    screen.text.push_back({1, legend_row, std::string("solid: KEY1 and KEY2   dotted: the in-betweens") +
-                                              (still.empty() ? "" : "   the apple stands still")});
-    return screen;
 }
 
 GraphicsScreen draw_marked_frame_figure(const std::string& title, std::span<const Vec3> points,
@@ -118,7 +119,7 @@ GraphicsScreen draw_marked_frame_figure(const std::string& title, std::span<cons
     Painter painter(screen.bitmap);
     for (const std::vector<Vec3>& polyline : structure.polylines(points))
         draw_world_polyline(painter, polyline, view);
-    int row = legend_row;
+    int row = figure_legend_row;
     for (const FigureMark& mark : marks) {
         const PixelPoint at = view.to_device(mark.position).rounded();
         painter.rectangle({at.x - 4, at.y - 4, at.x + 5, at.y + 5}); // 9x9, centred

@@ -21,7 +21,7 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
     const std::vector<std::string> names{"fig-3-1-1.png",          "fig-3-1-2.png",          "fig-3-1-3.png",
                                          "fig-3-1-4.png",          "example-1-n-to-l-a.png", "example-1-n-to-l-b.png",
                                          "example-2-stick-a.png",  "example-2-stick-b.png",  "example-3-snake-apple.png",
-                                         "fig-3-3-3.png"};
+                                         "fig-3-2-1.png",          "example-1-n-to-l-surfaces.png", "fig-3-3-3.png"};
     for (const std::string& name : names) {
         CAPTURE(name);
         const std::string written = test::read_all(folder / name);

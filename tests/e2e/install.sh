@@ -30,8 +30,9 @@ fi
 mkdir "$work/elsewhere" "$work/figures"
 cd "$work/elsewhere" || fail "cannot enter $work/elsewhere"
 "$apcs" figures --out "$work/figures" > "$work/out" 2> "$work/err" || fail "figures: $(cat "$work/err")"
-[ "$(wc -l < "$work/out")" -eq 10 ] || fail "figures wrote: $(cat "$work/out")"
+[ "$(wc -l < "$work/out")" -eq 12 ] || fail "figures wrote: $(cat "$work/out")"
 [ -s "$work/figures/example-3-snake-apple.png" ] || fail "no example-3-snake-apple.png"
+[ -s "$work/figures/fig-3-2-1.png" ] || fail "no fig-3-2-1.png"
 [ -s "$work/figures/fig-3-3-3.png" ] || fail "no fig-3-3-3.png (the robot from the installed data/robot)"
 
 # The installed examples, not the source tree's, are the ones read: without one of them figures fails

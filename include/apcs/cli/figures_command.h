@@ -24,8 +24,10 @@ struct ExampleFigure {
 
 const std::vector<ExampleFigure>& example_figures();
 
-// `apcs figures --out DIR`: fig-3-1-1.png … fig-3-1-4.png and one PNG per example view, read
-// from --workdir, else from data_folder.
+// `apcs figures --out DIR`: fig-3-1-1.png … fig-3-1-4.png, one PNG per example view,
+// fig-3-2-1.png (the thesis' surface fitting, its pair built in), example-1-n-to-l-surfaces.png
+// (both surfaces side by side) and fig-3-3-3.png; the examples read from --workdir, else from
+// data_folder.
 ExitStatus run_figures_command(const CommonOptions& options, const std::filesystem::path& data_folder,
                                std::ostream& out, std::ostream& err);
 

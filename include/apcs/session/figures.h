@@ -4,6 +4,7 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/view_transform.h"
+#include "apcs/geometry/hercules.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/painter.h"
 
@@ -12,6 +13,12 @@
 #include <vector>
 
 namespace apcs {
+
+// Where every figure draws (raster pixels): text rows 2 … 20, under the title and above the legend.
+inline constexpr PixelRect figure_area{0, hercules::text_row_top(2), hercules::screen_width,
+                                       hercules::text_row_top(21)};
+// The text row of a figure's legend; a second legend line goes on the row under it.
+inline constexpr int figure_legend_row = 22;
 
 // One curve of a figure: its control points with their t, c, b, its stroke and its label.
 struct FigureCurve {
@@ -38,6 +45,12 @@ GraphicsScreen draw_curve_figure(const CurveFigure& figure);
 // objects (fitted apart, as Ch. 3.3 fits unrelated objects, and not moving) are drawn once, solid.
 GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence& frames, const Graphic& structure,
                                   ViewAngles angles, std::span<const Graphic> still = {});
+
+// Every frame of `frames` drawn as `structure` draws its points: KEY1 and KEY2 (the first and last
+// frame) solid, the in-betweens dotted, so the keys stand out as in the thesis' fig. 5.1.
+void draw_frames(Painter& painter, const FrameSequence& frames, const Graphic& structure, const ViewTransform& view);
+// The legend of the strokes draw_frames draws.
+inline constexpr const char* frames_legend = "solid: KEY1 and KEY2   dotted: the in-betweens";
 
 // A key point a figure marks: a box around it, `label` beside it, and a legend line saying what it is.
 struct FigureMark {
