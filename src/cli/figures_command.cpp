@@ -5,6 +5,7 @@
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
@@ -123,11 +124,6 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
                                std::ostream& err)
 {
     const std::filesystem::path target = options.out.value_or(".");
-    std::error_code error;
-    if (!std::filesystem::is_directory(target, error)) {
-        err << target.string() << ": is not a folder; expected an existing folder for the figures (mkdir it first)\n";
-        return ExitStatus::bad_input;
-    }
     // Every picture is drawn before the first is written: examples that cannot be read leave the
     // folder as it was, not with some of the figures.
     std::vector<std::pair<std::string, GraphicsScreen>> pictures;
@@ -150,6 +146,8 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
     if (!robot)
         return report_bad_input(robot.error(), err);
     pictures.emplace_back("fig-3-3-3.png", std::move(*robot));
+    if (Expected<void> made = make_output_folder(target, "the figures"); !made)
+        return report_bad_input(made.error(), err);
     for (const auto& [name, screen] : pictures) {
         if (Expected<void> done = write_png_file(target / name, screen, PngShape::monitor, read_files_guard(options), out);
             !done)

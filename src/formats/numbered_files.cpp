@@ -67,15 +67,32 @@ Expected<void> room_for_files(std::uintmax_t needed, std::uintmax_t free_bytes, 
                           " free"};
 }
 
+Expected<void> make_output_folder(const std::filesystem::path& folder, std::string_view purpose)
+{
+    std::error_code error;
+    if (std::filesystem::is_directory(folder, error))
+        return ok;
+    if (std::filesystem::symlink_status(folder, error).type() != std::filesystem::file_type::not_found)
+        return Diagnostic{folder.string(), 0, "is not a folder; expected a folder for " + std::string(purpose)};
+    // "out/" names the folder out.
+    const std::filesystem::path itself = folder.has_filename() ? folder : folder.parent_path();
+    const std::filesystem::path parent = itself.parent_path().empty() ? "." : itself.parent_path();
+    if (!std::filesystem::is_directory(parent, error))
+        return Diagnostic{folder.string(), 0,
+                          "cannot be made: " + parent.string() + " is not a folder (--out makes one level, not its parents)"};
+    if (!std::filesystem::create_directory(itself, error) && error)
+        return Diagnostic{folder.string(), 0, "cannot be made: " + error.message()};
+    return ok;
+}
+
 Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
                      std::string_view purpose)
 {
-    std::error_code error;
-    if (!std::filesystem::is_directory(folder, error))
-        return Diagnostic{folder.string(), 0, "is not a folder; expected an existing folder for " + std::string(purpose)};
+    if (Expected<void> made = make_output_folder(folder, purpose); !made)
+        return made.error();
     std::vector<std::filesystem::path> targets;
     targets.reserve(count);
     for (std::size_t index = 0; index < count; ++index) {

@@ -41,12 +41,17 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
     }
 }
 
-TEST_CASE("apcs figures into a missing folder is exit 1", "[cli][figures]")
+TEST_CASE("apcs figures makes its --out folder, one level; under a missing one it is exit 1", "[cli][figures]")
 {
     const test::TempFolder folder;
-    const auto result = test::run_apcs({"figures", "--out", (folder / "none").string()});
-    REQUIRE(result.status == 1);
-    REQUIRE(result.err.find("is not a folder") != std::string::npos);
+    const auto nested = test::run_apcs({"figures", "--out", (folder / "none" / "figures").string()});
+    REQUIRE(nested.status == 1);
+    REQUIRE(nested.err == (folder / "none" / "figures").string() + ": cannot be made: " + (folder / "none").string() +
+                              " is not a folder (--out makes one level, not its parents)\n");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "none"));
+    const auto made = test::run_apcs({"figures", "--out", (folder / "figures").string()});
+    REQUIRE(made.status == 0);
+    REQUIRE(std::filesystem::exists(folder / "figures" / "fig-3-1-1.png"));
 }
 
 TEST_CASE("apcs figures with examples it cannot read writes no picture at all", "[cli][figures]")

@@ -127,15 +127,22 @@ TEST_CASE("a path that does not start at the graphic point is refused with the e
     REQUIRE(wrong_end.err.find("expected the last graphic point's KEY1 position (0, 6, 10)") != std::string::npos);
 }
 
-TEST_CASE("apcs fit into a missing folder fails with the reason and writes nothing", "[cli][fit]")
+TEST_CASE("apcs fit --out makes a missing folder, one level; a missing parent fails and writes nothing", "[cli][fit]")
 {
     const TempFolder folder;
     write_example(folder);
-    const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
-                                  (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--out",
-                                  (folder / "nowhere").string()});
+    const std::vector<std::string> files{"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                                         (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--out"};
+    std::vector<std::string> made = files;
+    made.push_back((folder / "frames").string());
+    REQUIRE(run_apcs(made).status == 0);
+    REQUIRE(std::filesystem::exists(folder / "frames" / "inb012.dat"));
+    std::vector<std::string> nested = files;
+    nested.push_back((folder / "nowhere" / "frames").string());
+    const auto result = run_apcs(nested);
     REQUIRE(result.status == 1);
-    REQUIRE(result.err.find("is not a folder") != std::string::npos);
+    REQUIRE(result.err.find("cannot be made: " + (folder / "nowhere").string() + " is not a folder") != std::string::npos);
+    REQUIRE_FALSE(std::filesystem::exists(folder / "nowhere"));
 }
 
 TEST_CASE("apcs inbetween prints frames 0 to T with the padded count", "[cli][inbetween]")

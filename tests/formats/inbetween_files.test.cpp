@@ -60,12 +60,26 @@ TEST_CASE("a key file among the targets stops the writing before any file is wri
     REQUIRE(read_all(key) == "9 9\n8 8\n");
 }
 
-TEST_CASE("in-betweens into a missing folder are refused", "[formats][inbetween-files]")
+TEST_CASE("in-betweens into a missing folder make it, one level only; a file of its name is refused",
+          "[formats][inbetween-files]")
 {
     const TempFolder folder;
-    const auto written = write_inbetween_files(four_steps(), one_point(), folder / "nowhere", KeyFileGuard{});
-    REQUIRE_FALSE(written.has_value());
-    REQUIRE(written.error().message == "is not a folder; expected an existing folder for the in-between files");
+    const auto made = write_inbetween_files(four_steps(), one_point(), folder / "new/", KeyFileGuard{});
+    REQUIRE(made.has_value());
+    REQUIRE(read_all(folder / "new" / "inb001.dat").size() > 0);
+
+    const auto nested = write_inbetween_files(four_steps(), one_point(), folder / "none" / "new", KeyFileGuard{});
+    REQUIRE_FALSE(nested.has_value());
+    REQUIRE(nested.error().to_string() == (folder / "none" / "new").string() + ": cannot be made: " +
+                                              (folder / "none").string() +
+                                              " is not a folder (--out makes one level, not its parents)");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "none"));
+
+    folder.write("plain", "text\n");
+    const auto over_file = write_inbetween_files(four_steps(), one_point(), folder / "plain", KeyFileGuard{});
+    REQUIRE_FALSE(over_file.has_value());
+    REQUIRE(over_file.error().message == "is not a folder; expected a folder for the in-between files");
+    REQUIRE(read_all(folder / "plain") == "text\n");
 }
 
 TEST_CASE("in-between files numbered above this run's are found in number order and named in one note",

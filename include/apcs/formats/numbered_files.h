@@ -13,6 +13,12 @@
 
 namespace apcs {
 
+// The folder an --out names, made when it is not there (one level, with the umask's mode, as
+// mkdir makes it); its parent must be a folder. ok for an existing folder (or a link to one); else
+// "FOLDER: is not a folder; expected a folder for PURPOSE" (a file of that name) or "FOLDER:
+// cannot be made: PARENT is not a folder (--out makes one level, not its parents)".
+Expected<void> make_output_folder(const std::filesystem::path& folder, std::string_view purpose);
+
 // A run of files written into one folder (in-betweens inb001.dat …, scene frames frm000.dat …):
 // file k (0 … count−1) is named name_of(k) and its content made by writer_of(k) chunk by chunk as
 // it is written. Every target is checked against `guard` before any file is written (a guarded
@@ -21,7 +27,7 @@ namespace apcs {
 // flush per file. Before any is written, every target must be writable (check_writable: a folder
 // named inb002.dat stops the run before inb001.dat is written) and the folder's free space must
 // hold the files (estimated_files_bytes, room_for_files). Returns the files written, or the first
-// problem: a `folder` that is not a folder ("expected an existing folder for PURPOSE"), a guarded
+// problem: a `folder` that is not a folder and cannot be made (make_output_folder), a guarded
 // or unwritable target, too little space, or a file that could not be written.
 [[nodiscard]] Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
