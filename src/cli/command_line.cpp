@@ -173,12 +173,32 @@ std::optional<std::string> foreign_option(const CLI::App& app, std::span<const c
     return std::nullopt;
 }
 
+// CLI11 says "FILES: At least 4 required but received 2": say what the command takes instead.
+std::optional<std::string> wrong_operand_count(const CLI::App& command, const CLI::ParseError& error,
+                                               const char* operands)
+{
+    const bool too_few = dynamic_cast<const CLI::RequiredError*>(&error) != nullptr ||
+                         dynamic_cast<const CLI::ArgumentMismatch*>(&error) != nullptr;
+    const bool too_many = dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr;
+    if (!too_few && !too_many)
+        return std::nullopt;
+    std::size_t given = command.remaining_size();
+    for (const CLI::Option* option : command.get_options())
+        if (option->get_positional())
+            given += option->results().size();
+    return command.get_name() + " takes " + operands + "; " + std::to_string(given) + " given";
+}
+
 // The one line a usage error prints: an option of another command is named as such.
 std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::span<const char* const> arguments,
-                             const CLI::ParseError& error)
+                             const CLI::ParseError& error, const char* operands)
 {
     if (auto line = foreign_option(app, arguments))
         return *std::move(line);
+    if (operands != nullptr) {
+        if (auto line = wrong_operand_count(command, error, operands))
+            return *std::move(line);
+    }
     if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr && command.get_parent() == nullptr &&
         !command.remaining().empty() && !command.remaining().front().starts_with("-"))
     {
@@ -291,12 +311,16 @@ struct RunPlace {
 struct Subcommand {
     const char* name;
     const char* summary;
+    const char* operands; // what it takes besides options, for "fit takes four files …; 2 given"
+    const char* examples; // command lines for --help, each runnable in a copy of data/n-to-l
     void (*set_up)(CLI::App& command, ParsedLine& line);
     int (*run)(ParsedLine& line, const RunPlace& place);
 };
 
 constexpr std::array<Subcommand, 6> subcommands{{
-    {"path", "one point's path: print its numbers or draw it",
+    {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
+     "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
+     "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
          add_path_command_options(command, line.options, line.slopes);
@@ -304,7 +328,9 @@ constexpr std::array<Subcommand, 6> subcommands{{
      [](ParsedLine& line, const RunPlace& place) {
          return to_int(run_path_command(line.path_file, line.options, place.out, place.err));
      }},
-    {"inbetween", "in-between frames by an interpolation law and a padding",
+    {"inbetween", "in-between frames by an interpolation law and a padding", "two key files KEY1 KEY2",
+     "  apcs inbetween key1.dat key2.dat --law ease-in --print\n"
+     "  apcs inbetween key1.dat key2.dat --inbetweens 6 --out linear",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("KEYS", line.key_files, "KEY1 KEY2: the key frames (.dat)")
              ->expected(2)
@@ -317,7 +343,9 @@ constexpr std::array<Subcommand, 6> subcommands{{
          line.inbetween.key2 = line.key_files[1];
          return to_int(run_inbetween_command(line.inbetween, line.options, place.out, place.err));
      }},
-    {"fit", "surface fitting: the in-between frames of two key frames",
+    {"fit", "surface fitting: the in-between frames of two key frames", "four files KEY1 KEY2 PATH_FIRST PATH_LAST",
+     "  apcs fit key1.dat key2.dat way1.dat way4.dat --out frames\n"
+     "  apcs fit key1.dat key2.dat way1.dat way4.dat --surface ferguson --png fit.png",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILES", line.fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")
              ->expected(4)
@@ -329,7 +357,8 @@ constexpr std::array<Subcommand, 6> subcommands{{
          const std::vector<std::filesystem::path>& files = line.fit_files;
          return to_int(run_fit_command({files[0], files[1], files[2], files[3]}, line.options, place.out, place.err));
      }},
-    {"draw", "draw key frames and in-between files overlaid as a picture",
+    {"draw", "draw key frames and in-between files overlaid as a picture", "one or more .dat files",
+     "  apcs draw key1.dat key2.dat --png keys.png",
      [](CLI::App& command, ParsedLine& line) {
          command
              .add_option("FILES", line.draw_files,
@@ -344,7 +373,9 @@ constexpr std::array<Subcommand, 6> subcommands{{
                                 place.err);
          return to_int(run_draw_command(line.draw_files, line.options, place.out, place.err));
      }},
-    {"play", "play a scene of several objects and actors (.scn)",
+    {"play", "play a scene of several objects and actors (.scn)", "one scene file SCENE.scn",
+     "  apcs play ../robot/robot.scn --tree\n"
+     "  apcs play ../car/car.scn --gif car.gif",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("SCENE", line.play.scene, "the scene file (.scn)")->required()->type_name("");
          add_play_command_options(command, line.options, line.slopes, line.play.tree);
@@ -353,7 +384,8 @@ constexpr std::array<Subcommand, 6> subcommands{{
          line.play.spacing_given = given_count(place.app, "--spacing") > 0;
          return to_int(run_play_command(line.play, line.options, place.player, place.out, place.err));
      }},
-    {"figures", "redraw the thesis' figures and examples as PNG",
+    {"figures", "redraw the thesis' figures and examples as PNG", "no files (--out names the folder)",
+     "  apcs figures --out figures",
      [](CLI::App& command, ParsedLine& line) { add_figures_command_options(command, line.options, line.slopes); },
      [](ParsedLine& line, const RunPlace& place) {
          return to_int(run_figures_command(line.options, place.out, place.err));
@@ -366,10 +398,16 @@ void set_up_command_line(CLI::App& app, ParsedLine& line)
     app.set_version_flag("--version", version_text());
     app.require_subcommand(0, 1);
     app.formatter(std::make_shared<PlainOptionFormatter>());
-    app.footer("The user's manual: manual.txt (installed as share/doc/apcs/manual.txt); man apcs.");
+    const std::string manual = "The user's manual: manual.txt (installed as share/doc/apcs/manual.txt); man apcs.";
+    app.footer("Examples, in a copy of the n-to-l example (data/n-to-l; installed: share/apcs/n-to-l):\n"
+               "  apcs                                   the session, as in 1989\n"
+               "  apcs --keys session.keys --pace 300    the shipped session replayed\n"
+               "  apcs path way1.dat --print             a path's numbers\n\n" +
+               manual);
     add_session_options(app, line.options, line.slopes);
     for (const Subcommand& row : subcommands) {
         CLI::App* command = app.add_subcommand(row.name, row.summary);
+        command->footer("Examples, in a copy of data/n-to-l:\n" + std::string(row.examples) + "\n\n" + manual);
         row.set_up(*command, line);
         command->group("Commands");
     }
@@ -387,7 +425,11 @@ std::optional<int> parse_or_refuse(CLI::App& app, int argc, const char* const* a
         const std::vector<CLI::App*> parsed = app.get_subcommands();
         const CLI::App* command = parsed.empty() ? &app : parsed.back();
         const std::span<const char* const> arguments(argv + 1, static_cast<std::size_t>(argc > 0 ? argc - 1 : 0));
-        return usage_error(usage_error_text(app, *command, arguments, error), command, err);
+        const auto row = std::ranges::find_if(subcommands, [command](const Subcommand& known) {
+            return command->get_name() == known.name;
+        });
+        const char* operands = row == subcommands.end() ? nullptr : row->operands;
+        return usage_error(usage_error_text(app, *command, arguments, error, operands), command, err);
     }
     return std::nullopt;
 }

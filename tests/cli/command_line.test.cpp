@@ -88,6 +88,14 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"--png", "a.png", "path", "a.dat", "--png", "b.png"}, "apcs: --png is given twice, before and after 'path'"},
         {{"draw", "a.dat", "--png", "x.png", "--png-raw", "x.png"},
          "apcs: --png-raw names a file another picture option names: x.png"},
+        {{"fit", "a.dat", "b.dat"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 2 given"},
+        {{"fit", "a", "b", "c", "d", "e", "--print"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 5 given"},
+        {{"fit", "--print"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 0 given"},
+        {{"inbetween", "a.dat"}, "apcs: inbetween takes two key files KEY1 KEY2; 1 given"},
+        {{"path", "a.dat", "b.dat"}, "apcs: path takes one path file FILE.dat; 2 given"},
+        {{"play"}, "apcs: play takes one scene file SCENE.scn; 0 given"},
+        {{"draw", "--png", "x.png"}, "apcs: draw takes one or more .dat files; 0 given"},
+        {{"figures", "data"}, "apcs: figures takes no files (--out names the folder); 1 given"},
     };
     for (const Row& row : rows) {
         CAPTURE(row.arguments);
