@@ -66,9 +66,9 @@ Expected<void> write_player_gif(AnimationPlayer& player, std::size_t frame_count
             player.tick();
         return render_raster(player.view());
     };
-    const std::optional<std::string> gif = encode_gif(frame_count, frame_at, gif_delay_centiseconds(delay_ms));
+    const Expected<std::string> gif = encode_gif(frame_count, frame_at, gif_delay_centiseconds(delay_ms));
     if (!gif)
-        return Diagnostic{target.string(), 0, "cannot encode the GIF image"};
+        return Diagnostic{target.string(), 0, "cannot encode the GIF image: " + gif.error().message};
     return write_picture_bytes(target, *gif, inputs, out);
 }
 

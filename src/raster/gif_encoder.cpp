@@ -65,6 +65,13 @@ bool put_frame(GifFileType* gif, const Bitmap& bitmap, int rows, int delay_centi
     return true;
 }
 
+// giflib's own words for its error code ("Failed to write to given file", "Not enough memory").
+Diagnostic giflib_failure(int error)
+{
+    const char* text = GifErrorString(error);
+    return Diagnostic{"", 0, text != nullptr ? text : "giflib error " + std::to_string(error)};
+}
+
 } // namespace
 
 int gif_delay_centiseconds(int delay_ms)
@@ -72,32 +79,32 @@ int gif_delay_centiseconds(int delay_ms)
     return std::max(1, static_cast<int>(std::lround(delay_ms / 10.0)));
 }
 
-std::optional<std::string> encode_gif(std::size_t frame_count, const std::function<Bitmap(std::size_t)>& frame_at,
+Expected<std::string> encode_gif(std::size_t frame_count, const std::function<Bitmap(std::size_t)>& frame_at,
                                       int delay_centiseconds)
 {
     if (frame_count == 0)
-        return std::nullopt;
+        return Diagnostic{"", 0, "there are no frames"};
     std::string output;
     int error = 0;
     GifWriter gif(EGifOpen(&output, append_to_string, &error));
     if (!gif)
-        return std::nullopt;
+        return giflib_failure(error);
     const GifColorType colours[] = {{0, 0, 0}, {255, 255, 255}};
     const std::unique_ptr<ColorMapObject, MapFreer> palette(GifMakeMapObject(2, colours));
     if (!palette)
-        return std::nullopt;
+        return Diagnostic{"", 0, "out of memory"};
     EGifSetGifVersion(gif.get(), true);
     for (std::size_t k = 0; k < frame_count; ++k) {
         const Bitmap bitmap = frame_at(k);
         const int rows = png_rows(bitmap.height(), PngShape::monitor);
         if (k == 0 && (EGifPutScreenDesc(gif.get(), bitmap.width(), rows, 1, 0, palette.get()) != GIF_OK ||
                        !put_looping(gif.get())))
-            return std::nullopt;
+            return giflib_failure(gif->Error);
         if (!put_frame(gif.get(), bitmap, rows, delay_centiseconds))
-            return std::nullopt;
+            return giflib_failure(gif->Error);
     }
     if (EGifCloseFile(gif.release(), &error) != GIF_OK)
-        return std::nullopt;
+        return giflib_failure(error);
     return output;
 }
 

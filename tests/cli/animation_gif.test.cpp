@@ -88,3 +88,17 @@ TEST_CASE("a --gif name that does not end in .gif is exit 2; --gif is not an opt
     CHECK(run_apcs({"inbetween", example("key1.dat"), example("key2.dat"), "--gif", "x.png"})
               .err.find("a GIF file's name ends in .gif, found 'x.png'") != std::string::npos);
 }
+
+TEST_CASE("a scene of groups only plays its frames in a GIF, each empty but for the message line", "[cli][gif]")
+{
+    // Its objects have no drawing: frames of no points, which still count (the GIF had 0 frames
+    // and the command said only "cannot encode the GIF image").
+    const TempFolder folder;
+    const auto scene = folder.write("groups.scn", "FRAMES 3\nOBJECT g\nOBJECT h PARENT g\n");
+    const auto result = run_apcs({"play", scene.string(), "--gif", (folder / "groups.gif").string()});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.err.empty());
+    const auto gif = read_gif(file_text(folder / "groups.gif"));
+    REQUIRE(gif);
+    REQUIRE(gif->frames.size() == 4);
+}

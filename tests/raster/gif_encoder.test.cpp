@@ -56,3 +56,10 @@ TEST_CASE("an animated GIF holds each frame at 720x522, rows 1.5 tall, white on 
     CHECK_FALSE(lit(2, 719, 520));
     CHECK_FALSE(lit(2, 10, 0));
 }
+
+TEST_CASE("a GIF of no frames is refused with the reason", "[raster][gif]")
+{
+    const auto gif = encode_gif(0, [](std::size_t) { return Bitmap(720, 348); }, 20);
+    REQUIRE_FALSE(gif);
+    REQUIRE(gif.error().message == "there are no frames");
+}

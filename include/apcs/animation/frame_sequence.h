@@ -8,17 +8,19 @@
 namespace apcs {
 
 // Frames of one graphic, every frame with the same point count, stored frame after frame in one
-// contiguous array (no allocation per point or per frame).
+// contiguous array (no allocation per point or per frame). Frames of no points still count (a
+// scene of groups only has frames to play, each empty).
 class FrameSequence {
 public:
     FrameSequence() = default;
     FrameSequence(std::size_t frame_count, std::size_t points_per_frame)
-        : m_points_per_frame(points_per_frame)
+        : m_frame_count(frame_count)
+        , m_points_per_frame(points_per_frame)
         , m_points(frame_count * points_per_frame)
     {
     }
 
-    std::size_t frame_count() const { return m_points_per_frame == 0 ? 0 : m_points.size() / m_points_per_frame; }
+    std::size_t frame_count() const { return m_frame_count; }
     std::size_t points_per_frame() const { return m_points_per_frame; }
     std::span<const Vec3> frame(std::size_t index) const
     {
@@ -30,6 +32,7 @@ public:
     }
 
 private:
+    std::size_t m_frame_count = 0;
     std::size_t m_points_per_frame = 0;
     std::vector<Vec3> m_points;
 };

@@ -1,10 +1,10 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/raster/bitmap.h"
 
 #include <cstddef>
 #include <functional>
-#include <optional>
 #include <string>
 
 namespace apcs {
@@ -17,8 +17,8 @@ int gif_delay_centiseconds(int delay_ms);
 // for in order, 0 first, so that no more than one frame is held), each shown as the monitor showed
 // it (720x522 for the 720x348 raster, rows 1.5 pixels tall, as PngShape::monitor), white on black
 // in a two-colour palette, each `delay_centiseconds` long, looping forever (the NETSCAPE2.0
-// extension). Empty on a giflib failure.
-std::optional<std::string> encode_gif(std::size_t frame_count, const std::function<Bitmap(std::size_t)>& frame_at,
+// extension). On a failure giflib's reason (the Diagnostic's message; no file or line).
+Expected<std::string> encode_gif(std::size_t frame_count, const std::function<Bitmap(std::size_t)>& frame_at,
                                       int delay_centiseconds);
 
 } // namespace apcs
