@@ -94,6 +94,20 @@ std::optional<KeyEvent> key_of_character(wint_t code)
     return std::nullopt;
 }
 
+// The text of an OSC, DCS or APC string (a window title a terminal reports, ESC ] 0;title BEL): any
+// characters up to BEL or the string terminator ESC \; CAN or SUB cancels it (ECMA-48 8.3.89).
+EscapeTail control_string_tail(std::u32string_view text)
+{
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] == U'\a' || text[i] == U'\x18' || text[i] == U'\x1a')
+            return EscapeTail::sequence;
+        if (text[i] == U'\x1b')
+            return i + 1 == text.size() ? EscapeTail::unfinished
+                                        : text[i + 1] == U'\\' ? EscapeTail::sequence : EscapeTail::broken;
+    }
+    return EscapeTail::unfinished;
+}
+
 } // namespace
 
 std::span<const KeySequence> key_sequences() { return key_sequence_table; }
@@ -109,6 +123,8 @@ EscapeTail escape_tail(std::u32string_view after_escape)
             return EscapeTail::unfinished;
         return within(after_escape[1], 0x20, 0x7E) ? EscapeTail::sequence : EscapeTail::broken;
     }
+    if (after_escape.front() == U']' || after_escape.front() == U'P' || after_escape.front() == U'_')
+        return control_string_tail(after_escape.substr(1));
     if (after_escape.front() != U'[')
         return EscapeTail::keys;
     // CSI (ECMA-48): parameter bytes 0x30-0x3F, then intermediate bytes 0x20-0x2F, then a final

@@ -137,6 +137,14 @@ TEST_CASE("What follows an unmatched Esc at once is a sequence to drop, or keys 
         {U"O", EscapeTail::unfinished},
         {U"Oq", EscapeTail::sequence},       // the keypad's 1 in application mode
         {U"O\u001b", EscapeTail::broken},
+        {U"]0;title", EscapeTail::unfinished}, // an OSC string (a window title) not yet ended
+        {U"]0;title\a", EscapeTail::sequence}, // ended by BEL: dropped whole, never typed
+        {U"]0;title\u001b", EscapeTail::unfinished},
+        {U"]0;title\u001b\\", EscapeTail::sequence}, // ended by ST (ESC \\)
+        {U"]0;ti\u001bx", EscapeTail::broken},
+        {U"P1$r0m\u001b\\", EscapeTail::sequence},  // a DCS report
+        {U"_Gi=1;OK\u001b\\", EscapeTail::sequence}, // a kitty graphics reply (APC)
+        {U"]0;ab\u0018", EscapeTail::sequence},      // CAN cancels the string
         {U"\u001b", EscapeTail::keys},       // Esc, Esc
         {U"a", EscapeTail::keys},            // Esc, then a letter (Alt-a)
         {U"4", EscapeTail::keys},

@@ -36,9 +36,10 @@ std::span<const KeySequence> key_sequences();
 // What the characters that follow an Esc at once make, when ncurses returned the Esc alone because
 // they matched no key it knows (SPEC §7.3: a sequence is never typed into a prompt):
 // - `unfinished`: they may still grow into an escape sequence (CSI: ESC [, parameters and
-//   intermediates; SS3: ESC O);
-// - `sequence`: a whole sequence (CSI up to its final byte; SS3 and one printable character), the
-//   key of a terminal APCS does not know: dropped, Esc included;
+//   intermediates; SS3: ESC O; an OSC, DCS or APC string: ESC ], ESC P, ESC _ and its text);
+// - `sequence`: a whole sequence (CSI up to its final byte; SS3 and one printable character; a
+//   string up to BEL or ESC \), the key of a terminal APCS does not know, or a report such as a
+//   window title: dropped, Esc included;
 // - `broken`: a sequence begun, then a character that no sequence holds: the sequence is dropped,
 //   Esc included, and that last character is a key of its own;
 // - `keys`: no sequence at all (ESC and a letter, ESC ESC): the Esc is a key, and so are they.
