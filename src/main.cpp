@@ -1,3 +1,4 @@
+#include "apcs/base/stopping_signals.h"
 #include "apcs/cli/command_line.h"
 #include "apcs/formats/unfinished_files.h"
 #include "apcs/session/exit_status.h"
@@ -28,7 +29,7 @@ void remove_unfinished_files_on_signals()
     struct sigaction action {};
     action.sa_handler = end_on_signal;
     sigemptyset(&action.sa_mask);
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT})
+    for (const int signal : apcs::stopping_signals)
         sigaction(signal, &action, nullptr);
 }
 

@@ -1,6 +1,6 @@
 #include "stop_signals.h"
 
-#include <initializer_list>
+#include <cstddef>
 
 namespace apcs {
 
@@ -16,10 +16,8 @@ extern "C" void request_stop(int)
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
-    sigaction(SIGINT, &ignore, nullptr);
-    sigaction(SIGTERM, &ignore, nullptr);
-    sigaction(SIGHUP, &ignore, nullptr);
-    sigaction(SIGQUIT, &ignore, nullptr);
+    for (const int signal : stopping_signals)
+        sigaction(signal, &ignore, nullptr);
 }
 
 } // namespace
@@ -30,11 +28,10 @@ StopSignals::StopSignals()
     struct sigaction action {};
     action.sa_handler = request_stop;
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &m_old_int);
-    sigaction(SIGTERM, &action, &m_old_term);
-    sigaction(SIGHUP, &action, &m_old_hup);
-    // Ctrl-\ (SIGQUIT) would otherwise end the program with a core and the terminal left raw.
-    sigaction(SIGQUIT, &action, &m_old_quit);
+    // Ctrl-\ (SIGQUIT) would otherwise end the program with a core, SIGUSR1 at once: the terminal
+    // left raw either way.
+    for (std::size_t i = 0; i < stopping_signals.size(); ++i)
+        sigaction(stopping_signals[i], &action, &m_old_actions[i]);
 }
 
 StopSignals::~StopSignals()
@@ -44,15 +41,14 @@ StopSignals::~StopSignals()
         // when the terminal's session leader goes) must not cut that short.
         sigset_t finishing;
         sigemptyset(&finishing);
-        for (const int signal : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE})
+        for (const int signal : stopping_signals)
             sigaddset(&finishing, signal);
+        sigaddset(&finishing, SIGPIPE);
         sigprocmask(SIG_BLOCK, &finishing, nullptr);
         return;
     }
-    sigaction(SIGINT, &m_old_int, nullptr);
-    sigaction(SIGTERM, &m_old_term, nullptr);
-    sigaction(SIGHUP, &m_old_hup, nullptr);
-    sigaction(SIGQUIT, &m_old_quit, nullptr);
+    for (std::size_t i = 0; i < stopping_signals.size(); ++i)
+        sigaction(stopping_signals[i], &m_old_actions[i], nullptr);
 }
 
 bool StopSignals::requested() const { return stop_requested != 0; }

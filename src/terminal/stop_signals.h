@@ -1,11 +1,14 @@
 #pragma once
 
+#include "apcs/base/stopping_signals.h"
+
+#include <array>
 #include <csignal>
 
 namespace apcs {
 
-// While it lives, SIGINT, SIGTERM, SIGHUP and SIGQUIT (Ctrl-\) ask the program to stop instead of
-// ending it: the terminal is given back and every file finished. One stop is enough: from the
+// While it lives, the stopping signals (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1 …) ask the
+// program to stop instead of ending it: the terminal is given back and every file finished. One stop is enough: from the
 // first signal on the others are ignored. Construction clears any earlier request and installs the
 // handler; destruction gives the old handlers back, or, after a stop, blocks these signals (and
 // SIGPIPE) for the rest of the program, which only finishes its files.
@@ -22,10 +25,7 @@ public:
     void request();
 
 private:
-    struct sigaction m_old_int {};
-    struct sigaction m_old_term {};
-    struct sigaction m_old_hup {};
-    struct sigaction m_old_quit {};
+    std::array<struct sigaction, stopping_signals.size()> m_old_actions{};
 };
 
 } // namespace apcs

@@ -121,7 +121,7 @@ signal_while_writing() {
 stopping_signals() {
   # Each stopping signal of SPEC §1 while the in-betweens are written: exit 130 and no hidden
   # temporary file left behind. A fit too quick to be caught is tried again on more points.
-  for name in TERM INT HUP QUIT; do
+  for name in TERM INT HUP QUIT USR1 USR2; do
     status=missed
     for points in 300000 600000 1200000; do
       status=$(signal_while_writing "$name" "$points")

@@ -24,7 +24,7 @@ expect_restored() {
 }
 
 passed=0
-for signal in INT TERM HUP QUIT; do
+for signal in INT TERM HUP QUIT USR1 USR2 ALRM; do
   name="sig$signal"
   tmux -L "$socket" new-session -d -s "$name" -x 80 -y 25 -c "$work" \
     "'$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
