@@ -56,6 +56,26 @@ leftovers=$(find "$quit_work" -name '.*' -type f)
 cmp -s "$data/key1.dat" "$quit_work/key1.dat" || { echo "key1.dat changed after Ctrl-\\"; exit 1; }
 passed=$((passed + 1))
 
+# Ctrl-Z in a shell: APCS suspends with the terminal given back (the shell's job line, echo and
+# icanon on), and fg brings it back redrawn, still at its prompt.
+tmux -L "$socket" new-session -d -s suspend -x 80 -y 25 -c "$work" "bash --norc --noprofile"
+tmux -L "$socket" send-keys -t suspend "PS1='$ '; '$apcs'" Enter
+wait_for suspend "Please keyin the KEY1 filename!"
+tmux -L "$socket" send-keys -t suspend C-z
+wait_for suspend "Stopped"
+tmux -L "$socket" send-keys -t suspend "$report_modes" Enter
+wait_for suspend "MODES"
+modes=$(screen suspend | grep "MODES$" | tail -1)
+[[ " $modes " == *" echo "* && " $modes " == *" icanon "* ]] \
+  || { echo "terminal not given back at Ctrl-Z: $modes"; screen suspend; exit 1; }
+tmux -L "$socket" send-keys -t suspend clear Enter
+tmux -L "$socket" send-keys -t suspend fg Enter
+wait_for suspend "Please keyin the KEY1 filename!"
+tmux -L "$socket" send-keys -t suspend C-c
+tmux -L "$socket" send-keys -t suspend 'echo EXITED=$?' Enter
+wait_for suspend "EXITED=130"
+passed=$((passed + 1))
+
 tmux -L "$socket" new-session -d -s small -x 70 -y 20 -c "$work" "'$apcs'; echo EXITED=\$?; sleep 60"
 wait_for small "The terminal must be at least 80x24 (it is 70x20)"
 wait_for small "Keys are ignored until it is larger; Ctrl-C quits"
