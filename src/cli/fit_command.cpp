@@ -92,8 +92,8 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
         std::array<std::vector<Vec3>, 2> storage;
         const SurfaceFitter fitter = key_frames_fitter(keys, first_path, last_path, storage, options.surface);
         return deliver_inbetween_files(
-            [&](const std::filesystem::path& folder, const KeyFileGuard& guard) {
-                return write_inbetween_files(fitter, keys.key1, folder, guard);
+            [&](const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress) {
+                return write_inbetween_files(fitter, keys.key1, folder, guard, progress);
             },
             options, key_files, err);
     }

@@ -2,6 +2,7 @@
 
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
+#include "apcs/cli/write_progress.h"
 
 #include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/print_format.h"
@@ -87,8 +88,8 @@ ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure,
     if (!files_asked)
         return ExitStatus::success;
     return deliver_inbetween_files(
-        [&](const std::filesystem::path& folder, const KeyFileGuard& guard) {
-            return write_inbetween_files(frames, structure, folder, guard);
+        [&](const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress) {
+            return write_inbetween_files(frames, structure, folder, guard, progress);
         },
         options, key_files, err);
 }
@@ -100,7 +101,8 @@ ExitStatus deliver_inbetween_files(const InbetweenWriter& write, const CommonOpt
     for (const std::filesystem::path& key_file : key_files)
         guard.protect(key_file);
     const std::filesystem::path folder = options.out.value_or(".");
-    const auto written = write(folder, guard);
+    WriteProgressLine progress(err, standard_error_is_terminal(), "the in-between files");
+    const auto written = write(folder, guard, progress.report());
     if (!written)
         return report_bad_input(written.error(), err);
     std::vector<std::string> earlier = inbetweens_beyond(folder, written->size());

@@ -5,6 +5,7 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
+#include "apcs/cli/write_progress.h"
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
@@ -73,10 +74,12 @@ void print_frames(const SceneAnimation& animation, const Scene& scene, std::ostr
     }
 }
 
-// frm000.dat … into `folder`, one frame computed, formatted and written at a time on each core.
+// frm000.dat … into `folder`, one frame computed, formatted and written at a time on each core,
+// its progress shown on a terminal's standard error.
 Expected<void> write_frame_files(const SceneAnimation& animation, const std::filesystem::path& folder,
-                                 const KeyFileGuard& guard)
+                                 const KeyFileGuard& guard, std::ostream& err)
 {
+    WriteProgressLine progress(err, standard_error_is_terminal(), "the frame files");
     const int last = animation.last_frame();
     const auto written = write_numbered_files(
         folder, animation.frame_count(),
@@ -85,7 +88,7 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
             return "; APCS scene frame " + std::to_string(f) + " of " + std::to_string(last) + "\n" +
                    format_graphic(animation.structure(), animation.frame(static_cast<int>(f)));
         },
-        guard, "the frame files");
+        guard, "the frame files", progress.report());
     if (!written)
         return written.error();
     return ok;
@@ -216,7 +219,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         print_frames(animation, *scene, out);
     const CommonOptions shown = scene_shown_options(*scene, options, inputs);
     if (options.out)
-        if (Expected<void> done = write_frame_files(animation, *options.out, read_files_guard(shown)); !done)
+        if (Expected<void> done = write_frame_files(animation, *options.out, read_files_guard(shown), err); !done)
             return report_bad_input(done.error(), err);
     if (!all_frames)
         return ExitStatus::success;

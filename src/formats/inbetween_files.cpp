@@ -19,7 +19,7 @@ namespace {
 Expected<std::vector<std::filesystem::path>>
 write_inbetweens(std::size_t count, std::size_t point_count, int decimals, const Graphic& structure,
                  const std::function<void(std::size_t frame, std::size_t first, std::span<Vec3> out)>& points_of,
-                 const std::filesystem::path& folder, const KeyFileGuard& guard)
+                 const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress)
 {
     const auto write_frame = [&](std::size_t index, const ContentSink& sink) {
         const std::size_t frame = index + 1;
@@ -30,33 +30,33 @@ write_inbetweens(std::size_t count, std::size_t point_count, int decimals, const
     };
     return write_numbered_files(
         folder, count, [](std::size_t index) { return inbetween_file_name(index + 1); }, write_frame, guard,
-        "the in-between files");
+        "the in-between files", progress);
 }
 
 } // namespace
 
 Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames, const Graphic& structure,
                                                                    const std::filesystem::path& folder,
-                                                                   const KeyFileGuard& guard)
+                                                                   const KeyFileGuard& guard, const WriteProgress& progress)
 {
     const auto copy_points = [&frames](std::size_t frame, std::size_t first, std::span<Vec3> out) {
         const std::span<const Vec3> points = frames.frame(frame).subspan(first, out.size());
         std::copy(points.begin(), points.end(), out.begin());
     };
     return write_inbetweens(inbetween_count(frames), frames.points_per_frame(), inbetween_decimals(frames), structure,
-                            copy_points, folder, guard);
+                            copy_points, folder, guard, progress);
 }
 
 Expected<std::vector<std::filesystem::path>> write_inbetween_files(const SurfaceFitter& fitter, const Graphic& structure,
                                                                    const std::filesystem::path& folder,
-                                                                   const KeyFileGuard& guard)
+                                                                   const KeyFileGuard& guard, const WriteProgress& progress)
 {
     const std::size_t count = fitter.frame_count() < 2 ? 0 : fitter.frame_count() - 2;
     const auto fit_points = [&fitter](std::size_t frame, std::size_t first, std::span<Vec3> out) {
         fitter.fit(frame, first, out);
     };
     return write_inbetweens(count, fitter.point_count(), inbetween_decimals(fitter.key1(), fitter.key2()), structure,
-                            fit_points, folder, guard);
+                            fit_points, folder, guard, progress);
 }
 
 namespace {

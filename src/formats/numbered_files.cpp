@@ -5,6 +5,7 @@
 #include "apcs/formats/file_io.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <sys/statvfs.h>
 #include <thread>
@@ -89,7 +90,7 @@ Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
-                     std::string_view purpose)
+                     std::string_view purpose, const WriteProgress& progress)
 {
     if (Expected<void> made = make_output_folder(folder, purpose); !made)
         return made.error();
@@ -107,6 +108,7 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
     // The files are independent: making, formatting and flushing them is shared among the cores.
     std::vector<Expected<void>> outcomes(count, ok);
     std::vector<char> written(count, 0);
+    std::atomic<std::size_t> finished = 0;
     const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
     for_each_index_in_parallel(count, workers, [&](std::size_t index) {
         const auto write_content = [&writer_of, index](const ContentSink& sink) { writer_of(index, sink); };
@@ -116,6 +118,8 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
             outcomes[index] = result.error();
         else
             written[index] = result->outcome != WriteOutcome::unchanged;
+        if (progress)
+            progress(++finished, count);
     });
     // The files written are put on the disk even when another failed: they are whole and stay.
     Expected<void> flushed = ok;
@@ -133,11 +137,11 @@ Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
-                     std::string_view purpose)
+                     std::string_view purpose, const WriteProgress& progress)
 {
     return write_numbered_files(
         folder, count, name_of, [&content_of](std::size_t index, const ContentSink& sink) { sink(content_of(index)); },
-        guard, purpose);
+        guard, purpose, progress);
 }
 
 std::string picture_file_name(int number)

@@ -5,6 +5,7 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/numbered_files.h"
 #include "apcs/session/animation_player.h"
 #include "apcs/session/exit_status.h"
 
@@ -36,11 +37,11 @@ ExitStatus deliver_frames(const FrameSequence& frames, const Graphic& structure,
                           std::span<const std::filesystem::path> key_files, std::ostream& out, std::ostream& err);
 
 // Writes in-between files with `write` into --out (or the current folder), the key files and
-// options.read_files guarded,
+// options.read_files guarded, its progress shown on a terminal's standard error (WriteProgressLine),
 // and notes in-betweens an earlier run left beyond them: the files part of deliver_frames, also
 // for frames streamed as they are made (apcs fit without pictures or --print).
-using InbetweenWriter = std::function<Expected<std::vector<std::filesystem::path>>(const std::filesystem::path& folder,
-                                                                                 const KeyFileGuard& guard)>;
+using InbetweenWriter = std::function<Expected<std::vector<std::filesystem::path>>(
+    const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress)>;
 ExitStatus deliver_inbetween_files(const InbetweenWriter& write, const CommonOptions& options,
                                    std::span<const std::filesystem::path> key_files, std::ostream& err);
 

@@ -5,6 +5,7 @@
 #include "apcs/animation/surface_fit.h"
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/numbered_files.h"
 
 #include <filesystem>
 #include <optional>
@@ -17,12 +18,14 @@ namespace apcs {
 // Writes the in-betweens (every frame but the first and the last) as inb001.dat … into `folder`,
 // each a whole graphic with the parts of `structure`, atomically and spread over the cores.
 // Every target is checked against `guard` before any file is written: a guarded one (a key file)
-// stops the whole writing. Returns the files written, or the first problem: a `folder` that is
-// not a folder, a key file, or a file that could not be written.
+// stops the whole writing; `progress` is told of each file written. Returns the files written, or
+// the first problem: a `folder` that is not a folder, a key file, or a file that could not be
+// written.
 [[nodiscard]] Expected<std::vector<std::filesystem::path>> write_inbetween_files(const FrameSequence& frames,
                                                                                  const Graphic& structure,
                                                                                  const std::filesystem::path& folder,
-                                                                                 const KeyFileGuard& guard);
+                                                                                 const KeyFileGuard& guard,
+                                                                                 const WriteProgress& progress = {});
 
 // write_inbetween_files for frames made as they are written: each in-between of `fitter` (frames
 // 1 … frame_count − 2) is computed, formatted and written a chunk of points at a time, one file
@@ -31,7 +34,8 @@ namespace apcs {
 [[nodiscard]] Expected<std::vector<std::filesystem::path>> write_inbetween_files(const SurfaceFitter& fitter,
                                                                                  const Graphic& structure,
                                                                                  const std::filesystem::path& folder,
-                                                                                 const KeyFileGuard& guard);
+                                                                                 const KeyFileGuard& guard,
+                                                                                 const WriteProgress& progress = {});
 
 // Of `names` (a folder's file names), the in-between files numbered above `written_count`
 // (inb013.dat … when 12 were written now; any case, as DOS wrote them), in number order: what an

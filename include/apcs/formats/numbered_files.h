@@ -19,6 +19,10 @@ namespace apcs {
 // cannot be made: PARENT is not a folder (--out makes one level, not its parents)".
 Expected<void> make_output_folder(const std::filesystem::path& folder, std::string_view purpose);
 
+// Told after each file of a run is written: how many are written so far, and of how many. Called
+// from the writing threads, one call at a time per file; it must be safe to call from any thread.
+using WriteProgress = std::function<void(std::size_t written, std::size_t count)>;
+
 // A run of files written into one folder (in-betweens inb001.dat …, scene frames frm000.dat …):
 // file k (0 … count−1) is named name_of(k) and its content made by writer_of(k) chunk by chunk as
 // it is written. Every target is checked against `guard` before any file is written (a guarded
@@ -28,12 +32,13 @@ Expected<void> make_output_folder(const std::filesystem::path& folder, std::stri
 // named inb002.dat stops the run before inb001.dat is written) and the folder's free space must
 // hold the files (estimated_files_bytes, room_for_files). Returns the files written, or the first
 // problem: a `folder` that is not a folder and cannot be made (make_output_folder), a guarded
-// or unwritable target, too little space, or a file that could not be written.
+// or unwritable target, too little space, or a file that could not be written. `progress`, when
+// given, is told of each file written.
 [[nodiscard]] Expected<std::vector<std::filesystem::path>>
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
-                     std::string_view purpose);
+                     std::string_view purpose, const WriteProgress& progress = {});
 
 // The bytes `count` files made by writer_of take, estimated from five spread over the run (the
 // first, at a quarter, half and three quarters, the last), each made once and counted, nothing
@@ -52,7 +57,7 @@ Expected<void> room_for_files(std::uintmax_t needed, std::uintmax_t free_bytes, 
 write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
-                     std::string_view purpose);
+                     std::string_view purpose, const WriteProgress& progress = {});
 
 // P's pictures: "apcs001.png" … "apcs999.png" (number 1 … most_pictures); the first name not yet
 // in the folder is written.
