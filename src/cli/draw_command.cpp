@@ -4,30 +4,20 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/raster/painter.h"
+#include "apcs/session/frames_overlay.h"
 #include "apcs/session/screen_layout.h"
 #include "apcs/session/world_drawing.h"
 
 namespace apcs {
 
-LineStyle overlay_style(std::size_t index, std::size_t count)
-{
-    if (index == 0)
-        return LineStyle::solid;
-    return index + 1 == count ? LineStyle::dashed : LineStyle::dotted;
-}
-
 std::string overlay_legend(std::span<const NamedGraphic> graphics)
 {
     if (graphics.empty())
         return {};
-    std::string legend = "solid: " + graphics.front().name;
-    if (graphics.size() > 1)
-        legend += "  dashed: " + graphics.back().name;
-    if (graphics.size() == 3)
-        legend += "  dotted: " + graphics[1].name;
-    else if (graphics.size() > 3)
-        legend += "  dotted: " + std::to_string(graphics.size() - 2) + " between";
-    return legend;
+    const std::string between = graphics.size() > 3    ? std::to_string(graphics.size() - 2) + " between"
+                                : graphics.size() == 3 ? graphics[1].name
+                                                       : std::string();
+    return overlay_legend({graphics.front().name, graphics.back().name, between}, graphics.size());
 }
 
 GraphicsScreen draw_graphics_overlay(std::span<const NamedGraphic> graphics, ViewAngles angles)

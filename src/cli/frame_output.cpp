@@ -8,6 +8,7 @@
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/gif_encoder.h"
 #include "apcs/session/animation_player.h"
+#include "apcs/session/frames_overlay.h"
 
 #include <optional>
 #include <ostream>
@@ -35,10 +36,11 @@ Expected<void> write_overlay_pictures(const FrameSequence& frames, const Graphic
 {
     if (!pictures_asked(options))
         return ok;
-    const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " +
-                                key_files.front().filename().string() + " to " +
-                                key_files.back().filename().string();
-    return write_pictures(frames_overlay_screen(frames, structure, options.view, caption), options, out);
+    const std::string key1 = key_files.front().filename().string();
+    const std::string key2 = key_files.back().filename().string();
+    const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + key1 + " to " + key2;
+    const FramesOverlay overlay{key_frames_names(key1, key2, frames.frame_count()), {}, {}};
+    return write_pictures(frames_overlay_screen(frames, structure, options.view, caption, overlay), options, out);
 }
 
 // --gif: every frame as the session's animation shows it (KEY1, the in-betweens, KEY2).

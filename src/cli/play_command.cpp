@@ -15,6 +15,7 @@
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_tree.h"
+#include "apcs/session/frames_overlay.h"
 #include "apcs/session/session_log.h"
 
 #include <unistd.h>
@@ -136,6 +137,28 @@ CommonOptions scene_shown_options(const Scene& scene, const CommonOptions& optio
     return shown;
 }
 
+// The overlay of a scene's frames: its legend names frames 0 … N, and the timed waypoints are
+// lettered A, B, … in file order, a line per object saying when it is at them ("A-D: car at frames
+// 0, 10, 35, 60"). Waypoints past Z are not lettered.
+FramesOverlay scene_overlay(const Scene& scene, const SceneAnimation& animation)
+{
+    FramesOverlay overlay{scene_frames_names(animation.frame_count()), {}, {}};
+    const std::vector<TimedWaypoint> waypoints = timed_waypoints(scene, animation);
+    for (std::size_t k = 0; k < waypoints.size() && k < 26;) {
+        const std::size_t object = waypoints[k].object;
+        const std::size_t first = k;
+        std::string frames;
+        for (; k < waypoints.size() && k < 26 && waypoints[k].object == object; ++k) {
+            overlay.points.push_back({std::string(1, static_cast<char>('A' + k)), waypoints[k].position});
+            frames += (frames.empty() ? "" : ", ") + std::to_string(waypoints[k].frame);
+        }
+        const std::string letters = overlay.points[first].label + (k - first > 1 ? "-" + overlay.points[k - 1].label : "");
+        overlay.notes.push_back(letters + ": " + scene.objects[object].name + " at frame" + (k - first > 1 ? "s " : " ") +
+                                frames);
+    }
+    return overlay;
+}
+
 ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& options,
                             const TerminalPlayerRunner& terminal, std::ostream& err)
 {
@@ -225,16 +248,19 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         return ExitStatus::success;
     FrameSequence frames = animation.all_frames();
     const std::size_t frame_count = frames.frame_count();
+    FramesOverlay overlay = scene_overlay(*scene, animation);
     if (options.png || options.png_raw || options.svg) {
         const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
-        if (Expected<void> done = write_pictures(frames_overlay_screen(frames, animation.structure(), shown.view, caption),
-                                          shown, out); !done)
+        if (Expected<void> done = write_pictures(
+                frames_overlay_screen(frames, animation.structure(), shown.view, caption, overlay), shown, out);
+            !done)
             return report_bad_input(done.error(), err);
     }
     UnloggedSteps log;
     AnimationPlayer player(std::move(frames), animation.structure(), {scene_name, scene_name}, shown.view,
                            options.delay_ms, log);
     player.name_frames_by_scene(scene_name);
+    player.letter_points(std::move(overlay.points), std::move(overlay.notes));
     if (options.gif)
         if (Expected<void> done =
                 write_player_gif(player, frame_count, *options.gif, options.delay_ms, read_files_guard(shown), out);

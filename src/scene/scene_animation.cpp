@@ -256,4 +256,21 @@ std::optional<OutOfReach> SceneAnimation::first_out_of_reach(double limit) const
     return std::nullopt;
 }
 
+std::vector<TimedWaypoint> timed_waypoints(const Scene& scene, const SceneAnimation& animation)
+{
+    std::vector<TimedWaypoint> waypoints;
+    for (std::size_t index = 0; index < scene.objects.size(); ++index) {
+        const SceneObject& object = scene.objects[index];
+        if (!object.move)
+            continue;
+        const SceneMove& move = *object.move;
+        for (std::size_t k = 0; k < move.times.size() && k < move.path.size(); ++k) {
+            const int frame = move.times[k];
+            const Vec3& point = move.path[k].position;
+            waypoints.push_back({index, frame, object.parent ? animation.transform(*object.parent, frame)(point) : point});
+        }
+    }
+    return waypoints;
+}
+
 } // namespace apcs

@@ -1,6 +1,7 @@
 #include "apcs/session/animation_player.h"
 
 #include "apcs/formats/path_files.h"
+#include "apcs/session/frames_overlay.h"
 #include "apcs/raster/painter.h"
 #include "apcs/session/overloaded.h"
 #include "apcs/session/screen_layout.h"
@@ -17,16 +18,16 @@ namespace text = session_text;
 
 namespace {
 
-// Frames first … last−1, each drawn by the parts of `structure`, inside the drawing area.
-GraphicsScreen draw_frames(const FrameSequence& frames, const Graphic& structure, const ViewTransform& view,
-                           std::size_t first, std::size_t last)
+// Frame `k` alone, drawn by the parts of `structure`, inside the drawing area.
+GraphicsScreen draw_frame(const FrameSequence& frames, const Graphic& structure, const ViewTransform& view,
+                          std::size_t k)
 {
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     painter.record_into(screen.strokes).rectangle(layout::drawing_area);
     Painter inside(screen.bitmap, layout::inside_boundary);
     inside.record_into(screen.strokes);
-    for (std::size_t k = first; k < last; ++k)
+    if (k < frames.frame_count())
         for (const auto& polyline : structure.polylines(frames.frame(k)))
             draw_world_polyline(inside, polyline, view);
     return screen;
@@ -34,21 +35,13 @@ GraphicsScreen draw_frames(const FrameSequence& frames, const Graphic& structure
 
 } // namespace
 
-GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure, ViewAngles angles,
-                                     const std::string& caption)
-{
-    const ViewTransform view = ViewScene{}.add(frames).fit(angles, layout::view_area);
-    GraphicsScreen screen = draw_frames(frames, structure, view, 0, frames.frame_count());
-    screen.text.push_back({1, layout::message_row, caption});
-    return screen;
-}
-
 AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names,
                                  ViewAngles angles, int delay_ms, SessionLog& log)
     : m_frames(std::move(frames))
     , m_structure(std::move(structure))
     , m_key_names(std::move(key_names))
-    , m_view(ViewScene{}.add(m_frames).fit(angles, layout::view_area))
+    , m_overlay{key_frames_names(m_key_names[0], m_key_names[1], m_frames.frame_count()), {}, {}}
+    , m_view(frames_view(m_frames, angles))
     , m_log(log)
     , m_mode(m_frames.frame_count() == 0 ? Mode(Stopped{}) : Mode(Showing{}))
 {
@@ -132,14 +125,25 @@ void AnimationPlayer::tick()
 GraphicsScreen AnimationPlayer::view() const
 {
     assert(m_frames.frame_count() == 0 || m_frame < m_frames.frame_count());
-    const bool all_frames = std::holds_alternative<Overlaid>(m_mode);
-    const std::size_t first = all_frames ? 0 : m_frame;
-    const std::size_t last = all_frames ? m_frames.frame_count() : std::min(m_frame + 1, m_frames.frame_count());
-    GraphicsScreen screen = draw_frames(m_frames, m_structure, m_view, first, last);
+    if (std::holds_alternative<Overlaid>(m_mode))
+        return frames_overlay_screen(m_frames, m_structure, m_view, message(), m_overlay);
+    GraphicsScreen screen = draw_frame(m_frames, m_structure, m_view, m_frame);
     screen.text.push_back({1, layout::message_row, message()});
     if (std::holds_alternative<Showing>(m_mode))
         screen.text.push_back({1, layout::key_help_row, key_help(KeyContext::animation)});
     return screen;
+}
+
+void AnimationPlayer::name_frames_by_scene(std::string scene_name)
+{
+    m_scene_name = std::move(scene_name);
+    m_overlay.names = scene_frames_names(m_frames.frame_count());
+}
+
+void AnimationPlayer::letter_points(std::vector<LetteredPoint> points, std::vector<std::string> notes)
+{
+    m_overlay.points = std::move(points);
+    m_overlay.notes = std::move(notes);
 }
 
 std::string AnimationPlayer::message() const

@@ -1,7 +1,11 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/geometry/hercules.h"
 #include "apcs/raster/svg_encoder.h"
+#include "apcs/scene/scene_animation.h"
+#include "apcs/scene/scene_file.h"
+#include "apcs/session/frames_overlay.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/screen_layout.h"
 
@@ -61,6 +65,21 @@ std::string dashes(const XmlElement& stroke)
 std::filesystem::path example(const std::string& name)
 {
     return std::filesystem::path(APCS_SOURCE_DIR) / "data" / "n-to-l" / name;
+}
+
+// data/NAME/NAME.scn of the source tree.
+std::filesystem::path shipped_scene(const std::string& name)
+{
+    return std::filesystem::path(APCS_SOURCE_DIR) / "data" / name / (name + ".scn");
+}
+
+// The overlay of all frames apcs play SCENE --svg - writes.
+std::string played_svg(const std::filesystem::path& scene)
+{
+    const auto result = run_apcs({"play", scene.string(), "--svg", "-"});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.err.empty());
+    return result.out;
 }
 
 } // namespace
@@ -136,14 +155,79 @@ TEST_CASE("apcs draw lifts the pen between parts and counts the graphics between
     CHECK(elements_named(elements, "text").at(0).text == "solid: g0.dat  dashed: g4.dat  dotted: 3 between");
 }
 
-TEST_CASE("apcs fit --svg draws all M+2 frames overlaid", "[cli][svg]")
+TEST_CASE("apcs fit --svg draws all M+2 frames overlaid: KEY1 solid, the in-betweens dotted, KEY2 dashed",
+          "[cli][svg][overlay]")
 {
     const TempFolder folder;
     const auto result = run_apcs({"fit", example("key1.dat").string(), example("key2.dat").string(),
                                   example("way1.dat").string(), example("way4.dat").string(), "--inbetweens", "5",
                                   "--svg", (folder / "fit.svg").string()});
     REQUIRE(result.status == 0);
-    CHECK(inner_strokes(svg_elements(file_text(folder / "fit.svg"))).size() == 7);
+    const auto elements = svg_elements(file_text(folder / "fit.svg"));
+    const auto lines = inner_strokes(elements);
+    REQUIRE(lines.size() == 7);
+    for (std::size_t k = 0; k < lines.size(); ++k)
+        CHECK(dashes(lines[k]) == (k == 0 ? "solid" : k == 6 ? "dashed" : "dotted"));
+    const auto texts = elements_named(elements, "text");
+    REQUIRE(texts.size() == 2);
+    CHECK(texts[0].text == "7 frames overlaid: key1.dat to key2.dat");
+    CHECK(texts[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 5 in-betweens");
+}
+
+TEST_CASE("apcs play --svg draws frame 0 solid, the last dashed, the others dotted, and names them", "[cli][svg][overlay]")
+{
+    const auto elements = svg_elements(played_svg(shipped_scene("robot")));
+    const auto lines = inner_strokes(elements);
+    REQUIRE(lines.size() > 13);
+    CHECK(dashes(lines.front()) == "solid");
+    CHECK(dashes(lines.back()) == "dashed");
+    const auto dotted = std::count_if(lines.begin(), lines.end(), [](const XmlElement& line) { return dashes(line) == "dotted"; });
+    CHECK(static_cast<std::size_t>(dotted) * 13 >= lines.size() * 10); // frames 1-11 of 0-12
+    const auto texts = elements_named(elements, "text");
+    REQUIRE(texts.size() == 2);
+    CHECK(texts[1].text == "solid: frame 0  dashed: frame 12  dotted: frames 1-11");
+}
+
+TEST_CASE("apcs play letters the car's waypoints A–D: an x on each, its letter in the cell under it", "[cli][svg][overlay]")
+{
+    const std::filesystem::path car = shipped_scene("car");
+    const std::string svg = played_svg(car);
+    const auto elements = svg_elements(svg);
+
+    const Expected<Scene> scene = read_scene_file(car, StaffValues{});
+    REQUIRE(scene);
+    PathSettings settings;
+    settings.spacing = Spacing::exact;
+    const SceneAnimation animation(*scene, settings);
+    const std::vector<TimedWaypoint> waypoints = timed_waypoints(*scene, animation);
+    // The road's control points (road.dat), at the frames TIMES gives them.
+    REQUIRE(waypoints.size() == 4);
+    const std::vector<Vec3> road{{0, 0, 0}, {0, 10, 3}, {0, 25, 0}, {0, 40, 2}};
+    const std::vector<int> times{0, 10, 35, 60};
+    const ViewTransform view = frames_view(animation.all_frames(), *scene->view);
+    const auto texts = elements_named(elements, "text");
+    for (std::size_t k = 0; k < waypoints.size(); ++k) {
+        CHECK(waypoints[k].frame == times[k]);
+        CHECK(distance(waypoints[k].position, road[k]) < 1e-12);
+        const PixelPoint at = view.to_device(waypoints[k].position).rounded();
+        const std::string letter(1, static_cast<char>('A' + k));
+        INFO(letter << " at " << at.x << "," << at.y);
+        // The x: its first stroke runs from 2 pixels up and left of the point.
+        CHECK(svg.find("class=\"mark\" d=\"M" + svg_point_text({at.x - 2, at.y - 2}) + " L") != std::string::npos);
+        const auto text = std::find_if(texts.begin(), texts.end(), [&](const XmlElement& t) { return t.text == letter; });
+        REQUIRE(text != texts.end());
+        const double x = std::stod(text->attributes.at("x"));
+        const double baseline = std::stod(text->attributes.at("y")) / svg_row_height;
+        CHECK(x <= at.x);
+        CHECK(x > at.x - hercules::cell_width);
+        CHECK(baseline > at.y + 2);
+        CHECK(baseline < at.y + 2 + 2 * hercules::cell_height);
+    }
+    CHECK(std::any_of(texts.begin(), texts.end(),
+                      [](const XmlElement& t) { return t.text == "A-D: car at frames 0, 10, 35, 60"; }));
+    CHECK(std::any_of(texts.begin(), texts.end(), [](const XmlElement& t) {
+        return t.text == "solid: frame 0  dashed: frame 60  dotted: frames 1-59";
+    }));
 }
 
 TEST_CASE("apcs draw: bad input is exit 1 naming the file and line", "[cli][draw]")

@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Share of a PNG's lit pixels that a rendering of its SVG lights within one pixel.
 
-Usage: svg_coverage.py PICTURE.pgm RENDERED.pgm   (plain PGM, P2, the same size)
-Prints "LIT COVERED SHARE". A pixel is lit when brighter than half of white: the SVG's lines are
+Usage: svg_coverage.py PICTURE.pgm RENDERED.pgm [FIRST_ROW END_ROW]   (plain PGM, P2, the same size)
+Prints "LIT COVERED SHARE", counting the PICTURE's lit pixels in rows FIRST_ROW <= y < END_ROW
+(all rows when not given). A pixel is lit when brighter than half of white: the SVG's lines are
 anti-aliased, the PNG's are black and white.
 """
 import sys
@@ -28,7 +29,9 @@ def main():
         return any(0 <= x + dx < width and 0 <= y + dy < height and rendered[(y + dy) * width + x + dx]
                    for dy in (-1, 0, 1) for dx in (-1, 0, 1))
 
-    lit = [(x, y) for y in range(height) for x in range(width) if picture[y * width + x]]
+    first_row, end_row = (int(sys.argv[3]), int(sys.argv[4])) if len(sys.argv) > 4 else (0, height)
+    lit = [(x, y) for y in range(max(first_row, 0), min(end_row, height)) for x in range(width)
+           if picture[y * width + x]]
     covered = sum(1 for x, y in lit if near_rendered(x, y))
     print(len(lit), covered, f'{covered / max(len(lit), 1):.4f}')
 

@@ -20,11 +20,8 @@ struct NamedGraphic {
     Graphic graphic;
 };
 
-// The line style of graphic `index` of `count` overlaid: the first solid, the last dashed, the
-// ones between dotted, so that start and end can be told apart.
-LineStyle overlay_style(std::size_t index, std::size_t count);
-
-// "solid: key1.dat  dashed: key2.dat  dotted: 12 between" (one name where one graphic is between).
+// "solid: key1.dat  dashed: key2.dat  dotted: 12 between" (one name where one graphic is between):
+// the strokes of overlay_style (session/frames_overlay.h).
 std::string overlay_legend(std::span<const NamedGraphic> graphics);
 
 // The graphics overlaid in one view fitted to them all, each part a polyline (the pen lifted

@@ -88,6 +88,19 @@ private:
     Graphic m_structure;
 };
 
+// A control point of an object's MOVE … TIMES path, where the object's MOVE has brought the point
+// that stood at the first control point by the frame TIMES names (the slides' car at A at frame 0,
+// B at 10, …). World units: its parents' transforms at that frame applied; joint corrections not.
+struct TimedWaypoint {
+    std::size_t object = 0;
+    int frame = 0;
+    Vec3 position;
+};
+
+// Every MOVE … TIMES control point of the scene `animation` plays, by object in file order, then
+// by frame; none for a MOVE without TIMES.
+std::vector<TimedWaypoint> timed_waypoints(const Scene& scene, const SceneAnimation& animation);
+
 // The MOVE offsets P(s(f)) − P_0 for frames move.frames.from … move.frames.to (SPEC §8.1): by
 // TIMES through TimedDistance on the true arc length, else each span's share of the frames in
 // proportion to its length and its distances by its acceleration law (evaluate_path).

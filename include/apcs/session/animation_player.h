@@ -5,6 +5,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
+#include "apcs/session/frames_overlay.h"
 #include "apcs/session/key_map.h"
 #include "apcs/session/session_log.h"
 #include "apcs/session/session_phase.h"
@@ -14,13 +15,15 @@
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace apcs {
 
 // Graphics mode after surface fitting (thesis Showing_Animation, SPEC §3 step 6): KEY1, each
 // in-between and KEY2, one frame per tick, each erased before the next; Esc stops, Space pauses,
-// R replays. After the last frame a key shows all frames overlaid (figs. 5.1–5.2), and another
-// ends the session. No clock: the shell calls tick() every delay while playing().
+// R replays. After the last frame a key shows all frames overlaid (figs. 5.1–5.2) as
+// frames_overlay_screen draws them (the first solid, the last dashed, the others dotted, a
+// legend), and another ends the session. No clock: the shell calls tick() every delay while playing().
 class AnimationPlayer {
 public:
     enum class Outcome { showing, finished };
@@ -41,8 +44,12 @@ public:
     // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
     // inb003.dat", "KEY2: key2.dat"; for a scene (name_frames_by_scene) "Frame 3 of 60: car.scn".
     std::string frame_label() const;
-    // The frames are a scene's 0 … N (apcs play), named by their number and the scene's file.
-    void name_frames_by_scene(std::string scene_name) { m_scene_name = std::move(scene_name); }
+    // The frames are a scene's 0 … N (apcs play), named by their number and the scene's file, on
+    // the screen and in the overlay's legend.
+    void name_frames_by_scene(std::string scene_name);
+    // Points the overlay of all frames marks and letters (a scene's timed waypoints), and the lines
+    // under its legend that say what they are.
+    void letter_points(std::vector<LetteredPoint> points, std::vector<std::string> notes);
     // A line shown on the message line instead of the frame's name until the next key (P's
     // "wrote apcs001.png" in apcs play).
     void show_notice(std::string notice) { m_notice = std::move(notice); }
@@ -53,6 +60,7 @@ private:
     std::array<std::string, 2> m_key_names;
     std::string m_scene_name;
     std::string m_notice;
+    FramesOverlay m_overlay; // the legend's names, and lettered points
     ViewTransform m_view;
     SessionLog& m_log;
     // The frames one at a time (Esc stops, Space pauses, R replays), the last frame shown until a
@@ -70,10 +78,5 @@ private:
     Mode m_mode;
     std::size_t m_frame = 0; // the frame on the screen while showing or stopped
 };
-
-// All `frames` overlaid as the player shows them after the last frame (figs. 5.1–5.2), fitted to
-// the view from `angles`, with `caption` on the message line: the picture of `apcs fit --png`.
-GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure, ViewAngles angles,
-                                     const std::string& caption);
 
 } // namespace apcs
