@@ -144,12 +144,19 @@ Expected<std::string> read_text_file(const fs::path& name, std::uintmax_t most_b
 
 namespace {
 
-// The limits of a .dat file checked on a stream as it is read, since a stream has no size to
+// The limits of a text file checked on a stream as it is read, since a stream has no size to
 // refuse up front: a line over max_text_line_bytes is refused once that many bytes of it have come
-// (`yes 1 | tr -d '\n'` never ends one), and more data lines than max_dat_points (and a count line)
-// at the first past them, so that standard input costs no more memory than the largest file.
-class DatStreamLimits {
+// (`yes 1 | tr -d '\n'` never ends one), and for a .dat file more data lines than max_dat_points
+// (and a count line) at the first past them, so that a stream costs no more memory than the
+// largest file. Scenes and key scripts read from a stream have the line limit only.
+class StreamLimits {
 public:
+    StreamLimits(std::string shown, bool dat_points)
+        : m_shown(std::move(shown))
+        , m_dat_points(dat_points)
+    {
+    }
+
     Expected<void> operator()(std::string_view chunk)
     {
         for (const char byte : chunk) {
@@ -162,12 +169,12 @@ public:
             else if (!m_in_comment && byte != ' ' && byte != '\t')
                 m_has_data = true;
             if (++m_line_bytes > max_text_line_bytes)
-                return Diagnostic{"standard input", m_line + 1,
+                return Diagnostic{m_shown, m_line + 1,
                                   "line is more than " + std::to_string(max_text_line_bytes) +
                                       " bytes long; expected at most " + std::to_string(max_text_line_bytes)};
         }
-        if (m_data_lines > max_dat_points + 1)
-            return Diagnostic{"standard input", m_line,
+        if (m_dat_points && m_data_lines > max_dat_points + 1)
+            return Diagnostic{m_shown, m_line,
                               "more than " + std::to_string(max_dat_points) + " points; expected at most that many"};
         return ok;
     }
@@ -182,6 +189,8 @@ private:
         m_has_data = false;
     }
 
+    std::string m_shown;
+    bool m_dat_points;
     int m_line = 0; // lines ended so far (at most 2^30, the bytes a stream may have)
     std::size_t m_line_bytes = 0;
     std::size_t m_data_lines = 0;
@@ -193,11 +202,11 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
                                        const TextPieceSink& check = {});
 
 // A .dat file's text and the name its messages use; "-" is standard input, read like a keystroke
-// script (a pipe, once, to its end) within a file's limits (DatStreamLimits).
+// script (a pipe, once, to its end) within a file's limits (StreamLimits).
 Expected<std::pair<std::string, std::string>> dat_text(const fs::path& name)
 {
     Expected<std::string> text = name == "-" ? read_pipe_to_end(STDIN_FILENO, "standard input", max_input_bytes,
-                                                                DatStreamLimits{})
+                                                                StreamLimits("standard input", true))
                                              : read_text_file(name);
     if (!text)
         return text.error();
@@ -272,14 +281,14 @@ Expected<std::string> read_pipe_to_end(int descriptor, const std::string& shown,
 Expected<std::string> read_script_text(const fs::path& name, std::uintmax_t most_bytes)
 {
     if (name == "-")
-        return read_pipe_to_end(STDIN_FILENO, "standard input", most_bytes);
+        return read_pipe_to_end(STDIN_FILENO, "standard input", most_bytes, StreamLimits("standard input", false));
     struct stat status {};
     if (::stat(name.c_str(), &status) != 0 || !S_ISFIFO(status.st_mode))
         return read_text_file(name, most_bytes);
     FileDescriptor pipe(::open(name.c_str(), O_RDONLY | O_CLOEXEC));
     if (pipe.get() < 0)
         return Diagnostic{name.string(), 0, "cannot open: " + system_reason(errno)};
-    return read_pipe_to_end(pipe.get(), name.string(), most_bytes);
+    return read_pipe_to_end(pipe.get(), name.string(), most_bytes, StreamLimits(name.string(), false));
 }
 
 } // namespace apcs

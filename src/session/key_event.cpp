@@ -1,5 +1,6 @@
 #include "apcs/session/key_event.h"
 
+#include "apcs/formats/number_text.h"
 #include "apcs/formats/text_fields.h"
 #include "apcs/formats/text_lines.h"
 #include "apcs/raster/cell_grid.h"
@@ -75,7 +76,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
             if (const std::optional<KeyEvent> event = key_of_token(token))
                 events.push_back(*event);
             else
-                problem = Diagnostic{file_name, line_number, expected_token() + "; found '" + std::string(token) + "'"};
+                problem = Diagnostic{file_name, line_number, expected_token() + "; found " + quote_field(token)};
         });
         if (problem)
             return *problem;

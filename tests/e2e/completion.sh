@@ -47,9 +47,9 @@ expect "--gif" apcs inbetween --g
 expect "" apcs path --g
 
 # Every command's options, as its --help lists them.
-for command in "" path inbetween fit draw figures; do
+for command in "" path inbetween fit draw play figures; do
   # shellcheck disable=SC2086
-  listed=$("$apcs" $command --help | grep -o -- '--[a-z][a-z-]*' | LC_ALL=C sort -u | tr '\n' ' ' | sed 's/ $//')
+  listed=$("$apcs" $command --help | sed '/^Examples/,$d' | grep -o -- '--[a-z][a-z-]*' | LC_ALL=C sort -u | tr '\n' ' ' | sed 's/ $//')
   [ -n "$listed" ] || fail "apcs $command --help lists no option"
   # shellcheck disable=SC2086
   expect "$listed" apcs $command --

@@ -91,3 +91,13 @@ TEST_CASE("standard input has a file's point limit as it is read: 10^6 points an
     CHECK(read.error().message == "more than 1000000 points; expected at most that many");
     CHECK_FALSE(input.writer_finished());
 }
+
+TEST_CASE("a scene or key script from standard input has the line limit too (play -, --keys -)", "[formats][limits]")
+{
+    // Issue 33: `play -` read a 300 MB line whole (590 MB of memory) before refusing it.
+    EndlessStandardInput input("1");
+    const Expected<std::string> read = read_script_text("-");
+    REQUIRE_FALSE(read);
+    CHECK(read.error().to_string() == "standard input:1: line is more than 4096 bytes long; expected at most 4096");
+    CHECK_FALSE(input.writer_finished());
+}

@@ -44,7 +44,8 @@ Expected<Graphic> read_key_frame(const std::filesystem::path& name);
 
 // A keystroke script (--keys): read as read_text_file reads, except that a pipe or a FIFO is read
 // too, once to its end, since scripts come from other programs (bash's <(...) is /dev/fd/N); one
-// that nobody writes waits for a writer, as `cat` would. "-" is standard input.
+// that nobody writes waits for a writer, as `cat` would. "-" is standard input. A stream is held
+// to the line limit as it is read: a line of more than max_text_line_bytes stops the reading.
 Expected<std::string> read_script_text(const std::filesystem::path& name, std::uintmax_t most_bytes = max_input_bytes);
 
 enum class WriteOutcome { created, replaced, unchanged };
