@@ -149,8 +149,10 @@ Affine SceneAnimation::own_transform(std::size_t index, int f) const
     }
     if (object.scale) {
         const SceneScale& scale = *object.scale;
-        own = own * Affine::scale_about(std::pow(scale.factor, elapsed(scale.frames, f)),
-                                        scale.about.value_or(m_centres[index]));
+        const double power = elapsed(scale.frames, f);
+        const Vec3 factors{std::pow(scale.factors.x, power), std::pow(scale.factors.y, power),
+                           std::pow(scale.factors.z, power)};
+        own = own * Affine::scale_about(factors, scale.about.value_or(m_centres[index]));
     }
     return own;
 }

@@ -420,22 +420,36 @@ Expected<void> SceneParser::parse_scale(const Fields& fields)
     if (auto outcome = once(object().scale.has_value(), "SCALE"); !outcome)
         return outcome.error();
     if (fields.size() < 2)
-        return error("expected 'SCALE FACTOR [ABOUT X Y Z] [FROM F TO G]'");
+        return error("expected 'SCALE FACTOR [FY FZ] [ABOUT X Y Z] [FROM F TO G]'");
     SceneScale scale;
     scale.frames = {0, m_scene.last_frame};
-    const Expected<double> factor = number(fields[1], "FACTOR");
-    if (!factor)
-        return factor.error();
-    scale.factor = *factor;
-    if (scale.factor <= 0.0)
-        return error("SCALE FACTOR " + quote_field(fields[1]) + " is not above 0; expected a factor > 0");
-    Clauses clauses(fields, 2);
+    // One factor for all axes, or three (x, y, z): a keyword or the end follows the first or third.
+    const std::size_t count = fields.size() >= 4 && parse_number(fields[2]) ? 3 : 1;
+    if (fields.size() >= 2 + count && parse_number(fields[1 + count]))
+        return error("expected 'SCALE FACTOR' or 'SCALE FX FY FZ', one factor or three; found " +
+                     quote_field(fields[1 + count]) + " after " + (count == 1 ? "one" : "three"));
+    std::array<double, 3> factors{};
+    for (std::size_t axis = 0; axis < count; ++axis) {
+        const Expected<double> factor = number(fields[1 + axis], "FACTOR");
+        if (!factor)
+            return factor.error();
+        if (*factor <= 0.0)
+            return error("SCALE FACTOR " + quote_field(fields[1 + axis]) + " is not above 0; expected a factor > 0");
+        factors[axis] = *factor;
+    }
+    if (count == 1)
+        factors[1] = factors[2] = factors[0];
+    scale.factors = {factors[0], factors[1], factors[2]};
+    Clauses clauses(fields, 1 + count);
     if (auto outcome = turn_clauses(clauses, "SCALE", scale.about, scale.frames, nullptr); !outcome)
         return outcome.error();
-    const double growth = std::abs(std::log(scale.factor)) * (scale.frames.to - scale.frames.from);
-    if (growth > std::log(most_scale_growth))
-        return error("SCALE " + quote_field(fields[1]) + " over " + std::to_string(scale.frames.to - scale.frames.from) +
-                     " frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)");
+    for (std::size_t axis = 0; axis < count; ++axis) {
+        const double growth = std::abs(std::log(factors[axis])) * (scale.frames.to - scale.frames.from);
+        if (growth > std::log(most_scale_growth))
+            return error("SCALE " + quote_field(fields[1 + axis]) + " over " +
+                         std::to_string(scale.frames.to - scale.frames.from) +
+                         " frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)");
+    }
     object().scale = scale;
     return ok;
 }

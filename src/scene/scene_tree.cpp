@@ -24,8 +24,12 @@ std::string node_line(const Scene& scene, std::size_t index, std::size_t parts)
         line += std::string("  MOVE") + (object.move->times.empty() ? "" : " TIMES") + (object.move->loop ? " LOOP" : "");
     if (object.rotate)
         line += "  ROTATE " + shortest_number(object.rotate->degrees_per_frame);
-    if (object.scale)
-        line += "  SCALE " + shortest_number(object.scale->factor);
+    if (object.scale) {
+        const Vec3& factors = object.scale->factors;
+        line += "  SCALE " + shortest_number(factors.x);
+        if (factors.y != factors.x || factors.z != factors.x)
+            line += " " + shortest_number(factors.y) + " " + shortest_number(factors.z);
+    }
     for (const SceneJoint& joint : object.joints)
         line += "  JOINT " + joint.name;
     return line;

@@ -321,3 +321,22 @@ TEST_CASE("a KEYS object is fitted by the construction asked for: the thesis' Fe
     }
     REQUIRE(apart > 0.01);
 }
+
+TEST_CASE("SCALE FX FY FZ scales each axis of the scene by its own factor per frame (Net_Anim's ExtendX/ExtendY)",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["box.dat"] = "1 1 1\n3 3 3\n"; // centre (2, 2, 2)
+    const Scene scene = scene_from("FRAMES 2\nOBJECT box\nSHAPE box.dat\nSCALE 1 2 0.5 ABOUT 0 0 0 FROM 0 TO 2\n", files);
+    REQUIRE(scene.objects[0].scale->factors == Vec3{1, 2, 0.5});
+    const SceneAnimation animation(scene, exact_settings());
+    // Frame f: x·1^f, y·2^f, z·0.5^f about the origin.
+    for (int f = 0; f <= 2; ++f) {
+        CAPTURE(f);
+        const std::vector<Vec3> points = animation.frame(f);
+        const double y = std::pow(2.0, f);
+        const double z = std::pow(0.5, f);
+        REQUIRE(near(points[0], Vec3{1, y, z}));
+        REQUIRE(near(points[1], Vec3{3, 3 * y, 3 * z}));
+    }
+}

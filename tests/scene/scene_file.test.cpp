@@ -50,7 +50,7 @@ TEST_CASE("a scene file gives its objects, parents, drawings and behaviours", "[
     REQUIRE(arm.rotate->about == Vec3{1, 2, 3});
     REQUIRE(arm.rotate->frames.from == 0);
     REQUIRE(arm.rotate->frames.to == 4);
-    REQUIRE(arm.scale->factor == 2.0);
+    REQUIRE(arm.scale->factors == Vec3{2.0, 2.0, 2.0});
     REQUIRE(arm.scale->frames.to == 3);
 }
 
@@ -125,6 +125,12 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "ROTATE 5 FROM 11\n", "t.scn:4: expected a frame from 0 to 10 after FROM, found '11'"},
         {head + "ROTATE 5 AXIS w\n", "t.scn:4: unknown AXIS 'w'; expected x, y or z"},
         {head + "SCALE 0\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},
+        {head + "SCALE 1 0 1\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},
+        {head + "SCALE 1 1 1e9\n",
+         "t.scn:4: SCALE '1e9' over 10 frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)"},
+        {head + "SCALE 1 2\n", "t.scn:4: expected 'SCALE FACTOR' or 'SCALE FX FY FZ', one factor or three; found '2' after one"},
+        {head + "SCALE 1 2 3 4\n",
+         "t.scn:4: expected 'SCALE FACTOR' or 'SCALE FX FY FZ', one factor or three; found '4' after three"},
         {head + "SCALE -2\n", "t.scn:4: SCALE FACTOR '-2' is not above 0; expected a factor > 0"},
         {head + "SCALE 1e9\n",
          "t.scn:4: SCALE '1e9' over 10 frames leaves 1e-6 ... 1e6; expected a factor nearer 1 or fewer frames (FROM/TO)"},

@@ -44,10 +44,17 @@ struct Affine {
     // Uniform scale by `factor` about `centre`.
     static constexpr Affine scale_about(double factor, const Vec3& centre)
     {
+        return scale_about(Vec3{factor, factor, factor}, centre);
+    }
+
+    // x, y and z each by its own factor, `centre` staying where it is.
+    static constexpr Affine scale_about(const Vec3& factors, const Vec3& centre)
+    {
         Affine a;
-        for (std::size_t i = 0; i < 3; ++i)
-            a.m[i][i] = factor;
-        a.t = centre - centre * factor;
+        a.m[0][0] = factors.x;
+        a.m[1][1] = factors.y;
+        a.m[2][2] = factors.z;
+        a.t = centre - Vec3{centre.x * factors.x, centre.y * factors.y, centre.z * factors.z};
         return a;
     }
 

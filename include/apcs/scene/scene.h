@@ -37,9 +37,10 @@ struct SceneRotate {
     FrameSpan frames;
 };
 
-// SCALE: factor^(f − from) about `about` (default: the object's centre).
+// SCALE: factor^(f − from) per axis of the scene about `about` (default: the object's centre);
+// one FACTOR scales all three axes (Net_Anim's ExtendX/ExtendY are the y and z factors).
 struct SceneScale {
-    double factor = 1.0;
+    Vec3 factors{1.0, 1.0, 1.0};
     std::optional<Vec3> about;
     FrameSpan frames;
 };
