@@ -88,11 +88,18 @@ Expected<GraphicsScreen> draw_surfaces_example(const std::filesystem::path& data
     return draw_surfaces_figure("Example 1  N becomes L by both surfaces, THETA 0 PHI 90", *source, n_to_l.view);
 }
 
-// "neck: torso point 7 = head point 1" (points numbered from 1, as in the .scn file).
+// "point 7", or "points 3-5" for a contact region (numbered from 1, as in the .scn file).
+std::string joint_points_text(std::size_t first, std::size_t last)
+{
+    return first == last ? "point " + std::to_string(first + 1)
+                         : "points " + std::to_string(first + 1) + "-" + std::to_string(last + 1);
+}
+
+// "neck: torso point 7 = head point 1".
 std::string joint_legend(const Scene& scene, const std::string& name, const JointEnds& ends)
 {
-    return name + ": " + scene.objects[ends.parent].name + " point " + std::to_string(ends.parent_point + 1) + " = " +
-           scene.objects[ends.part].name + " point " + std::to_string(ends.part_point + 1);
+    return name + ": " + scene.objects[ends.parent].name + " " + joint_points_text(ends.parent_point, ends.parent_last) +
+           " = " + scene.objects[ends.part].name + " " + joint_points_text(ends.part_point, ends.part_last);
 }
 
 // Fig. 3.3.3: the robot of data/robot standing at frame 0, its neck joint A and wrist joint B marked.
@@ -111,7 +118,9 @@ Expected<GraphicsScreen> draw_robot_figure(const std::filesystem::path& data_fol
         const std::optional<JointEnds> ends = find_joint(*scene, joint);
         if (!ends)
             return Diagnostic{file.string(), 0, std::string("has no joint ") + joint + "; fig. 3.3.3 marks the neck and a wrist"};
-        const Vec3 position = points[animation.object_points()[ends->parent].first + ends->parent_point];
+        const ObjectPoints parent = animation.object_points()[ends->parent];
+        const Vec3 position = joint_place(std::span<const Vec3>(points).subspan(parent.first, parent.count),
+                                          ends->parent_point, ends->parent_last);
         marks.push_back({label, position, joint_legend(*scene, joint, *ends)});
     }
     return draw_marked_frame_figure("Fig. 3.3.3  The robot: key points A (neck) and B (wrist)", points,

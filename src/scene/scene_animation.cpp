@@ -111,7 +111,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
         for (const SceneJoint& joint : object.joints)
             for (const SceneJoint& partner : scene.objects[*object.parent].joints)
                 if (partner.name == joint.name)
-                    m_joints[i].push_back({joint.point, partner.point,
+                    m_joints[i].push_back({joint.point, joint.last_point, partner.point, partner.last_point,
                                            joint.tolerance.value_or(partner.tolerance.value_or(default_tolerance))});
     }
 }
@@ -186,8 +186,9 @@ void SceneAnimation::frame(int f, std::span<Vec3> points) const
         // A joint the transforms do not keep moves the part (and, through `correction`, its
         // descendants) onto its parent's key point.
         for (const JointLink& joint : m_joints[i]) {
-            const Vec3 target = points[m_object_points[*object.parent].first + joint.parent_point];
-            const Vec3 separation = target - own[joint.point];
+            const ObjectPoints parent = m_object_points[*object.parent];
+            const Vec3 target = joint_place(points.subspan(parent.first, parent.count), joint.parent_point, joint.parent_last);
+            const Vec3 separation = target - joint_place(own, joint.point, joint.last);
             if (length(separation) <= joint.tolerance)
                 continue;
             correction[i] += separation;

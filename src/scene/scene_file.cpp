@@ -30,15 +30,19 @@ Fields split(std::string_view content)
     return fields;
 }
 
-// Point `index` of a drawing, its parts' points counted in order (the index is in range).
-Vec3 point_of(const Graphic& drawing, std::size_t index)
+// Where a joint is in a drawing: its point, or the centroid of its points (in range), the parts'
+// points counted in order.
+Vec3 joint_place_in(const Graphic& drawing, const SceneJoint& joint)
 {
-    for (const GraphicPart& part : drawing.parts) {
-        if (index < part.points.size())
-            return part.points[index];
-        index -= part.points.size();
-    }
-    return {};
+    return joint_place(drawing.all_points(), joint.point, joint.last_point);
+}
+
+// "point 7", or "points 3-5" for a contact region (numbered from 1, as in the file).
+std::string joint_points_name(const SceneJoint& joint)
+{
+    return joint.point == joint.last_point
+               ? "point " + std::to_string(joint.point + 1)
+               : "points " + std::to_string(joint.point + 1) + "-" + std::to_string(joint.last_point + 1);
 }
 
 // A path file, kept until the object's staff values are known.
@@ -457,14 +461,23 @@ Expected<void> SceneParser::parse_scale(const Fields& fields)
 Expected<void> SceneParser::parse_joint(const Fields& fields)
 {
     if (fields.size() != 3 && fields.size() != 5)
-        return error("expected 'JOINT NAME INDEX [TOLERANCE D]'");
+        return error("expected 'JOINT NAME INDEX[-INDEX2] [TOLERANCE D]'");
     SceneJoint joint;
     joint.name = std::string(fields[1]);
     joint.line = m_line;
-    const std::optional<std::size_t> index = parse_count_value(fields[2]);
-    if (!index || *index == 0)
-        return error("expected the joint's point INDEX, a whole number from 1, found " + quote_field(fields[2]));
+    // INDEX, or INDEX-INDEX2: the centroid of a contact region of points.
+    const std::string_view range = fields[2];
+    const std::size_t dash = range.find('-', 1);
+    const std::optional<std::size_t> index = parse_count_value(range.substr(0, dash));
+    const std::optional<std::size_t> last =
+        dash == std::string_view::npos ? index : parse_count_value(range.substr(dash + 1));
+    if (!index || *index == 0 || !last || *last == 0)
+        return error("expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1, found " +
+                     quote_field(range));
+    if (*last < *index)
+        return error("joint points " + quote_field(range) + " run backwards; expected INDEX-INDEX2 with INDEX <= INDEX2");
     joint.point = *index - 1;
+    joint.last_point = *last - 1;
     if (fields.size() == 5) {
         if (!equals_ignoring_case(fields[3], "TOLERANCE"))
             return error("expected TOLERANCE D after the index, found " + quote_field(fields[3]));
@@ -605,8 +618,8 @@ Expected<void> SceneParser::finish_object()
     const Graphic* drawing = current.first_drawing();
     const std::size_t points = drawing == nullptr ? 0 : drawing->point_count();
     for (const SceneJoint& joint : current.joints)
-        if (joint.point >= points)
-            return error("joint " + quote_field(joint.name) + " names point " + std::to_string(joint.point + 1) +
+        if (joint.last_point >= points)
+            return error("joint " + quote_field(joint.name) + " names point " + std::to_string(joint.last_point + 1) +
                              " of object '" + current.name + "', whose drawing has " + std::to_string(points) +
                              " points" + (current.keys ? " (after adding points)" : ""),
                          joint.line);
@@ -646,14 +659,14 @@ Expected<void> SceneParser::finish_joints()
                              " here and " + shortest_number(*first.joint->tolerance) + " on line " +
                              std::to_string(first.joint->line) + "; expected one value (or the same on both lines)",
                          second.joint->line);
-        const Vec3 pa = point_of(*a.first_drawing(), first.joint->point);
-        const Vec3 pb = point_of(*b.first_drawing(), second.joint->point);
+        const Vec3 pa = joint_place_in(*a.first_drawing(), *first.joint);
+        const Vec3 pb = joint_place_in(*b.first_drawing(), *second.joint);
         const double tolerance =
             second.joint->tolerance.value_or(first.joint->tolerance.value_or(default_tolerance));
         if (distance(pa, pb) > tolerance)
-            return error("joint " + quote_field(name) + ": point " + std::to_string(first.joint->point + 1) + " of '" +
+            return error("joint " + quote_field(name) + ": " + joint_points_name(*first.joint) + " of '" +
                              a.name + "' (line " + std::to_string(first.joint->line) + ") " + describe_point(pa) +
-                             " and point " + std::to_string(second.joint->point + 1) + " of '" + b.name + "' " +
+                             " and " + joint_points_name(*second.joint) + " of '" + b.name + "' " +
                              describe_point(pb) + " are " + shortest_number(distance(pa, pb)) +
                              " apart in frame 0; expected at most " + shortest_number(tolerance),
                          second.joint->line);

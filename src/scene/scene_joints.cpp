@@ -13,7 +13,7 @@ std::optional<JointEnds> find_joint(const Scene& scene, std::string_view name)
                 continue;
             for (const SceneJoint& partner : scene.objects[*part.parent].joints)
                 if (partner.name == name)
-                    return JointEnds{i, joint.point, *part.parent, partner.point};
+                    return JointEnds{i, joint.point, joint.last_point, *part.parent, partner.point, partner.last_point};
         }
     }
     return std::nullopt;

@@ -340,3 +340,26 @@ TEST_CASE("SCALE FX FY FZ scales each axis of the scene by its own factor per fr
         REQUIRE(near(points[1], Vec3{3, 3 * y, 3 * z}));
     }
 }
+
+TEST_CASE("JOINT NAME I-J joins at the centroid of a contact region of points", "[scene][joints]")
+{
+    // The body's joint is the middle of its points 2-3, (0, 1, 0), where the arm's point 1 is drawn.
+    // The arm turns about its own centre each frame; the joint brings its point 1 back there.
+    DatFiles files;
+    files.texts["body.dat"] = "0 0 0\n0 0 0\n0 2 0\n0 2 2\n";
+    files.texts["arm.dat"] = "0 1 0\n0 2 0\n";
+    const Scene scene = scene_from("FRAMES 2\nOBJECT body\nSHAPE body.dat\nJOINT hand 2-3\n"
+                                   "OBJECT arm PARENT body\nSHAPE arm.dat\nROTATE 90 AXIS x\nJOINT hand 1\n",
+                                   files);
+    REQUIRE(scene.objects[0].joints[0].point == 1);
+    REQUIRE(scene.objects[0].joints[0].last_point == 2);
+    const SceneAnimation animation(scene, exact_settings());
+    for (int f = 0; f <= 2; ++f) {
+        CAPTURE(f);
+        const std::vector<Vec3> points = animation.frame(f);
+        REQUIRE(near(points[4], Vec3{0, 1, 0}));
+        REQUIRE(std::abs(distance(points[4], points[5]) - 1.0) < tolerance);
+    }
+    // Turned 90° about x, the arm points along ±z at frame 1, not along y.
+    REQUIRE(std::abs(animation.frame(1)[5].y - 1.0) < 1e-9);
+}

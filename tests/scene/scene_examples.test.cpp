@@ -97,8 +97,12 @@ TEST_CASE("the robot example keeps every one of its 13 joints within its toleran
             for (const SceneJoint& joint : object.joints)
                 for (const SceneJoint& partner : scene.objects[*object.parent].joints)
                     if (partner.name == joint.name) {
-                        const Vec3 mine = points[animation.object_points()[i].first + joint.point];
-                        const Vec3 theirs = points[animation.object_points()[*object.parent].first + partner.point];
+                        const ObjectPoints own = animation.object_points()[i];
+                        const ObjectPoints parent = animation.object_points()[*object.parent];
+                        const std::span<const Vec3> all(points);
+                        const Vec3 mine = joint_place(all.subspan(own.first, own.count), joint.point, joint.last_point);
+                        const Vec3 theirs =
+                            joint_place(all.subspan(parent.first, parent.count), partner.point, partner.last_point);
                         CAPTURE(f, object.name, joint.name);
                         REQUIRE(distance(mine, theirs) <= tolerance);
                         ++checked;

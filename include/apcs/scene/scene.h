@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -45,13 +46,24 @@ struct SceneScale {
     FrameSpan frames;
 };
 
-// JOINT: a key point (thesis Ch. 3.3), point `point` (0-based) of the object's drawing.
+// JOINT: a key point (thesis Ch. 3.3): point `point` (0-based) of the object's drawing, or the
+// centroid of points `point` … `last_point` (the thesis' joints are contact regions).
 struct SceneJoint {
     std::string name;
     std::size_t point = 0;
+    std::size_t last_point = 0; // = point for a joint of one point
     std::optional<double> tolerance; // unset: 0.001 × the diagonal of all frame-0 drawings
     int line = 0;
 };
+
+// The joint's place among an object's points: the centroid of points first … last.
+inline Vec3 joint_place(std::span<const Vec3> points, std::size_t first, std::size_t last)
+{
+    Vec3 sum{};
+    for (std::size_t p = first; p <= last; ++p)
+        sum += points[p];
+    return sum * (1.0 / static_cast<double>(last - first + 1));
+}
 
 // KEYS: KEY1 up to frame `frames.from`, the in-betweens fitted along the paths of the first and
 // last graphic point, KEY2 from frame `frames.to`.

@@ -68,8 +68,10 @@ public:
 
 private:
     struct JointLink {
-        std::size_t point;        // in this object's drawing
-        std::size_t parent_point; // in the parent's drawing
+        std::size_t point; // points point … last of this object's drawing
+        std::size_t last;
+        std::size_t parent_point; // points parent_point … parent_last of the parent's drawing
+        std::size_t parent_last;
         double tolerance;
     };
     Vec3 move_offset(std::size_t index, int f) const;

@@ -12,9 +12,11 @@ namespace apcs {
 // parent's, which every frame keeps within the joint's tolerance.
 struct JointEnds {
     std::size_t part = 0; // object indices in Scene::objects
-    std::size_t part_point = 0;
+    std::size_t part_point = 0; // the first of its points; part_last the last (a contact region)
+    std::size_t part_last = 0;
     std::size_t parent = 0;
     std::size_t parent_point = 0;
+    std::size_t parent_last = 0;
 };
 
 // The joint called `name` in a checked scene; none when no part declares it.
