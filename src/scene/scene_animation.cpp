@@ -3,6 +3,7 @@
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/surface_fit.h"
+#include "apcs/scene/move_align.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/timed_distance.h"
@@ -71,6 +72,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     , m_key_frames(scene.objects.size())
     , m_drawings(scene.objects.size())
     , m_move_offsets(scene.objects.size())
+    , m_move_turns(scene.objects.size())
     , m_joints(scene.objects.size())
     , m_object_points(scene.objects.size())
 {
@@ -99,7 +101,11 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
                                              evaluate_path(keys.last_path, spread), construction);
         }
         if (object.move)
+        {
             m_move_offsets[i] = move_offsets(*object.move, settings);
+            if (object.move->align)
+                m_move_turns[i] = align_turns(*object.move, m_move_offsets[i], settings);
+        }
     }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
@@ -116,20 +122,20 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     }
 }
 
-Vec3 SceneAnimation::move_offset(std::size_t index, int f) const
+std::optional<std::size_t> SceneAnimation::move_step(std::size_t index, int f) const
 {
     const std::optional<SceneMove>& move = m_scene.objects[index].move;
     if (!move || f < move->frames.from)
-        return {};
-    const std::vector<Vec3>& offsets = m_move_offsets[index];
+        return std::nullopt;
+    const std::size_t last = m_move_offsets[index].size() - 1;
     const int lap = move->frames.to - move->frames.from;
     if (f >= move->frames.to) {
         if (!move->loop || lap == 0)
-            return offsets.back();
+            return last;
         // Every lap starts again at P_0: frame FROM + k·lap shows the path's start.
-        return offsets[static_cast<std::size_t>((f - move->frames.from) % lap)];
+        return static_cast<std::size_t>((f - move->frames.from) % lap);
     }
-    return offsets[static_cast<std::size_t>(f - move->frames.from)];
+    return static_cast<std::size_t>(f - move->frames.from);
 }
 
 Affine SceneAnimation::transform(std::size_t index, int f) const
@@ -141,7 +147,10 @@ Affine SceneAnimation::transform(std::size_t index, int f) const
 Affine SceneAnimation::own_transform(std::size_t index, int f) const
 {
     const SceneObject& object = m_scene.objects[index];
-    Affine own = Affine::translation(move_offset(index, f));
+    const std::optional<std::size_t> step = move_step(index, f);
+    Affine own = Affine::translation(step ? m_move_offsets[index][*step] : Vec3{});
+    if (step && !m_move_turns[index].empty())
+        own = own * m_move_turns[index][*step];
     if (object.rotate) {
         const SceneRotate& rotate = *object.rotate;
         own = own * Affine::rotation_about(rotate.degrees_per_frame * elapsed(rotate.frames, f), rotate.axis,

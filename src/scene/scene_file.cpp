@@ -117,6 +117,7 @@ private:
     Expected<void> turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
                                 FrameSpan& frames, Axis* axis) const;
     Expected<void> check_span(const FrameSpan& span, std::string_view keyword) const;
+    Expected<void> align_clause(Clauses& clauses, SceneMove& move) const;
     Expected<void> once(bool already, std::string_view what) const;
     SceneObject& object() { return m_scene.objects.back(); }
     Diagnostic error(std::string message, int line = 0) const
@@ -348,7 +349,7 @@ Expected<void> SceneParser::parse_move(const Fields& fields)
     if (auto outcome = once(object().move.has_value(), "MOVE"); !outcome)
         return outcome.error();
     if (fields.size() < 2)
-        return error("expected 'MOVE PATH.dat [TIMES F0 F1 ... | FROM F TO G] [LOOP]'");
+        return error("expected 'MOVE PATH.dat [TIMES F0 F1 ... | FROM F TO G] [LOOP] [ALIGN [AHEAD D]]'");
     Expected<DatFile> file = read_file(fields[1]);
     if (!file)
         return file.error();
@@ -364,6 +365,10 @@ Expected<void> SceneParser::parse_move(const Fields& fields)
             if (clauses.seen("LOOP"))
                 return error("LOOP is given twice; expected it once");
             move.loop = true;
+        } else if (equals_ignoring_case(clause, "ALIGN")) {
+            clauses.take();
+            if (auto outcome = align_clause(clauses, move); !outcome)
+                return outcome.error();
         } else if (equals_ignoring_case(clause, "TIMES")) {
             clauses.take();
             if (clauses.seen("TIMES"))
@@ -397,6 +402,27 @@ Expected<void> SceneParser::parse_move(const Fields& fields)
         return outcome.error();
     object().move = std::move(move);
     m_pending.move_path = std::move(path);
+    return ok;
+}
+
+// ALIGN [AHEAD D], after the ALIGN taken: D a distance above 0.
+Expected<void> SceneParser::align_clause(Clauses& clauses, SceneMove& move) const
+{
+    if (move.align)
+        return error("ALIGN is given twice; expected it once");
+    move.align = true;
+    if (clauses.done() || !equals_ignoring_case(clauses.peek(), "AHEAD"))
+        return ok;
+    clauses.take();
+    if (clauses.done())
+        return error("expected 'ALIGN AHEAD D' with D the distance between the axles");
+    const std::string_view field = clauses.take();
+    const Expected<double> ahead = number(field, "AHEAD");
+    if (!ahead)
+        return ahead.error();
+    if (!(*ahead > 0.0))
+        return error("ALIGN AHEAD " + quote_field(field) + " is not above 0; expected the distance between the axles");
+    move.ahead = *ahead;
     return ok;
 }
 
@@ -613,8 +639,16 @@ Expected<void> SceneParser::finish_object()
             current.keys->last_path = {{keys.key1.last_point(), current.staff}, {keys.key2.last_point(), current.staff}};
         }
     }
-    if (m_pending.move_path)
+    if (m_pending.move_path) {
         current.move->path = control_points_from(m_pending.move_path->file, current.staff);
+        const ControlPoints& path = current.move->path;
+        const bool still = std::all_of(path.begin(), path.end(),
+                                       [&path](const ControlPoint& point) { return point.position == path.front().position; });
+        if (current.move->align && still)
+            return error("ALIGN on " + quote_field(m_pending.move_path->name) +
+                             ", a path of zero length: it has no direction to turn the object by",
+                         m_pending.move_path->line);
+    }
     const Graphic* drawing = current.first_drawing();
     const std::size_t points = drawing == nullptr ? 0 : drawing->point_count();
     for (const SceneJoint& joint : current.joints)

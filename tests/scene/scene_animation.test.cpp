@@ -363,3 +363,98 @@ TEST_CASE("JOINT NAME I-J joins at the centroid of a contact region of points", 
     // Turned 90° about x, the arm points along ±z at frame 1, not along y.
     REQUIRE(std::abs(animation.frame(1)[5].y - 1.0) < 1e-9);
 }
+
+TEST_CASE("MOVE ALIGN turns the object with the path's tangent about the point that rides it", "[scene][align]")
+{
+    // A KB arc from (0, 0, 0) to (0, 5, 5) in the y-z plane: end slopes 1 make its end tangents the
+    // first and last chords, at 22.5° and 67.5° above +y. A stick drawn along +y from the rider at
+    // P_0 turns with the tangent: by 45° at the end, to (0, cos 45°, sin 45°).
+    DatFiles files;
+    files.texts["arc.dat"] = "0 0 0\n0 3.5355339 1.4644661\n0 5 5\n";
+    files.texts["stick.dat"] = "0 0 0\n0 1 0\n";
+    const Scene scene = scene_from("FRAMES 4\nOBJECT s\nSHAPE stick.dat\nMOVE arc.dat ALIGN\n", files);
+    REQUIRE(scene.objects[0].move->align);
+    REQUIRE_FALSE(scene.objects[0].move->ahead);
+    const SceneAnimation animation(scene, exact_settings());
+    REQUIRE(near(animation.frame(0)[1], Vec3{0, 1, 0}));
+    for (int f = 0; f <= 4; ++f) {
+        CAPTURE(f);
+        const std::vector<Vec3> points = animation.frame(f);
+        REQUIRE(std::abs(distance(points[0], points[1]) - 1.0) < 1e-9);
+        REQUIRE(std::abs(points[1].x) < 1e-9);
+    }
+    const std::vector<Vec3> end = animation.frame(4);
+    REQUIRE(near(end[0], Vec3{0, 5, 5}));
+    // The polyline's last segment stands for the end tangent: within 0.01 of it.
+    REQUIRE(distance(end[1] - end[0], Vec3{0, std::sqrt(0.5), std::sqrt(0.5)}) < 0.01);
+}
+
+TEST_CASE("MOVE ALIGN AHEAD D keeps both axles of a two-axle vehicle on the path", "[scene][align]")
+{
+    // A bowl z = (y − 5)² / 10 through 21 control points; the rear axle rides it from (0, 0, 2.5),
+    // the front axle is drawn 2 ahead on it (the first of 2000 samples a segment 2 away or more).
+    // In every frame both axles are on the curve.
+    DatFiles files;
+    std::string bowl;
+    ControlPoints control;
+    for (int k = 0; k <= 20; ++k) {
+        const double y = 0.5 * k;
+        const double z = (y - 5) * (y - 5) / 10;
+        bowl += "0 " + std::to_string(y) + " " + std::to_string(z) + "\n";
+        control.push_back({{0, std::stod(std::to_string(y)), std::stod(std::to_string(z))}, {}});
+    }
+    files.texts["bowl.dat"] = bowl;
+    PathSettings dense = exact_settings();
+    dense.samples_per_segment = 2000;
+    dense.inbetween_count = 0;
+    const std::vector<Vec3> curve = evaluate_path(control, dense).curve.samples();
+    const auto off_curve = [&curve](const Vec3& point) {
+        double nearest = distance(curve.front(), point);
+        for (const Vec3& sample : curve)
+            nearest = std::min(nearest, distance(sample, point));
+        return nearest;
+    };
+    const Vec3 rear = curve.front();
+    std::size_t k = 0;
+    while (distance(curve[k], rear) < 2.0)
+        ++k;
+    const Vec3 front = curve[k];
+    files.texts["car.dat"] = "0 0 2.5\n0 " + std::to_string(front.y) + " " + std::to_string(front.z) + "\n";
+    const Scene scene = scene_from("FRAMES 30\nOBJECT car\nSHAPE car.dat\nMOVE bowl.dat ALIGN AHEAD 2\n", files);
+    REQUIRE(scene.objects[0].move->ahead == 2.0);
+    const SceneAnimation animation(scene, exact_settings());
+    std::size_t checked = 0;
+    for (int f = 0; f <= 30; ++f) {
+        CAPTURE(f);
+        const std::vector<Vec3> points = animation.frame(f);
+        REQUIRE(off_curve(points[0]) < 1e-3);
+        REQUIRE(std::abs(distance(points[0], points[1]) - distance(rear, front)) < 1e-5); // rigid (6 decimals)
+        // Near the end the path has no point 2 ahead: the last direction is kept (SPEC 8.1).
+        if (distance(points[0], curve.back()) < 2.0)
+            continue;
+        REQUIRE(off_curve(points[1]) < 2e-3);
+        ++checked;
+    }
+    REQUIRE(checked > 20);
+}
+
+TEST_CASE("ALIGN on a path of zero length, AHEAD without a distance or below it are refused with the line",
+          "[scene][align]")
+{
+    DatFiles files;
+    files.texts["still.dat"] = "0 1 1\n0 1 1\n";
+    files.texts["stick.dat"] = "0 1 1\n0 2 1\n";
+    const auto refused = [&files](const std::string& text) {
+        const Expected<Scene> scene = parse_scene(text, "t.scn", files.reader(), {});
+        REQUIRE_FALSE(scene);
+        return scene.error().to_string();
+    };
+    const std::string head = "FRAMES 5\nOBJECT s\nSHAPE stick.dat\n";
+    CHECK(refused(head + "MOVE still.dat ALIGN\n") ==
+          "t.scn:4: ALIGN on 'still.dat', a path of zero length: it has no direction to turn the object by");
+    CHECK(refused(head + "MOVE stick.dat ALIGN AHEAD\n") ==
+          "t.scn:4: expected 'ALIGN AHEAD D' with D the distance between the axles");
+    CHECK(refused(head + "MOVE stick.dat ALIGN AHEAD 0\n") ==
+          "t.scn:4: ALIGN AHEAD '0' is not above 0; expected the distance between the axles");
+    CHECK(refused(head + "MOVE stick.dat ALIGN ALIGN\n") == "t.scn:4: ALIGN is given twice; expected it once");
+}

@@ -28,6 +28,10 @@ struct SceneMove {
     std::vector<int> times;
     FrameSpan frames; // TIMES' first and last, or FROM/TO
     bool loop = false;
+    // ALIGN: the object turns with the path's direction (the tangent, or with AHEAD D the chord to
+    // the first later point of the path D away: a two-axle vehicle's axles D apart).
+    bool align = false;
+    std::optional<double> ahead;
 };
 
 // ROTATE: degrees_per_frame × (f − from) about +axis through `about` (default: the object's centre).

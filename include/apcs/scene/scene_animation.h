@@ -74,7 +74,8 @@ private:
         std::size_t parent_last;
         double tolerance;
     };
-    Vec3 move_offset(std::size_t index, int f) const;
+    // Which of the object's MOVE offsets (and ALIGN turns) frame f shows; none before the MOVE.
+    std::optional<std::size_t> move_step(std::size_t index, int f) const;
     // T_f of the object alone: its MOVE, ROTATE and SCALE, without its parents'.
     Affine own_transform(std::size_t index, int f) const;
     std::span<const Vec3> drawing_at(std::size_t index, int f) const;
@@ -84,6 +85,7 @@ private:
     std::vector<FrameSequence> m_key_frames;       // per object: its KEYS frames FROM … TO
     std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points (empty for KEYS)
     std::vector<std::vector<Vec3>> m_move_offsets;  // per object: MOVE offset at FROM … TO
+    std::vector<std::vector<Affine>> m_move_turns;  // per object with ALIGN: its turn at FROM … TO
     std::vector<std::vector<JointLink>> m_joints;   // per object: its joints with its parent
     std::vector<ObjectPoints> m_object_points;
     std::size_t m_points_per_frame = 0;
