@@ -146,12 +146,49 @@ std::optional<unsigned> shifted(unsigned mask, int right, int down)
     return moved;
 }
 
-// The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): the glyph of
-// the font whose pooled mask is nearest.
+// Whether the pooled cell is a corner, a horizontal line ending in a vertical one: a band of at most
+// two full sub-rows, and from it to the top or the bottom edge at least two sub-rows with only the
+// left, or only the right, sub-column lit. The font has no corner: the nearest glyph was `[` at the
+// top left of a frame and `_` or `-` at the other three.
+bool is_corner(unsigned pooled_mask)
+{
+    constexpr unsigned full_row = (1u << ascii_pool_columns) - 1;
+    const auto row_bits = [&](int row) { return (pooled_mask >> (row * ascii_pool_columns)) & full_row; };
+    int band_top = 0;
+    while (band_top < ascii_pool_rows && row_bits(band_top) != full_row)
+        ++band_top;
+    int band_bottom = band_top;
+    while (band_bottom + 1 < ascii_pool_rows && row_bits(band_bottom + 1) == full_row)
+        ++band_bottom;
+    if (band_top == ascii_pool_rows || band_bottom - band_top >= 2)
+        return false;
+    // The rows [from, to) are the vertical line's, in one edge column; the others are empty.
+    const auto is_stem = [&](int from, int to) {
+        if (to - from < 2)
+            return false;
+        for (const unsigned column : {1u, 1u << (ascii_pool_columns - 1)}) {
+            bool stem = true;
+            for (int row = 0; row < ascii_pool_rows && stem; ++row) {
+                const bool in_band = row >= band_top && row <= band_bottom;
+                if (!in_band)
+                    stem = row_bits(row) == (row >= from && row < to ? column : 0u);
+            }
+            if (stem)
+                return true;
+        }
+        return false;
+    };
+    return is_stem(0, band_top) || is_stem(band_bottom + 1, ascii_pool_rows);
+}
+
+// The ASCII choice for one cell, from its 3x7 pooled sub-blocks (bit 3·row + column): `+` for a
+// corner, else the glyph of the font whose pooled mask is nearest.
 char32_t ascii_glyph_for(unsigned pooled_mask)
 {
     if (pooled_mask == 0)
         return U' ';
+    if (is_corner(pooled_mask))
+        return U'+';
     // A stroke may sit anywhere in its cell while the font draws it at one place: the cell's
     // shape may move up to three sub-blocks up or down and one sideways, each step costing half
     // a wrong sub-block, so a line a band below the font's '-' is still '-' and not '='.

@@ -22,6 +22,33 @@ char32_t mark_glyph(MarkKind kind, GlyphSet glyphs)
     return U'?';
 }
 
+TickedLineGlyphs ticked_line_glyphs(GlyphSet glyphs)
+{
+    switch (glyphs) {
+    case GlyphSet::braille:
+        // A line of dots 3 and 6; a tick two dots tall beside it, as the staff's ticks (7 pixels
+        // of a 14.5-pixel row) were pooled at 80x24.
+        return {U'\u2824', U'\u2826', U'\u2834', U'\u2806'};
+    case GlyphSet::blocks:
+        // Quadrants are half a cell tall, a heavy bar for a 1-pixel line: the light box-drawing
+        // characters (code page 437 had them) draw it as thin as braille's dots.
+        return {U'\u2500', U'\u251C', U'\u253C', U'\u2524'};
+    case GlyphSet::ascii:
+    case GlyphSet::automatic:
+        break;
+    }
+    return {U'-', U'|', U'+', U'|'};
+}
+
+std::vector<Stroke> ticked_line_strokes(const TickedLine& line)
+{
+    std::vector<Stroke> strokes{{{{line.left, line.y}, {line.right, line.y}}, LineStyle::solid, std::nullopt}};
+    for (const int x : line.ticks)
+        strokes.push_back({{{x, line.y - line.tick_half_height}, {x, line.y + line.tick_half_height}},
+                           LineStyle::solid, std::nullopt});
+    return strokes;
+}
+
 namespace {
 
 // Half the height of the staff's value marker, in pixels.
@@ -92,12 +119,36 @@ void lay_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area, Glyp
         }
 }
 
+// Each ticked line as one row of characters: the line's glyph from its first cell to its last, a
+// tick's glyph in the cell its pixel falls in.
+void lay_ticked_lines(CellGrid& grid, const GraphicsScreen& screen, CellArea area, GlyphSet glyphs)
+{
+    const TickedLineGlyphs shown = ticked_line_glyphs(glyphs);
+    const int width = screen.bitmap.width();
+    for (const TickedLine& line : screen.ticked_lines) {
+        if (line.y < 0 || line.y >= screen.bitmap.height())
+            continue;
+        const int row = cell_of_pixel(line.y, screen.bitmap.height(), area.rows);
+        const int first = cell_of_pixel(std::clamp(line.left, 0, width - 1), width, area.columns);
+        const int last = cell_of_pixel(std::clamp(line.right, 0, width - 1), width, area.columns);
+        for (int column = first; column <= last; ++column)
+            grid.set(column, row, shown.line);
+        for (const int x : line.ticks) {
+            const int column = cell_of_pixel(std::clamp(x, 0, width - 1), width, area.columns);
+            grid.set(column, row, column == first ? shown.first : column == last ? shown.last : shown.crossing);
+        }
+    }
+}
+
 } // namespace
 
 Bitmap render_raster(const GraphicsScreen& screen)
 {
     Bitmap raster = screen.bitmap;
     Painter painter(raster);
+    for (const TickedLine& line : screen.ticked_lines)
+        for (const Stroke& stroke : ticked_line_strokes(line))
+            painter.line(stroke.points.front(), stroke.points.back());
     for (const PixelMark& mark : screen.marks)
         draw_mark_pixels(painter, mark);
     for (const TextLine& line : screen.text)
@@ -114,6 +165,7 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
+    lay_ticked_lines(grid, screen, area, glyphs);
     lay_marks(grid, screen, area, glyphs);
     for (const TextLine& line : screen.text) {
         // A text cell goes where the centre of its 9x14 pixels falls, so that text lines up with

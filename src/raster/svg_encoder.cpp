@@ -215,6 +215,9 @@ std::string encode_svg(const GraphicsScreen& screen)
     std::string lines;
     for (const Stroke& stroke : screen.strokes)
         lines += stroke_element(stroke, width, screen.bitmap.height());
+    for (const TickedLine& line : screen.ticked_lines)
+        for (const Stroke& stroke : ticked_line_strokes(line))
+            lines += stroke_element(stroke, width, screen.bitmap.height());
     std::string text = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + std::to_string(width) + "\" height=\"" +
                        height + "\" viewBox=\"0 0 " + std::to_string(width) + " " + height + "\">\n";

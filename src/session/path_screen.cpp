@@ -140,7 +140,7 @@ std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs
 
 namespace {
 
-void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenContent& content)
+void draw_staff(GraphicsScreen& screen, const PathScreenContent& content)
 {
     for (const StaffLine line : staff_lines) {
         const int index = static_cast<int>(line);
@@ -149,10 +149,9 @@ void draw_staff(Painter& painter, GraphicsScreen& screen, const PathScreenConten
         const bool active = content.active_line == line;
         screen.text.push_back({0, row, std::string(active ? ">" : " ") + std::string(staff_line_name(line)),
                                active ? CellStyle::reverse : CellStyle::plain});
-        painter.line({layout::staff_left, y}, {layout::staff_right, y});
-        for (const double tick : {-1.0, 0.0, 1.0})
-            painter.line({layout::staff_x(tick), y - layout::staff_tick_half_height},
-                         {layout::staff_x(tick), y + layout::staff_tick_half_height});
+        screen.ticked_lines.push_back({layout::staff_left, layout::staff_right, y,
+                                       {layout::staff_x(-1.0), layout::staff_x(0.0), layout::staff_x(1.0)},
+                                       layout::staff_tick_half_height});
         screen.marks.push_back({{layout::staff_x(content.staff[line]), y}, MarkKind::staff_value});
         screen.text.push_back({layout::staff_value_column, row, format_staff_value(content.staff[line])});
     }
@@ -232,7 +231,7 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
     else
         pre_draw(screen, control_point_marks(control_point_runs(content.control_points, view), content.region));
     draw_arrow(screen, content, view);
-    draw_staff(painter, screen, content);
+    draw_staff(screen, content);
     if (!content.message.empty())
         screen.text.push_back({1, layout::message_row, content.message});
     if (!content.key_help.empty())

@@ -52,6 +52,34 @@ TEST_CASE("no line shape is ever drawn with a mark's character, whatever the pix
         }
 }
 
+TEST_CASE("the four corners of a frame are + in ascii at 80x24 and at 200x60, its sides lines", "[raster][glyphs]")
+{
+    // The session's boundary: the whole width, down to two pixels above text row 18.
+    Bitmap raster;
+    Painter(raster).rectangle({0, 0, 720, 259});
+    for (const CellArea area : {CellArea{80, 24}, CellArea{200, 60}}) {
+        const CellGrid grid = map_to_cells(raster, area, GlyphSet::ascii);
+        const int bottom = cell_of_pixel(258, 348, area.rows);
+        CAPTURE(area.columns);
+        CHECK(grid.at(0, 0) == U'+');
+        CHECK(grid.at(area.columns - 1, 0) == U'+');
+        CHECK(grid.at(0, bottom) == U'+');
+        CHECK(grid.at(area.columns - 1, bottom) == U'+');
+        CHECK(grid.at(0, bottom / 2) == U'|');
+        CHECK(grid.at(area.columns - 1, bottom / 2) == U'|');
+        CHECK(std::u32string_view(U"-_=").find(grid.at(area.columns / 2, 0)) != std::u32string_view::npos);
+        CHECK(std::u32string_view(U"-_").find(grid.at(area.columns / 2, bottom)) != std::u32string_view::npos);
+    }
+}
+
+TEST_CASE("a cell where a line turns at the cell's side is a corner, +; a straight line keeps its glyph", "[raster][glyphs]")
+{
+    CHECK(ascii_of([](Painter& p) { p.line({0, 0}, {8, 0}), p.line({0, 0}, {0, 13}); }) == U'+');
+    CHECK(ascii_of([](Painter& p) { p.line({0, 13}, {8, 13}), p.line({8, 0}, {8, 13}); }) == U'+');
+    CHECK(ascii_of([](Painter& p) { p.line({0, 7}, {8, 7}); }) == U'-');
+    CHECK(ascii_of([](Painter& p) { p.line({0, 13}, {8, 13}); }) == U'_');
+}
+
 TEST_CASE("line-like symbols drawn in the font map back to themselves", "[raster][glyphs]")
 {
     for (const char symbol : std::string_view("-|/\\_+^()[=.:")) {

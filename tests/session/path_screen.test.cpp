@@ -6,6 +6,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <vector>
 
 using namespace apcs;
 
@@ -39,6 +41,67 @@ TEST_CASE("the path screen in each glyph set matches its approved cell grid", "[
     test::check_golden("path_screen_ascii.txt", render_cells(example.screen, {80, 24}, GlyphSet::ascii).to_text());
     test::check_golden("path_screen_braille.txt", render_cells(example.screen, {80, 24}, GlyphSet::braille).to_text());
     test::check_golden("path_screen_blocks.txt", render_cells(example.screen, {80, 24}, GlyphSet::blocks).to_text());
+}
+
+TEST_CASE("the path screen at 200x60 in each glyph set matches its approved cell grid", "[session][screen]")
+{
+    const Example example = example_screen();
+    test::check_golden("path_screen_200x60_ascii.txt", render_cells(example.screen, {200, 60}, GlyphSet::ascii).to_text());
+    test::check_golden("path_screen_200x60_braille.txt",
+                       render_cells(example.screen, {200, 60}, GlyphSet::braille).to_text());
+    test::check_golden("path_screen_200x60_blocks.txt", render_cells(example.screen, {200, 60}, GlyphSet::blocks).to_text());
+}
+
+TEST_CASE("each staff line is one row of characters beside its label at any size, a tick at -1, 0 and +1",
+          "[session][screen]")
+{
+    const Example example = example_screen();
+    for (const CellArea area : {CellArea{80, 24}, CellArea{100, 30}, CellArea{133, 40}, CellArea{200, 60}, CellArea{240, 72}})
+        for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
+            CAPTURE(area.columns, static_cast<int>(glyphs));
+            const CellGrid grid = render_cells(example.screen, area, glyphs);
+            const TickedLineGlyphs shown = ticked_line_glyphs(glyphs);
+            const auto column_of = [&](int pixel) { return cell_of_pixel(pixel, 720, area.columns); };
+            const int first = column_of(layout::staff_left);
+            const int last = column_of(layout::staff_right);
+            const int message = cell_of_pixel(hercules::text_row_top(layout::message_row) + 7, 348, area.rows);
+            const int keys = cell_of_pixel(hercules::text_row_top(layout::key_help_row) + 7, 348, area.rows);
+            std::vector<int> label_rows;
+            for (int line = 0; line < 4; ++line)
+                label_rows.push_back(cell_of_pixel(layout::staff_line_y(line), 348, area.rows));
+            for (int row = message + 1; row < keys; ++row) {
+                const bool label_row = std::find(label_rows.begin(), label_rows.end(), row) != label_rows.end();
+                for (int column = first; column <= last; ++column) {
+                    const char32_t glyph = grid.at(column, row);
+                    CAPTURE(row, column, static_cast<std::uint32_t>(glyph));
+                    if (!label_row) {
+                        REQUIRE(glyph == U' '); // no tick spills into the rows between the lines
+                        continue;
+                    }
+                    if (glyph == U'O')
+                        continue;
+                    if (column == first)
+                        REQUIRE(glyph == shown.first);
+                    else if (column == last)
+                        REQUIRE(glyph == shown.last);
+                    else if (column == column_of(layout::staff_x(0.0)))
+                        REQUIRE(glyph == shown.crossing);
+                    else
+                        REQUIRE(glyph == shown.line);
+                }
+            }
+        }
+}
+
+TEST_CASE("the staff is as light in blocks as in braille: one thin line, no half blocks", "[session][screen]")
+{
+    const CellGrid grid = render_cells(example_screen().screen, {80, 24}, GlyphSet::blocks);
+    for (int row = layout::first_staff_row; row < layout::first_staff_row + 4; ++row)
+        for (int column = 0; column < 80; ++column) {
+            CAPTURE(row, column);
+            REQUIRE((grid.at(column, row) < U'\u2580' || grid.at(column, row) > U'\u259F'));
+        }
+    REQUIRE(grid.row_text(19).substr(grid.row_text(19).find("\u251C"), 6) == "\u251C\u2500");
 }
 
 TEST_CASE("the path screen shows the staff values and the active line", "[session][screen]")

@@ -36,11 +36,26 @@ struct PixelMark {
     CellStyle style = CellStyle::plain;
 };
 
-// What graphics mode shows: the 720x348 raster of lines, the marks and the text over it. `strokes`
-// holds the raster's lines as vector lines where the drawing recorded them (Painter::record_into),
-// for pictures that scale (SVG).
+// A horizontal line with upright ticks: a line of the four-line staff (fig. 3.1.5), in raster
+// pixels. Kept apart from the raster, as the marks are, so that at any terminal size it is one row of
+// characters in the cell row its `y` falls in (the row of the label beside it, whose text row has
+// its middle there): drawn into the raster, a tick taller than a cell row spilled into the rows
+// around it, and the line's place within its cell row chose the glyph (`_` in one row, `-` in the
+// next). Pictures draw its pixels.
+struct TickedLine {
+    int left = 0;  // the first pixel of the line
+    int right = 0; // the last
+    int y = 0;
+    std::vector<int> ticks;   // each tick's x, in [left, right]
+    int tick_half_height = 0; // a tick runs from y − this to y + this
+};
+
+// What graphics mode shows: the 720x348 raster of lines, the ticked lines, the marks and the text
+// over it. `strokes` holds the raster's lines as vector lines where the drawing recorded them
+// (Painter::record_into), for pictures that scale (SVG).
 struct GraphicsScreen {
     Bitmap bitmap;
+    std::vector<TickedLine> ticked_lines;
     std::vector<TextLine> text;
     std::vector<PixelMark> marks;
     std::vector<Stroke> strokes;
@@ -49,12 +64,24 @@ struct GraphicsScreen {
 // The character a mark shows in `glyphs`.
 char32_t mark_glyph(MarkKind kind, GlyphSet glyphs);
 
-// The raster with its marks' pixel shapes and its text drawn in the 9x14 font, as the Hercules
-// card showed it (for PNG).
+// The characters a ticked line is laid in, in one glyph set: the same whatever the terminal's size.
+struct TickedLineGlyphs {
+    char32_t line;     // a cell the line runs through
+    char32_t first;    // the tick where the line starts
+    char32_t crossing; // a tick the line runs on through
+    char32_t last;     // the tick where it ends
+};
+TickedLineGlyphs ticked_line_glyphs(GlyphSet glyphs);
+
+// A ticked line as the strokes a Painter draws it with (the line, then each tick), unclipped.
+std::vector<Stroke> ticked_line_strokes(const TickedLine& line);
+
+// The raster with its ticked lines, its marks' pixel shapes and its text drawn in the 9x14 font, as
+// the Hercules card showed it (for PNG).
 Bitmap render_raster(const GraphicsScreen& screen);
 
-// The raster mapped to characters, then the marks and the text laid over it as real characters,
-// each at its share of the area (80x24 text cells scale with the area). Marks take the cell their
+// The raster mapped to characters, then the ticked lines, the marks and the text laid over it as
+// real characters, each at its share of the area (80x24 text cells scale with the area). Marks take the cell their
 // pixel falls in, control points before the others; two or more in-betweens in one cell show their
 // count (2 … 9).
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
