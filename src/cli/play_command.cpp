@@ -216,9 +216,14 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         return ExitStatus::bad_usage;
     }
     std::vector<std::filesystem::path> inputs;
-    const Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
+    Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
     if (!scene)
         return report_bad_input(scene.error(), err);
+    // An explicit --slopes overrides the PATHS files' SLOPES lines, as in apcs fit (SPEC §2.1).
+    if (options.given.slopes)
+        for (SceneObject& object : scene->objects)
+            if (object.keys)
+                object.keys->first_slopes = object.keys->last_slopes = std::nullopt;
     // The .dat files a scene reads are known only now; the command line checked the scene file.
     if (Expected<void> done = check_pictures_spare_inputs(options, inputs); !done)
         return report_bad_input(done.error(), err);

@@ -97,8 +97,13 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
         if (object.keys) {
             const SceneKeys& keys = *object.keys;
             const PathSettings spread = spread_over(settings, keys.frames);
-            m_key_frames[i] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, spread),
-                                             evaluate_path(keys.last_path, spread), construction);
+            const auto with_slopes = [&spread](const std::optional<EndSlopes>& slopes) {
+                PathSettings own = spread;
+                own.slopes = slopes.value_or(spread.slopes);
+                return own;
+            };
+            m_key_frames[i] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, with_slopes(keys.first_slopes)),
+                                             evaluate_path(keys.last_path, with_slopes(keys.last_slopes)), construction);
         }
         if (object.move)
         {

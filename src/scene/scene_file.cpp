@@ -289,7 +289,7 @@ Expected<void> SceneParser::parse_keys(const Fields& fields)
     const Expected<DatFile> key2 = read_file(fields[2]);
     if (!key2)
         return key2.error();
-    SceneKeys keys{equalise_key_frames(graphic_from(*key1), graphic_from(*key2)), {}, {}, {0, m_scene.last_frame}};
+    SceneKeys keys{equalise_key_frames(graphic_from(*key1), graphic_from(*key2)), {}, {}, {}, {}, {0, m_scene.last_frame}};
     Clauses clauses(fields, 3);
     while (!clauses.done())
         if (auto outcome = span_clause(clauses, "KEYS", keys.frames); !outcome)
@@ -634,6 +634,8 @@ Expected<void> SceneParser::finish_object()
             }
             current.keys->first_path = std::move(paths[0]);
             current.keys->last_path = std::move(paths[1]);
+            current.keys->first_slopes = (*m_pending.paths)[0].file.slopes;
+            current.keys->last_slopes = (*m_pending.paths)[1].file.slopes;
         } else {
             current.keys->first_path = {{keys.key1.first_point(), current.staff}, {keys.key2.first_point(), current.staff}};
             current.keys->last_path = {{keys.key1.last_point(), current.staff}, {keys.key2.last_point(), current.staff}};

@@ -1,3 +1,4 @@
+#include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/key_event.h"
 
@@ -254,4 +255,63 @@ TEST_CASE("apcs fit regenerates every shipped session's in-betweens byte for byt
             REQUIRE(test::read_all(batch / name) == test::read_all(folder / name));
         }
     }
+}
+
+TEST_CASE("the snake scene plays the snake session's frames: its path files are the session's, SLOPES and all",
+          "[session][headless][scene]")
+{
+    // Issue 29: the scene applied one STAFF to 3-column copies and was up to 0.69 off the session.
+    const test::TempFolder folder;
+    copy_example("snake-apple", folder);
+    REQUIRE(test::run_apcs({"--keys", (folder / "session.keys").string(), "--workdir", folder.path().string()})
+                .status == 0);
+    // The scene's paths are what the session wrote (their comment lines aside).
+    for (const auto& [shipped, written] : {std::pair{"session-ani1.dat", "ani1.dat"}, {"session-way7.dat", "way7.dat"}}) {
+        CAPTURE(shipped);
+        const Expected<DatFile> mine = read_dat_file(folder / shipped);
+        const Expected<DatFile> session = read_dat_file(folder / written);
+        REQUIRE((mine && session));
+        REQUIRE(mine->slopes.has_value());
+        REQUIRE(mine->slopes->start == session->slopes->start);
+        REQUIRE(mine->slopes->end == session->slopes->end);
+        REQUIRE(mine->parts.size() == session->parts.size());
+        for (std::size_t p = 0; p < mine->parts.size(); ++p) {
+            REQUIRE(mine->parts[p].points.size() == session->parts[p].points.size());
+            for (std::size_t i = 0; i < mine->parts[p].points.size(); ++i) {
+                REQUIRE(mine->parts[p].points[i].position == session->parts[p].points[i].position);
+                REQUIRE(mine->parts[p].points[i].staff == session->parts[p].points[i].staff);
+            }
+        }
+    }
+    const auto played = test::run_apcs(
+        {"play", (folder / "snake-apple.scn").string(), "--spacing", "nearest", "--print"});
+    REQUIRE(played.status == 0);
+    // "# frame k", "# object snake", its points, "# object apple", ...
+    std::istringstream print(played.out);
+    std::vector<std::vector<Vec3>> snake;
+    bool in_snake = false;
+    for (std::string line; std::getline(print, line);) {
+        if (line.starts_with("# frame"))
+            snake.emplace_back();
+        else if (line.starts_with("# object"))
+            in_snake = line == "# object snake";
+        else if (in_snake) {
+            std::istringstream numbers(line);
+            Vec3 point;
+            numbers >> point.x >> point.y >> point.z;
+            snake.back().push_back(point);
+        }
+    }
+    REQUIRE(snake.size() == 14);
+    double worst = 0.0;
+    for (std::size_t k = 1; k <= 12; ++k) {
+        const Expected<Graphic> inbetween = read_key_frame(folder / inbetween_file_name(k));
+        REQUIRE(inbetween);
+        const std::vector<Vec3> points = inbetween->all_points();
+        REQUIRE(points.size() == snake[k].size());
+        for (std::size_t i = 0; i < points.size(); ++i)
+            worst = std::max(worst, distance(points[i], snake[k][i]));
+    }
+    // The inb files hold six decimals: the scene's frames are them to their rounding.
+    REQUIRE(worst <= 1e-6);
 }

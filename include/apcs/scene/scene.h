@@ -75,6 +75,10 @@ struct SceneKeys {
     EqualisedKeys keys;
     ControlPoints first_path;
     ControlPoints last_path;
+    // Each PATHS file's SLOPES line, the end slopes it was adjusted with (SPEC §2.1); unset: the
+    // command's --slopes. apcs play --slopes overrides them, as apcs fit's does.
+    std::optional<EndSlopes> first_slopes;
+    std::optional<EndSlopes> last_slopes;
     FrameSpan frames;
 };
 
