@@ -497,9 +497,11 @@ Expected<void> SceneParser::parse_joint(const Fields& fields)
     const std::optional<std::size_t> index = parse_count_value(range.substr(0, dash));
     const std::optional<std::size_t> last =
         dash == std::string_view::npos ? index : parse_count_value(range.substr(dash + 1));
-    if (!index || *index == 0 || !last || *last == 0)
-        return error("expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1, found " +
-                     quote_field(range));
+    // No drawing has more points than a .dat file holds: a larger index is named as it was written.
+    const auto valid = [](const std::optional<std::size_t>& value) { return value && *value >= 1 && *value <= max_dat_points; };
+    if (!valid(index) || !valid(last))
+        return error("expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1 to " +
+                     std::to_string(max_dat_points) + ", found " + quote_field(range));
     if (*last < *index)
         return error("joint points " + quote_field(range) + " run backwards; expected INDEX-INDEX2 with INDEX <= INDEX2");
     joint.point = *index - 1;

@@ -127,7 +127,11 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "SCALE 0\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},
         {head + "JOINT j 3-2\n", "t.scn:4: joint points '3-2' run backwards; expected INDEX-INDEX2 with INDEX <= INDEX2"},
         {head + "JOINT j 2-x\n",
-         "t.scn:4: expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1, found '2-x'"},
+         "t.scn:4: expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1 to 1000000, found '2-x'"},
+        // Issue 33: a huge index was named as 18446744073709551615, not as written.
+        {head + "JOINT j 18446744073709551617\n",
+         "t.scn:4: expected the joint's point INDEX or points INDEX-INDEX2, whole numbers from 1 to 1000000, found "
+         "'18446744073709551617'"},
         {head + "JOINT j 3-9\n", "t.scn:4: joint 'j' names point 9 of object 'a', whose drawing has 4 points"},
         {head + "SCALE 1 0 1\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},
         {head + "SCALE 1 1 1e9\n",
