@@ -97,8 +97,24 @@ void fit_streamed_and_written(benchmark::State& state)
     });
 }
 
+// A path's in-betweens placed with nearest spacing (the thesis' Decide_Show_Inbetween): a
+// three-segment path (as data/n-to-l/way1.dat) at --samples 2000, with range(0) in-betweens; each
+// finds the sample nearest its target chord length.
+void place_inbetweens_nearest(benchmark::State& state)
+{
+    const PathSettings settings{{}, 2000, static_cast<int>(state.range(0)), Spacing::nearest};
+    const ControlPoints points{{{0, 0, 0}, {}}, {{3, 4, 1}, {0.2, 0, 0, 0.5}}, {{7, 3, 0}, {}}, {{10, 6, 2}, {}}};
+    EvaluatedPath path = evaluate_path(points, settings);
+    for (auto _ : state) {
+        place_inbetweens(points, settings, path);
+        benchmark::DoNotOptimize(path.inbetweens.data());
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 } // namespace
 
+BENCHMARK(place_inbetweens_nearest)->Arg(600)->Arg(60000)->Unit(benchmark::kMillisecond);
 BENCHMARK(fit_compute)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);
 BENCHMARK(fit_and_write)->RangeMultiplier(10)->Range(1000, 100000)->Unit(benchmark::kMillisecond);
 BENCHMARK(fit_streamed_and_written)->RangeMultiplier(10)->Range(1000, 1000000)->Unit(benchmark::kMillisecond);

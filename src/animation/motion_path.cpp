@@ -190,6 +190,8 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
         span_lengths.push_back(boundary(span.last_point) - boundary(span.first_point));
     const std::vector<int> shares = share_by_largest_remainder(span_lengths, inbetween_count);
 
+    // The targets rise along the path: one walk over the samples finds all their nearest samples.
+    NearestSamples nearest_sample(path.curve);
     for (std::size_t s = 0; s < spans.size(); ++s) {
         const double start = boundary(spans[s].first_point);
         path.span_timings.push_back({spans[s], start / total, span_lengths[s] / total, path.inbetweens.size(),
@@ -200,11 +202,12 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
                 shown.position = curve_point_at(segments, arc_lengths.parameter_at(segments, target));
                 shown.arc_fraction = target / total;
                 const double chord_target = shown.arc_fraction * path.curve.total_length();
-                shown.sample_index = path.curve.nearest_sample(chord_target);
+                shown.sample_index = nearest_sample(chord_target).sample;
             } else {
-                shown.sample_index = path.curve.nearest_sample(target);
+                const NearestSamples::Found found = nearest_sample(target);
+                shown.sample_index = found.sample;
                 shown.position = path.curve.sample(shown.sample_index);
-                shown.arc_fraction = path.curve.chord_length(shown.sample_index) / total;
+                shown.arc_fraction = found.chord_length / total;
             }
             path.inbetweens.push_back(shown);
         }

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <ranges>
 
 namespace apcs {
 
@@ -66,17 +65,56 @@ double SampledCurve::chord_length(std::size_t i) const
     return length + within;
 }
 
-std::size_t SampledCurve::nearest_sample(double target) const
+std::size_t SampledCurve::nearest_sample(double target) const { return NearestSamples(*this)(target).sample; }
+
+// The chord lengths rise from sample to sample (distances are not negative, and a sum in floating
+// point does not fall when a term does not), and a segment's last one is the length to the next
+// control point: so the first sample at or beyond `target` lies in the segment whose end reaches it
+// and whose start does not.
+NearestSamples::Found NearestSamples::operator()(double target)
 {
-    const auto indices = std::views::iota(std::size_t{0}, sample_count());
-    const auto above = std::ranges::partition_point(indices, [&](std::size_t i) { return chord_length(i) < target; });
-    if (above == indices.begin())
-        return 0;
-    if (above == indices.end())
-        return sample_count() - 1;
-    const std::size_t upper = *above;
-    const bool below_is_nearer = target - chord_length(upper - 1) <= chord_length(upper) - target;
-    return below_is_nearer ? upper - 1 : upper;
+    const std::vector<double>& to_point = m_curve.length_to_point;
+    const auto reaching = std::lower_bound(to_point.begin(), to_point.end(), target);
+    if (reaching == to_point.begin())
+        return {0, 0.0};
+    if (reaching == to_point.end())
+        return {m_curve.sample_count() - 1, m_curve.total_length()};
+    const auto segment = static_cast<std::size_t>(reaching - to_point.begin()) - 1;
+    // Where the walk stopped, sample m_sample's chord length was the first to reach the last
+    // target: one at or below the sample before it must walk the segment again.
+    if (segment != m_segment || m_previous_chord >= target)
+        start_segment(segment);
+    while (m_chord < target)
+        step();
+    const std::size_t upper = segment * static_cast<std::size_t>(m_curve.samples_per_segment) + m_sample;
+    const bool below_is_nearer = target - m_previous_chord <= m_chord - target;
+    return below_is_nearer ? Found{upper - 1, m_previous_chord} : Found{upper, m_chord};
+}
+
+void NearestSamples::start_segment(std::size_t segment)
+{
+    m_segment = segment;
+    m_sample = 0;
+    m_point = m_curve.segments[segment].start;
+    m_within = 0.0;
+    m_chord = m_curve.length_to_point[segment];
+    m_previous_chord = m_chord;
+}
+
+// The next sample, its chord length as chord_length finds it: the lengths to the control point
+// and within the segment added, or the length to the next control point at the segment's end.
+void NearestSamples::step()
+{
+    ++m_sample;
+    m_previous_chord = m_chord;
+    if (m_sample == static_cast<std::size_t>(m_curve.samples_per_segment)) {
+        m_chord = m_curve.length_to_point[m_segment + 1];
+        return;
+    }
+    const Vec3 point = m_curve.segment_sample(m_segment, m_sample);
+    m_within += distance(m_point, point);
+    m_point = point;
+    m_chord = m_curve.length_to_point[m_segment] + m_within;
 }
 
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment)

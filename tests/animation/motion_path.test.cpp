@@ -321,6 +321,89 @@ TEST_CASE("the nearest sample is the one nearest in chord length, the earlier on
     CHECK(curve.nearest_sample(7.0) == 4);
 }
 
+namespace {
+
+// SampledCurve::nearest_sample as it was first written: a binary search over every sample's
+// chord_length, then the nearer of the two around the target.
+std::size_t nearest_sample_by_search(const SampledCurve& curve, double target)
+{
+    std::size_t low = 0;
+    std::size_t high = curve.sample_count();
+    while (low < high) {
+        const std::size_t middle = low + (high - low) / 2;
+        (curve.chord_length(middle) < target ? low = middle + 1 : high = middle);
+    }
+    if (low == 0)
+        return 0;
+    if (low == curve.sample_count())
+        return curve.sample_count() - 1;
+    return target - curve.chord_length(low - 1) <= curve.chord_length(low) - target ? low - 1 : low;
+}
+
+} // namespace
+
+TEST_CASE("nearest samples found one target after another are those of a search over every sample",
+          "[animation][path]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 40; ++k) // bent segments, and two of no length (a point repeated)
+        points.push_back({k == 20 || k == 21 ? Vec3{5, 5, 5} : Vec3{std::sin(k * 0.9) * 3.0, k * 0.5, std::cos(k * 1.3)},
+                          {std::sin(k * 0.4), 0, 0, 0}});
+    points[21].position = points[20].position;
+    points[22].position = points[20].position;
+    for (const int samples : {1, 2, 7, 32}) {
+        const SampledCurve curve = sample_curve(kb_segments(points, {}), samples);
+        const double total = curve.total_length();
+        // Rising targets (as in-betweens rise), every sample's own chord length and the midpoints
+        // between neighbours (ties), falling ones, and some outside the curve.
+        std::vector<double> targets{-1.0, 0.0};
+        for (int j = 1; j < 500; ++j)
+            targets.push_back(total * j / 500.0);
+        for (std::size_t i = 0; i < curve.sample_count(); ++i) {
+            targets.push_back(curve.chord_length(i));
+            if (i > 0)
+                targets.push_back((curve.chord_length(i - 1) + curve.chord_length(i)) / 2.0);
+        }
+        for (int j = 300; j > 0; --j)
+            targets.push_back(total * j / 301.0);
+        targets.push_back(total);
+        targets.push_back(total * 2.0);
+        NearestSamples nearest(curve);
+        for (const double target : targets) {
+            CAPTURE(samples, target);
+            const NearestSamples::Found found = nearest(target);
+            REQUIRE(found.sample == nearest_sample_by_search(curve, target));
+            REQUIRE(found.chord_length == curve.chord_length(found.sample));
+            REQUIRE(curve.nearest_sample(target) == found.sample);
+        }
+    }
+}
+
+TEST_CASE("many in-betweens on finely sampled segments are placed as a search for each would place them",
+          "[animation][path]")
+{
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        PathSettings settings;
+        settings.samples_per_segment = 500;
+        settings.inbetween_count = 3000;
+        settings.spacing = spacing;
+        ControlPoints points = curved_path();
+        points[1].staff.acceleration = 0.8; // two spans, one slowing down
+        const EvaluatedPath path = evaluate_path(points, settings);
+        REQUIRE(path.inbetweens.size() == 3000);
+        const double chord_total = path.curve.total_length();
+        for (const Inbetween& inbetween : path.inbetweens) {
+            CAPTURE(spacing, inbetween.arc_fraction);
+            if (spacing == Spacing::exact) {
+                REQUIRE(inbetween.sample_index == nearest_sample_by_search(path.curve, inbetween.arc_fraction * chord_total));
+                continue;
+            }
+            REQUIRE(inbetween.position == path.curve.sample(inbetween.sample_index));
+            REQUIRE(inbetween.arc_fraction == path.curve.chord_length(inbetween.sample_index) / chord_total);
+        }
+    }
+}
+
 TEST_CASE("a path re-evaluated after a change to some control points is the path evaluated afresh, to the bit",
           "[animation][path]")
 {

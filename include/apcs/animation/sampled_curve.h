@@ -42,7 +42,46 @@ struct SampledCurve {
     double chord_length(std::size_t i) const;
     // The sample whose chord length is nearest to `target`, the earlier of two equally near (the
     // thesis' Decide_Show_Inbetween); the first or last sample for a target outside the curve.
+    // Costs log2(segments) comparisons and up to samples_per_segment samples; NearestSamples finds
+    // a run of increasing targets' samples at once.
     std::size_t nearest_sample(double target) const;
+};
+
+// SampledCurve::nearest_sample for one target after another, and the chord length of the sample
+// found (chord_length's, to the bit). The segment holding a target is found among the lengths to
+// the control points; its samples are then walked from its start, summed as chord_length sums
+// them. A target in the segment of the one before goes on from where that one stopped, so that
+// M increasing targets (a path's in-betweens, more of them than samples or fewer) cost
+// O(N + M·log2 segments) for N samples, not M·log2 N·samples_per_segment; a target below the
+// sample before the last one found walks its segment again from the start. Holds a
+// reference to `curve`, which must outlive it unchanged.
+class NearestSamples {
+public:
+    struct Found {
+        std::size_t sample = 0;
+        double chord_length = 0.0;
+    };
+
+    explicit NearestSamples(const SampledCurve& curve)
+        : m_curve(curve)
+    {
+    }
+    Found operator()(double target);
+
+private:
+    void start_segment(std::size_t segment);
+    void step();
+
+    const SampledCurve& m_curve;
+    // The walk: sample m_sample of segment m_segment (m_sample = 0 … samples_per_segment), its
+    // point, the chord length within the segment summed so far, and the chord lengths from the
+    // curve's start to it and to the sample before it.
+    std::size_t m_segment = static_cast<std::size_t>(-1);
+    std::size_t m_sample = 0;
+    Vec3 m_point;
+    double m_within = 0.0;
+    double m_chord = 0.0;
+    double m_previous_chord = 0.0;
 };
 
 // A curve of a copy of `segments`; samples_per_segment is clamped to at least 1.
