@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 namespace apcs {
 
@@ -22,117 +23,234 @@ double simpson(const HermiteSegment& curve, double u_end, int intervals)
 
 // The derivative basis (Eq. of hermite_basis_derivative) at the parameters each interval count adds:
 // all n + 1 of u = i / n for the first count, the n / 2 odd ones for each doubling after. Every u is
-// exact in binary, so these are the numbers derivative_at(step · i) would use.
+// exact in binary, so these are the numbers derivative_at(step · i) would use. `order` lists where
+// speed i of the count's Simpson sum (i = 0 … n) is kept: a segment's speeds are stored as they are
+// found, the first count's and then each doubling's new ones after them.
 struct NewParameters {
     std::array<std::vector<double>, 4> basis; // f1' … f4', one column each
+    std::vector<std::uint32_t> order;
 };
 
 std::vector<NewParameters> basis_of_each_count()
 {
     std::vector<NewParameters> counts;
+    std::uint32_t stored = 0;
     for (int n = CurveArcLengths::first_simpson_intervals; n <= CurveArcLengths::most_simpson_intervals; n *= 2) {
         NewParameters added;
         const bool first = n == CurveArcLengths::first_simpson_intervals;
-        for (int i = first ? 0 : 1; i <= n; i += first ? 1 : 2) {
+        for (int i = 0; i <= n; ++i) {
+            const bool new_here = first || i % 2 == 1;
+            if (!new_here) {
+                added.order.push_back(counts.back().order[static_cast<std::size_t>(i / 2)]);
+                continue;
+            }
             const HermiteBasis weights = hermite_basis_derivative(i == n ? 1.0 : (1.0 / n) * i);
             added.basis[0].push_back(weights.f1);
             added.basis[1].push_back(weights.f2);
             added.basis[2].push_back(weights.f3);
             added.basis[3].push_back(weights.f4);
+            added.order.push_back(stored++);
         }
         counts.push_back(std::move(added));
     }
     return counts;
 }
 
+// On x86-64 Linux a second copy of a function for processors with AVX2, chosen when the program
+// loads: twice the numbers in one instruction. The operations and their order are the same, and
+// no multiply and add are fused (the build contracts none), so the copies give the same bits.
+#if defined(__x86_64__) && defined(__linux__)
+#define APCS_ALSO_FOR_AVX2 __attribute__((target_clones("avx2", "default")))
+#else
+#define APCS_ALSO_FOR_AVX2
+#endif
+
+// length(curve.derivative_at(u)) at the parameters `at` adds, into `out`: HermiteSegment::apply and
+// length() with the same operations in the same order (the same bits), several parameters at once.
+// Its square roots are the largest part of an exact-spacing global key (docs/PERFORMANCE.md, 9b).
+APCS_ALSO_FOR_AVX2 void speeds_at(const HermiteSegment& curve, const NewParameters& at, double* out)
+{
+    const double* const f1 = at.basis[0].data();
+    const double* const f2 = at.basis[1].data();
+    const double* const f3 = at.basis[2].data();
+    const double* const f4 = at.basis[3].data();
+    const Vec3 start = curve.start;
+    const Vec3 end = curve.end;
+    const Vec3 start_tangent = curve.start_tangent;
+    const Vec3 end_tangent = curve.end_tangent;
+    const std::size_t count = at.basis[0].size();
+    for (std::size_t j = 0; j < count; ++j) {
+        const double x = start.x * f1[j] + end.x * f2[j] + start_tangent.x * f3[j] + end_tangent.x * f4[j];
+        const double y = start.y * f1[j] + end.y * f2[j] + start_tangent.y * f3[j] + end_tangent.y * f4[j];
+        const double z = start.z * f1[j] + end.z * f2[j] + start_tangent.z * f3[j] + end_tangent.z * f4[j];
+        out[j] = std::sqrt(x * x + y * y + z * z);
+    }
+}
+
+// Sum of `values` in four running sums (several at once): not Simpson's order, only an estimate.
+double estimate_sum(std::span<const double> values)
+{
+    std::array<double, 4> partial{};
+    std::size_t i = 0;
+    for (; i + 4 <= values.size(); i += 4)
+        for (std::size_t lane = 0; lane < 4; ++lane)
+            partial[lane] += values[i + lane];
+    for (; i < values.size(); ++i)
+        partial[0] += values[i];
+    return (partial[0] + partial[1]) + (partial[2] + partial[3]);
+}
+
 // A segment's Simpson sums as the interval count doubles: each count's speeds are the last count's
 // and the new ones between them, found a column at a time from the tabulated basis (so that the
-// compiler does several at once) as length(derivative_at(u)) finds them, to the bit, and summed in
-// Simpson's order. Holds the speeds of the finest count: one per thread.
+// compiler does several at once) as length(derivative_at(u)) finds them, to the bit. Holds the
+// speeds of the finest count: one per thread.
+//
+// Summing a count's speeds in Simpson's order is one addition after another (each waits for the
+// last): that, done afresh at every count, was most of the time. So whether two counts agree is
+// decided on estimates (each count's new speeds summed once, several at a time), and the sums are
+// added in Simpson's order only where the estimate cannot decide — the speeds are non-negative, so
+// an estimate and Simpson's sum of m terms both lie within m·2^-53 of the true sum, relative
+// (Higham, "Accuracy and Stability of Numerical Algorithms", 4.2) — and once for the count that
+// converged, whose sum is the length. The length and the count are those of summing every count in
+// order, to the bit.
 class SegmentArcLength {
 public:
     SegmentArcLength()
         : m_counts(counts())
     {
-        for (std::vector<double>* room : {&m_speeds, &m_finer, &m_new, &m_x, &m_y, &m_z})
-            room->reserve(CurveArcLengths::most_simpson_intervals + 1);
+        m_speeds.reserve(CurveArcLengths::most_simpson_intervals + 1);
+    }
+
+    // Where a segment's sums agreed: the count (its index in the doublings and its intervals), and
+    // Simpson's sum of it if it was summed on the way (else simpson_sum(level) gives it).
+    struct Converged {
+        std::size_t level = 0;
+        int intervals = 0;
+        bool summed = false;
+        double sum = 0.0;
+    };
+
+    // The speeds of `curve`, kept until the next call, up to the count whose sum agreed with the
+    // one before it (or the finest).
+    Converged converge(const HermiteSegment& curve)
+    {
+        m_speeds.clear();
+        add_speeds(curve, m_counts[0]);
+        int intervals = CurveArcLengths::first_simpson_intervals;
+        const double ends = m_speeds.front() + m_speeds.back();
+        double odd = 0.0;
+        double even = 0.0;
+        for (int i = 1; i < intervals; ++i)
+            (i % 2 == 1 ? odd : even) += m_speeds[static_cast<std::size_t>(i)];
+        Estimate coarser{(ends + 4.0 * odd + 2.0 * even) / intervals / 3.0, 0.0, false};
+        double inside = odd + even; // the speeds of the count reached, but its ends
+        std::size_t level = 1;
+        for (; intervals < CurveArcLengths::most_simpson_intervals; ++level) {
+            const std::size_t first_new = m_speeds.size();
+            add_speeds(curve, m_counts[level]);
+            intervals *= 2;
+            const double added = estimate_sum(std::span(m_speeds).subspan(first_new));
+            Estimate finer{(ends + 4.0 * added + 2.0 * inside) / intervals / 3.0, 0.0, false};
+            inside += added;
+            const bool converged = agree(coarser, finer, level);
+            coarser = finer;
+            if (converged)
+                break;
+        }
+        if (level == m_counts.size())
+            --level;
+        return {level, intervals, coarser.exact, coarser.sum};
+    }
+
+    // Simpson's sum of the count at `level` of the speeds kept, added in order.
+    double simpson_sum(std::size_t level) const
+    {
+        const std::vector<std::uint32_t>& order = m_counts[level].order;
+        const std::size_t intervals = order.size() - 1;
+        const double step = 1.0 / static_cast<double>(intervals);
+        double sum = m_speeds[order.front()] + m_speeds[order.back()];
+        for (std::size_t i = 1; i + 1 < order.size(); i += 2) {
+            sum += 4.0 * m_speeds[order[i]];
+            if (i + 2 < order.size())
+                sum += 2.0 * m_speeds[order[i + 1]];
+        }
+        return sum * step / 3.0;
+    }
+
+    // simpson_sum(level) of two segments' speeds, added side by side: the two sums do not wait for
+    // each other, so the processor does both at the cost of one.
+    static std::pair<double, double> simpson_sums(const SegmentArcLength& first, const SegmentArcLength& second,
+                                                  std::size_t level)
+    {
+        const std::vector<std::uint32_t>& order = first.m_counts[level].order;
+        const double* const a = first.m_speeds.data();
+        const double* const b = second.m_speeds.data();
+        const double step = 1.0 / static_cast<double>(order.size() - 1);
+        double sum_a = a[order.front()] + a[order.back()];
+        double sum_b = b[order.front()] + b[order.back()];
+        for (std::size_t i = 1; i + 1 < order.size(); i += 2) {
+            sum_a += 4.0 * a[order[i]];
+            sum_b += 4.0 * b[order[i]];
+            if (i + 2 < order.size()) {
+                sum_a += 2.0 * a[order[i + 1]];
+                sum_b += 2.0 * b[order[i + 1]];
+            }
+        }
+        return {sum_a * step / 3.0, sum_b * step / 3.0};
     }
 
     // The length, and the interval count whose sum agreed with the one before it.
     std::pair<double, int> operator()(const HermiteSegment& curve)
     {
-        int intervals = CurveArcLengths::first_simpson_intervals;
-        speeds_at(curve, m_counts[0], m_speeds);
-        double sum = sum_of_speeds(intervals);
-        for (std::size_t level = 1; intervals < CurveArcLengths::most_simpson_intervals; ++level) {
-            speeds_at(curve, m_counts[level], m_new);
-            interleave();
-            intervals *= 2;
-            const double finer = sum_of_speeds(intervals);
-            const bool converged = std::abs(finer - sum) <= 1e-10 * finer;
-            sum = finer;
-            if (converged)
-                break;
-        }
-        return {sum, intervals};
+        const Converged reached = converge(curve);
+        return {reached.summed ? reached.sum : simpson_sum(reached.level), reached.intervals};
     }
 
 private:
+    struct Estimate {
+        double estimate = 0.0;
+        double sum = 0.0; // Simpson's, when `exact`
+        bool exact = false;
+    };
+
     static const std::vector<NewParameters>& counts()
     {
         static const std::vector<NewParameters> tabulated = basis_of_each_count();
         return tabulated;
     }
 
-    // HermiteSegment::apply on one coordinate: the same operations in the same order.
-    static void coordinate(double start, double end, double start_tangent, double end_tangent,
-                           const NewParameters& at, std::vector<double>& out)
+    // Whether the sums of `level` − 1 and `level` agree to 1e-10 (as |finer − sum| ≤ 1e-10·finer
+    // decides on Simpson's sums); an undecided estimate makes both sums exact.
+    bool agree(Estimate& coarser, Estimate& finer, std::size_t level) const
     {
-        const std::size_t count = at.basis[0].size();
-        out.resize(count);
-        for (std::size_t j = 0; j < count; ++j)
-            out[j] = start * at.basis[0][j] + end * at.basis[1][j] + start_tangent * at.basis[2][j] +
-                     end_tangent * at.basis[3][j];
+        const double larger = std::max(coarser.estimate, finer.estimate);
+        const double terms = static_cast<double>(m_counts[level].order.size());
+        // Each sum within terms·2^-53 of the truth; four times that keeps clear of the rounding
+        // of this test itself. Tiny or huge lengths (where a scaling is not exact) are summed.
+        const double margin = 16.0 * terms * 0x1p-53 * larger;
+        const double difference = std::abs(finer.estimate - coarser.estimate);
+        const double allowed = 1e-10 * finer.estimate;
+        const bool estimable = std::isfinite(difference) && larger > 1e-200 && larger < 1e200;
+        if (estimable && difference - allowed > margin)
+            return false;
+        if (estimable && allowed - difference > margin)
+            return true;
+        for (auto [estimate, at] : {std::pair{&coarser, level - 1}, std::pair{&finer, level}})
+            if (!estimate->exact)
+                *estimate = {estimate->estimate, simpson_sum(at), true};
+        return std::abs(finer.sum - coarser.sum) <= 1e-10 * finer.sum;
     }
 
-    void speeds_at(const HermiteSegment& curve, const NewParameters& at, std::vector<double>& out)
+    // The speeds at the parameters `at` adds, after those kept.
+    void add_speeds(const HermiteSegment& curve, const NewParameters& at)
     {
-        coordinate(curve.start.x, curve.end.x, curve.start_tangent.x, curve.end_tangent.x, at, m_x);
-        coordinate(curve.start.y, curve.end.y, curve.start_tangent.y, curve.end_tangent.y, at, m_y);
-        coordinate(curve.start.z, curve.end.z, curve.start_tangent.z, curve.end_tangent.z, at, m_z);
-        out.resize(m_x.size());
-        for (std::size_t j = 0; j < m_x.size(); ++j) // length(): sqrt(dot(v, v))
-            out[j] = std::sqrt(m_x[j] * m_x[j] + m_y[j] * m_y[j] + m_z[j] * m_z[j]);
-    }
-
-    // m_speeds (count n + 1) and m_new (the n odd ones of 2n) into m_speeds (2n + 1).
-    void interleave()
-    {
-        m_finer.clear();
-        for (std::size_t i = 0; i < m_new.size(); ++i) {
-            m_finer.push_back(m_speeds[i]);
-            m_finer.push_back(m_new[i]);
-        }
-        m_finer.push_back(m_speeds.back());
-        std::swap(m_speeds, m_finer);
-    }
-
-    double sum_of_speeds(int intervals) const
-    {
-        const double step = 1.0 / intervals;
-        double sum = m_speeds.front() + m_speeds.back();
-        for (std::size_t i = 1; i + 1 < m_speeds.size(); ++i)
-            sum += (i % 2 == 1 ? 4.0 : 2.0) * m_speeds[i];
-        return sum * step / 3.0;
+        const std::size_t kept = m_speeds.size();
+        m_speeds.resize(kept + at.basis[0].size());
+        speeds_at(curve, at, m_speeds.data() + kept);
     }
 
     const std::vector<NewParameters>& m_counts;
-    std::vector<double> m_speeds;
-    std::vector<double> m_finer;
-    std::vector<double> m_new;
-    std::vector<double> m_x;
-    std::vector<double> m_y;
-    std::vector<double> m_z;
+    std::vector<double> m_speeds; // as `order` lists them
 };
 
 } // namespace
@@ -163,9 +281,25 @@ void CurveArcLengths::remeasure(std::span<const HermiteSegment> segments, const 
 void CurveArcLengths::measure_range(std::span<const HermiteSegment> segments, std::size_t first, std::size_t end)
 {
     split_across_cores(end - first, 1024, [&](std::size_t from, std::size_t to) {
-        SegmentArcLength measure;
-        for (std::size_t k = first + from; k < first + to; ++k)
-            std::tie(m_segment_length[k], m_intervals[k]) = measure(segments[k]);
+        // Two segments at a time, so that their final sums (one addition after another) run side by
+        // side when their counts agree, as neighbours' mostly do.
+        std::array<SegmentArcLength, 2> measure;
+        std::size_t k = first + from;
+        for (; k + 1 < first + to; k += 2) {
+            const SegmentArcLength::Converged one = measure[0].converge(segments[k]);
+            const SegmentArcLength::Converged two = measure[1].converge(segments[k + 1]);
+            m_intervals[k] = one.intervals;
+            m_intervals[k + 1] = two.intervals;
+            if (!one.summed && !two.summed && one.level == two.level) {
+                std::tie(m_segment_length[k], m_segment_length[k + 1]) =
+                    SegmentArcLength::simpson_sums(measure[0], measure[1], one.level);
+                continue;
+            }
+            m_segment_length[k] = one.summed ? one.sum : measure[0].simpson_sum(one.level);
+            m_segment_length[k + 1] = two.summed ? two.sum : measure[1].simpson_sum(two.level);
+        }
+        if (k < first + to)
+            std::tie(m_segment_length[k], m_intervals[k]) = measure[0](segments[k]);
     });
 }
 
