@@ -335,17 +335,24 @@ CurveParameter CurveArcLengths::parameter_at(std::span<const HermiteSegment> seg
     const double within = target - m_cumulative[segment];
     // Far below what a test or a picture can see, so that even steps come out even to 1e-9.
     const double tolerance = 1e-12 * total;
+    // Newton's steps (the length's derivative is the speed), kept inside a bracket that halves
+    // whenever a step would leave it: a few Simpson sums where halving alone took some forty.
+    const HermiteSegment& curve = segments[segment];
+    const double segment_length = m_cumulative[segment + 1] - m_cumulative[segment];
     double low = 0.0;
     double high = 1.0;
-    // 200 halvings reach the resolution of a double long before; the bound only guarantees an end.
+    double u = segment_length > 0.0 ? std::clamp(within / segment_length, 0.0, 1.0) : 0.5;
+    // 200 steps reach the resolution of a double long before; the bound only guarantees an end.
     for (int iteration = 0; iteration < 200 && high - low > 1e-15; ++iteration) {
-        const double middle = (low + high) / 2.0;
-        const double reached = simpson(segments[segment], middle, m_intervals[segment]);
+        const double reached = simpson(curve, u, m_intervals[segment]);
         if (std::abs(reached - within) <= tolerance)
-            return {segment, middle};
-        (reached < within ? low : high) = middle;
+            return {segment, u};
+        (reached < within ? low : high) = u;
+        const double speed = length(curve.derivative_at(u));
+        const double step = speed > 0.0 ? u - (reached - within) / speed : low - 1.0;
+        u = step > low && step < high ? step : (low + high) / 2.0;
     }
-    return {segment, (low + high) / 2.0};
+    return {segment, u};
 }
 
 ArcLengthTable::ArcLengthTable(std::span<const HermiteSegment> segments)

@@ -44,7 +44,8 @@ public:
         return m_cumulative.empty() ? 0.0 : m_cumulative[std::min(segment, m_cumulative.size() - 1)];
     }
     double length_at(std::span<const HermiteSegment> segments, CurveParameter parameter) const;
-    // The parameter whose arc length from the start is `arc_length`, clamped to [0, L].
+    // The parameter whose arc length from the start is `arc_length`, clamped to [0, L], to 1e-12 of
+    // L: Newton's steps on the segment it falls in, inside a bracket that halves when a step leaves it.
     CurveParameter parameter_at(std::span<const HermiteSegment> segments, double arc_length) const;
 
 private:
