@@ -33,8 +33,7 @@ GraphicsScreen draw_graphics_overlay(std::span<const NamedGraphic> graphics, Vie
     inside.record_into(screen.strokes);
     for (std::size_t k = 0; k < graphics.size(); ++k) {
         const Graphic& graphic = graphics[k].graphic;
-        for (const std::vector<Vec3>& polyline : graphic.polylines(graphic.all_points()))
-            draw_world_polyline(inside, polyline, view, overlay_style(k, graphics.size()));
+        draw_world_graphic(inside, graphic, graphic.all_points(), view, overlay_style(k, graphics.size()));
     }
     screen.text.push_back({1, layout::message_row, overlay_legend(graphics)});
     return screen;

@@ -88,13 +88,6 @@ Expected<GraphicsScreen> draw_surfaces_example(const std::filesystem::path& data
     return draw_surfaces_figure("Example 1  N becomes L by both surfaces, THETA 0 PHI 90", *source, n_to_l.view);
 }
 
-// "point 7", or "points 3-5" for a contact region (numbered from 1, as in the .scn file).
-std::string joint_points_text(std::size_t first, std::size_t last)
-{
-    return first == last ? "point " + std::to_string(first + 1)
-                         : "points " + std::to_string(first + 1) + "-" + std::to_string(last + 1);
-}
-
 // "neck: torso point 7 = head point 1".
 std::string joint_legend(const Scene& scene, const std::string& name, const JointEnds& ends)
 {

@@ -1,4 +1,5 @@
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_joints.h"
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/number_text.h"
@@ -37,13 +38,6 @@ Vec3 joint_place_in(const Graphic& drawing, const SceneJoint& joint)
     return joint_place(drawing.all_points(), joint.point, joint.last_point);
 }
 
-// "point 7", or "points 3-5" for a contact region (numbered from 1, as in the file).
-std::string joint_points_name(const SceneJoint& joint)
-{
-    return joint.point == joint.last_point
-               ? "point " + std::to_string(joint.point + 1)
-               : "points " + std::to_string(joint.point + 1) + "-" + std::to_string(joint.last_point + 1);
-}
 
 // A path file, kept until the object's staff values are known.
 struct PendingPath {
@@ -702,9 +696,9 @@ Expected<void> SceneParser::finish_joints()
         const double tolerance =
             second.joint->tolerance.value_or(first.joint->tolerance.value_or(default_tolerance));
         if (distance(pa, pb) > tolerance)
-            return error("joint " + quote_field(name) + ": " + joint_points_name(*first.joint) + " of '" +
+            return error("joint " + quote_field(name) + ": " + joint_points_text(first.joint->point, first.joint->last_point) + " of '" +
                              a.name + "' (line " + std::to_string(first.joint->line) + ") " + describe_point(pa) +
-                             " and " + joint_points_name(*second.joint) + " of '" + b.name + "' " +
+                             " and " + joint_points_text(second.joint->point, second.joint->last_point) + " of '" + b.name + "' " +
                              describe_point(pb) + " are " + shortest_number(distance(pa, pb)) +
                              " apart in frame 0; expected at most " + shortest_number(tolerance),
                          second.joint->line);

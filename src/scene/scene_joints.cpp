@@ -2,6 +2,12 @@
 
 namespace apcs {
 
+std::string joint_points_text(std::size_t first, std::size_t last)
+{
+    return first == last ? "point " + std::to_string(first + 1)
+                         : "points " + std::to_string(first + 1) + "-" + std::to_string(last + 1);
+}
+
 std::optional<JointEnds> find_joint(const Scene& scene, std::string_view name)
 {
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {

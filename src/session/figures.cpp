@@ -92,8 +92,7 @@ GraphicsScreen draw_frames_figure(const std::string& title, const FrameSequence&
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     for (const Graphic& object : still)
-        for (const std::vector<Vec3>& polyline : object.polylines(object.all_points()))
-            draw_world_polyline(painter, polyline, view);
+        draw_world_graphic(painter, object, object.all_points(), view);
     draw_frames(painter, frames, structure, view);
     screen.text.push_back({1, 0, title});
     screen.text.push_back({1, figure_legend_row, std::string(frames_legend) +
@@ -105,8 +104,7 @@ void draw_frames(Painter& painter, const FrameSequence& frames, const Graphic& s
 {
     for (std::size_t k = 0; k < frames.frame_count(); ++k) {
         const LineStyle style = k == 0 || k + 1 == frames.frame_count() ? LineStyle::solid : LineStyle::dotted;
-        for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k)))
-            draw_world_polyline(painter, polyline, view, style);
+        draw_world_graphic(painter, structure, frames.frame(k), view, style);
     }
 }
 
@@ -117,8 +115,7 @@ GraphicsScreen draw_marked_frame_figure(const std::string& title, std::span<cons
     const ViewTransform view = ViewScene().add(points).fit(angles, figure_area);
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
-    for (const std::vector<Vec3>& polyline : structure.polylines(points))
-        draw_world_polyline(painter, polyline, view);
+    draw_world_graphic(painter, structure, points, view);
     int row = figure_legend_row;
     for (const FigureMark& mark : marks) {
         const PixelPoint at = view.to_device(mark.position).rounded();

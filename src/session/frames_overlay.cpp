@@ -75,8 +75,7 @@ GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic&
     inside.record_into(screen.strokes);
     const std::size_t count = frames.frame_count();
     for (std::size_t k = 0; k < count; ++k)
-        for (const std::vector<Vec3>& polyline : structure.polylines(frames.frame(k)))
-            draw_world_polyline(inside, polyline, view, overlay_style(k, count));
+        draw_world_graphic(inside, structure, frames.frame(k), view, overlay_style(k, count));
     for (const LetteredPoint& point : overlay.points) {
         const PixelPoint at = view.to_device(point.position).rounded();
         if (!layout::inside_boundary.contains(at))

@@ -105,7 +105,7 @@ void draw_ferguson_strokes(Painter& painter, const SurfaceFigureSource& source, 
     for (const EvaluatedPath* edge : {&source.first_path, &source.last_path})
         draw_world_curve(painter, edge->curve, view, LineStyle::dashed);
     for (const Graphic* key : {&source.keys.key1, &source.keys.key2})
-        draw_polylines(painter, key->polylines(key->all_points()), view, LineStyle::solid);
+        draw_world_graphic(painter, *key, key->all_points(), view);
     for (const Vec3& point : figure.added_points)
         added_mark(painter, view.to_device(point).rounded());
     for (const Vec3& point : figure.a_inbetweens)

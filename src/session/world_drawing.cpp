@@ -127,6 +127,13 @@ BoundingBox ViewScene::bounds() const
     return box;
 }
 
+void draw_world_graphic(Painter& painter, const Graphic& structure, std::span<const Vec3> points,
+                        const ViewTransform& view, LineStyle style)
+{
+    for (const std::vector<Vec3>& polyline : structure.polylines(points))
+        draw_world_polyline(painter, polyline, view, style);
+}
+
 void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view, LineStyle style)
 {
     if (polyline.empty())

@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace apcs {
@@ -18,6 +19,10 @@ struct JointEnds {
     std::size_t parent_point = 0;
     std::size_t parent_last = 0;
 };
+
+// A joint's points as the .scn file numbers them (from 1): "point 7", or "points 3-5" for a
+// contact region of points first … last (0-based).
+std::string joint_points_text(std::size_t first, std::size_t last);
 
 // The joint called `name` in a checked scene; none when no part declares it.
 std::optional<JointEnds> find_joint(const Scene& scene, std::string_view name);

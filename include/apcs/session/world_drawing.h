@@ -2,6 +2,7 @@
 
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
 #include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/painter.h"
@@ -60,6 +61,11 @@ private:
 // Projects a world polyline through `view` and strokes it; a polyline of one point is one pixel.
 void draw_world_polyline(Painter& painter, std::span<const Vec3> polyline, const ViewTransform& view,
                          LineStyle style = LineStyle::solid);
+
+// A graphic's parts at `points` (its own, or a frame's), each part a polyline as draw_world_polyline
+// draws it (a closed part back to its first point).
+void draw_world_graphic(Painter& painter, const Graphic& structure, std::span<const Vec3> points,
+                        const ViewTransform& view, LineStyle style = LineStyle::solid);
 
 // A sampled KB curve, drawn as draw_world_polyline draws its samples, except that a segment whose
 // Bézier control points (P0, P0 + T0/3, P1 − T1/3, P1) all fall on the pixel where the line
