@@ -7,7 +7,7 @@
 # bash-completion add-on, dpkg-dev, fakeroot, lintian, and man-db for `man apcs`.
 set -euo pipefail
 
-build_and_run=(g++ cmake make libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux)
+build_and_run=(g++ cmake make libcli11-dev libeigen3-dev libpng-dev libgif-dev libncurses-dev console-setup-linux)
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
 # `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
 # librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do).

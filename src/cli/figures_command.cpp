@@ -88,11 +88,13 @@ Expected<GraphicsScreen> draw_surfaces_example(const std::filesystem::path& data
     return draw_surfaces_figure("Example 1  N becomes L by both surfaces, THETA 0 PHI 90", *source, n_to_l.view);
 }
 
-// "neck: torso point 7 = head point 1".
+// "neck: head point 1 = torso point 7", the part declared first first.
 std::string joint_legend(const Scene& scene, const std::string& name, const JointEnds& ends)
 {
-    return name + ": " + scene.objects[ends.parent].name + " " + joint_points_text(ends.parent_point, ends.parent_last) +
-           " = " + scene.objects[ends.part].name + " " + joint_points_text(ends.part_point, ends.part_last);
+    const auto end_text = [&scene](const JointEnd& end) {
+        return scene.objects[end.object].name + " " + joint_points_text(end.first, end.last);
+    };
+    return name + ": " + end_text(ends.earlier) + " = " + end_text(ends.later);
 }
 
 // Fig. 3.3.3: the robot of data/robot standing at frame 0, its neck joint A and wrist joint B marked.
@@ -111,9 +113,9 @@ Expected<GraphicsScreen> draw_robot_figure(const std::filesystem::path& data_fol
         const std::optional<JointEnds> ends = find_joint(*scene, joint);
         if (!ends)
             return Diagnostic{file.string(), 0, std::string("has no joint ") + joint + "; fig. 3.3.3 marks the neck and a wrist"};
-        const ObjectPoints parent = animation.object_points()[ends->parent];
-        const Vec3 position = joint_place(std::span<const Vec3>(points).subspan(parent.first, parent.count),
-                                          ends->parent_point, ends->parent_last);
+        const ObjectPoints earlier = animation.object_points()[ends->earlier.object];
+        const Vec3 position = joint_place(std::span<const Vec3>(points).subspan(earlier.first, earlier.count),
+                                          ends->earlier.first, ends->earlier.last);
         marks.push_back({label, position, joint_legend(*scene, joint, *ends)});
     }
     return draw_marked_frame_figure("Fig. 3.3.3  The robot: key points A (neck) and B (wrist)", points,

@@ -2,6 +2,7 @@
 
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/kochanek_bartels.h"
+#include "apcs/animation/speed_law.h"
 #include "apcs/animation/surface_fit.h"
 #include "apcs/scene/move_align.h"
 #include "apcs/geometry/bounding_box.h"
@@ -73,7 +74,8 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     , m_drawings(scene.objects.size())
     , m_move_offsets(scene.objects.size())
     , m_move_turns(scene.objects.size())
-    , m_joints(scene.objects.size())
+    , m_anchors(scene.objects.size())
+    , m_rigid(scene.objects.size())
     , m_object_points(scene.objects.size())
 {
     std::vector<BoundingBox> boxes(scene.objects.size());
@@ -85,8 +87,8 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
                 boxes[*owner].add(points);
             m_object_points[i] = {m_points_per_frame, points.size()};
             m_points_per_frame += points.size();
-            // A KEYS object draws its fitted frames instead.
-            if (object.shape)
+            // A KEYS object draws its fitted frames instead; a RIGID one turns its KEY1 drawing.
+            if (object.shape || object.rigid())
                 m_drawings[i] = std::move(points);
             for (std::size_t p = 0; p < drawing->parts.size(); ++p) {
                 GraphicPart part = drawing->parts[p];
@@ -94,7 +96,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
                 m_structure.parts.push_back(std::move(part));
             }
         }
-        if (object.keys) {
+        if (object.keys && !object.rigid()) {
             const SceneKeys& keys = *object.keys;
             const PathSettings spread = spread_over(settings, keys.frames);
             const auto with_slopes = [&spread](const std::optional<EndSlopes>& slopes) {
@@ -114,16 +116,26 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
+    links(scene);
+}
+
+void SceneAnimation::links(const Scene& scene)
+{
     const double default_tolerance = default_joint_tolerance(scene);
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
         const SceneObject& object = scene.objects[i];
-        if (!object.parent)
+        if (!object.anchor)
             continue;
-        for (const SceneJoint& joint : object.joints)
-            for (const SceneJoint& partner : scene.objects[*object.parent].joints)
-                if (partner.name == joint.name)
-                    m_joints[i].push_back({joint.point, joint.last_point, partner.point, partner.last_point,
-                                           joint.tolerance.value_or(partner.tolerance.value_or(default_tolerance))});
+        const SceneJoint& joint = object.joints[object.anchor->joint];
+        const SceneJoint& partner = scene.objects[object.anchor->partner].joints[object.anchor->partner_joint];
+        m_anchors[i] = AnchorLink{joint.point, joint.last_point, object.anchor->partner, partner.point, partner.last_point,
+                                  joint.tolerance.value_or(partner.tolerance.value_or(default_tolerance))};
+        if (!object.rigid())
+            continue;
+        const EqualisedKeys& keys = object.keys->keys;
+        m_rigid[i] = RigidMotion{fit_rigid_turn(keys.key1.all_points(), keys.key2.all_points()),
+                                 joint_place(m_drawings[i], joint.point, joint.last_point), object.staff.acceleration,
+                                 object.keys->frames};
     }
 }
 
@@ -180,35 +192,61 @@ std::span<const Vec3> SceneAnimation::drawing_at(std::size_t index, int f) const
     return m_key_frames[index].frame(static_cast<std::size_t>(std::clamp(f - keys->frames.from, 0, last)));
 }
 
+void SceneAnimation::place_rigid(std::size_t index, int f, const Affine& world, std::span<Vec3> points) const
+{
+    const RigidMotion& rigid = *m_rigid[index];
+    const AnchorLink& anchor = *m_anchors[index];
+    const FrameSpan& frames = rigid.frames;
+    const double tau = static_cast<double>(elapsed(frames, f)) / (frames.to - frames.from); // KEYS has FROM < TO
+    const Affine turned =
+        world * partial_turn(rigid.turn, acceleration_distance_fraction(tau, rigid.acceleration), rigid.anchor);
+    const ObjectPoints partner = m_object_points[anchor.partner];
+    const Vec3 shift = joint_place(points.subspan(partner.first, partner.count), anchor.partner_point, anchor.partner_last) -
+                       world(rigid.anchor);
+    const ObjectPoints place = m_object_points[index];
+    const std::span<Vec3> own = points.subspan(place.first, place.count);
+    const std::vector<Vec3>& key1 = m_drawings[index];
+    for (std::size_t p = 0; p < own.size(); ++p)
+        own[p] = turned(key1[p]) + shift;
+}
+
+Vec3 SceneAnimation::place_drawing(std::size_t index, int f, const Affine& world, Vec3 shift, std::span<Vec3> points) const
+{
+    const ObjectPoints place = m_object_points[index];
+    const std::span<Vec3> own = points.subspan(place.first, place.count);
+    const std::span<const Vec3> drawing = drawing_at(index, f);
+    for (std::size_t p = 0; p < own.size(); ++p)
+        own[p] = world(drawing[p]) + shift;
+    if (!m_anchors[index])
+        return shift;
+    // A joint the transforms do not keep moves the part (and, through the shift, the parts
+    // anchored through it) onto its partner's key point.
+    const AnchorLink& anchor = *m_anchors[index];
+    const ObjectPoints partner = m_object_points[anchor.partner];
+    const Vec3 target = joint_place(points.subspan(partner.first, partner.count), anchor.partner_point, anchor.partner_last);
+    const Vec3 separation = target - joint_place(own, anchor.point, anchor.last);
+    if (length(separation) <= anchor.tolerance)
+        return shift;
+    for (Vec3& point : own)
+        point += separation;
+    return shift + separation;
+}
+
 void SceneAnimation::frame(int f, std::span<Vec3> points) const
 {
-    // Parents come first in the file: each object's world transform and joint correction start
-    // from its parent's, computed once per frame.
+    // Parents and partners come first in the file: each object's world transform and shift start
+    // from theirs, computed once per frame.
     std::vector<Affine> world_of(m_scene.objects.size());
-    std::vector<Vec3> correction(m_scene.objects.size());
+    std::vector<Vec3> shift(m_scene.objects.size());
     for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
         const SceneObject& object = m_scene.objects[i];
         world_of[i] = object.parent ? world_of[*object.parent] * own_transform(i, f) : own_transform(i, f);
-        if (object.parent)
-            correction[i] = correction[*object.parent];
-        const ObjectPoints place = m_object_points[i];
-        const std::span<Vec3> own = points.subspan(place.first, place.count);
-        const Affine& world = world_of[i];
-        const std::span<const Vec3> drawing = drawing_at(i, f);
-        for (std::size_t p = 0; p < own.size(); ++p)
-            own[p] = world(drawing[p]) + correction[i];
-        // A joint the transforms do not keep moves the part (and, through `correction`, its
-        // descendants) onto its parent's key point.
-        for (const JointLink& joint : m_joints[i]) {
-            const ObjectPoints parent = m_object_points[*object.parent];
-            const Vec3 target = joint_place(points.subspan(parent.first, parent.count), joint.parent_point, joint.parent_last);
-            const Vec3 separation = target - joint_place(own, joint.point, joint.last);
-            if (length(separation) <= joint.tolerance)
-                continue;
-            correction[i] += separation;
-            for (Vec3& point : own)
-                point += separation;
+        if (m_rigid[i]) {
+            place_rigid(i, f, world_of[i], points);
+            continue; // placed on its anchor: nothing to pass on
         }
+        const std::optional<std::size_t> leader = m_anchors[i] ? std::optional(m_anchors[i]->partner) : object.parent;
+        shift[i] = place_drawing(i, f, world_of[i], leader ? shift[*leader] : Vec3{}, points);
     }
 }
 

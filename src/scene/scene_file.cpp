@@ -1,4 +1,5 @@
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene_joints.h"
 
 #include "apcs/formats/file_io.h"
@@ -29,13 +30,6 @@ Fields split(std::string_view content)
     Fields fields;
     for_each_field(content, [&](std::string_view field) { fields.push_back(field); });
     return fields;
-}
-
-// Where a joint is in a drawing: its point, or the centroid of its points (in range), the parts'
-// points counted in order.
-Vec3 joint_place_in(const Graphic& drawing, const SceneJoint& joint)
-{
-    return joint_place(drawing.all_points(), joint.point, joint.last_point);
 }
 
 
@@ -100,8 +94,9 @@ private:
     Expected<void> parse_rotate(const Fields& fields);
     Expected<void> parse_scale(const Fields& fields);
     Expected<void> parse_joint(const Fields& fields);
+    Expected<void> parse_rigid(const Fields& fields);
     Expected<void> finish_object();
-    Expected<void> finish_joints();
+    Expected<void> finish_rigid();
 
     Expected<DatFile> read_file(std::string_view name, std::size_t minimum_points = 2);
     Expected<double> number(std::string_view field, const std::string& what) const;
@@ -143,7 +138,7 @@ Expected<Scene> SceneParser::parse(std::string_view text)
         return Diagnostic{m_file_name, 0, "expected at least one OBJECT line; the file has none"};
     if (Expected<void> object = finish_object(); !object)
         return object.error();
-    if (Expected<void> joints = finish_joints(); !joints)
+    if (Expected<void> joints = connect_joints(m_scene, m_file_name); !joints)
         return joints.error();
     return std::move(m_scene);
 }
@@ -161,7 +156,8 @@ Expected<void> SceneParser::parse_line(const Fields& fields)
         {"shape", &SceneParser::parse_shape}, {"keys", &SceneParser::parse_keys},
         {"paths", &SceneParser::parse_paths}, {"staff", &SceneParser::parse_staff},
         {"move", &SceneParser::parse_move},   {"rotate", &SceneParser::parse_rotate},
-        {"scale", &SceneParser::parse_scale}, {"joint", &SceneParser::parse_joint}};
+        {"scale", &SceneParser::parse_scale}, {"joint", &SceneParser::parse_joint},
+        {"rigid", &SceneParser::parse_rigid}};
     if (keyword == "object")
         return parse_object(fields);
     if (keyword == "view")
@@ -171,7 +167,7 @@ Expected<void> SceneParser::parse_line(const Fields& fields)
     const auto found = object_keywords.find(keyword);
     if (found == object_keywords.end())
         return error("unknown keyword " + quote_field(fields[0]) +
-                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT or VIEW");
+                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID or VIEW");
     if (m_scene.objects.empty())
         return error(std::string(fields[0]) + " before the first OBJECT line; expected 'OBJECT NAME' first");
     return (this->*found->second)(fields);
@@ -513,9 +509,40 @@ Expected<void> SceneParser::parse_joint(const Fields& fields)
     for (const SceneJoint& other : object().joints)
         if (other.name == joint.name)
             return error("joint " + quote_field(joint.name) + " is named twice in object '" + object().name +
-                         "' (line " + std::to_string(other.line) + "); a joint joins a part and its parent");
+                         "' (line " + std::to_string(other.line) + "); a joint joins two parts, each naming it once");
     object().joints.push_back(std::move(joint));
     return ok;
+}
+
+Expected<void> SceneParser::parse_rigid(const Fields& fields)
+{
+    if (fields.size() != 1)
+        return error("expected 'RIGID' alone on its line, found " + quote_field(fields[1]) + " after it");
+    if (Expected<void> first = once(object().rigid(), "RIGID"); !first)
+        return first;
+    object().rigid_line = m_line;
+    return ok;
+}
+
+// A RIGID part turns from its KEY1 drawing to its KEY2 drawing: it needs both, congruent.
+Expected<void> SceneParser::finish_rigid()
+{
+    const SceneObject& current = object();
+    if (!current.rigid())
+        return ok;
+    if (!current.keys)
+        return error("RIGID part '" + current.name +
+                         "' has no KEYS; expected KEYS KEY1.dat KEY2.dat, the two poses it turns between",
+                     current.rigid_line);
+    const EqualisedKeys& keys = current.keys->keys;
+    const RigidTurn turn = fit_rigid_turn(keys.key1.all_points(), keys.key2.all_points());
+    const double allowed = rigid_congruence * turn.size;
+    if (turn.worst_deviation <= allowed)
+        return ok;
+    return error("RIGID part '" + current.name + "': its KEY2 drawing is not its KEY1 drawing turned and moved: point " +
+                     std::to_string(turn.worst_point + 1) + " is " + shortest_number(turn.worst_deviation) +
+                     " off; expected within 1e-4 of its size (" + shortest_number(turn.size) + ")",
+                 current.rigid_line);
 }
 
 Expected<double> SceneParser::number(std::string_view field, const std::string& what) const
@@ -655,55 +682,7 @@ Expected<void> SceneParser::finish_object()
                              " of object '" + current.name + "', whose drawing has " + std::to_string(points) +
                              " points" + (current.keys ? " (after adding points)" : ""),
                          joint.line);
-    return ok;
-}
-
-// Every joint name is used exactly twice, by a part and its parent, and its two points meet
-// within the tolerance in frame 0.
-Expected<void> SceneParser::finish_joints()
-{
-    struct Use {
-        std::size_t object;
-        const SceneJoint* joint;
-    };
-    std::map<std::string, std::vector<Use>> uses;
-    for (std::size_t i = 0; i < m_scene.objects.size(); ++i)
-        for (const SceneJoint& joint : m_scene.objects[i].joints)
-            uses[joint.name].push_back({i, &joint});
-    const double default_tolerance = default_joint_tolerance(m_scene);
-    for (const auto& [name, list] : uses) {
-        const Use& first = list.front();
-        if (list.size() != 2)
-            return error("joint " + quote_field(name) + " is used " + std::to_string(list.size()) +
-                             " time(s); expected exactly twice, in a part and its parent",
-                         list.back().joint->line);
-        const Use& second = list[1];
-        const SceneObject& a = m_scene.objects[first.object];
-        const SceneObject& b = m_scene.objects[second.object];
-        if (b.parent != first.object && a.parent != second.object)
-            return error("joint " + quote_field(name) + " joins '" + a.name + "' (line " +
-                             std::to_string(first.joint->line) + ") and '" + b.name +
-                             "', which is not its part or its parent; expected a part and its parent",
-                         second.joint->line);
-        // Two different values would leave one silently unused (SPEC §8.2).
-        if (first.joint->tolerance && second.joint->tolerance && *first.joint->tolerance != *second.joint->tolerance)
-            return error("joint " + quote_field(name) + " has TOLERANCE " + shortest_number(*second.joint->tolerance) +
-                             " here and " + shortest_number(*first.joint->tolerance) + " on line " +
-                             std::to_string(first.joint->line) + "; expected one value (or the same on both lines)",
-                         second.joint->line);
-        const Vec3 pa = joint_place_in(*a.first_drawing(), *first.joint);
-        const Vec3 pb = joint_place_in(*b.first_drawing(), *second.joint);
-        const double tolerance =
-            second.joint->tolerance.value_or(first.joint->tolerance.value_or(default_tolerance));
-        if (distance(pa, pb) > tolerance)
-            return error("joint " + quote_field(name) + ": " + joint_points_text(first.joint->point, first.joint->last_point) + " of '" +
-                             a.name + "' (line " + std::to_string(first.joint->line) + ") " + describe_point(pa) +
-                             " and " + joint_points_text(second.joint->point, second.joint->last_point) + " of '" + b.name + "' " +
-                             describe_point(pb) + " are " + shortest_number(distance(pa, pb)) +
-                             " apart in frame 0; expected at most " + shortest_number(tolerance),
-                         second.joint->line);
-    }
-    return ok;
+    return finish_rigid();
 }
 
 } // namespace

@@ -32,6 +32,10 @@ std::string node_line(const Scene& scene, std::size_t index, std::size_t parts)
     }
     for (const SceneJoint& joint : object.joints)
         line += "  JOINT " + joint.name;
+    if (object.rigid())
+        line += "  RIGID";
+    if (object.anchor)
+        line += "  anchor " + object.joints[object.anchor->joint].name + " on " + scene.objects[object.anchor->partner].name;
     return line;
 }
 

@@ -4,6 +4,7 @@
 #include "apcs/cli/play_command.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_joints.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -87,29 +89,89 @@ TEST_CASE("the robot example keeps every one of its 13 joints within its toleran
     const Scene& scene = robot.scene;
     const SceneAnimation& animation = robot.animation;
     const double tolerance = default_joint_tolerance(scene);
+    std::map<std::string, int> names;
+    for (const SceneObject& object : scene.objects)
+        for (const SceneJoint& joint : object.joints)
+            ++names[joint.name];
     std::size_t checked = 0;
     for (int f = 0; f <= scene.last_frame; ++f) {
         const std::vector<Vec3> points = animation.frame(f);
-        for (std::size_t i = 0; i < scene.objects.size(); ++i) {
-            const SceneObject& object = scene.objects[i];
-            if (!object.parent)
-                continue;
-            for (const SceneJoint& joint : object.joints)
-                for (const SceneJoint& partner : scene.objects[*object.parent].joints)
-                    if (partner.name == joint.name) {
-                        const ObjectPoints own = animation.object_points()[i];
-                        const ObjectPoints parent = animation.object_points()[*object.parent];
-                        const std::span<const Vec3> all(points);
-                        const Vec3 mine = joint_place(all.subspan(own.first, own.count), joint.point, joint.last_point);
-                        const Vec3 theirs =
-                            joint_place(all.subspan(parent.first, parent.count), partner.point, partner.last_point);
-                        CAPTURE(f, object.name, joint.name);
-                        REQUIRE(distance(mine, theirs) <= tolerance);
-                        ++checked;
-                    }
+        const std::span<const Vec3> all(points);
+        for (const auto& [name, uses] : names) {
+            const std::optional<JointEnds> ends = find_joint(scene, name);
+            REQUIRE(ends.has_value());
+            const auto place = [&](const JointEnd& end) {
+                const ObjectPoints where = animation.object_points()[end.object];
+                return joint_place(all.subspan(where.first, where.count), end.first, end.last);
+            };
+            CAPTURE(f, name);
+            REQUIRE(distance(place(ends->earlier), place(ends->later)) <= tolerance);
+            ++checked;
         }
     }
     REQUIRE(checked == 13u * 13u); // 13 joints x frames 0 ... 12
+}
+
+// The largest distance between two points of a drawing.
+double drawing_size(std::span<const Vec3> points)
+{
+    double size = 0;
+    for (const Vec3& a : points)
+        for (const Vec3& b : points)
+            size = std::max(size, distance(a, b));
+    return size;
+}
+
+TEST_CASE("the robot's parts keep their size and their shape in every frame (RIGID limbs, Ch. 3.3)", "[scene][examples]")
+{
+    const Example robot("robot/robot.scn");
+    std::size_t checked = 0;
+    for (std::size_t i = 0; i < robot.scene.objects.size(); ++i) {
+        if (!robot.scene.objects[i].has_drawing())
+            continue;
+        const std::vector<Vec3> first = points_of(robot.animation, i, 0);
+        for (int f = 1; f <= robot.scene.last_frame; ++f) {
+            const std::vector<Vec3> now = points_of(robot.animation, i, f);
+            CAPTURE(robot.scene.objects[i].name, f);
+            REQUIRE(std::abs(drawing_size(now) - drawing_size(first)) <= 0.005 * drawing_size(first));
+            // Congruent, not only as large: every distance between two of its points kept.
+            for (std::size_t a = 0; a < now.size(); ++a)
+                for (std::size_t b = a + 1; b < now.size(); ++b)
+                    REQUIRE(std::abs(distance(now[a], now[b]) - distance(first[a], first[b])) <= 1e-9);
+            ++checked;
+        }
+    }
+    REQUIRE(checked == 14u * 12u); // head, torso and 12 limbs x frames 1 ... 12
+}
+
+TEST_CASE("the robot's standing foot stays put while the torso walks a step, and the swinging foot stays above the "
+          "ground",
+          "[scene][examples]")
+{
+    const Example robot("robot/robot.scn");
+    const int last = robot.scene.last_frame;
+    const std::size_t torso = robot.object("torso");
+    const std::size_t standing = robot.object("sole-r");
+    const std::size_t swinging = robot.object("sole-l");
+    const double travel = distance(points_of(robot.animation, torso, last)[4], points_of(robot.animation, torso, 0)[4]);
+    REQUIRE(travel == Approx(1.9).epsilon(1e-6)); // the hip (torso point 5): one step
+    const std::vector<Vec3> planted = points_of(robot.animation, standing, 0);
+    const double ground = std::min(planted[1].z, planted[2].z); // the sole's heel and toe
+    double largest_slide = 0;
+    double highest_lift = 0;
+    for (int f = 0; f <= last; ++f) {
+        const std::vector<Vec3> sole = points_of(robot.animation, standing, f);
+        for (std::size_t p = 0; p < sole.size(); ++p)
+            largest_slide = std::max(largest_slide, distance(sole[p], planted[p]));
+        double lowest = std::numeric_limits<double>::infinity();
+        for (const Vec3& point : points_of(robot.animation, swinging, f))
+            lowest = std::min(lowest, point.z);
+        CAPTURE(f);
+        REQUIRE(lowest >= ground - 1e-9);
+        highest_lift = std::max(highest_lift, lowest - ground);
+    }
+    CHECK(largest_slide <= 0.01 * travel); // measured 0.0017 (exact spacing of the walk's arc)
+    CHECK(highest_lift > 0.1); // the foot does leave the ground between the keys
 }
 
 TEST_CASE("the bicycle example turns each wheel and the pedals about their own centres at their rates while "
@@ -300,10 +362,23 @@ TEST_CASE("apcs play --tree prints the robot as fig. 3.3.2's data structure", "[
 {
     const auto tree = run_apcs({"play", (data_folder / "robot/robot.scn").string(), "--tree"});
     REQUIRE(tree.status == 0);
-    REQUIRE(tree.out.starts_with("robot.scn: frames 0-12, 15 objects\n`-- robot  t c b a +0.00 +0.00 +0.00 +0.00  N=1  MOVE\n"));
+    // Fig. 3.3.2: robot (N = 4) -> head, torso, hand, foot; hand and foot hold three parts a side.
+    REQUIRE(tree.out.starts_with("robot.scn: frames 0-12, 17 objects\n`-- robot  t c b a +0.00 +0.00 +0.00 +0.00  N=4  MOVE\n"
+                                 "    |-- head  "));
+    const std::vector<std::string> children{"    |-- head  ", "    |-- torso  ", "    |-- hand  ", "    `-- foot  "};
+    std::size_t after = 0;
+    for (const std::string& child : children) {
+        const std::size_t found = tree.out.find(child, after);
+        CAPTURE(child);
+        REQUIRE(found != std::string::npos);
+        after = found;
+    }
+    REQUIRE(tree.out.find("    |-- hand  t c b a +0.00 +0.00 +0.00 +0.00 (inherited)  N=6\n") != std::string::npos);
+    REQUIRE(tree.out.find("    `-- foot  t c b a +0.00 +0.00 +0.00 +0.00 (inherited)  N=6\n") != std::string::npos);
+    REQUIRE(tree.out.find("RIGID  anchor knee-l on thigh-l\n") != std::string::npos);
     const auto tree_and_print = run_apcs({"play", (data_folder / "robot/robot.scn").string(), "--tree", "--print"});
     REQUIRE(tree_and_print.status == 2);
     REQUIRE(tree_and_print.out.empty());
-    for (const char* part : {"head", "torso", "arm-l", "palm-l", "fingers-l", "thigh-r", "calf-r", "sole-r"})
+    for (const char* part : {"head", "torso", "arm-l", "palm-l", "finger-l", "thigh-r", "calf-r", "sole-r"})
         REQUIRE(tree.out.find(std::string("-- ") + part + "  ") != std::string::npos);
 }

@@ -19,6 +19,7 @@ DatFiles example_files()
     files.texts["path7.dat"] = "0 0 0 0 0 0 0.5\n0 5 0 0 0 0 0\n";
     files.texts["k1.dat"] = "0 0 0\n0 1 0\n";
     files.texts["k2.dat"] = "0 0 2\n0 1 2\n0 2 2\n";
+    files.texts["turned.dat"] = "0 0 0\n0 0 1\n"; // k1.dat turned a quarter about x
     return files;
 }
 
@@ -97,7 +98,8 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
          "t.scn:7: joint 'j' has TOLERANCE 0.25 here and 0.5 on line 4; expected one value (or the same on both lines)"},
         {"FRAMES 5\nSHAPE square.dat\n", "t.scn:2: SHAPE before the first OBJECT line; expected 'OBJECT NAME' first"},
         {head + "WIGGLE 3\n",
-         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT or VIEW"},
+         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID or "
+         "VIEW"},
         {head + "OBJECT a\n", "t.scn:4: object 'a' is declared again; its first OBJECT line is line 2 (names are unique)"},
         {head + "OBJECT b PARENT c\nOBJECT c\n",
          "t.scn:4: parent 'c' is not an object declared above; a parent is declared before its parts"},
@@ -108,13 +110,21 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "ROTATE 1\nROTATE 2\n", "t.scn:5: a second ROTATE for object 'a'; expected one at most"},
         {head + "MOVE path.dat\nMOVE path.dat\n", "t.scn:5: a second MOVE for object 'a'; expected one at most"},
         {head + "JOINT j 5\n", "t.scn:4: joint 'j' names point 5 of object 'a', whose drawing has 4 points"},
-        {head + "JOINT j 1\n", "t.scn:4: joint 'j' is used 1 time(s); expected exactly twice, in a part and its parent"},
+        {head + "JOINT j 1\n", "t.scn:4: joint 'j' is used 1 time(s); expected exactly twice, in two parts of one object"},
         {joints + "JOINT j 2\n",
          "t.scn:7: joint 'j': point 1 of 'a' (line 4) (0, 0, 0) and point 2 of 'b' (0, 1, 0) are 1 apart in frame 0; "
          "expected at most 0.0014142135623730952"},
         {joined + "OBJECT c\nSHAPE square.dat\nJOINT k 1\nOBJECT d PARENT a\nSHAPE square.dat\nJOINT k 1\n",
-         "t.scn:13: joint 'k' joins 'c' (line 10) and 'd', which is not its part or its parent; expected a part and its "
-         "parent"},
+         "t.scn:13: joint 'k' joins 'c' (line 10) of object 'c' and 'd' of object 'a'; expected two parts of one object"},
+        {head + "RIGID\n", "t.scn:4: RIGID part 'a' has no KEYS; expected KEYS KEY1.dat KEY2.dat, the two poses it turns between"},
+        {head + "RIGID yes\n", "t.scn:4: expected 'RIGID' alone on its line, found 'yes' after it"},
+        {"FRAMES 10\nOBJECT a\nKEYS k1.dat turned.dat\nRIGID\nRIGID\n", "t.scn:5: a second RIGID for object 'a'; expected one at most"},
+        {"FRAMES 10\nOBJECT a\nKEYS k1.dat turned.dat\nRIGID\n",
+         "t.scn:4: RIGID part 'a' has no anchor: none of its joints is shared with a part declared before it; expected a "
+         "JOINT with an earlier part (the joint it turns about)"},
+        {"FRAMES 10\nOBJECT a\nKEYS k1.dat k2.dat\nRIGID\n",
+         "t.scn:4: RIGID part 'a': its KEY2 drawing is not its KEY1 drawing turned and moved: point 1 is 0.5 off; expected "
+         "within 1e-4 of its size (1)"},
         {head + "MOVE path.dat TIMES 0 5\n",
          "t.scn:4: TIMES gives 2 frames but 'path.dat' has 3 control points; expected one frame per control point"},
         {head + "MOVE path.dat TIMES 0 5 5\n",

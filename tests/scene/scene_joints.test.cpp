@@ -8,7 +8,7 @@
 
 using namespace apcs;
 
-TEST_CASE("a joint is found by name with its part's point and its parent's", "[scene][joints]")
+TEST_CASE("a joint is found by name with its two ends, the part declared first first", "[scene][joints]")
 {
     test::DatFiles files;
     files.texts["body.dat"] = "0 0 0\n1 0 0\n1 1 0\n";
@@ -19,12 +19,41 @@ TEST_CASE("a joint is found by name with its part's point and its parent's", "[s
                                          files);
     const std::optional<JointEnds> neck = find_joint(scene, "neck");
     REQUIRE(neck.has_value());
-    CHECK(neck->part == 1);
-    CHECK(neck->part_point == 1); // JOINT neck 2 in head: its second point
-    CHECK(neck->parent == 0);
-    CHECK(neck->parent_point == 2);
+    CHECK(neck->earlier.object == 0);
+    CHECK(neck->earlier.first == 2); // JOINT neck 3 in body: its third point
+    CHECK(neck->later.object == 1);
+    CHECK(neck->later.first == 1);
     CHECK_FALSE(find_joint(scene, "knee").has_value());
     CHECK_FALSE(find_joint(scene, "NECK").has_value());
+}
+
+TEST_CASE("joints form a graph of their own: two parts in different branches join, each part anchored at its "
+          "first joint with a part declared before it",
+          "[scene][joints]")
+{
+    test::DatFiles files;
+    files.texts["a.dat"] = "0 0 0\n0 1 0\n";
+    files.texts["b.dat"] = "0 1 0\n0 2 0\n";
+    files.texts["c.dat"] = "0 2 0\n0 3 0\n";
+    // b and c sit in different groups; c names its joint with a part declared after it first.
+    const Scene scene = test::scene_from("FRAMES 2\nOBJECT body\n"
+                                         "OBJECT left PARENT body\nOBJECT a PARENT left\nSHAPE a.dat\nJOINT ab 2\n"
+                                         "OBJECT right PARENT body\nOBJECT b PARENT right\nSHAPE b.dat\nJOINT ab 1\nJOINT bc 2\n"
+                                         "OBJECT c PARENT left\nSHAPE c.dat\nJOINT cd 2\nJOINT bc 1\n"
+                                         "OBJECT d PARENT left\nSHAPE c.dat\nJOINT cd 2\n",
+                                         files);
+    // Objects: body 0, left 1, a 2, right 3, b 4, c 5, d 6.
+    REQUIRE_FALSE(scene.objects[2].anchor.has_value()); // a: nothing before it to join
+    REQUIRE(scene.objects[4].anchor.has_value());
+    CHECK(scene.objects[4].anchor->partner == 2); // b on a, across the branches
+    CHECK(scene.objects[4].anchor->joint == 0);
+    REQUIRE(scene.objects[5].anchor.has_value());
+    CHECK(scene.objects[5].anchor->partner == 4); // c on b by its second JOINT line: d comes later
+    CHECK(scene.objects[5].anchor->joint == 1);
+    CHECK(scene.objects[5].anchor->partner_joint == 1);
+    REQUIRE(scene.objects[6].anchor.has_value());
+    CHECK(scene.objects[6].anchor->partner == 5);
+    CHECK(root_object(scene, 6) == 0);
 }
 
 TEST_CASE("the robot's key points A and B are the thesis' neck and wrist", "[scene][joints][examples]")
@@ -34,14 +63,14 @@ TEST_CASE("the robot's key points A and B are the thesis' neck and wrist", "[sce
     REQUIRE(robot.has_value());
     const std::optional<JointEnds> neck = find_joint(*robot, "neck");
     REQUIRE(neck.has_value());
-    CHECK(robot->objects[neck->parent].name == "torso");
-    CHECK(neck->parent_point == 6);
-    CHECK(robot->objects[neck->part].name == "head");
-    CHECK(neck->part_point == 0);
+    CHECK(robot->objects[neck->earlier.object].name == "head");
+    CHECK(neck->earlier.first == 0);
+    CHECK(robot->objects[neck->later.object].name == "torso");
+    CHECK(neck->later.first == 6);
     const std::optional<JointEnds> wrist = find_joint(*robot, "wrist-r");
     REQUIRE(wrist.has_value());
-    CHECK(robot->objects[wrist->parent].name == "arm-r");
-    CHECK(wrist->parent_point == 1);
-    CHECK(robot->objects[wrist->part].name == "palm-r");
-    CHECK(wrist->part_point == 0);
+    CHECK(robot->objects[wrist->earlier.object].name == "arm-r");
+    CHECK(wrist->earlier.first == 1);
+    CHECK(robot->objects[wrist->later.object].name == "palm-r");
+    CHECK(wrist->later.first == 0);
 }

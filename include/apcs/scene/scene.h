@@ -82,6 +82,14 @@ struct SceneKeys {
     FrameSpan frames;
 };
 
+// A part's anchor (SPEC §8.2): the first of its joints, in its JOINT lines' order, whose other end
+// is a part declared before it (its partner). Indices into the parts' `joints` and Scene::objects.
+struct SceneAnchor {
+    std::size_t joint = 0;
+    std::size_t partner = 0;
+    std::size_t partner_joint = 0;
+};
+
 // One OBJECT line and what follows it: a part when it has a parent.
 struct SceneObject {
     std::string name;
@@ -95,7 +103,12 @@ struct SceneObject {
     std::optional<SceneRotate> rotate;
     std::optional<SceneScale> scale;
     std::vector<SceneJoint> joints;
+    std::optional<SceneAnchor> anchor; // set when the scene has been read whole
+    // RIGID (the line it is on; 0: not rigid): its key frames are in-betweened as a turn about its
+    // anchor, so it keeps its shape (SPEC §8.2).
+    int rigid_line = 0;
 
+    bool rigid() const { return rigid_line != 0; }
     bool has_drawing() const { return shape.has_value() || keys.has_value(); }
     // Its drawing at frame 0 (SHAPE, or KEY1 after adding points); a group has none.
     const Graphic* first_drawing() const { return shape ? &*shape : keys ? &keys->keys.key1 : nullptr; }

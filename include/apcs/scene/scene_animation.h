@@ -5,6 +5,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/surface_construction.h"
 #include "apcs/geometry/affine.h"
+#include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene.h"
 
 #include <cstddef>
@@ -33,8 +34,10 @@ struct OutOfReach {
 
 // A scene's frames, one at a time (SPEC §8.2): each object's transform
 // W_f = W_f(parent) ∘ translation(MOVE) ∘ ROTATE about its centre ∘ SCALE about its centre, applied
-// to its frame-f drawing (SHAPE, or the KEYS frame); then each joint that is more than its
-// tolerance apart moves the part and its descendants by the separation. What every frame needs
+// to its frame-f drawing (SHAPE, or the KEYS frame); then a part whose anchor is more than its
+// tolerance apart is moved by the separation, and the parts anchored through it with it (a part
+// without an anchor moves with its parent). A RIGID part is its KEY1 drawing turned, by its law, a
+// fraction of the way to KEY2, its anchor on its partner's point. What every frame needs
 // (the KEYS frames, the MOVE offsets) is computed once, here; `scene` must outlive this.
 class SceneAnimation {
 public:
@@ -67,18 +70,35 @@ public:
     const Vec3& centre(std::size_t index) const { return m_centres[index]; }
 
 private:
-    struct JointLink {
-        std::size_t point; // points point … last of this object's drawing
+    // A part's anchor (SPEC §8.2): points point … last of its drawing meet points partner_point …
+    // partner_last of its partner's.
+    struct AnchorLink {
+        std::size_t point;
         std::size_t last;
-        std::size_t parent_point; // points parent_point … parent_last of the parent's drawing
-        std::size_t parent_last;
+        std::size_t partner;
+        std::size_t partner_point;
+        std::size_t partner_last;
         double tolerance;
+    };
+    // A RIGID part: its KEY1 drawing, the whole turn to KEY2, the law and the frames it turns over.
+    struct RigidMotion {
+        RigidTurn turn;
+        Vec3 anchor; // its anchor's place in the KEY1 drawing, the centre of the turn
+        double acceleration;
+        FrameSpan frames;
     };
     // Which of the object's MOVE offsets (and ALIGN turns) frame f shows; none before the MOVE.
     std::optional<std::size_t> move_step(std::size_t index, int f) const;
     // T_f of the object alone: its MOVE, ROTATE and SCALE, without its parents'.
     Affine own_transform(std::size_t index, int f) const;
     std::span<const Vec3> drawing_at(std::size_t index, int f) const;
+    // A RIGID part's points at frame f: KEY1 turned by law(τ) of the whole turn, moved by `world`,
+    // its anchor put on its partner's joint point in `points` (the partner's already placed).
+    void place_rigid(std::size_t index, int f, const Affine& world, std::span<Vec3> points) const;
+    // A part that is not RIGID: its drawing moved by `world` and `shift`, then onto its partner's
+    // joint point if farther than the tolerance; the shift it ends with.
+    Vec3 place_drawing(std::size_t index, int f, const Affine& world, Vec3 shift, std::span<Vec3> points) const;
+    void links(const Scene& scene);
 
     const Scene& m_scene;
     std::vector<Vec3> m_centres;
@@ -86,7 +106,8 @@ private:
     std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points (empty for KEYS)
     std::vector<std::vector<Vec3>> m_move_offsets;  // per object: MOVE offset at FROM … TO
     std::vector<std::vector<Affine>> m_move_turns;  // per object with ALIGN: its turn at FROM … TO
-    std::vector<std::vector<JointLink>> m_joints;   // per object: its joints with its parent
+    std::vector<std::optional<AnchorLink>> m_anchors;
+    std::vector<std::optional<RigidMotion>> m_rigid;
     std::vector<ObjectPoints> m_object_points;
     std::size_t m_points_per_frame = 0;
     Graphic m_structure;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/scene/scene.h"
 
 #include <cstddef>
@@ -9,15 +10,18 @@
 
 namespace apcs {
 
-// A joint's two ends (thesis Ch. 3.3's key point): a point of a part's drawing and a point of its
-// parent's, which every frame keeps within the joint's tolerance.
+// One end of a joint: points first … last (0-based; a contact region when they differ) of a part.
+struct JointEnd {
+    std::size_t object = 0; // index in Scene::objects
+    std::size_t first = 0;
+    std::size_t last = 0;
+};
+
+// A joint's two ends (thesis Ch. 3.3's key point), the part declared first as `earlier`: every
+// frame keeps them within the joint's tolerance.
 struct JointEnds {
-    std::size_t part = 0; // object indices in Scene::objects
-    std::size_t part_point = 0; // the first of its points; part_last the last (a contact region)
-    std::size_t part_last = 0;
-    std::size_t parent = 0;
-    std::size_t parent_point = 0;
-    std::size_t parent_last = 0;
+    JointEnd earlier;
+    JointEnd later;
 };
 
 // A joint's points as the .scn file numbers them (from 1): "point 7", or "points 3-5" for a
@@ -26,5 +30,13 @@ std::string joint_points_text(std::size_t first, std::size_t last);
 
 // The joint called `name` in a checked scene; none when no part declares it.
 std::optional<JointEnds> find_joint(const Scene& scene, std::string_view name);
+
+// The object a part belongs to: the root of its PARENT chain.
+std::size_t root_object(const Scene& scene, std::size_t index);
+
+// Checks a scene's joints as a graph (SPEC §8.2) and sets each part's anchor: every joint name is
+// used by exactly two parts of one object, with one TOLERANCE at most, its two points within it in
+// frame 0; every RIGID part has an anchor. `file_name` names the scene in the diagnostic.
+Expected<void> connect_joints(Scene& scene, const std::string& file_name);
 
 } // namespace apcs
