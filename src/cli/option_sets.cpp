@@ -282,8 +282,8 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
                options.pace = text == "step" ? ReplayPace{ReplayPace::Kind::on_space, 0}
                                              : ReplayPace{ReplayPace::Kind::every, std::stoi(text)};
            },
-           "play the --keys script one key every MS milliseconds, " + whole_range_text(limits::pace_ms) +
-               ", or one key per Space ('step'), with its ;; captions")
+           "play the --keys script one step (a key, or a typed line) every MS milliseconds, " +
+               whole_range_text(limits::pace_ms) + ", or one step per Space ('step'), with its ;; captions")
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 if (text == "step")

@@ -115,7 +115,7 @@ SessionSettings session_settings(const CommonOptions& options)
 // Each step's screen as the step ends (its last key played), under the step's name; a caption
 // of the script as ";; TEXT" where the replay reaches it.
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out)
+                                           std::ostream& out, const CaptionReached& reached)
 {
     std::string shown = screen_text(session, glyphs);
     SessionPhase shown_phase = session.phase();
@@ -123,8 +123,11 @@ std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& sc
     std::size_t next_caption = 0;
     const auto print_captions = [&](std::size_t played) {
         for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= played;
-             ++next_caption)
+             ++next_caption) {
             out << ";; " << script.captions[next_caption].text << '\n';
+            if (reached)
+                reached(script.captions[next_caption], session);
+        }
     };
     std::size_t handled = 0;
     for (const KeyEvent& key : script.events) {

@@ -6,6 +6,7 @@
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/painter.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace apcs {
@@ -48,8 +49,40 @@ std::optional<std::string> caption_of(std::string_view comment)
     return std::string(comment.substr(first, last - first + 1));
 }
 
-Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name,
-                                             std::vector<ScriptCaption>* captions)
+// How many terminal columns `text` takes on the caption row (put_text leaves control characters out).
+int caption_columns(std::string_view text)
+{
+    int columns = 0;
+    for (const char32_t character : decode_utf8(text))
+        columns += std::max(cell_width(character), 0);
+    return columns;
+}
+
+// The caption of a comment, checked against the caption row's width.
+Expected<std::optional<std::string>> checked_caption(std::string_view comment, const std::string& file_name,
+                                                     int line_number)
+{
+    std::optional<std::string> caption = caption_of(comment);
+    if (caption && caption_columns(*caption) > max_caption_columns)
+        return Diagnostic{file_name, line_number,
+                          "expected a caption of at most " + std::to_string(max_caption_columns) +
+                              " columns (the key-hint row of the 80x24 screen); found " +
+                              std::to_string(caption_columns(*caption))};
+    return caption;
+}
+
+// A TEXT line's keys: its characters, a space as the Space key.
+void type_line(std::string_view typed, std::vector<KeyEvent>& events, std::vector<TypedLine>* typed_lines)
+{
+    const std::size_t first = events.size();
+    for (const char32_t character : decode_utf8(typed))
+        events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
+    if (typed_lines != nullptr && events.size() > first)
+        typed_lines->push_back({first, events.size() - first});
+}
+
+// The script's events; its captions and TEXT lines into `kept` unless it is null.
+Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
 {
     // Every event takes at least one byte of the script: one allocation, never a doubling.
     std::vector<KeyEvent> events;
@@ -62,13 +95,15 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         ++line_number;
         std::string_view line = take_line(text);
         if (line.starts_with("TEXT ")) {
-            for (const char32_t character : decode_utf8(line.substr(5)))
-                events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
+            type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
             continue;
         }
         const std::size_t comment = line.find(';');
-        const std::optional<std::string> caption =
-            comment == std::string_view::npos ? std::nullopt : caption_of(line.substr(comment));
+        const Expected<std::optional<std::string>> caption =
+            comment == std::string_view::npos ? Expected<std::optional<std::string>>(std::nullopt)
+                                              : checked_caption(line.substr(comment), file_name, line_number);
+        if (!caption)
+            return caption.error();
         line = line.substr(0, comment);
         for_each_field(line, [&](std::string_view token) {
             if (problem)
@@ -80,8 +115,8 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
-        if (caption && captions != nullptr)
-            captions->push_back({events.size(), *caption});
+        if (*caption && kept != nullptr)
+            kept->captions.push_back({events.size(), **caption});
     }
     // Keys named by words (ENTER) take many bytes each: give back what they left unused.
     if (events.size() < events.capacity() / 2)
@@ -103,6 +138,15 @@ std::string take_text_line(std::string& pending_text)
     return lines + trailing_spaces;
 }
 
+// The TEXT line whose keys start at event `first`, if one does.
+const TypedLine* typed_line_at(const KeyScript& script, std::size_t first)
+{
+    const auto typed = std::lower_bound(
+        script.typed_lines.begin(), script.typed_lines.end(), first,
+        [](const TypedLine& line, std::size_t event) { return line.first_event < event; });
+    return typed != script.typed_lines.end() && typed->first_event == first ? &*typed : nullptr;
+}
+
 } // namespace
 
 Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
@@ -113,7 +157,7 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
 Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name)
 {
     KeyScript script;
-    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script.captions);
+    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script);
     if (!events)
         return events.error();
     script.events = std::move(*events);
@@ -127,6 +171,34 @@ const ScriptCaption* caption_at(const KeyScript& script, std::size_t played)
         if (caption.before_event <= played)
             shown = &caption;
     return shown;
+}
+
+std::size_t step_length(const KeyScript& script, std::size_t first)
+{
+    if (first >= script.events.size())
+        return 0;
+    const TypedLine* typed = typed_line_at(script, first);
+    return typed == nullptr ? 1 : typed->event_count;
+}
+
+std::string step_label(const KeyScript& script, std::size_t first)
+{
+    if (first >= script.events.size())
+        return {};
+    if (const TypedLine* typed = typed_line_at(script, first)) {
+        std::string label = "TEXT ";
+        for (std::size_t event = first; event < first + typed->event_count; ++event)
+            append_utf8(label, script.events[event].key == Key::space ? U' ' : script.events[event].character);
+        return label;
+    }
+    const KeyEvent& event = script.events[first];
+    if (event.key == Key::character) {
+        std::string label;
+        append_utf8(label, event.character);
+        return label;
+    }
+    const PhysicalKey* row = find_physical_key(event.key);
+    return row == nullptr ? std::string() : std::string(row->script_name);
 }
 
 std::string format_key_script(const std::vector<KeyEvent>& events)

@@ -16,13 +16,21 @@ namespace apcs {
 
 namespace {
 
+// What a replay lays over the session's screen: its caption, and during a paced replay the key
+// just played.
+struct ReplayShown {
+    std::string_view caption;
+    std::string_view played_key;
+};
+
 CellGrid grid_for(const InteractiveProgram& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
-                  std::string_view caption)
+                  ReplayShown replay)
 {
-    const SessionScreen screen = with_caption(session.screen(), caption);
-    if (screen.graphics)
-        return graphics_grid(screen.picture, size, glyphs, cache);
-    return fit_cell_area(size.columns, size.rows) ? screen.text : too_small_grid(size);
+    const SessionScreen screen = with_caption(session.screen(), replay.caption);
+    if (!fit_cell_area(size.columns, size.rows))
+        return too_small_grid(size);
+    return with_played_key(screen.graphics ? graphics_grid(screen.picture, size, glyphs, cache) : screen.text,
+                           replay.played_key);
 }
 
 // The session's work (the split) for about a frame's time, then back to the keys: Esc or Ctrl-C
@@ -42,32 +50,47 @@ public:
     Replay(const KeyScript& script, ReplayPace pace) : m_script(script), m_pace(pace) {}
 
     bool playing() const { return m_played < m_script.events.size(); }
+    // Inside a step of several keys (a TEXT line), whose other keys play at once.
+    bool mid_step() const { return m_played < m_step_end; }
     ReplayPace::Kind pace() const { return m_pace.kind; }
     int pace_ms() const { return m_pace.milliseconds; }
-    KeyEvent next() { return m_script.events[m_played++]; }
-    // Esc during a paced replay: the keyboard takes over.
-    void stop() { m_played = m_script.events.size(); }
-    void key_typed() { m_typed_after = !playing(); }
-    // The caption reached, until a key is typed after the replay.
-    std::string_view caption() const
+    KeyEvent next()
     {
+        if (!mid_step()) {
+            m_step_end = m_played + step_length(m_script, m_played);
+            m_step_label = step_label(m_script, m_played);
+        }
+        return m_script.events[m_played++];
+    }
+    // Esc during a paced replay: the keyboard takes over.
+    void stop() { m_played = m_step_end = m_script.events.size(); }
+    void key_typed() { m_typed_after = !playing(); }
+    // The caption reached and, when paced, the step just played, until a key is typed after the
+    // replay.
+    ReplayShown shown() const
+    {
+        if (m_typed_after)
+            return {};
         const ScriptCaption* caption = caption_at(m_script, m_played);
-        return caption == nullptr || m_typed_after ? std::string_view{} : std::string_view(caption->text);
+        return {caption == nullptr ? std::string_view{} : std::string_view(caption->text),
+                m_pace.kind == ReplayPace::Kind::at_once ? std::string_view{} : std::string_view(m_step_label)};
     }
 
 private:
     const KeyScript& m_script;
     ReplayPace m_pace;
     std::size_t m_played = 0;
+    std::size_t m_step_end = 0;
+    std::string m_step_label;
     bool m_typed_after = false;
 };
 
 // The next input of a replay that waits to play a key: the script's key at its pace (`scripted`
-// set), or what the terminal reported meanwhile. A key typed during a paced replay is dropped
+// set; the rest of a TEXT line at once), or what the terminal reported meanwhile. A key typed during a paced replay is dropped
 // (Esc ends the replay); nullopt means there is nothing to act on this time round.
 std::optional<TerminalInput> replay_input(Terminal& terminal, Replay& replay, KeyEvent& key)
 {
-    if (replay.pace() == ReplayPace::Kind::at_once) {
+    if (replay.pace() == ReplayPace::Kind::at_once || replay.mid_step()) {
         key = replay.next();
         return TerminalInput::key;
     }
@@ -120,7 +143,7 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {
-        terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.caption()));
+        terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.shown()));
         KeyEvent key;
         std::optional<TerminalInput> input;
         // A scripted key waits for the split, as a typed one would (Esc would stop it).

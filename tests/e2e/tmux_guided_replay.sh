@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # A guided replay for a class (issue 13 item 7): --pace MS plays a captioned key script one key
-# every MS milliseconds with its ";;" captions on the screen; --pace step plays one key per Space,
-# and Esc hands the keyboard over. At 80x24, in a real terminal (tmux).
+# every MS milliseconds with its ";;" captions on the screen; --pace step plays one step per Space,
+# and Esc hands the keyboard over (issue 30: the caption on the key-hint row, never over the
+# message line; a TEXT line one step; the step just played shown at the top right). At 80x24, in a
+# real terminal (tmux).
 # Usage: tmux_guided_replay.sh APCS DATA_FOLDER
 set -euo pipefail
 apcs=$1
@@ -35,7 +37,11 @@ KEYS
 start paced "$apcs --keys class.keys --pace 50 --glyphs ascii"
 wait_for paced "Step 4: tension up: the curve tightens"
 wait_for paced "+0.15"
-screen paced | grep -q "^ Step 4" || screen paced | grep -q "Step 4: tension up" || fail "caption not on the screen" paced
+# The caption is the bottom row (the key hints' row); the message line above the staff still
+# still names the line and the region, and the key just played is named at the top right.
+screen paced | tail -n 1 | grep -q "^ Step 4: tension up" || fail "the caption is not on the key-hint row" paced
+screen paced | sed -n 19p | grep -q "way1.dat: TENSION  control points 1 to 3 of 3" || fail "the message line is hidden during the replay" paced
+screen paced | head -n 1 | grep -q " key 6 " || fail "the key just played is not shown" paced
 # Ended here, not by the server's hang-up at the test's end: an ASan build that was hung up on
 # once kept spinning in its leak check at exit, long after the test.
 keys paced C-c
@@ -53,14 +59,16 @@ wait_for stepped "Step 2: the viewer's direction, face-on"
 # A key other than Space or Esc is not played, nor typed into the prompt.
 keys stepped x
 screen stepped | grep -q "THETA ,PHI & delay-time value.*x" && fail "a typed key reached the prompt" stepped
+# One Space plays the whole TEXT line, and names it.
 keys stepped Space
-wait_for stepped "0_"
+wait_for stepped "0 90 100_"
+screen stepped | head -n 1 | grep -q " key TEXT 0 90 100$" || fail "the TEXT line played is not shown" stepped
 # Esc ends the replay: the keyboard types, the caption goes at the first key.
 keys stepped Escape
 keys stepped BSpace
-keys stepped "0 90 100" Enter
+keys stepped "0" Enter
 wait_for stepped "Please keyin the anix.dat filename"
 screen stepped | grep -q "Step 2: the viewer" && fail "the caption stayed after the keyboard took over" stepped
 keys stepped C-c
 wait_for stepped "EXITED=130"
-echo "passed: paced replay with captions, stepped replay by Space, Esc hands over"
+echo "passed: paced replay with captions on the key-hint row, the played key shown, a TEXT line per Space, Esc hands over"

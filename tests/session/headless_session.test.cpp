@@ -1,6 +1,9 @@
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/cli/session_command.h"
 #include "apcs/session/key_event.h"
+#include "apcs/session/replay_caption.h"
+#include "apcs/session/session_files.h"
 
 #include "support/golden.h"
 #include "support/run_apcs.h"
@@ -223,6 +226,101 @@ TEST_CASE("the N to L lesson (T, G, =, W, U) replays headless to its approved sc
         // The waypoint inserted and moved 12 steps left is in the file, with the typed staff values.
         test::check_golden("lesson/ani1.dat", test::read_all(folder / "ani1.dat"));
     }
+}
+
+namespace {
+
+// The shipped lessons: every data/EXAMPLE/lesson*.keys, as "EXAMPLE/FILE".
+std::vector<std::string> shipped_lessons()
+{
+    std::vector<std::string> lessons;
+    const std::filesystem::path data = std::filesystem::path(APCS_SOURCE_DIR) / "data";
+    for (const auto& example : std::filesystem::directory_iterator(data))
+        if (example.is_directory())
+            for (const auto& file : std::filesystem::directory_iterator(example.path()))
+                if (file.path().filename().string().starts_with("lesson") && file.path().extension() == ".keys")
+                    lessons.push_back(example.path().filename().string() + "/" + file.path().filename().string());
+    std::sort(lessons.begin(), lessons.end());
+    return lessons;
+}
+
+KeyScript read_lesson(const std::string& lesson)
+{
+    const std::filesystem::path file = std::filesystem::path(APCS_SOURCE_DIR) / "data" / lesson;
+    const Expected<KeyScript> script = parse_captioned_key_script(test::read_all(file), file.string());
+    INFO((script ? std::string() : script.error().to_string()));
+    REQUIRE(script);
+    return *script;
+}
+
+// Each caption of `lesson` with the screen a paced replay shows it over, at 80x24 in `glyphs`:
+// "=== N: CAPTION", then the screen (trailing blanks removed).
+std::string caption_screens(const std::string& lesson, GlyphSet glyphs)
+{
+    const std::filesystem::path example = std::filesystem::path(lesson).parent_path();
+    const test::TempFolder folder;
+    copy_example(example.string(), folder);
+    FolderFiles files(folder.path());
+    Session session({}, files);
+    std::string screens;
+    int number = 0;
+    std::ostream no_screens(nullptr);
+    run_headless_session(session, read_lesson(lesson), glyphs, no_screens,
+                         [&](const ScriptCaption& caption, const Session& reached) {
+                             const SessionScreen shown = with_caption(reached.screen(), caption.text);
+                             const CellGrid grid = shown.graphics ? render_cells(shown.picture, {80, 24}, glyphs)
+                                                                  : shown.text;
+                             screens += "=== " + std::to_string(++number) + ": " + caption.text + "\n";
+                             for (int row = 0; row < grid.rows(); ++row) {
+                                 std::string line = grid.row_text(row);
+                                 screens += line.erase(line.find_last_not_of(' ') + 1) + "\n";
+                             }
+                         });
+    return screens;
+}
+
+} // namespace
+
+TEST_CASE("a script with a caption wider than the key-hint row is refused before the session starts, exit 1",
+          "[session][captions][headless]")
+{
+    const test::TempFolder folder;
+    copy_example("n-to-l", folder);
+    {
+        std::ofstream script(folder / "wide.keys");
+        script << "ENTER ENTER\n;; " << std::string(80, 'w') << "\nENTER\n";
+    }
+    const auto result = test::run_apcs({"--keys", (folder / "wide.keys").string(), "--workdir", folder.path().string()});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out.empty());
+    REQUIRE(result.err == (folder / "wide.keys").string() +
+                              ":2: expected a caption of at most 79 columns (the key-hint row of the 80x24 screen); "
+                              "found 80\n");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "ani1.dat"));
+}
+
+TEST_CASE("every shipped lesson ends with a caption that follows its last key", "[session][captions][teaching]")
+{
+    const std::vector<std::string> lessons = shipped_lessons();
+    REQUIRE(lessons.size() >= 3);
+    for (const std::string& lesson : lessons) {
+        CAPTURE(lesson);
+        const KeyScript script = read_lesson(lesson);
+        REQUIRE_FALSE(script.captions.empty());
+        REQUIRE(script.captions.back().before_event == script.events.size());
+        REQUIRE_FALSE(script.captions.back().text.empty());
+    }
+}
+
+TEST_CASE("every shipped lesson replays headless, each caption over its approved screen, ascii and braille",
+          "[session][captions][teaching][headless]")
+{
+    for (const std::string& lesson : shipped_lessons())
+        for (const auto& [glyphs, name] : {std::pair{GlyphSet::ascii, "ascii"}, std::pair{GlyphSet::braille, "braille"}}) {
+            CAPTURE(lesson, name);
+            const std::string stem = std::filesystem::path(lesson).replace_extension().string();
+            test::check_golden("lessons/" + stem + "-captions-" + name + ".txt", caption_screens(lesson, glyphs));
+        }
 }
 
 TEST_CASE("apcs fit regenerates every shipped session's in-betweens byte for byte from the files it wrote",

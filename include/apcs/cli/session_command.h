@@ -47,9 +47,11 @@ SessionSettings session_settings(const CommonOptions& options);
 // Runs the session headless: every key of the script, the animation untimed, and each step's
 // final screen (after its last key) to `out`: a line "--- STEP", then the 80x24 screen, trailing
 // blanks removed; the script's captions as lines ";; TEXT" where the replay reaches them.
-// Returns the keys handled.
+// `reached`, if given, sees the session as each caption is reached (the screen a paced replay
+// shows it over). Returns the keys handled.
+using CaptionReached = std::function<void(const ScriptCaption&, const Session&)>;
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out);
+                                           std::ostream& out, const CaptionReached& reached = {});
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,

@@ -39,20 +39,43 @@ struct ScriptCaption {
     bool operator==(const ScriptCaption&) const = default;
 };
 
-// A script with its captions, in order.
+// The widest caption a script may hold, in terminal columns (a wide character counts two): the
+// key-hint row of the 80x24 screen less its first column, which every text row of the session
+// leaves blank. A wider caption is refused when the script is read, not cut on the screen.
+inline constexpr int max_caption_columns = 79;
+
+// The keys one TEXT line types: a paced replay plays them as one step.
+struct TypedLine {
+    std::size_t first_event = 0;
+    std::size_t event_count = 0;
+    bool operator==(const TypedLine&) const = default;
+};
+
+// A script with its captions and its TEXT lines, in order.
 struct KeyScript {
     std::vector<KeyEvent> events;
     std::vector<ScriptCaption> captions;
+    std::vector<TypedLine> typed_lines;
 };
 
-// parse_key_script, keeping the captions.
+// parse_key_script, keeping the captions (each at most max_caption_columns wide, or FILE:LINE:
+// the problem) and the TEXT lines.
 [[nodiscard]] Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name);
 
 // The caption shown once `played` keys of `script` are played: the last one reached, or none.
 const ScriptCaption* caption_at(const KeyScript& script, std::size_t played);
 
+// How many of `script`'s events the step starting at event `first` plays: a TEXT line's keys
+// together, any other key alone; 0 at the end of the script.
+std::size_t step_length(const KeyScript& script, std::size_t first);
+
+// What the step starting at event `first` plays, as a screencast names it: the TEXT line
+// ("TEXT 0 90 100") or the key's script token ("ENTER", "4"); empty at the end of the script.
+std::string step_label(const KeyScript& script, std::size_t first);
+
 // How a replay on a terminal plays its script (--pace): at once, one key every `milliseconds`,
-// or one key each time the presenter presses Space.
+// or one key each time the presenter presses Space. A
+// TEXT line is one step, played whole.
 struct ReplayPace {
     enum class Kind { at_once, every, on_space };
     Kind kind = Kind::at_once;

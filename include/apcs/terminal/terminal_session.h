@@ -19,8 +19,9 @@ CellGrid too_small_grid(TerminalSize size);
 CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache);
 
 // Runs `program` (the session, or apcs play's ScenePlayer) in the terminal: the script's keys
-// first, as if typed, at `pace` (at once; one key every N ms; one key per Space) with its captions
-// on the message line, then the keyboard, the graphics screen in `glyphs` (already chosen: not
+// first, as if typed, at `pace` (at once; one step every N ms; one step per Space: a step is a key
+// or a whole TEXT line) with its captions on the key-hint row (replay_caption.h) and, when paced,
+// the step just played at the top right, then the keyboard, the graphics screen in `glyphs` (already chosen: not
 // GlyphSet::automatic). Every key handled is appended to `recorded`; Ctrl-L (Key::redraw) also
 // repaints the whole terminal. Below the least size (text_screen_columns x text_screen_rows) the
 // screen says how large it must be, and keys wait. While a paced replay plays, Esc ends it (the
