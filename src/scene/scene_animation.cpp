@@ -3,6 +3,7 @@
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
+#include "apcs/base/parallel_work.h"
 #include "apcs/animation/surface_fit.h"
 #include "apcs/scene/move_align.h"
 #include "apcs/geometry/bounding_box.h"
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 namespace apcs {
 
@@ -96,27 +98,35 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
                 m_structure.parts.push_back(std::move(part));
             }
         }
-        if (object.keys && !object.rigid()) {
-            const SceneKeys& keys = *object.keys;
-            const PathSettings spread = spread_over(settings, keys.frames);
-            const auto with_slopes = [&spread](const std::optional<EndSlopes>& slopes) {
-                PathSettings own = spread;
-                own.slopes = slopes.value_or(spread.slopes);
-                return own;
-            };
-            m_key_frames[i] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, with_slopes(keys.first_slopes)),
-                                             evaluate_path(keys.last_path, with_slopes(keys.last_slopes)), construction);
-        }
-        if (object.move)
-        {
-            m_move_offsets[i] = move_offsets(*object.move, settings);
-            if (object.move->align)
-                m_move_turns[i] = align_turns(*object.move, m_move_offsets[i], settings);
-        }
     }
+    // Each object's KEYS frames and MOVE offsets are its own: computed on every core (a scene of
+    // 1,000 MOVEs at exact spacing spends its start here).
+    for_each_index_in_parallel(scene.objects.size(), std::max(1u, std::thread::hardware_concurrency()),
+                               [&](std::size_t i) { fit_behaviours(i, settings, construction); });
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
     links(scene);
+}
+
+void SceneAnimation::fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction)
+{
+    const SceneObject& object = m_scene.objects[index];
+    if (object.keys && !object.rigid()) {
+        const SceneKeys& keys = *object.keys;
+        const PathSettings spread = spread_over(settings, keys.frames);
+        const auto with_slopes = [&spread](const std::optional<EndSlopes>& slopes) {
+            PathSettings own = spread;
+            own.slopes = slopes.value_or(spread.slopes);
+            return own;
+        };
+        m_key_frames[index] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, with_slopes(keys.first_slopes)),
+                                             evaluate_path(keys.last_path, with_slopes(keys.last_slopes)), construction);
+    }
+    if (object.move) {
+        m_move_offsets[index] = move_offsets(*object.move, settings);
+        if (object.move->align)
+            m_move_turns[index] = align_turns(*object.move, m_move_offsets[index], settings);
+    }
 }
 
 void SceneAnimation::links(const Scene& scene)
