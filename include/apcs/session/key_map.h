@@ -29,7 +29,7 @@ enum class KeyContext {
     waypoints,      // the waypoint editor (W at the 8/2 choice)
     adjust_again,   // Ask_Adjusting: Y again, anything else accepts
     animation,      // Showing_Animation
-    quit_question,  // "Quit without saving this path ? (Y/N)"
+    quit_question,  // "Quit without saving this path ? (Y/N)", "Quit APCS ? (Y/N)"
     help_screen,    // the help screen: any key closes it
     finished,       // nothing is read
 };

@@ -52,8 +52,9 @@ public:
     OverlayAnswer handle(KeyContext context, const Command& command, const OverlayStep& step);
     // The help screen for `keys` (a prompt's answer "?" asks for it too).
     void open_help(KeyContext keys, std::string empty_answer) { m_open = overlay::HelpScreen{keys, std::move(empty_answer)}; }
-    // `question` (a view of a session_text constant, which outlives the overlay), as q opens it on
-    // the path screen; Esc on an empty text prompt asks this way.
+    // The quit question in the words `question` (a session_text constant: the view outlives the
+    // overlay). q on the path screen opens it through handle(); the session opens it for Esc on an
+    // empty text prompt, which the key map cannot tell from Esc on a typed line.
     void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
 
     const overlay::HelpScreen* help() const;
