@@ -35,10 +35,11 @@ constexpr auto key_map = [] {
     // clang-format off
     return std::to_array<KeyBinding>({
         // contexts, key pattern, command, key-line words, help text
-        // Text prompts: every printable key is typed; Esc clears the line (SPEC §7.3).
-        {{text_line}, Pattern::of(Key::enter),     cmd::SubmitLine{},     "", "answer (an empty line takes the value in brackets)"},
+        // Text prompts: every printable key is typed; Esc clears the line, and on an empty line
+        // the session asks to quit (SPEC §7.3). {answer} is the prompt's empty answer.
+        {{text_line}, Pattern::of(Key::enter),     cmd::SubmitLine{},     "", "answer; an empty line takes {answer}"},
         {{text_line}, Pattern::of(Key::backspace), cmd::EraseCharacter{}, "", "erase the last character"},
-        {{text_line}, Pattern::of(Key::escape),    cmd::ClearLine{},      "", "clear the line"},
+        {{text_line}, Pattern::of(Key::escape),    cmd::ClearLine{},      "", "clear the line; on an empty line, ask \"Quit APCS ? (Y/N)\""},
         {{text_line}, Pattern::of(Key::f1),        cmd::ShowHelp{},       "", "this help (so does the answer ? alone)"},
         // "=": the value typed on the message line, as at a text prompt.
         {{value_field},            Pattern::of(Key::enter),     cmd::SubmitLine{},        "Enter set",       "set the line to the typed value"},
@@ -55,9 +56,10 @@ constexpr auto key_map = [] {
         {console_questions, Pattern::of(Key::f1),     cmd::ShowHelp{}, "", "this help"},
         {console_questions, Pattern::exactly(U'?'),   cmd::ShowHelp{}, "", "this help"},
         {{splitting},       Pattern::of(Key::escape), cmd::Back{},     "", "stop the split: back to the KEY2 prompt (files written stay)"},
-        {{quit_question},   Pattern::letter(U'Y'),    cmd::Yes{},      "", "end APCS; the path shown is not saved"},
-        {{quit_question},   Pattern::letter(U'N'),    cmd::No{},       "", "go on adjusting"},
-        {{quit_question},   Pattern::of(Key::enter),  cmd::No{},       "", "go on adjusting"},
+        {{quit_question},   Pattern::letter(U'Y'),    cmd::Yes{},      "", "end APCS (files written stay; a path being shaped is lost)"},
+        {{quit_question},   Pattern::letter(U'N'),    cmd::No{},       "", "go back to the step as it was"},
+        {{quit_question},   Pattern::of(Key::enter),  cmd::No{},       "", "go back to the step as it was"},
+        {{quit_question},   Pattern::of(Key::escape), cmd::No{},       "", "go back to the step as it was"},
         {{help_screen},     Pattern::any_key(),       cmd::Continue{}, "", "close this help"},
 
         // Check_GorL_Control: the keypad's 8 and 2, or the arrows on them.
@@ -122,10 +124,11 @@ constexpr auto key_map = [] {
         {graphics_steps,                              Pattern::exactly(U'?'), cmd::ShowHelp{},    "? help", "this help"},
         {graphics_steps,                              Pattern::of(Key::f1),   cmd::ShowHelp{},    "",       "this help"},
         {graphics_steps,                              Pattern::letter(U'P'),  cmd::SavePicture{}, "",       "write the screen as apcsNNN.png in the work folder"},
-        {{control_choice, region_pick, adjust_again}, Pattern::letter(U'Q'),  cmd::Quit{},        "q quit", quit_path},
-        {{staff, waypoints},                          Pattern::letter(U'Q'),  cmd::Quit{},        "",       quit_path},
-        {{animation},                                 Pattern::letter(U'Q'),  cmd::Quit{},        "q quit", quit_now},
-        {quit_at_once,                                Pattern::letter(U'Q'),  cmd::Quit{},        "",       quit_now},
+        // q is spelt in lower case everywhere (key line, help, manual), as less and htop spell it.
+        {{control_choice, region_pick, adjust_again}, Pattern::letter(U'q'),  cmd::Quit{},        "q quit", quit_path},
+        {{staff, waypoints},                          Pattern::letter(U'q'),  cmd::Quit{},        "",       quit_path},
+        {{animation},                                 Pattern::letter(U'q'),  cmd::Quit{},        "q quit", quit_now},
+        {quit_at_once,                                Pattern::letter(U'q'),  cmd::Quit{},        "",       quit_now},
         {{any_key, any_key_graphics},                 Pattern::any_key(),     cmd::Continue{},    "",       "go on"},
     });
     // clang-format on
@@ -146,6 +149,34 @@ std::string_view key_name(Key key)
     return row != nullptr ? row->help_label : "a character";
 }
 
+// A help text with the prompt's empty answer in place of {answer}.
+std::string help_text_for(std::string_view text, std::string_view empty_answer)
+{
+    constexpr std::string_view slot = "{answer}";
+    std::string filled(text);
+    if (const auto at = filled.find(slot); at != std::string::npos)
+        filled.replace(at, slot.size(), empty_answer.empty() ? "the prompt's example answer" : empty_answer);
+    return filled;
+}
+
+// The help column starts here; a line wider than 79 columns (the last one stays free) goes on
+// below it, cut at a space.
+constexpr std::size_t help_column = 18;
+
+std::vector<std::string> screen_rows(std::string line)
+{
+    const auto width = static_cast<std::size_t>(text_screen_columns - 1);
+    std::vector<std::string> rows;
+    while (line.size() > width) {
+        const auto space = line.rfind(' ', width);
+        const auto cut = space != std::string::npos && space > help_column ? space : width;
+        rows.push_back(line.substr(0, cut));
+        line = std::string(help_column, ' ') + line.substr(line[cut] == ' ' ? cut + 1 : cut);
+    }
+    rows.push_back(line);
+    return rows;
+}
+
 } // namespace
 
 bool KeyPattern::matches(const KeyEvent& event) const
@@ -153,7 +184,7 @@ bool KeyPattern::matches(const KeyEvent& event) const
     switch (kind) {
     case Kind::key: return event.key == key;
     case Kind::character: return event.key == Key::character && event.character == character;
-    case Kind::letter: return event.key == Key::character && upper_case(event.character) == character;
+    case Kind::letter: return event.key == Key::character && upper_case(event.character) == upper_case(character);
     case Kind::keypad: return event.key == key || (event.key == Key::character && event.character == character);
     case Kind::printable: return event.key == Key::character && event.character >= 0x20;
     // Ctrl-L repaints the terminal wherever it is typed (the help screen says so): it is no
@@ -204,7 +235,7 @@ std::string key_label(const KeyPattern& pattern)
     return "";
 }
 
-std::vector<std::string> key_help_lines(KeyContext context)
+std::vector<std::string> key_help_lines(KeyContext context, std::string_view empty_answer)
 {
     // Keys of one meaning share a line, in the order the table first names the meaning.
     std::vector<std::pair<std::string_view, std::string>> lines;
@@ -221,22 +252,23 @@ std::vector<std::string> key_help_lines(KeyContext context)
     std::vector<std::string> text;
     for (const auto& [meaning, keys] : lines) {
         std::string line = "  " + keys;
-        line.resize(std::max<std::size_t>(line.size() + 2, 18), ' ');
-        text.push_back(line + std::string(meaning));
+        line.resize(std::max<std::size_t>(line.size() + 2, help_column), ' ');
+        for (std::string& row : screen_rows(line + help_text_for(meaning, empty_answer)))
+            text.push_back(std::move(row));
     }
     return text;
 }
 
-CellGrid key_help_screen(std::string_view what, KeyContext context)
+CellGrid key_help_screen(std::string_view what, KeyContext context, std::string_view empty_answer)
 {
     constexpr int rows = text_screen_rows;
     CellGrid grid(text_screen_columns, rows);
     grid.put_text(0, 0, "APCS help - the keys of " + std::string(what));
     int row = 2;
-    for (const std::string& line : key_help_lines(context))
+    for (const std::string& line : key_help_lines(context, empty_answer))
         if (row < rows - 3)
             grid.put_text(0, row++, line);
-    grid.put_text(0, rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (files written stay whole).");
+    grid.put_text(0, rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (every file stays whole).");
     grid.put_text(0, rows - 1, "Any key closes this help.");
     return grid;
 }

@@ -1,6 +1,7 @@
 #include "apcs/session/overlays.h"
 
 #include "apcs/session/overloaded.h"
+#include "apcs/session/session_text.h"
 
 namespace apcs {
 
@@ -16,19 +17,24 @@ const overlay::HelpScreen* Overlays::help() const
     return m_open ? std::get_if<overlay::HelpScreen>(&*m_open) : nullptr;
 }
 
-OverlayAnswer Overlays::handle(KeyContext context, const Command& command, QuitAsks quit)
+const overlay::QuitQuestion* Overlays::quit_question() const
+{
+    return m_open ? std::get_if<overlay::QuitQuestion>(&*m_open) : nullptr;
+}
+
+OverlayAnswer Overlays::handle(KeyContext context, const Command& command, const OverlayStep& step)
 {
     if (m_open)
         return answer_open(command);
     return std::visit(Overloaded{[&](const command::ShowHelp&) {
-                                     m_open = overlay::HelpScreen{context};
+                                     open_help(context, step.empty_answer);
                                      return OverlayAnswer::handled;
                                  },
                                  [](const command::SavePicture&) { return OverlayAnswer::save_picture; },
                                  [&](const command::Quit&) {
-                                     if (quit == QuitAsks::at_once)
+                                     if (step.quit == QuitAsks::at_once)
                                          return OverlayAnswer::quit;
-                                     m_open = overlay::QuitQuestion{};
+                                     ask_quit(session_text::quit_question);
                                      return OverlayAnswer::handled;
                                  },
                                  // Every other command is the step's: the overlays take only these three.
@@ -36,7 +42,8 @@ OverlayAnswer Overlays::handle(KeyContext context, const Command& command, QuitA
                       command);
 }
 
-// Any key closes the help screen; the quit question quits on Y alone.
+// Any key closes the help screen; the quit question quits on Y alone (the key map lets only Y, N,
+// Enter and Esc through to it).
 OverlayAnswer Overlays::answer_open(const Command& command)
 {
     const bool quitting = asking_quit() && std::holds_alternative<command::Yes>(command);

@@ -17,7 +17,7 @@ void ScenePlayer::handle(const KeyEvent& event)
     const std::optional<Command> command = command_for(keys, event);
     if (!command)
         return;
-    switch (m_overlays.handle(keys, *command, QuitAsks::at_once)) {
+    switch (m_overlays.handle(keys, *command, OverlayStep{})) {
     case OverlayAnswer::step_command:
         m_finished = m_player.update(*command) == AnimationPlayer::Outcome::finished;
         return;

@@ -131,7 +131,7 @@ void Session::handle(const KeyEvent& event)
     m_notice.clear();
     // Only an unsaved path is worth a question; elsewhere every file is already written.
     const QuitAsks quit_asks = std::holds_alternative<step::Shaping>(m_step) ? QuitAsks::question_first : QuitAsks::at_once;
-    switch (m_overlays.handle(keys, *command, quit_asks)) {
+    switch (m_overlays.handle(keys, *command, {quit_asks, empty_answer()})) {
     case OverlayAnswer::step_command: return dispatch_to_step(*command);
     case OverlayAnswer::handled: return;
     case OverlayAnswer::save_picture: return save_picture();
@@ -166,15 +166,34 @@ void Session::dispatch_to_step(const Command& command)
 }
 
 // The line typed at a text prompt when `command` ends it; nullopt while it is being typed, and
-// for the answer ? alone, which asks for the help screen (SPEC §7.3) and is no answer.
+// for the answer ? alone, which asks for the help screen (SPEC §7.3) and is no answer. Esc on an
+// empty line asks "Quit APCS ? (Y/N)"; on a typed line it clears the line, as DOS did.
 std::optional<std::string> Session::typed_answer(const Command& command)
 {
+    if (std::holds_alternative<command::ClearLine>(command) && m_console.input().empty()) {
+        m_overlays.ask_quit(session_text::quit_apcs_question);
+        return std::nullopt;
+    }
     const std::optional<std::string> typed = edit_line(m_console, command);
     if (typed != "?")
         return typed;
     m_console.set_input("");
-    m_overlays.open_help(KeyContext::text_line);
+    m_overlays.open_help(KeyContext::text_line, empty_answer());
     return std::nullopt;
+}
+
+// The answer an empty line takes at the step's text prompt (its help names it); empty elsewhere.
+std::string Session::empty_answer()
+{
+    const StepContext step_context = context();
+    return std::visit(
+        [&](const auto& step) -> std::string {
+            if constexpr (requires { step.default_answer(step_context); })
+                return step.default_answer(step_context);
+            else
+                return {};
+        },
+        m_step);
 }
 
 void Session::follow(StepResult result)
@@ -238,11 +257,11 @@ void Session::work()
 SessionScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
-        return {false, key_help_screen(phase_name(phase()), help->keys), {}};
+        return {false, key_help_screen(phase_name(phase()), help->keys, help->empty_answer), {}};
     return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view()); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
-                                     SessionScreen shown{false, m_console.render(!finished()), {}};
+                                     SessionScreen shown{false, console_screen(), {}};
                                      std::string message = m_notice;
                                      if constexpr (std::is_same_v<std::decay_t<decltype(text_step)>, step::Splitting>)
                                          message = text_step.progress();
@@ -253,10 +272,23 @@ SessionScreen Session::screen() const
                       m_step);
 }
 
+// The text console; the quit question, when asked at a prompt (where the line is empty), stands
+// where the answer is typed, the cursor after it.
+CellGrid Session::console_screen() const
+{
+    const overlay::QuitQuestion* asking = m_overlays.quit_question();
+    if (asking == nullptr)
+        return m_console.render(!finished());
+    TextConsole question = m_console;
+    question.set_input(std::string(asking->question));
+    return question.render();
+}
+
 // The message line, by priority (SPEC §7.3): an open question, then what the last key did.
 SessionScreen Session::graphics_screen(GraphicsScreen picture) const
 {
-    const std::string message = m_overlays.asking_quit() ? std::string(session_text::quit_question) : m_notice;
+    const overlay::QuitQuestion* asking = m_overlays.quit_question();
+    const std::string message = asking != nullptr ? std::string(asking->question) : m_notice;
     if (!message.empty()) {
         std::erase_if(picture.text, [](const TextLine& line) { return line.row == layout::message_row; });
         picture.text.push_back({1, layout::message_row, message});

@@ -42,7 +42,8 @@ constexpr Transition row()
 using namespace step;
 using enum StepOutcome;
 
-// Quitting (q, Ctrl-C at the quit question) goes from any step to Finished, outside this table.
+// Quitting (q, or Y to a quit question: after q on the path screen, after Esc on an empty prompt)
+// goes from any step to Finished, outside this table.
 constexpr Transition session_graph[] = {
     // Step 1: the key frames, then the split into path files.
     row<Key1Prompt, answered, Key2Prompt>(),

@@ -4,7 +4,7 @@
 # a glyph set the locale cannot show are refused; Esc and escape sequences on a slow link; Ctrl-L.
 # Usage: tmux_80x24.sh APCS DATA_FOLDER [core|help-and-quit]
 #   core           (default) what the terminal shell and the command line do
-#   help-and-quit  the help screen (? and F1) and the quit prompt (q) of the session
+#   help-and-quit  the help screen (? and F1) and the quit questions (q, Esc on an empty prompt)
 set -euo pipefail
 apcs=$1
 data=$2
@@ -40,11 +40,13 @@ if [ "$part" = core ]; then
   passed=$((passed + 1))
 
   # --- At a text prompt an Esc quickly followed by an arrow, in either cursor-key mode, and
-  # sequences APCS does not know (Ctrl-Left, F5, bracketed paste) type nothing.
+  # sequences APCS does not know (Ctrl-Left, F5, bracketed paste) type nothing. Each Esc meets a
+  # typed line, which it clears (on an empty line it would ask to quit: help-and-quit's part).
   empty_prompt() { [ "$(line text 2)" = "_" ] || fail "$1 typed '$(line text 2)' at the prompt" text; }
+  bytes text 'x'
   bytes text $'\e\e[D'
   sleep 0.3
-  empty_prompt "Esc and ESC [ D in one write"
+  empty_prompt "Esc (clearing x) and ESC [ D in one write"
   bytes text 'abc'
   bytes text $'\e'
   sleep 0.01
@@ -168,7 +170,8 @@ elif [ "$part" = help-and-quit ]; then
   screen help | grep -q "^ani1.dat$" || fail "the files written so far are not listed" help
   passed=$((passed + 1))
 
-  # --- At a text prompt q is typed text, and F1 shows the help.
+  # --- At a text prompt q is typed text, and F1 shows the help, which names the answer an empty
+  # line takes at that prompt (SPEC §7.3); the prompt's own rows come back unchanged.
   start prompt "LANG=C.UTF-8 LC_ALL=C.UTF-8 '$apcs' --glyphs ascii"
   wait_for prompt "Please keyin the KEY1 filename!"
   keys prompt q
@@ -177,8 +180,33 @@ elif [ "$part" = help-and-quit ]; then
   prompt_screen=$(screen prompt)
   keys prompt F1
   [ "$(screen prompt)" != "$prompt_screen" ] || fail "F1 at a text prompt shows no help" prompt
+  screen prompt | grep -qF "an empty line takes key1.dat" || fail "the help does not name key1.dat" prompt
   keys prompt Space
   [ "$(screen prompt)" = "$prompt_screen" ] || fail "a key did not close the help at a text prompt" prompt
+  keys prompt Enter
+  wait_for prompt "Please keyin the KEY2 filename!"
+  keys prompt F1
+  screen prompt | grep -qF "an empty line takes key2.dat" || fail "the help at KEY2 does not name key2.dat" prompt
+  keys prompt Space
+  passed=$((passed + 1))
+
+  # --- Esc on an empty prompt asks "Quit APCS ? (Y/N)" on the answer's row; N and Esc go back to
+  # the prompt as it was; Esc on a typed line clears it; Y ends with exit 0, as q does.
+  prompt_screen=$(screen prompt)
+  keys prompt Escape
+  [ "$(line prompt 4)" = "Quit APCS ? (Y/N)_" ] || fail "Esc on an empty line did not ask to quit" prompt
+  keys prompt n
+  [ "$(screen prompt)" = "$prompt_screen" ] || fail "N did not go back to the prompt as it was" prompt
+  keys prompt Escape
+  keys prompt Escape
+  [ "$(screen prompt)" = "$prompt_screen" ] || fail "Esc did not answer N" prompt
+  keys prompt a b c
+  keys prompt Escape
+  [ "$(screen prompt)" = "$prompt_screen" ] || fail "Esc did not clear a typed line" prompt
+  keys prompt Escape
+  wait_for prompt "Quit APCS ? (Y/N)"
+  keys prompt y
+  wait_for prompt "EXITED=0"
   passed=$((passed + 1))
 else
   echo "unknown part '$part' (core or help-and-quit)"; exit 2

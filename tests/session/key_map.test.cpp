@@ -87,6 +87,8 @@ TEST_CASE("each context reads its keys as the thesis' commands", "[session][keys
         {KeyContext::text_line, ch(U'q'), cmd::TypeCharacter{U'q'}},
         {KeyContext::quit_question, ch(U'y'), cmd::Yes{}},
         {KeyContext::quit_question, key(Key::enter), cmd::No{}},
+        {KeyContext::quit_question, key(Key::escape), cmd::No{}},
+        {KeyContext::quit_question, ch(U'N'), cmd::No{}},
         {KeyContext::quit_question, ch(U'x'), std::nullopt},
         {KeyContext::help_screen, ch(U'x'), cmd::Continue{}},
         {KeyContext::any_key_graphics, ch(U'P'), cmd::SavePicture{}},
@@ -149,7 +151,7 @@ TEST_CASE("the help screen lists every key of a step with what it means, keys of
     REQUIRE(staff.front() == "  4, Left         the value one step left");
     REQUIRE(std::find(staff.begin(), staff.end(), "  J               three steps left (Shift-J)") != staff.end());
     REQUIRE(std::find(staff.begin(), staff.end(), "  ?, F1           this help") != staff.end());
-    REQUIRE(std::find(staff.begin(), staff.end(), "  Q               end APCS without saving this path (asks first)") !=
+    REQUIRE(std::find(staff.begin(), staff.end(), "  q               end APCS without saving this path (asks first)") !=
             staff.end());
     // Every context a step listens in has a help screen that names at least one key.
     for (const KeyContext context : {KeyContext::text_line, KeyContext::yes_to_go_on, KeyContext::enter_to_go_on,
@@ -171,6 +173,44 @@ TEST_CASE("every help screen fits the 80x24 console: lines of at most 79 columns
     const std::vector<std::string> waypoints = key_help_lines(KeyContext::waypoints);
     REQUIRE(std::find(waypoints.begin(), waypoints.end(), "  4, Left, 6, Right  move the point one step left, right") !=
             waypoints.end());
+    // The whole screen too, its footer included: nothing reaches the 80th column, where it is cut.
+    const CellGrid screen = key_help_screen("step 1: KEY1 file", KeyContext::text_line, "key1.dat");
+    for (int row = 0; row < screen.rows(); ++row) {
+        CAPTURE(screen.row_text(row));
+        REQUIRE(screen.row_text(row).substr(79).find_first_not_of(' ') == std::string::npos);
+    }
+}
+
+TEST_CASE("a letter is spelt alike on the key line and on the help screen: q quit, never Q", "[session][keys]")
+{
+    for (const KeyBinding& binding : key_bindings()) {
+        if (binding.pattern.kind != KeyPattern::Kind::letter || binding.key_line_words.empty())
+            continue;
+        CAPTURE(binding.key_line_words);
+        // The key line names a letter first ("q quit", "K/T/G show"), the help screen by key_label.
+        REQUIRE(binding.key_line_words.find(key_label(binding.pattern)) != std::string_view::npos);
+    }
+    const std::vector<std::string> animation = key_help_lines(KeyContext::animation);
+    REQUIRE(std::find(animation.begin(), animation.end(), "  q               end APCS; every file written so far stays") !=
+            animation.end());
+}
+
+TEST_CASE("a text prompt's help names the answer an empty line takes there; a long one goes on below", "[session][keys]")
+{
+    const std::vector<std::string> key1 = key_help_lines(KeyContext::text_line, "key1.dat");
+    REQUIRE(key1.front() == "  Enter           answer; an empty line takes key1.dat");
+    REQUIRE(key1[2] == "  Esc             clear the line; on an empty line, ask \"Quit APCS ? (Y/N)\"");
+    REQUIRE(key_help_lines(KeyContext::text_line).front() ==
+            "  Enter           answer; an empty line takes the prompt's example answer");
+    const std::vector<std::string> slopes =
+        key_help_lines(KeyContext::text_line, "0.30000000000000004 0.30000000000000004");
+    REQUIRE(slopes[0] == "  Enter           answer; an empty line takes 0.30000000000000004");
+    REQUIRE(slopes[1] == "                  0.30000000000000004");
+    REQUIRE(slopes[2].starts_with("  Backspace"));
+    const std::vector<std::string> unbroken = key_help_lines(KeyContext::text_line, std::string(100, '7'));
+    REQUIRE(unbroken[0] == "  Enter           answer; an empty line takes");
+    REQUIRE(unbroken[1] == "                  " + std::string(61, '7'));
+    REQUIRE(unbroken[2] == "                  " + std::string(39, '7'));
 }
 
 TEST_CASE("no key map row is hidden behind an earlier row of its context", "[session][keys]")

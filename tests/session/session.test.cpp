@@ -58,11 +58,18 @@ MemoryFiles example_files()
     return files;
 }
 
-// Through steps 1–3 with the thesis' default answers and way1.dat as the first path.
-void reach_control_choice(Session& session)
+// Through step 1 with the thesis' default answers: KEY1, KEY2 and the split.
+void reach_view_prompt(Session& session)
 {
     type(session, "");
     type(session, "");
+    REQUIRE(session.phase() == SessionPhase::ask_view);
+}
+
+// Through steps 1–3 with the thesis' default answers and way1.dat as the first path.
+void reach_control_choice(Session& session)
+{
+    reach_view_prompt(session);
     type(session, "");
     type(session, "way1.dat");
     type(session, "");
@@ -280,9 +287,7 @@ TEST_CASE("a number too small for a double is 0 at a prompt, as in a .dat file",
 {
     MemoryFiles files = example_files();
     Session session({}, files);
-    type(session, "");
-    type(session, "");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    reach_view_prompt(session);
     type(session, "1e-400 -1e-310 200");
     REQUIRE(session.phase() == SessionPhase::ask_path_file);
 }
@@ -428,6 +433,73 @@ TEST_CASE("q asks before quitting an unsaved path, Enter means N, Y ends with th
     REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n") != std::string::npos);
     REQUIRE(files.files["way1.dat"] == "0 0 0\n3 -4 5\n1 1 7\n0 0 10\n"); // not saved
     REQUIRE(files.log_lines[files.log_lines.size() - 2] == "quit at step 4: four-line staff");
+}
+
+TEST_CASE("Esc on an empty prompt asks Quit APCS ? (Y/N); N, Esc and Enter go back to the prompt as it was",
+          "[session][quit]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    const std::string prompt = screen_text(session);
+    press(session, {escape});
+    REQUIRE(screen_text(session).starts_with("Please keyin the KEY1 filename!\nQuit APCS ? (Y/N)_\n"));
+    press(session, {ch('x'), ch('q')}); // no answer: the question stays, nothing is typed
+    REQUIRE(screen_text(session).starts_with("Please keyin the KEY1 filename!\nQuit APCS ? (Y/N)_\n"));
+    press(session, {ch('N')});
+    REQUIRE(screen_text(session) == prompt);
+    for (const KeyEvent& back : {ch('n'), escape, enter}) {
+        press(session, {escape});
+        REQUIRE(screen_text(session) != prompt);
+        press(session, {back});
+        REQUIRE(screen_text(session) == prompt);
+        REQUIRE(session.phase() == SessionPhase::ask_key1);
+    }
+    // The line is kept through the question: Esc on typed text clears it (as DOS did), never asks.
+    press(session, {ch('a'), ch('b'), escape});
+    REQUIRE(screen_text(session) == prompt);
+    type(session, "key1.dat");
+    REQUIRE(session.phase() == SessionPhase::ask_key2);
+}
+
+TEST_CASE("Y to Quit APCS ? at a prompt ends the session as q does, with the files written listed", "[session][quit]")
+{
+    MemoryFiles files = example_files();
+    Session session({}, files);
+    reach_view_prompt(session);
+    press(session, {escape, ch('y')});
+    REQUIRE(session.finished());
+    REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n  ani2.dat\n") != std::string::npos);
+    REQUIRE(files.log_lines[files.log_lines.size() - 2] == "quit at step 2: view and delay");
+}
+
+TEST_CASE("the help at a text prompt names the answer an empty line takes at that prompt", "[session][help]")
+{
+    MemoryFiles files = example_files();
+    SessionSettings settings;
+    settings.slopes = EndSlopes{0.5, 0.25};
+    Session session(settings, files);
+    const auto help_names = [&](const std::string& answer) {
+        const std::string before = screen_text(session);
+        press(session, {KeyEvent::of(Key::f1)});
+        const bool named = screen_text(session).find("  Enter           answer; an empty line takes " + answer + "\n") !=
+                           std::string::npos;
+        press(session, {ch('x')});
+        // The thesis' prompt rows come back byte for byte.
+        return named && screen_text(session) == before;
+    };
+    REQUIRE(help_names("key1.dat"));
+    type(session, "");
+    REQUIRE(help_names("key2.dat"));
+    type(session, "");
+    REQUIRE(help_names("30 40 200"));
+    type(session, "");
+    REQUIRE(help_names("ani1.dat"));
+    type(session, "way1.dat");
+    REQUIRE(help_names("0.5 0.25"));
+    type(session, "0.5"); // DS[0] alone: Enter now takes DD[N] only
+    REQUIRE(help_names("0.25"));
+    type(session, "?"); // the answer ? alone names it too
+    REQUIRE(screen_text(session).find("an empty line takes 0.25\n") != std::string::npos);
 }
 
 TEST_CASE("P writes the graphics screen as the first free apcsNNN.png and says so", "[session][picture]")

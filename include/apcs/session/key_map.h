@@ -29,7 +29,7 @@ enum class KeyContext {
     waypoints,      // the waypoint editor (W at the 8/2 choice)
     adjust_again,   // Ask_Adjusting: Y again, anything else accepts
     animation,      // Showing_Animation
-    quit_question,  // "Quit without saving this path ? (Y/N)"
+    quit_question,  // "Quit without saving this path ? (Y/N)", "Quit APCS ? (Y/N)"
     help_screen,    // the help screen: any key closes it
     finished,       // nothing is read
 };
@@ -62,8 +62,9 @@ struct KeyPattern {
     static constexpr KeyPattern of(Key key) { return {Kind::key, key, 0}; }
     // Exactly this character (digits).
     static constexpr KeyPattern exactly(char32_t character) { return {Kind::character, Key::character, character}; }
-    // This letter in either case (J is Shift-J on the PC keyboard; j works too).
-    static constexpr KeyPattern letter(char32_t upper) { return {Kind::letter, Key::character, upper}; }
+    // This letter in either case (J is Shift-J on the PC keyboard; j works too), labelled on the
+    // help screen in the case given (`q` as the key line and the manual spell it).
+    static constexpr KeyPattern letter(char32_t label) { return {Kind::letter, Key::character, label}; }
     // An arrow, or the digit the same keypad key types with NumLock on (Left and 4).
     static constexpr KeyPattern keypad(Key arrow) { return {Kind::keypad, arrow, find_physical_key(arrow)->keypad_digit}; }
     // Any printable character (typed text).
@@ -99,11 +100,13 @@ std::string key_help(KeyContext context);
 std::string key_label(const KeyPattern& pattern);
 
 // The help screen's lines for a context: every key and what it means, keys of the same meaning on
-// one line ("4, Left    one step to the left").
-std::vector<std::string> key_help_lines(KeyContext context);
+// one line ("4, Left    one step to the left"), a meaning too wide for 80 columns going on below.
+// At a text prompt `empty_answer` is the answer an empty line takes there, which Enter's line names
+// ("an empty line takes key1.dat"); empty, it says "the prompt's example answer".
+std::vector<std::string> key_help_lines(KeyContext context, std::string_view empty_answer = {});
 
 // The help screen (80x24 text): "APCS help - the keys of WHAT", the key_help_lines of `context`,
 // and how to close it.
-CellGrid key_help_screen(std::string_view what, KeyContext context);
+CellGrid key_help_screen(std::string_view what, KeyContext context, std::string_view empty_answer = {});
 
 } // namespace apcs

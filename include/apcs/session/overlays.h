@@ -4,6 +4,9 @@
 #include "apcs/session/key_map.h"
 
 #include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
 #include <variant>
 
 namespace apcs {
@@ -15,13 +18,27 @@ namespace overlay {
 // The keys of the step underneath, listed until any key closes the screen.
 struct HelpScreen {
     KeyContext keys;
+    // At a text prompt, the answer an empty line takes there (the help names it); else empty.
+    std::string empty_answer;
 };
-// "Quit without saving this path ? (Y/N)": Y quits, N or Enter goes back, other keys do nothing.
-struct QuitQuestion {};
+// "Quit without saving this path ? (Y/N)" after q on the path screen, "Quit APCS ? (Y/N)" after
+// Esc on an empty text prompt (session_text.h holds both): Y quits; N, Enter or Esc goes back to
+// the step as it was; other keys do nothing.
+struct QuitQuestion {
+    std::string_view question;
+};
 } // namespace overlay
 
 // Quit at once, or ask first (only an unsaved path is worth the question).
 enum class QuitAsks { at_once, question_first };
+
+// What the step under the overlays tells them.
+struct OverlayStep {
+    // What q does there.
+    QuitAsks quit = QuitAsks::at_once;
+    // At a text prompt, the answer an empty line takes, for the help screen; else empty.
+    std::string empty_answer;
+};
 
 // What a command meant to the overlays: nothing (it is the step's), done, or what the program
 // must do for them.
@@ -32,12 +49,17 @@ public:
     // The keys in force: the open overlay's, else the step's (`step`).
     KeyContext key_context(KeyContext step) const;
     // `command` as read in `context` (key_context's). Opens and closes the overlays.
-    OverlayAnswer handle(KeyContext context, const Command& command, QuitAsks quit);
+    OverlayAnswer handle(KeyContext context, const Command& command, const OverlayStep& step);
     // The help screen for `keys` (a prompt's answer "?" asks for it too).
-    void open_help(KeyContext keys) { m_open = overlay::HelpScreen{keys}; }
+    void open_help(KeyContext keys, std::string empty_answer) { m_open = overlay::HelpScreen{keys, std::move(empty_answer)}; }
+    // The quit question in the words `question` (a session_text constant: the view outlives the
+    // overlay). q on the path screen opens it through handle(); the session opens it for Esc on an
+    // empty text prompt, which the key map cannot tell from Esc on a typed line.
+    void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
 
     const overlay::HelpScreen* help() const;
-    bool asking_quit() const { return m_open && std::holds_alternative<overlay::QuitQuestion>(*m_open); }
+    const overlay::QuitQuestion* quit_question() const;
+    bool asking_quit() const { return quit_question() != nullptr; }
 
 private:
     OverlayAnswer answer_open(const Command& command);

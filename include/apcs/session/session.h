@@ -52,12 +52,14 @@ private:
     KeyContext step_key_context() const;
     void dispatch_to_step(const Command& command);
     std::optional<std::string> typed_answer(const Command& command);
+    std::string empty_answer();
     // Follows the transition table from the step on the screen for `result`.
     void follow(StepResult result);
     void ask(const std::string& problem);
     void save_picture();
     void quit();
     SessionScreen graphics_screen(GraphicsScreen picture) const;
+    CellGrid console_screen() const;
 
     SessionSettings m_settings;
     SessionFiles& m_files;

@@ -36,6 +36,8 @@ inline constexpr std::string_view animation_done = "Press any key to see all fra
 inline constexpr std::string_view overlay_done = "Press any key to end APCS";
 inline constexpr std::string_view frames_freeze = "frames will freeze";
 inline constexpr std::string_view quit_question = "Quit without saving this path ? (Y/N)";
+// Esc on an empty line at a text prompt (SPEC §7.3): every file is written there, nothing is lost.
+inline constexpr std::string_view quit_apcs_question = "Quit APCS ? (Y/N)";
 // After a staff line's name, for a path of two control points.
 inline constexpr std::string_view no_interior_points = " acts at interior control points: add one with W at the 8/2 choice";
 
