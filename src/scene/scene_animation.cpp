@@ -47,6 +47,26 @@ std::vector<Vec3> timed_offsets(const SceneMove& move, const PathSettings& setti
     return offsets;
 }
 
+// For each object with a MOVE, the first object before it with the same MOVE (path, frames,
+// clauses): a crowd along one path needs its offsets once.
+std::vector<std::optional<std::size_t>> first_same_moves(const Scene& scene)
+{
+    std::vector<std::optional<std::size_t>> same(scene.objects.size());
+    std::vector<std::size_t> distinct;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const std::optional<SceneMove>& move = scene.objects[i].move;
+        if (!move)
+            continue;
+        const auto found = std::find_if(distinct.begin(), distinct.end(),
+                                        [&](std::size_t j) { return *scene.objects[j].move == *move; });
+        if (found != distinct.end())
+            same[i] = *found;
+        else
+            distinct.push_back(i);
+    }
+    return same;
+}
+
 // Frame f of a behaviour over `frames`: 0 before it, held after it.
 int elapsed(const FrameSpan& frames, int f) { return std::clamp(f, frames.from, frames.to) - frames.from; }
 
@@ -100,15 +120,22 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
         }
     }
     // Each object's KEYS frames and MOVE offsets are its own: computed on every core (a scene of
-    // 1,000 MOVEs at exact spacing spends its start here).
+    // 1,000 MOVEs at exact spacing spends its start here), once for objects that share a MOVE.
+    const std::vector<std::optional<std::size_t>> same_move = first_same_moves(scene);
     for_each_index_in_parallel(scene.objects.size(), std::max(1u, std::thread::hardware_concurrency()),
-                               [&](std::size_t i) { fit_behaviours(i, settings, construction); });
+                               [&](std::size_t i) { fit_behaviours(i, settings, construction, !same_move[i]); });
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        if (same_move[i]) {
+            m_move_offsets[i] = m_move_offsets[*same_move[i]];
+            m_move_turns[i] = m_move_turns[*same_move[i]];
+        }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
     links(scene);
 }
 
-void SceneAnimation::fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction)
+void SceneAnimation::fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction,
+                                    bool with_move)
 {
     const SceneObject& object = m_scene.objects[index];
     if (object.keys && !object.rigid()) {
@@ -122,7 +149,7 @@ void SceneAnimation::fit_behaviours(std::size_t index, const PathSettings& setti
         m_key_frames[index] = fit_key_frames(keys.keys, evaluate_path(keys.first_path, with_slopes(keys.first_slopes)),
                                              evaluate_path(keys.last_path, with_slopes(keys.last_slopes)), construction);
     }
-    if (object.move) {
+    if (object.move && with_move) {
         m_move_offsets[index] = move_offsets(*object.move, settings);
         if (object.move->align)
             m_move_turns[index] = align_turns(*object.move, m_move_offsets[index], settings);

@@ -57,6 +57,8 @@ struct StaffValues {
 struct ControlPoint {
     Vec3 position;
     StaffValues staff;
+
+    friend constexpr bool operator==(const ControlPoint&, const ControlPoint&) = default;
 };
 
 // Slopes S0 and S1 in [0, 1] that scale the end tangents (thesis "DS[0], DD[N]").

@@ -19,6 +19,8 @@ namespace apcs {
 struct FrameSpan {
     int from = 0;
     int to = 0;
+
+    friend constexpr bool operator==(const FrameSpan&, const FrameSpan&) = default;
 };
 
 // MOVE (SPEC §8.1): along a KB path, by P(s(f)) − P_0.
@@ -32,6 +34,8 @@ struct SceneMove {
     // the first later point of the path D away: a two-axle vehicle's axles D apart).
     bool align = false;
     std::optional<double> ahead;
+
+    friend bool operator==(const SceneMove&, const SceneMove&) = default;
 };
 
 // ROTATE: degrees_per_frame × (f − from) about +axis through `about` (default: the object's centre).

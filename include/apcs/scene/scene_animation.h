@@ -99,8 +99,9 @@ private:
     // joint point if farther than the tolerance; the shift it ends with.
     Vec3 place_drawing(std::size_t index, int f, const Affine& world, Vec3 shift, std::span<Vec3> points) const;
     void links(const Scene& scene);
-    // The object's KEYS frames and MOVE offsets (and ALIGN turns): what its behaviours need.
-    void fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction);
+    // The object's KEYS frames and, `with_move`, its MOVE offsets (and ALIGN turns).
+    void fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction,
+                        bool with_move);
 
     const Scene& m_scene;
     std::vector<Vec3> m_centres;
