@@ -146,3 +146,22 @@ TEST_CASE("a drawing on one line turned half round turns about the face-on axis 
     CHECK(std::abs(quarter.y) < 1e-12);
     CHECK(std::abs(std::abs(quarter.z) - 1) < 1e-12);
 }
+
+TEST_CASE("a RIGID part whose turn takes it past 1e9 between its keys is out of reach", "[scene][rigid]")
+{
+    // A limb 1.8e9 long from (0, 9e8, 0) pointing along -y in KEY1 and +z in KEY2: both keys within
+    // 1e9, but half way through the quarter turn its tip is at z = 1.27e9 (frame 2 of 4).
+    DatFiles files;
+    files.texts["base.dat"] = "0 0 0\n0 900000000 0\n";
+    files.texts["limb1.dat"] = "0 900000000 0\n0 -900000000 0\n";
+    files.texts["limb2.dat"] = "0 0 -900000000\n0 0 900000000\n";
+    const Scene scene = scene_from("FRAMES 4\nOBJECT base\nSHAPE base.dat\nJOINT hip 2\n"
+                                   "OBJECT limb PARENT base\nKEYS limb1.dat limb2.dat\nRIGID\nJOINT hip 1\n",
+                                   files);
+    const SceneAnimation animation(scene, {});
+    const std::optional<OutOfReach> beyond = animation.first_out_of_reach(1e9);
+    REQUIRE(beyond.has_value());
+    CHECK(beyond->object == 1);
+    CHECK(beyond->frame == 2); // frame 1, a quarter of the way: |y| 7.6e8, z 6.9e8
+    CHECK(beyond->magnitude == Approx(1.8e9 * std::sin(std::numbers::pi / 4)));
+}
