@@ -109,10 +109,14 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
         reach << "values that are not numbers";
     else
         reach << "|value| " << std::setprecision(3) << beyond->magnitude;
+    const std::string how = beyond->at_anchor && object.anchor
+                                ? "put on its joint '" + object.joints[object.anchor->joint].name + "' with '" +
+                                      scene.objects[object.anchor->partner].name + "'" +
+                                      (object.rigid() ? ", turned about it" : "")
+                                : "its MOVE, ROTATE and SCALE composed with its parents'";
     return Diagnostic{scene_file.string(), object.line,
                       "object " + object.name + " reaches " + reach.str() + " at frame " +
-                          std::to_string(beyond->frame) +
-                          " (its MOVE, ROTATE and SCALE composed with its parents'); a frame holds |value| <= 1e9, "
+                          std::to_string(beyond->frame) + " (" + how + "); a frame holds |value| <= 1e9, "
                           "as a .dat file does"};
 }
 

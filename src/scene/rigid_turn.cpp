@@ -6,6 +6,8 @@
 #include <Eigen/SVD>
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 namespace apcs {
 
@@ -21,6 +23,24 @@ Eigen::Vector3d centroid(std::span<const Vec3> points)
     return sum / static_cast<double>(points.size());
 }
 
+// The turn of a drawing on one line: the covariance is singular(0)·to·fromᵀ, so `from` (KEY1's
+// direction) and `to` (KEY2's) have the signs that match. All points at one place: no turn. A half
+// turn has no smallest rotation: it is about the coordinate axis most across the line, x first
+// (the thesis' face-on axis, so a line drawn face-on stays in its plane), then y, then z.
+Eigen::Matrix3d line_turn(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double spread)
+{
+    if (spread == 0.0)
+        return Eigen::Matrix3d::Identity();
+    if (from.dot(to) > -1.0 + 1e-12)
+        return Eigen::Quaterniond::FromTwoVectors(from, to).toRotationMatrix();
+    const double least = from.cwiseAbs().minCoeff();
+    Eigen::Index across = 0;
+    while (std::abs(from(across)) > least + 1e-9)
+        ++across;
+    const Eigen::Vector3d axis = (Eigen::Vector3d::Unit(across) - from * from(across)).normalized();
+    return Eigen::Matrix3d(Eigen::AngleAxisd(std::numbers::pi, axis));
+}
+
 // Kabsch: the rotation R minimising the sum of |R·(p − c1) − (q − c2)|².
 Eigen::Matrix3d best_rotation(std::span<const Vec3> key1, std::span<const Vec3> key2, const Eigen::Vector3d& c1,
                               const Eigen::Vector3d& c2)
@@ -32,13 +52,8 @@ Eigen::Matrix3d best_rotation(std::span<const Vec3> key1, std::span<const Vec3> 
     const Eigen::Vector3d& singular = svd.singularValues();
     // Points on one line leave the spin about that line free: SVD would pick any, and a part
     // would roll about its own length on the way. The smallest rotation between the lines instead.
-    if (singular(1) <= 1e-12 * std::max(singular(0), 1e-300)) {
-        const Eigen::Vector3d from = to_eigen(key1.back()) - to_eigen(key1.front());
-        const Eigen::Vector3d to = to_eigen(key2.back()) - to_eigen(key2.front());
-        if (from.norm() == 0.0 || to.norm() == 0.0)
-            return Eigen::Matrix3d::Identity();
-        return Eigen::Quaterniond::FromTwoVectors(from, to).toRotationMatrix();
-    }
+    if (singular(1) <= 1e-12 * std::max(singular(0), 1e-300))
+        return line_turn(svd.matrixV().col(0), svd.matrixU().col(0), singular(0));
     Eigen::Matrix3d reflection = Eigen::Matrix3d::Identity();
     reflection(2, 2) = (svd.matrixU() * svd.matrixV().transpose()).determinant() < 0 ? -1.0 : 1.0;
     return svd.matrixU() * reflection * svd.matrixV().transpose();

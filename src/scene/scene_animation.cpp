@@ -322,6 +322,19 @@ double largest_coordinate(const Affine& world, const BoundingBox& box)
     return largest;
 }
 
+// The largest |coordinate| of `points`; NaN when one is not a number.
+double largest_value(std::span<const Vec3> points)
+{
+    double largest = 0;
+    for (const Vec3& point : points)
+        for (const double value : {point.x, point.y, point.z}) {
+            if (std::isnan(value))
+                return value;
+            largest = std::max(largest, std::abs(value));
+        }
+    return largest;
+}
+
 } // namespace
 
 std::optional<OutOfReach> SceneAnimation::first_out_of_reach(double limit) const
@@ -334,8 +347,12 @@ std::optional<OutOfReach> SceneAnimation::first_out_of_reach(double limit) const
         for (std::size_t k = 0; k < m_key_frames[i].frame_count(); ++k)
             boxes[i].add(m_key_frames[i].frame(k));
     }
+    // A part with an anchor is put on its partner's point, and a RIGID one turned about it: where
+    // the transforms do not say, so its points are computed.
+    const bool anchored = std::any_of(m_anchors.begin(), m_anchors.end(), [](const auto& link) { return link.has_value(); });
+    std::vector<Vec3> points(anchored ? m_points_per_frame : 0);
     std::vector<Affine> world_of(m_scene.objects.size());
-    for (int f = 0; f <= m_scene.last_frame; ++f)
+    for (int f = 0; f <= m_scene.last_frame; ++f) {
         for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
             const std::optional<std::size_t> parent = m_scene.objects[i].parent;
             world_of[i] = parent ? world_of[*parent] * own_transform(i, f) : own_transform(i, f);
@@ -345,6 +362,18 @@ std::optional<OutOfReach> SceneAnimation::first_out_of_reach(double limit) const
             if (std::isnan(reach) || reach > limit)
                 return OutOfReach{i, f, reach};
         }
+        if (!anchored)
+            continue;
+        frame(f, points);
+        for (std::size_t i = 0; i < m_scene.objects.size(); ++i) {
+            if (!m_anchors[i])
+                continue;
+            const ObjectPoints place = m_object_points[i];
+            const double reach = largest_value(std::span<const Vec3>(points).subspan(place.first, place.count));
+            if (std::isnan(reach) || reach > limit)
+                return OutOfReach{i, f, reach, true};
+        }
+    }
     return std::nullopt;
 }
 

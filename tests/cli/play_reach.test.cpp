@@ -27,6 +27,16 @@ std::string nested_scale_scene()
     return scene;
 }
 
+// apcs play far.scn --print in `folder`: exit 1, nothing printed, the message from `after_name` on.
+void check_refused(const TempFolder& folder, const std::string& after_name)
+{
+    const auto run = run_apcs({"play", (folder / "far.scn").string(), "--print"});
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.starts_with((folder / "far.scn").string() + after_name));
+    CHECK(run.out.empty());
+}
+
 } // namespace
 
 TEST_CASE("a scene whose composed transforms leave what a frame holds is refused at the object's line",
@@ -59,11 +69,21 @@ TEST_CASE("a SHAPE at 1e9 moved by 1e9 is refused, since apcs draw could not rea
     folder.write("far.dat", "1e9 0 0\n1e9 1 0\n");
     folder.write("m.dat", "0 0 0\n1e9 0 0\n");
     folder.write("far.scn", "FRAMES 4\nOBJECT far\nSHAPE far.dat\nMOVE m.dat\n");
-    const auto run = run_apcs({"play", (folder / "far.scn").string(), "--print"});
-    CAPTURE(run.err);
-    CHECK(run.status == 1);
-    CHECK(run.err.starts_with((folder / "far.scn").string() + ":2: object far reaches |value| "));
-    CHECK(run.out.empty());
+    check_refused(folder, ":2: object far reaches |value| ");
+}
+
+TEST_CASE("a RIGID limb whose turn takes it past 1e9 between its keys is refused, naming its joint",
+          "[cli][play][scene]")
+{
+    // Both keys hold |value| <= 1e9; half way through the quarter turn the tip is at z 1.27e9.
+    const TempFolder folder;
+    folder.write("base.dat", "0 0 0\n0 900000000 0\n");
+    folder.write("limb1.dat", "0 900000000 0\n0 -900000000 0\n");
+    folder.write("limb2.dat", "0 0 -900000000\n0 0 900000000\n");
+    folder.write("far.scn", "FRAMES 4\nOBJECT base\nSHAPE base.dat\nJOINT hip 2\n"
+                            "OBJECT limb PARENT base\nKEYS limb1.dat limb2.dat\nRIGID\nJOINT hip 1\n");
+    check_refused(folder, ":5: object limb reaches |value| 1.27e+09 at frame 2 (put on its joint 'hip' with 'base', "
+                          "turned about it); a frame holds |value| <= 1e9");
 }
 
 TEST_CASE("play - reads the scene from standard input", "[cli][play][scene]")

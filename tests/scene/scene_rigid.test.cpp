@@ -117,3 +117,51 @@ TEST_CASE("a RIGID limb turns about its anchor by the staff's law and keeps its 
         CHECK(near(points[3], tip_at(45, hip + Vec3{0, 0, 2})));
     }
 }
+
+TEST_CASE("a drawing on one line whose first and last points meet turns like any other line", "[scene][rigid]")
+{
+    // Out and back along -z (a closed stroke), turned a quarter to +y: congruent, not refused.
+    const std::vector<Vec3> down{{0, 0, 0}, {0, 0, -1}, {0, 0, 0}};
+    const std::vector<Vec3> ahead{{0, 5, 5}, {0, 6, 5}, {0, 5, 5}};
+    const RigidTurn turn = fit_rigid_turn(down, ahead);
+    CHECK(turn.worst_deviation < 1e-12);
+    CHECK(near(partial_turn(turn, 0.5, Vec3{})(Vec3{0, 0, -2}), tip_at(45, Vec3{})));
+}
+
+TEST_CASE("a drawing on one line turned half round turns about the face-on axis x when its line is across it",
+          "[scene][rigid]")
+{
+    // Along +y, then along -y: no smallest rotation; x keeps it in the thesis' face-on plane.
+    const std::vector<Vec3> ahead{{0, 0, 0}, {0, 1, 0}, {0, 2, 0}};
+    const std::vector<Vec3> behind{{0, 0, 0}, {0, -1, 0}, {0, -2, 0}};
+    const RigidTurn turn = fit_rigid_turn(ahead, behind);
+    CHECK(turn.worst_deviation < 1e-12);
+    const Vec3 half = partial_turn(turn, 0.5, Vec3{})(Vec3{0, 2, 0});
+    CHECK(std::abs(half.x) < 1e-12);
+    CHECK(std::abs(std::abs(half.z) - 2) < 1e-12);
+    // Along x (a top view's line): about y, the first axis across it.
+    const std::vector<Vec3> east{{0, 0, 0}, {1, 0, 0}};
+    const std::vector<Vec3> west{{0, 0, 0}, {-1, 0, 0}};
+    const Vec3 quarter = partial_turn(fit_rigid_turn(east, west), 0.5, Vec3{})(Vec3{1, 0, 0});
+    CHECK(std::abs(quarter.y) < 1e-12);
+    CHECK(std::abs(std::abs(quarter.z) - 1) < 1e-12);
+}
+
+TEST_CASE("a RIGID part whose turn takes it past 1e9 between its keys is out of reach", "[scene][rigid]")
+{
+    // A limb 1.8e9 long from (0, 9e8, 0) pointing along -y in KEY1 and +z in KEY2: both keys within
+    // 1e9, but half way through the quarter turn its tip is at z = 1.27e9 (frame 2 of 4).
+    DatFiles files;
+    files.texts["base.dat"] = "0 0 0\n0 900000000 0\n";
+    files.texts["limb1.dat"] = "0 900000000 0\n0 -900000000 0\n";
+    files.texts["limb2.dat"] = "0 0 -900000000\n0 0 900000000\n";
+    const Scene scene = scene_from("FRAMES 4\nOBJECT base\nSHAPE base.dat\nJOINT hip 2\n"
+                                   "OBJECT limb PARENT base\nKEYS limb1.dat limb2.dat\nRIGID\nJOINT hip 1\n",
+                                   files);
+    const SceneAnimation animation(scene, {});
+    const std::optional<OutOfReach> beyond = animation.first_out_of_reach(1e9);
+    REQUIRE(beyond.has_value());
+    CHECK(beyond->object == 1);
+    CHECK(beyond->frame == 2); // frame 1, a quarter of the way: |y| 7.6e8, z 6.9e8
+    CHECK(beyond->magnitude == Approx(1.8e9 * std::sin(std::numbers::pi / 4)));
+}

@@ -24,12 +24,14 @@ struct ObjectPoints {
 
 // An object whose world points leave what a .dat file holds (|value| <= max_dat_magnitude, and
 // finite) at `frame`: its transforms composed with its parents' (ten nested SCALE 1.148 over 100
-// frames reach 1e57) or its drawing moved far enough (SHAPE at 1e9 with MOVE 1e9). `magnitude`
-// is the largest |value| (NaN when one is not a number).
+// frames reach 1e57), its drawing moved far enough (SHAPE at 1e9 with MOVE 1e9), or, for a part
+// with an anchor (`at_anchor`), its points put on its partner's point (a RIGID part turned about
+// it). `magnitude` is the largest |value| (NaN when one is not a number).
 struct OutOfReach {
     std::size_t object = 0;
     int frame = 0;
     double magnitude = 0;
+    bool at_anchor = false;
 };
 
 // A scene's frames, one at a time (SPEC §8.2): each object's transform
@@ -57,7 +59,8 @@ public:
     Affine transform(std::size_t index, int f) const;
     // The first frame, and in it the first object in file order, whose drawing W_f moves past
     // `limit` (or to values that are not numbers); nullopt when every frame can be written and
-    // read back. Joint corrections, which move a part onto its parent's point, are not counted.
+    // read back. A part with an anchor is judged by its points, after it is put on its partner's
+    // point (and a RIGID one turned): the whole frame is computed for those.
     std::optional<OutOfReach> first_out_of_reach(double limit) const;
     std::span<const ObjectPoints> object_points() const { return m_object_points; }
     // The parts of all objects' drawings in file order, each named "OBJECT/PART" ("OBJECT/P1" … for
