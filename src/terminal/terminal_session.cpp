@@ -62,8 +62,22 @@ public:
         }
         return m_script.events[m_played++];
     }
+    // The captions reached and not yet told, to `hooks`, over `program`'s screen: when it is
+    // neither splitting nor animating, as a headless replay reaches them. After Esc ended the
+    // replay (stop), none is.
+    void tell_captions(const InteractiveProgram& program, const ReplayHooks& hooks)
+    {
+        if (!hooks.caption_reached || m_stopped || program.busy() || program.animating())
+            return;
+        for (; m_told < m_script.captions.size() && m_script.captions[m_told].before_event <= m_played; ++m_told)
+            hooks.caption_reached(m_told, with_caption(program.screen(), m_script.captions[m_told].text));
+    }
     // Esc during a paced replay: the keyboard takes over.
-    void stop() { m_played = m_step_end = m_script.events.size(); }
+    void stop()
+    {
+        m_played = m_step_end = m_script.events.size();
+        m_stopped = true;
+    }
     void key_typed() { m_typed_after = !playing(); }
     // The caption reached and, when paced, the step just played, until a key is typed after the
     // replay.
@@ -83,6 +97,8 @@ private:
     std::size_t m_step_end = 0;
     std::string m_step_label;
     bool m_typed_after = false;
+    std::size_t m_told = 0;
+    bool m_stopped = false;
 };
 
 // The next input of a replay that waits to play a key: the script's key at its pace (`scripted`
@@ -134,7 +150,7 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 }
 
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded)
+                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
     if (!opened)
@@ -143,6 +159,7 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {
+        replay.tell_captions(session, hooks);
         terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.shown()));
         KeyEvent key;
         std::optional<TerminalInput> input;

@@ -4,6 +4,7 @@
 #include "apcs/cli/options.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
+#include "apcs/session/replay_hooks.h"
 #include "apcs/session/session.h"
 
 #include <functional>
@@ -17,8 +18,9 @@ namespace apcs {
 // The terminal shell of the session, supplied by the executable (the only part linked with
 // ncurses); see run_terminal_session. Returns success or stopped, or why there is no usable
 // terminal ("apcs: PROBLEM").
-using TerminalSessionRunner = std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace,
-                                                                 GlyphSet glyphs, std::vector<KeyEvent>& recorded)>;
+using TerminalSessionRunner =
+    std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
+                                       std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)>;
 
 // Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
 bool is_utf8_codeset(std::string_view codeset);
