@@ -5,6 +5,7 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/session/goal_check.h"
 #include "apcs/session/handout.h"
 #include "apcs/session/replay_caption.h"
 
@@ -103,14 +104,16 @@ SessionSettings session_settings(const CommonOptions& options)
 // Each step's screen as the step ends (its last key played), under the step's name; a caption
 // of the script as ";; TEXT" where the replay reaches it.
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached)
+                                           std::ostream& out, const CaptionReached& reached, const KeysPlayed& played)
 {
     std::string shown = screen_text(session.screen(), glyphs);
     SessionPhase shown_phase = session.phase();
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
     std::size_t next_caption = 0;
-    const auto print_captions = [&](std::size_t played) {
-        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= played;
+    const auto print_captions = [&](std::size_t keys) {
+        if (played)
+            played(keys, session);
+        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= keys;
              ++next_caption) {
             out << ";; " << script.captions[next_caption].text << '\n';
             if (reached)
@@ -221,19 +224,55 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
     return terminal_glyphs_here(asked);
 }
 
+// A headless replay's goals, each checked once its answer is played (or the session ended before
+// it was): the first that does not hold, as "FILE:LINE: goal not reached: …".
+class HeadlessGoals {
+public:
+    HeadlessGoals(const KeyScript& script, std::string file_name) : m_script(script), m_file_name(std::move(file_name)) {}
+
+    void played(std::size_t keys, const Session& session)
+    {
+        for (; m_next < m_script.goals.size() && m_script.goals[m_next].answer_end <= keys; ++m_next)
+            judge(m_script.goals[m_next], session);
+    }
+    void finish(const Session& session) { played(m_script.events.size(), session); }
+    const std::optional<Diagnostic>& failed() const { return m_failed; }
+
+private:
+    void judge(const ScriptGoal& goal, const Session& session)
+    {
+        if (m_failed)
+            return;
+        const GoalProgress progress = check_goal(goal, session);
+        if (!progress.reached)
+            m_failed = Diagnostic{m_file_name, goal.line_number, "goal not reached: " + progress.said};
+    }
+
+    const KeyScript& m_script;
+    std::string m_file_name;
+    std::size_t m_next = 0;
+    std::optional<Diagnostic> m_failed;
+};
+
 // The script replayed at once, each step's screen on `out`. Nobody watched the screen: a file
 // that could not be written is the run's failure.
-ExitStatus replay_headless(Session& session, const KeyScript& script, GlyphSet glyphs, const ReplayHooks& hooks,
-                           std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
+ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name, GlyphSet glyphs,
+                           const ReplayHooks& hooks, std::vector<KeyEvent>& recorded, std::ostream& out,
+                           std::ostream& err)
 {
     std::size_t caption_index = 0;
     const auto reached = [&](const ScriptCaption& caption, const Session& shown) {
         if (hooks.caption_reached)
             hooks.caption_reached(caption_index++, with_caption(shown.screen(), caption.text));
     };
-    recorded = run_headless_session(session, script, glyphs, out, reached);
+    HeadlessGoals goals(script, file_name);
+    recorded = run_headless_session(session, script, glyphs, out, reached,
+                                    [&goals](std::size_t keys, const Session& shown) { goals.played(keys, shown); });
+    goals.finish(session);
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+    if (goals.failed())
+        return report_bad_input(*goals.failed(), err);
     if (session.write_problem()) {
         err << "apcs: " << session.write_problem()->to_string() << '\n';
         return ExitStatus::bad_input;
@@ -399,6 +438,7 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
                          const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
 {
     ReplayHooks hooks;
+    hooks.goal_progress = [&session, &script](std::size_t index) { return check_goal(script.goals[index], session); };
     if (handout)
         hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
                                                                                        const SessionScreen& shown) {
@@ -462,7 +502,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     const ReplayHooks hooks = replay_hooks(handout, options, session, script, *glyphs, folder);
     const ExitStatus status =
         handout_outcome(handout,
-                        headless ? replay_headless(session, script, *glyphs, hooks, recorded, screens, err)
+                        headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)
                                  : run_on_terminal(session, script, options, *glyphs, terminal, hooks, recorded, out, err),
                         err);
     if (status == ExitStatus::terminal_problem)

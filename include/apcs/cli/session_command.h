@@ -51,9 +51,13 @@ SessionSettings session_settings(const CommonOptions& options);
 // blanks removed; the script's captions as lines ";; TEXT" where the replay reaches them.
 // `reached`, if given, sees the session as each caption is reached (the screen a paced replay
 // shows it over). Returns the keys handled.
+// `played`, if given, sees the session before each key and at the end, with the count of keys
+// played so far.
 using CaptionReached = std::function<void(const ScriptCaption&, const Session&)>;
+using KeysPlayed = std::function<void(std::size_t played, const Session&)>;
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached = {});
+                                           std::ostream& out, const CaptionReached& reached = {},
+                                           const KeysPlayed& played = {});
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,

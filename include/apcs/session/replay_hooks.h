@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/session/goal_check.h"
 #include "apcs/session/session_settings.h"
 
 #include <cstddef>
@@ -14,6 +15,10 @@ struct ReplayHooks {
     // session has played the keys before it and is neither splitting nor animating (the moment the
     // headless replay reaches it too). --handout writes its pages here.
     std::function<void(std::size_t index, const SessionScreen& shown)> caption_reached;
+    // How far the session is from goal `index` of the script (GOAL lines, script_goal.h). A replay
+    // on a terminal that reaches a goal asks this after every key the student types, until it
+    // holds; without it, goals are passed over.
+    std::function<GoalProgress(std::size_t index)> goal_progress;
 };
 
 } // namespace apcs
