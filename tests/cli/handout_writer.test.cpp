@@ -78,7 +78,7 @@ test::CommandRun lesson_handout(const test::TempFolder& folder, const std::files
 
 } // namespace
 
-TEST_CASE("--handout writes each caption of the N to L lesson as NN-STEP.png (720x522) and its approved screen "
+TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-STEP.png (720x522) and its approved screen "
           "as NN-STEP.txt",
           "[cli][handout][teaching]")
 {
@@ -104,7 +104,7 @@ TEST_CASE("--handout writes each caption of the N to L lesson as NN-STEP.png (72
     REQUIRE(expected.front() == "01-the-key-frames-the-view-face-on.png");
 }
 
-TEST_CASE("--handout makes one level of folder, before the session starts", "[cli][handout]")
+TEST_CASE("a handout's folder (--handout) is made one level deep, before the session starts", "[cli][handout]")
 {
     const test::TempFolder folder;
     copy_n_to_l(folder);
@@ -116,7 +116,7 @@ TEST_CASE("--handout makes one level of folder, before the session starts", "[cl
     REQUIRE(test::run_apcs({"--handout", (folder / "h").string()}).status == 2);
 }
 
-TEST_CASE("--handout replaces its pages as pictures are replaced: same content untouched, changed kept as .bak",
+TEST_CASE("a handout's pages (--handout) are replaced as pictures are: same content untouched, changed kept as .bak",
           "[cli][handout]")
 {
     const test::TempFolder folder;
