@@ -29,7 +29,7 @@ _apcs_options()
         draw) echo "$view $pictures --help" ;;
         play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
-        *) echo "$staff $curve --surface $view --delay --glyphs --step $pictures --workdir --keys --pace --record --help --version" ;;
+        *) echo "$staff $curve --surface $view --delay --glyphs --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
     esac
 }
 
@@ -51,7 +51,7 @@ _apcs()
         --png | --png-raw) _apcs_files png "$current"; return ;;
         --svg) _apcs_files svg "$current"; return ;;
         --gif) _apcs_files gif "$current"; return ;;
-        --out | --workdir) mapfile -t COMPREPLY < <(compgen -d -- "$current"); return ;;
+        --out | --workdir | --handout) mapfile -t COMPREPLY < <(compgen -d -- "$current"); return ;;
         --tension | --continuity | --bias | --accel | --slopes | --samples | --inbetweens | --theta | \
             --phi | --delay | --step | --frames) return ;;
     esac

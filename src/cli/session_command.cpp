@@ -1,9 +1,13 @@
 #include "apcs/cli/session_command.h"
 
+#include "apcs/cli/handout_writer.h"
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/session/goal_check.h"
+#include "apcs/session/handout.h"
+#include "apcs/session/replay_caption.h"
 
 #include <algorithm>
 #include <cctype>
@@ -17,21 +21,6 @@
 namespace apcs {
 
 namespace {
-
-std::string screen_text(const Session& session, GlyphSet glyphs)
-{
-    const SessionScreen screen = session.screen();
-    const CellGrid grid = screen.graphics
-                              ? render_cells(screen.picture, {text_screen_columns, text_screen_rows}, glyphs)
-                              : screen.text;
-    std::string text;
-    for (int row = 0; row < grid.rows(); ++row) {
-        std::string line = grid.row_text(row);
-        line.erase(line.find_last_not_of(' ') + 1);
-        text += line + '\n';
-    }
-    return text;
-}
 
 std::string_view glyph_set_name(GlyphSet glyphs)
 {
@@ -115,14 +104,16 @@ SessionSettings session_settings(const CommonOptions& options)
 // Each step's screen as the step ends (its last key played), under the step's name; a caption
 // of the script as ";; TEXT" where the replay reaches it.
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached)
+                                           std::ostream& out, const CaptionReached& reached, const KeysPlayed& played)
 {
-    std::string shown = screen_text(session, glyphs);
+    std::string shown = screen_text(session.screen(), glyphs);
     SessionPhase shown_phase = session.phase();
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
     std::size_t next_caption = 0;
-    const auto print_captions = [&](std::size_t played) {
-        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= played;
+    const auto print_captions = [&](std::size_t keys) {
+        if (played)
+            played(keys, session);
+        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= keys;
              ++next_caption) {
             out << ";; " << script.captions[next_caption].text << '\n';
             if (reached)
@@ -144,12 +135,12 @@ std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& sc
         // The animation's last frame ends its step.
         while (session.animating()) {
             shown_phase = session.phase();
-            shown = screen_text(session, glyphs);
+            shown = screen_text(session.screen(), glyphs);
             session.tick();
             if (session.phase() != shown_phase)
                 print_shown();
         }
-        shown = screen_text(session, glyphs);
+        shown = screen_text(session.screen(), glyphs);
         shown_phase = session.phase();
     }
     print_captions(handled);
@@ -200,13 +191,17 @@ std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScrip
     return std::nullopt;
 }
 
-// A replay needs a script; a paced one, a terminal; a session without a terminal, a script.
+// A replay needs a script, and so does a handout; a paced one, a terminal; a session without a terminal, a script.
 std::optional<ExitStatus> refuse_replay_without_its_needs(const CommonOptions& options, bool headless,
                                                           std::ostream& err)
 {
     const bool paced = options.pace.kind != ReplayPace::Kind::at_once;
     if (paced && !options.keys) {
         err << "apcs: --pace paces a --keys replay; give --keys FILE\n";
+        return ExitStatus::bad_usage;
+    }
+    if (options.handout && !options.keys) {
+        err << "apcs: --handout writes the captions of a --keys replay; give --keys FILE\n";
         return ExitStatus::bad_usage;
     }
     if (headless && !options.keys) {
@@ -229,14 +224,55 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
     return terminal_glyphs_here(asked);
 }
 
+// A headless replay's goals, each checked once its answer is played (or the session ended before
+// it was): the first that does not hold, as "FILE:LINE: goal not reached: …".
+class HeadlessGoals {
+public:
+    HeadlessGoals(const KeyScript& script, std::string file_name) : m_script(script), m_file_name(std::move(file_name)) {}
+
+    void played(std::size_t keys, const Session& session)
+    {
+        for (; m_next < m_script.goals.size() && m_script.goals[m_next].answer_end <= keys; ++m_next)
+            judge(m_script.goals[m_next], session);
+    }
+    void finish(const Session& session) { played(m_script.events.size(), session); }
+    const std::optional<Diagnostic>& failed() const { return m_failed; }
+
+private:
+    void judge(const ScriptGoal& goal, const Session& session)
+    {
+        if (m_failed)
+            return;
+        const GoalProgress progress = check_goal(goal, session);
+        if (!progress.reached)
+            m_failed = Diagnostic{m_file_name, goal.line_number, "goal not reached: " + progress.said};
+    }
+
+    const KeyScript& m_script;
+    std::string m_file_name;
+    std::size_t m_next = 0;
+    std::optional<Diagnostic> m_failed;
+};
+
 // The script replayed at once, each step's screen on `out`. Nobody watched the screen: a file
 // that could not be written is the run's failure.
-ExitStatus replay_headless(Session& session, const KeyScript& script, GlyphSet glyphs, std::vector<KeyEvent>& recorded,
-                           std::ostream& out, std::ostream& err)
+ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name, GlyphSet glyphs,
+                           const ReplayHooks& hooks, std::vector<KeyEvent>& recorded, std::ostream& out,
+                           std::ostream& err)
 {
-    recorded = run_headless_session(session, script, glyphs, out);
+    std::size_t caption_index = 0;
+    const auto reached = [&](const ScriptCaption& caption, const Session& shown) {
+        if (hooks.caption_reached)
+            hooks.caption_reached(caption_index++, with_caption(shown.screen(), caption.text));
+    };
+    HeadlessGoals goals(script, file_name);
+    recorded = run_headless_session(session, script, glyphs, out, reached,
+                                    [&goals](std::size_t keys, const Session& shown) { goals.played(keys, shown); });
+    goals.finish(session);
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+    if (goals.failed())
+        return report_bad_input(*goals.failed(), err);
     if (session.write_problem()) {
         err << "apcs: " << session.write_problem()->to_string() << '\n';
         return ExitStatus::bad_input;
@@ -246,10 +282,10 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, GlyphSet g
 
 // The session on the terminal; the files it wrote listed on `out` at its end.
 ExitStatus run_on_terminal(Session& session, const KeyScript& script, const CommonOptions& options, GlyphSet glyphs,
-                           const TerminalSessionRunner& terminal, std::vector<KeyEvent>& recorded, std::ostream& out,
-                           std::ostream& err)
+                           const TerminalSessionRunner& terminal, const ReplayHooks& hooks,
+                           std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
 {
-    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, recorded);
+    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, recorded, hooks);
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -384,6 +420,43 @@ std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFil
     return std::nullopt;
 }
 
+// --handout DIR: its folder made before the session starts; nullopt without --handout.
+std::optional<ExitStatus> open_handout(const CommonOptions& options, std::optional<HandoutWriter>& handout,
+                                       std::ostream& err)
+{
+    if (!options.handout)
+        return std::nullopt;
+    Expected<HandoutWriter> opened = HandoutWriter::open(*options.handout);
+    if (!opened)
+        return report_bad_input(opened.error(), err);
+    handout.emplace(std::move(*opened));
+    return std::nullopt;
+}
+
+// The hooks of the replay: each caption's page of the handout, none without one.
+ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options, const Session& session,
+                         const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
+{
+    ReplayHooks hooks;
+    hooks.goal_progress = [&session, &script](std::size_t index) { return check_goal(script.goals[index], session); };
+    if (handout)
+        hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
+                                                                                       const SessionScreen& shown) {
+            handout->write(static_cast<int>(index) + 1, script.captions[index].text, shown, glyphs,
+                           files_read(options, session, folder));
+        };
+    return hooks;
+}
+
+// A handout that could not be written is the run's failure, unless a signal stopped it.
+ExitStatus handout_outcome(const std::optional<HandoutWriter>& handout, ExitStatus status, std::ostream& err)
+{
+    if (!handout || !handout->problem() || status == ExitStatus::stopped)
+        return status;
+    err << "apcs: --handout: " << handout->problem()->to_string() << '\n';
+    return ExitStatus::bad_input;
+}
+
 } // namespace
 
 ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
@@ -411,6 +484,9 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     }
     if (const std::optional<ExitStatus> refused = refuse_record_target(options, script_text, folder, headless, err))
         return *refused;
+    std::optional<HandoutWriter> handout;
+    if (const std::optional<ExitStatus> refused = open_handout(options, handout, err))
+        return *refused;
     FolderFiles files(folder);
     // An answer typed at a prompt that names the recording is refused there, as a key file is.
     if (options.record && *options.record != "-")
@@ -423,8 +499,12 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
-    const ExitStatus status = headless ? replay_headless(session, script, *glyphs, recorded, screens, err)
-                                       : run_on_terminal(session, script, options, *glyphs, terminal, recorded, out, err);
+    const ReplayHooks hooks = replay_hooks(handout, options, session, script, *glyphs, folder);
+    const ExitStatus status =
+        handout_outcome(handout,
+                        headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)
+                                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, recorded, out, err),
+                        err);
     if (status == ExitStatus::terminal_problem)
         return status;
     // A recording that fails is reported; a session stopped by a signal still ends as stopped.

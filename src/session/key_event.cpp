@@ -81,7 +81,16 @@ void type_line(std::string_view typed, std::vector<KeyEvent>& events, std::vecto
         typed_lines->push_back({first, events.size() - first});
 }
 
-// The script's events; its captions and TEXT lines into `kept` unless it is null.
+// The goals whose answers are still open end before event `end`: a caption, a GOAL line or the
+// script's end closes them.
+// `open` is the first goal not yet closed; afterwards, none is open.
+void end_answers(KeyScript& script, std::size_t& open, std::size_t end)
+{
+    for (; open < script.goals.size(); ++open)
+        script.goals[open].answer_end = end;
+}
+
+// The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
 {
     // Every event takes at least one byte of the script: one allocation, never a doubling.
@@ -91,11 +100,23 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         return ended.error();
     std::optional<Diagnostic> problem;
     int line_number = 0;
+    std::size_t open_goal = 0; // the first goal whose answer has not ended
     while (!text.empty()) {
         ++line_number;
         std::string_view line = take_line(text);
         if (line.starts_with("TEXT ")) {
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
+            continue;
+        }
+        if (line.starts_with("GOAL ")) {
+            Expected<ScriptGoal> goal = parse_goal_line(line.substr(5), file_name, line_number);
+            if (!goal)
+                return goal.error();
+            if (kept != nullptr) {
+                end_answers(*kept, open_goal, events.size());
+                goal->before_event = goal->answer_end = events.size();
+                kept->goals.push_back(*goal);
+            }
             continue;
         }
         const std::size_t comment = line.find(';');
@@ -115,9 +136,13 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
-        if (*caption && kept != nullptr)
+        if (*caption && kept != nullptr) {
+            end_answers(*kept, open_goal, events.size());
             kept->captions.push_back({events.size(), **caption});
+        }
     }
+    if (kept != nullptr)
+        end_answers(*kept, open_goal, events.size());
     // Keys named by words (ENTER) take many bytes each: give back what they left unused.
     if (events.size() < events.capacity() / 2)
         events.shrink_to_fit();

@@ -392,4 +392,13 @@ PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const 
     return Transition{ControlChoice{}};
 }
 
+std::optional<StaffValues> PathEditor::region_staff() const
+{
+    if (const auto* staff = std::get_if<Staff>(&m_mode))
+        return staff->staff;
+    if (const auto* asked = std::get_if<AskAgain>(&m_mode))
+        return asked->staff;
+    return std::nullopt;
+}
+
 } // namespace apcs

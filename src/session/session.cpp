@@ -324,4 +324,10 @@ void Session::quit()
     ask({});
 }
 
+const PathEditor* Session::path_editor() const
+{
+    const auto* shaping = std::get_if<step::Shaping>(&m_step);
+    return shaping == nullptr ? nullptr : &shaping->editor;
+}
+
 } // namespace apcs

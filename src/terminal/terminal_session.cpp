@@ -62,8 +62,43 @@ public:
         }
         return m_script.events[m_played++];
     }
+    // The captions reached and not yet told, to `hooks`, over `program`'s screen: when it is
+    // neither splitting nor animating, as a headless replay reaches them. After Esc ended the
+    // replay (stop), none is.
+    void tell_captions(const InteractiveProgram& program, const ReplayHooks& hooks)
+    {
+        if (!hooks.caption_reached || m_stopped || program.busy() || program.animating())
+            return;
+        for (; m_told < m_script.captions.size() && m_script.captions[m_told].before_event <= m_played; ++m_told)
+            hooks.caption_reached(m_told, with_caption(program.screen(), m_script.captions[m_told].text));
+    }
+    // At a goal that does not hold yet: what the caption row says ("GOAL: tension +0.10, want …"),
+    // while the student's keys go to the program. A goal that holds is passed, its answer's keys
+    // skipped. nullopt when the replay is not at a goal, or the program is splitting or animating.
+    std::optional<std::string> goal_waiting(const InteractiveProgram& program, const ReplayHooks& hooks)
+    {
+        m_goal_said.clear();
+        if (!hooks.goal_progress || m_stopped || mid_step() || program.busy() || program.animating())
+            return std::nullopt;
+        const std::vector<ScriptGoal>& goals = m_script.goals;
+        for (; m_goal < goals.size() && goals[m_goal].before_event <= m_played; ++m_goal) {
+            if (goals[m_goal].before_event < m_played)
+                continue;
+            const GoalProgress progress = hooks.goal_progress(m_goal);
+            if (!progress.reached) {
+                m_goal_said = "GOAL: " + progress.said;
+                return m_goal_said;
+            }
+            m_played = m_step_end = goals[m_goal].answer_end;
+        }
+        return std::nullopt;
+    }
     // Esc during a paced replay: the keyboard takes over.
-    void stop() { m_played = m_step_end = m_script.events.size(); }
+    void stop()
+    {
+        m_played = m_step_end = m_script.events.size();
+        m_stopped = true;
+    }
     void key_typed() { m_typed_after = !playing(); }
     // The caption reached and, when paced, the step just played, until a key is typed after the
     // replay.
@@ -71,6 +106,8 @@ public:
     {
         if (m_typed_after)
             return {};
+        if (!m_goal_said.empty())
+            return {m_goal_said, {}};
         const ScriptCaption* caption = caption_at(m_script, m_played);
         return {caption == nullptr ? std::string_view{} : std::string_view(caption->text),
                 m_pace.kind == ReplayPace::Kind::at_once ? std::string_view{} : std::string_view(m_step_label)};
@@ -83,6 +120,10 @@ private:
     std::size_t m_step_end = 0;
     std::string m_step_label;
     bool m_typed_after = false;
+    std::size_t m_told = 0;
+    bool m_stopped = false;
+    std::size_t m_goal = 0;
+    std::string m_goal_said;
 };
 
 // The next input of a replay that waits to play a key: the script's key at its pace (`scripted`
@@ -134,7 +175,7 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 }
 
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded)
+                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
     if (!opened)
@@ -143,11 +184,14 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {
+        replay.tell_captions(session, hooks);
+        // At a goal the keyboard is the student's (Esc included) until it holds.
+        const bool at_goal = replay.goal_waiting(session, hooks).has_value();
         terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.shown()));
         KeyEvent key;
         std::optional<TerminalInput> input;
         // A scripted key waits for the split, as a typed one would (Esc would stop it).
-        const bool scripted = replay.playing() && !session.animating() && !session.busy();
+        const bool scripted = !at_goal && replay.playing() && !session.animating() && !session.busy();
         if (scripted)
             input = replay_input(*terminal, replay, key);
         else
@@ -173,7 +217,7 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
             // Keys typed at the too-small screen would act on a session nobody can see.
             if (!fit_cell_area(terminal->size().columns, terminal->size().rows))
                 break;
-            if (!scripted)
+            if (!scripted && !at_goal)
                 replay.key_typed();
             recorded.push_back(key);
             session.handle(key);

@@ -4,6 +4,7 @@
 #include "apcs/cli/options.h"
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
+#include "apcs/session/replay_hooks.h"
 #include "apcs/session/session.h"
 
 #include <functional>
@@ -17,8 +18,9 @@ namespace apcs {
 // The terminal shell of the session, supplied by the executable (the only part linked with
 // ncurses); see run_terminal_session. Returns success or stopped, or why there is no usable
 // terminal ("apcs: PROBLEM").
-using TerminalSessionRunner = std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace,
-                                                                 GlyphSet glyphs, std::vector<KeyEvent>& recorded)>;
+using TerminalSessionRunner =
+    std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
+                                       std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)>;
 
 // Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
 bool is_utf8_codeset(std::string_view codeset);
@@ -49,9 +51,13 @@ SessionSettings session_settings(const CommonOptions& options);
 // blanks removed; the script's captions as lines ";; TEXT" where the replay reaches them.
 // `reached`, if given, sees the session as each caption is reached (the screen a paced replay
 // shows it over). Returns the keys handled.
+// `played`, if given, sees the session before each key and at the end, with the count of keys
+// played so far.
 using CaptionReached = std::function<void(const ScriptCaption&, const Session&)>;
+using KeysPlayed = std::function<void(std::size_t played, const Session&)>;
 std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached = {});
+                                           std::ostream& out, const CaptionReached& reached = {},
+                                           const KeysPlayed& played = {});
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,

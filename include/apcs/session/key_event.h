@@ -2,6 +2,7 @@
 
 #include "apcs/base/diagnostic.h"
 #include "apcs/session/physical_key.h"
+#include "apcs/session/script_goal.h"
 
 #include <cstdint>
 #include <optional>
@@ -56,6 +57,7 @@ struct KeyScript {
     std::vector<KeyEvent> events;
     std::vector<ScriptCaption> captions;
     std::vector<TypedLine> typed_lines;
+    std::vector<ScriptGoal> goals; // GOAL lines (script_goal.h), in order
 };
 
 // parse_key_script, keeping the captions (each at most max_caption_columns wide, or FILE:LINE:

@@ -62,6 +62,9 @@ public:
     const EvaluatedPath& evaluated() const { return picture().evaluated(); }
     // The view fixed when the path was opened (fitted again when the waypoint editor is left).
     const ViewTransform& view_transform() const { return picture().view(); }
+    // The staff's values for the region on it (while a staff line is active, and at "Adjust the
+    // path again ?"); none before a region is chosen or in the waypoint editor.
+    std::optional<StaffValues> region_staff() const;
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);
 

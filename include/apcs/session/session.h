@@ -44,6 +44,8 @@ public:
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
     // The KEY1 and KEY2 files as typed (empty until read), relative to the session's folder.
     const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
+    // The path being shaped (steps 3 to 5 of one path), none at any other step.
+    const PathEditor* path_editor() const;
     // The last write that failed, if any did (the step that tried it was asked again).
     const std::optional<Diagnostic>& write_problem() const { return m_model.written.problem(); }
 

@@ -5,6 +5,7 @@
 #include "apcs/session/exit_status.h"
 #include "apcs/session/key_event.h"
 #include "apcs/session/interactive_program.h"
+#include "apcs/session/replay_hooks.h"
 #include "apcs/terminal/terminal.h"
 
 #include <memory>
@@ -27,8 +28,10 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 // screen says how large it must be, and keys wait. While a paced replay plays, Esc ends it (the
 // keyboard takes over) and other keys are ignored. Returns success when the program ended,
 // stopped when stopped by a signal or a lost terminal, or why there is no usable terminal
-// ("apcs: PROBLEM"). The terminal is given back on every way out, exceptions included.
+// ("apcs: PROBLEM"). The terminal is given back on every way out, exceptions included. `hooks`
+// hear of each caption reached (replay_hooks.h), until Esc ends the replay.
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& program, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded);
+                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded,
+                                          const ReplayHooks& hooks = {});
 
 } // namespace apcs
