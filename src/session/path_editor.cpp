@@ -125,8 +125,12 @@ bool PathEditor::zoom()
 {
     m_zoom_level = m_zoom_level == deepest_zoom ? 0 : m_zoom_level + 1;
     const std::optional<ControlRegion> region = picked_region();
+    // The path's middle: the sample halfway along the curve.
+    const SampledCurve& curve = m_picture.evaluated().curve;
     std::string about = "the path's middle";
     m_zoom_about.reset();
+    if (curve.sample_count() > 0)
+        m_zoom_about = curve.sample(curve.nearest_sample(curve.total_length() / 2.0));
     if (region && !region->is_whole(m_setup.points)) {
         m_zoom_about = region_middle(m_setup.points, *region);
         about = region->first == region->last ? "control point " + std::to_string(region->first + 1)
@@ -245,6 +249,13 @@ bool PathEditor::update_views(const Command& command)
                               return true;
                           },
                           [&](const command::Zoom&) { return !in_waypoints && zoom(); },
+                          [&](const command::ToggleGhost&) {
+                              toggle(m_show_ghost);
+                              m_notice = !m_show_ghost        ? "ghost hidden (O shows it)"
+                                         : picture().has_ghost() ? "ghost shown: the curve before the last change, dotted"
+                                                                 : "ghost shown after the next staff key or waypoint edit";
+                              return true;
+                          },
                           [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
                           [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
                           [&](const command::ChoosePoint& choose) {
@@ -319,6 +330,7 @@ PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Co
 PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 {
     assert(region.first <= region.last && region.last < m_setup.points.size());
+    m_picture.drop_ghost(); // a new region starts without one
     Staff staff{region, m_setup.points[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
     staff.line_start_value = staff.staff[staff.line];
     m_tangent_point = region.is_whole(m_setup.points) ? 1 : region.first;
@@ -337,6 +349,7 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     m_history.push_back(std::move(change));
+    m_picture.keep_ghost();
     // The segments whose tangents the region's points can set (ends included), kept to measure
     // how far the key moved the curve.
     const std::vector<HermiteSegment>& segments = m_picture.evaluated().curve.segments;
@@ -391,6 +404,7 @@ PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding en
     }
     m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
               (kept ? " (kept)" : ""));
+    m_picture.drop_ghost(); // the ghost lasts until the next line
     // A single control point starts no span of its own: its acceleration line is skipped.
     const bool single_point = staff.region.first == staff.region.last;
     if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
@@ -420,7 +434,10 @@ PathEditor::Transition PathEditor::update_value_field(Staff& staff, const Comman
 PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
 {
     return std::visit(Overloaded{
-                          [](const command::Yes&) { return Transition{ControlChoice{}}; },
+                          [&](const command::Yes&) {
+                              m_picture.drop_ghost();
+                              return Transition{ControlChoice{}};
+                          },
                           [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
                           [&](const command::Undo&) { return undo(); },
                           // Ask_Adjusting waits for Y or N.
@@ -450,6 +467,7 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
     const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
                                       ? PathChange::What::staff
                                       : PathChange::What::accelerations;
+    m_picture.keep_ghost();
     restore_staff_runs(m_setup.points, change.region, change.points_before);
     reevaluate_region(change.region, what);
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +

@@ -40,13 +40,15 @@ std::string PathEditor::message() const
 }
 
 // After a staff key, how far it moved the curve (SPEC §7.2.1) follows what the line shows; when both
-// do not fit, the line's name and the move.
+// do not fit, the line's name and the move, unless frames freeze: that warning matters more.
 std::string PathEditor::with_move(const std::string& shown, const Staff& staff) const
 {
     if (m_moved.empty())
         return shown;
     if (shown.size() + 2 + m_moved.size() <= max_message_width)
         return shown + "  " + m_moved;
+    if (m_picture.evaluated().frames_freeze())
+        return shown;
     return m_setup.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
 }
 
@@ -142,6 +144,7 @@ GraphicsScreen PathEditor::view() const
     PathScreenContent content = screen_content();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
+    content.ghost = m_show_ghost;
     if (m_show_tangents)
         content.tangent_scale = m_tangent_scale;
     if (m_show_law)

@@ -2,6 +2,7 @@
 // zoom, the ghost and the displacement said in numbers.
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/raster/graphics_screen.h"
 #include "apcs/geometry/hercules.h"
 #include "apcs/session/path_editor.h"
 #include "apcs/session/screen_layout.h"
@@ -109,6 +110,30 @@ void require_filled(const PixelExtent& extent)
     REQUIRE(extent.bottom <= layout::view_area.bottom + 0.5);
 }
 
+// The cells of the curve (the raster's lines, no marks, text or staff) that differ between two
+// screens at 80x24 braille, leaving out every cell where either screen shows a mark or text.
+int changed_curve_cells(const GraphicsScreen& before, const GraphicsScreen& after)
+{
+    const auto lines_only = [](GraphicsScreen screen) {
+        screen.marks.clear();
+        screen.text.clear();
+        screen.ticked_lines.clear();
+        return render_cells(screen, {80, 24}, GlyphSet::braille);
+    };
+    const CellGrid full_before = render_cells(before, {80, 24}, GlyphSet::braille);
+    const CellGrid full_after = render_cells(after, {80, 24}, GlyphSet::braille);
+    const CellGrid lines_before = lines_only(before);
+    const CellGrid lines_after = lines_only(after);
+    int changed = 0;
+    for (int row = 0; row < 24; ++row)
+        for (int column = 0; column < 80; ++column)
+            if (lines_before.at(column, row) != lines_after.at(column, row) &&
+                full_before.at(column, row) == lines_before.at(column, row) &&
+                full_after.at(column, row) == lines_after.at(column, row))
+                ++changed;
+    return changed;
+}
+
 const std::vector<ShippedPath> shipped_paths{
     {"n-to-l", "way1.dat", {0, 90}},          {"n-to-l", "way4.dat", {0, 90}},
     {"stick", "way1.dat", {40, 50}},          {"stick", "way5.dat", {40, 50}},
@@ -176,4 +201,101 @@ TEST_CASE("after a staff key the message line says how far the curve moved, in u
     apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{+1}});
     REQUIRE(apcs::test::message_of(editor.view()) ==
             "way1.dat: ACCELERATION  control points 1 to 3 of 3  only the in-betweens moved");
+}
+
+TEST_CASE("zoomed x4, three steps of TENSION on way1 change at least 40 cells of the curve at 80x24 braille",
+          "[session][editor][view]")
+{
+    LogLines log;
+    PathEditor editor(shipped_setup({"n-to-l", "way1.dat", {0, 90}}), log);
+    // The curve alone: the ghost (O) would keep the old curve's cells half lit.
+    apply(editor, {cmd::ToggleGhost{}, cmd::ChooseGlobal{}});
+    const GraphicsScreen fitted = editor.view();
+    apply(editor, {cmd::StaffStep{+3}});
+    const int fitted_cells = changed_curve_cells(fitted, editor.view());
+    apply(editor, {cmd::Undo{}, cmd::Zoom{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "zoom ×2 about the path's middle (Z: more)");
+    apply(editor, {cmd::Zoom{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "zoom ×4 about the path's middle (Z: more)");
+    const GraphicsScreen zoomed = editor.view();
+    apply(editor, {cmd::StaffStep{+3}});
+    const int zoomed_cells = changed_curve_cells(zoomed, editor.view());
+    CAPTURE(fitted_cells, zoomed_cells);
+    REQUIRE(zoomed_cells >= 40);
+    // ×8, then back to the fitted view.
+    apply(editor, {cmd::Zoom{}, cmd::Zoom{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "zoom off: the view fitted to the path");
+    PathEditor::Setup changed = shipped_setup({"n-to-l", "way1.dat", {0, 90}});
+    changed.points = editor.points();
+    REQUIRE(PathEditor(changed, log).view_transform() == editor.view_transform());
+}
+
+TEST_CASE("Z zooms about the picked region: its middle comes to the middle of the view", "[session][editor][view]")
+{
+    LogLines log;
+    PathEditor editor(shipped_setup({"n-to-l", "way4.dat", {0, 90}}), log);
+    apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{1}, cmd::Accept{}, cmd::Accept{}, cmd::Zoom{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "zoom ×2 about control point 2 (Z: more)");
+    const DevicePoint at = editor.view_transform().to_device(editor.points()[1].position);
+    REQUIRE(at.x == Approx((layout::view_area.left + layout::view_area.right) / 2.0));
+    REQUIRE(at.y == Approx((layout::view_area.top + layout::view_area.bottom) / 2.0));
+}
+
+namespace {
+
+// Pixels lit in `screen` and not in `without`.
+std::size_t pixels_beyond(const Bitmap& screen, const Bitmap& without, const Bitmap* within = nullptr)
+{
+    std::size_t count = 0;
+    for (int y = 0; y < screen.height(); ++y)
+        for (int x = 0; x < screen.width(); ++x)
+            if (screen.get(x, y) && !without.get(x, y) && (within == nullptr || within->get(x, y)))
+                ++count;
+    return count;
+}
+
+} // namespace
+
+TEST_CASE("the curve before the last staff key stays as a dotted ghost until the next line; O toggles it",
+          "[session][editor][view]")
+{
+    LogLines log;
+    PathEditor editor(shipped_setup({"n-to-l", "way1.dat", {0, 90}}), log);
+    apply(editor, {cmd::ChooseGlobal{}});
+    const Bitmap before = editor.view().bitmap;
+    apply(editor, {cmd::StaffStep{-6}});
+    const GraphicsScreen with_ghost = editor.view();
+    apply(editor, {cmd::ToggleGhost{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "ghost hidden (O shows it)");
+    const GraphicsScreen without_ghost = editor.view();
+    // The ghost's pixels are the old curve's, and only some of them: dotted.
+    const std::size_t ghost = pixels_beyond(with_ghost.bitmap, without_ghost.bitmap);
+    const std::size_t old_curve = pixels_beyond(before, without_ghost.bitmap);
+    CAPTURE(ghost, old_curve);
+    REQUIRE(ghost > 50);
+    REQUIRE(pixels_beyond(with_ghost.bitmap, without_ghost.bitmap, &before) == ghost);
+    REQUIRE(ghost < old_curve * 3 / 4);
+    // Seen at 80x24 braille: cells of the ghost, not one curve drawn over the other.
+    REQUIRE(changed_curve_cells(without_ghost, with_ghost) >= 10);
+    apply(editor, {cmd::ToggleGhost{}});
+    REQUIRE(apcs::test::message_of(editor.view()) == "ghost shown: the curve before the last change, dotted");
+    REQUIRE(editor.view().bitmap == with_ghost.bitmap);
+    // The next line: gone.
+    apply(editor, {cmd::Accept{}});
+    REQUIRE(pixels_beyond(editor.view().bitmap, without_ghost.bitmap) == 0);
+}
+
+TEST_CASE("a waypoint edit leaves the curve before it as a ghost", "[session][editor][view]")
+{
+    LogLines log;
+    PathEditor editor(shipped_setup({"n-to-l", "way1.dat", {0, 90}}), log);
+    apply(editor, {cmd::OpenWaypoints{}, cmd::ChoosePoint{+1}});
+    const Bitmap before = editor.view().bitmap;
+    apply(editor, {cmd::MovePoint{+3, 0, 0}});
+    const Bitmap with_ghost = editor.view().bitmap;
+    apply(editor, {cmd::ToggleGhost{}});
+    const Bitmap without_ghost = editor.view().bitmap;
+    const std::size_t ghost = pixels_beyond(with_ghost, without_ghost);
+    REQUIRE(ghost > 50);
+    REQUIRE(pixels_beyond(with_ghost, without_ghost, &before) == ghost);
 }

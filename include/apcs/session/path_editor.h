@@ -150,7 +150,7 @@ private:
     PathPicture m_picture;
     // SPEC §7.2.1: the view filled with what is shown, fixed while the staff or the waypoint editor
     // changes the path (refitted when they are left, and by K); Z magnifies it 2^m_zoom_level
-    // times (0 to 3) about m_zoom_about (none: the path's middle).
+    // times (0 to 3) about m_zoom_about (the region's middle, or the sample halfway along the curve).
     std::optional<ViewTransform> m_fitted_view;
     int m_zoom_level = 0;
     std::optional<Vec3> m_zoom_about;
@@ -161,6 +161,8 @@ private:
     // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped
     // value).
     bool m_show_key_frames = false;
+    // O: the ghost of the curve before the last staff key or waypoint edit (PathPicture keeps it).
+    bool m_show_ghost = true;
     bool m_show_tangents = false;
     std::size_t m_tangent_point = 1;
     bool m_show_law = false;
