@@ -243,6 +243,11 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         pre_draw(screen, kept->control_point_marks);
     else
         pre_draw(screen, control_point_marks(control_point_runs(content.control_points, view), content.region));
+    // A zoomed view (Z) leaves points beyond the boundary: their marks must not land on the staff.
+    std::erase_if(screen.marks, [](const PixelMark& mark) {
+        return (mark.kind == MarkKind::control_point || mark.kind == MarkKind::inbetween) &&
+               !layout::inside_boundary.contains(mark.at);
+    });
     draw_arrow(screen, content, view);
     draw_staff(screen, content);
     if (!content.message.empty())

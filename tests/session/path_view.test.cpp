@@ -218,6 +218,10 @@ TEST_CASE("zoomed x4, three steps of TENSION on way1 change at least 40 cells of
     apply(editor, {cmd::Zoom{}});
     REQUIRE(apcs::test::message_of(editor.view()) == "zoom ×4 about the path's middle (Z: more)");
     const GraphicsScreen zoomed = editor.view();
+    // The points the zoom leaves beyond the boundary show no mark (none on the staff rows).
+    for (const PixelMark& mark : zoomed.marks)
+        if (mark.kind == MarkKind::control_point || mark.kind == MarkKind::inbetween)
+            REQUIRE(layout::inside_boundary.contains(mark.at));
     apply(editor, {cmd::StaffStep{+3}});
     const int zoomed_cells = changed_curve_cells(zoomed, editor.view());
     CAPTURE(fitted_cells, zoomed_cells);
