@@ -351,10 +351,10 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     m_history.push_back(std::move(change));
     m_picture.keep_ghost();
     // The segments whose tangents the region's points can set (ends included), kept to measure
-    // how far the key moved the curve.
+    // how far the key moved the curve (an acceleration moves none).
     const std::vector<HermiteSegment>& segments = m_picture.evaluated().curve.segments;
     const std::size_t first = staff.region.first < 2 ? 0 : staff.region.first - 2;
-    const std::size_t end = std::min(segments.size(), staff.region.last + 2);
+    const std::size_t end = what == PathChange::What::accelerations ? first : std::min(segments.size(), staff.region.last + 2);
     const std::vector<HermiteSegment> before(segments.begin() + static_cast<std::ptrdiff_t>(first),
                                              segments.begin() + static_cast<std::ptrdiff_t>(std::max(first, end)));
     reevaluate_region(staff.region, what);
