@@ -63,6 +63,70 @@ void ViewTransform::focus_on(double widest, double tallest, PixelRect drawing_ar
     m_focus = focus > 0.0 ? 0.9 * focus : 1.0;
 }
 
+void ProjectedExtent::add(const EyePoint& eye)
+{
+    const double x = eye.x / eye.z;
+    const double y = eye.y / eye.z;
+    if (empty) {
+        *this = {x, x, y, y, false};
+        return;
+    }
+    left = std::min(left, x);
+    right = std::max(right, x);
+    bottom = std::min(bottom, y);
+    top = std::max(top, y);
+}
+
+bool ProjectedExtent::holds(const EyePoint& eye, double margin) const
+{
+    if (empty || !(eye.z > 0.0))
+        return false;
+    const double x = eye.x / eye.z;
+    const double y = eye.y / eye.z;
+    const double x_margin = margin * (right - left);
+    const double y_margin = margin * (top - bottom);
+    return x > left + x_margin && x < right - x_margin && y > bottom + y_margin && y < top - y_margin;
+}
+
+void ViewTransform::fill(const ProjectedExtent& extent, PixelRect area)
+{
+    // The bounding sphere (radius R, seen from 3R) reaches about 1/3 either side of the middle.
+    constexpr double largest_focus = 100.0 * 3.0;
+    const double width = hercules::aspect_correction * m_half_height * (extent.right - extent.left);
+    const double height = m_half_height * (extent.top - extent.bottom);
+    double focus = largest_focus;
+    if (width > 0.0)
+        focus = std::min(focus, std::max(area.width(), 1) / width);
+    if (height > 0.0)
+        focus = std::min(focus, std::max(area.height(), 1) / height);
+    m_focus = focus;
+    if (!extent.empty)
+        place((extent.left + extent.right) / 2.0, (extent.bottom + extent.top) / 2.0, area);
+}
+
+ViewTransform ViewTransform::zoomed(double factor, std::optional<Vec3> about, PixelRect area) const
+{
+    // The projection (x_e/z_e, y_e/z_e) to bring to the middle: to_device's mapping inverted there.
+    double x = ((area.left + area.right) / 2.0 - m_centre_x) / (hercules::aspect_correction * m_focus * m_half_height);
+    double y = (m_centre_y - (area.top + area.bottom) / 2.0) / (m_focus * m_half_height);
+    if (about) {
+        const EyePoint eye = to_eye(*about);
+        const double depth = std::max(eye.z, 1e-9);
+        x = eye.x / depth;
+        y = eye.y / depth;
+    }
+    ViewTransform view = *this;
+    view.m_focus = m_focus * std::max(factor, 1.0);
+    view.place(x, y, area);
+    return view;
+}
+
+void ViewTransform::place(double x, double y, PixelRect area)
+{
+    m_centre_x = (area.left + area.right) / 2.0 - hercules::aspect_correction * m_focus * x * m_half_height;
+    m_centre_y = (area.top + area.bottom) / 2.0 + m_focus * y * m_half_height;
+}
+
 EyePoint ViewTransform::to_eye(const Vec3& world) const
 {
     const Vec3 p = world - m_centre;

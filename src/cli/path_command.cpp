@@ -103,7 +103,8 @@ Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions&
 GraphicsScreen draw_path_file_screen(const ControlPoints& points, const EvaluatedPath& path, ViewAngles angles)
 {
     const PathScreenContent content = path_screen_content(points, path);
-    return draw_path_screen(content, path_screen_scene(content).fit(angles, layout::view_area));
+    // The path screen's view, filled with the path as the editor's is (SPEC §7.2.1).
+    return draw_path_screen(content, path_screen_scene(content).fill(angles, layout::view_area));
 }
 
 PathSettings settings_of_path(const DatFile& file, const CommonOptions& options)

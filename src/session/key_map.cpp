@@ -22,7 +22,7 @@ constexpr auto key_map = [] {
     constexpr KeyContexts console_questions{yes_to_go_on, enter_to_go_on, any_key};
     constexpr KeyContexts graphics_steps{any_key_graphics, control_choice, region_pick, staff,
                                          waypoints,        adjust_again,   animation};
-    // The steps of the path screen whose key line shows "K/T/G show", and those with an undo.
+    // The steps of the path screen whose key line shows "K/T/G/O/Z view", and those with an undo.
     constexpr KeyContexts path_steps{control_choice, region_pick, staff, adjust_again};
     constexpr KeyContexts undo_steps{control_choice, staff, adjust_again};
     // Where q ends APCS at once: no path is being adjusted.
@@ -85,9 +85,11 @@ constexpr auto key_map = [] {
         {{staff}, Pattern::of(Key::escape),    cmd::Keep{},           "Esc keep",     "leave the line as it was, go to the next"},
         // The path screen's undo and teaching overlays.
         {undo_steps, Pattern::letter(U'U'),      cmd::Undo{},            "U undo",     "undo the last change of this path"},
-        {path_steps, Pattern::letter(U'K'),      cmd::ToggleKeyFrames{}, "K/T/G show", "show or hide both key frames, dotted, beside the path"},
-        {path_steps, Pattern::letter(U'T'),      cmd::ToggleTangents{},  "K/T/G show", "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
-        {path_steps, Pattern::letter(U'G'),      cmd::ToggleLawGraph{},  "K/T/G show", "law graph on/off: distance against frame in the span"},
+        {path_steps, Pattern::letter(U'K'),      cmd::ToggleKeyFrames{}, "K/T/G/O/Z view", "show or hide both key frames, dotted, beside the path"},
+        {path_steps, Pattern::letter(U'T'),      cmd::ToggleTangents{},  "K/T/G/O/Z view", "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
+        {path_steps, Pattern::letter(U'G'),      cmd::ToggleLawGraph{},  "K/T/G/O/Z view", "law graph on/off: distance against frame in the span"},
+        {path_steps, Pattern::letter(U'Z'),      cmd::Zoom{},            "K/T/G/O/Z view", "zoom x2, x4, x8 about the picked region, then back to fitted"},
+        {path_steps, Pattern::letter(U'O'),      cmd::ToggleGhost{},     "K/T/G/O/Z view", "ghost on/off: the curve before the last change, dotted"},
         {{staff},    Pattern::of(Key::tab),      cmd::ChoosePoint{+1},   "",           "the tangents' numbers of the next control point"},
         {{staff},    Pattern::of(Key::back_tab), cmd::ChoosePoint{-1},   "",           "the tangents' numbers of the previous control point"},
 
@@ -113,6 +115,7 @@ constexpr auto key_map = [] {
         {{waypoints}, Pattern::letter(U'K'),       cmd::ToggleKeyFrames{},   "",             "show or hide both key frames, dotted, beside the path"},
         {{waypoints}, Pattern::letter(U'T'),       cmd::ToggleTangents{},    "",             "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
         {{waypoints}, Pattern::letter(U'G'),       cmd::ToggleLawGraph{},    "",             "law graph on/off: distance against frame in the span"},
+        {{waypoints}, Pattern::letter(U'O'),       cmd::ToggleGhost{},       "",             "ghost on/off: the curve before the last change, dotted"},
 
         // Showing_Animation.
         {{animation}, Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop",    "stop the animation"},

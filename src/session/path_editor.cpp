@@ -1,5 +1,6 @@
 #include "apcs/session/path_editor.h"
 
+#include "apcs/animation/curve_move.h"
 #include "apcs/animation/input_limits.h"
 #include "apcs/session/overloaded.h"
 #include "apcs/session/path_overlays.h"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstdio>
 
 namespace apcs {
 
@@ -16,17 +18,95 @@ namespace {
 // Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
 double snapped(double value) { return limits::staff_value.clamp(std::round(value * 1e9) / 1e9); }
 
-// What the view keeps in sight: the path, its control points and both key frames.
-ViewScene shown_scene(const PathEditor::Setup& setup, const EvaluatedPath& path)
+enum class KeyFrames { shown, hidden };
+
+// What the view keeps in sight: the path, its control points, and both key frames while K shows them.
+ViewScene shown_scene(const PathEditor::Setup& setup, const EvaluatedPath& path, KeyFrames key_frames)
 {
     PathScreenContent shown = path_screen_content(setup.points, path);
-    shown.key_frame_polylines = setup.key_frame_polylines;
+    if (key_frames == KeyFrames::shown)
+        shown.key_frame_polylines = setup.key_frame_polylines;
     return path_screen_scene(shown);
 }
 
-ViewTransform fitted_view(const PathEditor::Setup& setup, const EvaluatedPath& path)
+// The middle of a region's control points (world), where Z magnifies.
+Vec3 region_middle(const ControlPoints& points, ControlRegion region)
 {
-    return shown_scene(setup, path).fit(setup.view_angles, layout::view_area);
+    BoundingBox box;
+    for (std::size_t k = region.first; k <= region.last && k < points.size(); ++k)
+        box.add(points[k].position);
+    return box.centre();
+}
+
+constexpr int deepest_zoom = 3; // ×8
+
+// How far a staff key moved the curve at most: in world units, and in raster pixels of the view
+// shown (the larger of the x and y distances: the pixel steps a point of the curve went).
+struct CurveMove {
+    double world = 0.0;
+    double pixels = 0.0;
+};
+
+// Segments of the curve before a key, each with its index: those the key may move, or on a long
+// region every stride-th of them (measured_segments).
+struct MeasuredSegment {
+    std::size_t index = 0;
+    HermiteSegment before;
+};
+
+// A region of more than this many segments is measured at as many, evenly spread: the exact
+// search costs about 2 µs a segment, and a global key on 10^6 control points must stay near its
+// 80 ms. The move said is then that of the segments measured.
+constexpr std::size_t most_measured_segments = 4096;
+
+std::vector<MeasuredSegment> measured_segments(const std::vector<HermiteSegment>& segments, std::size_t first,
+                                               std::size_t end)
+{
+    const std::size_t count = end > first ? end - first : 0;
+    const std::size_t stride = std::max<std::size_t>(1, (count + most_measured_segments - 1) / most_measured_segments);
+    std::vector<MeasuredSegment> measured;
+    for (std::size_t index = first; index < end; index += stride)
+        measured.push_back({index, segments[index]});
+    return measured;
+}
+
+// `before` as measured_segments kept them, `after` the curve after the key. The pixels are
+// measured at each segment's furthest-moved sample (SampleMove), not at every sample: one
+// projection pair per segment; a view seen nearly along the move may show another sample moved a
+// pixel more. Segments that cannot beat the furthest move found are not searched.
+CurveMove curve_move(std::span<const MeasuredSegment> before, const SampledCurve& after, const ViewTransform& view)
+{
+    CurveMove moved;
+    for (const MeasuredSegment& segment : before) {
+        if (segment.index >= after.segments.size())
+            continue;
+        const SampleMove sample = furthest_sample_move(segment.before, after.segments[segment.index], after.basis, moved.world);
+        if (sample.distance <= 0.0)
+            continue;
+        moved.world = std::max(moved.world, sample.distance);
+        const DevicePoint was = view.to_device(sample.before);
+        const DevicePoint is = view.to_device(sample.after);
+        moved.pixels = std::max({moved.pixels, std::abs(is.x - was.x), std::abs(is.y - was.y)});
+    }
+    return moved;
+}
+
+// "0.024", "0.0012", "1.25": two significant digits below 1, two decimals above.
+std::string world_distance_text(double distance)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, distance < 1.0 ? "%.2g" : "%.2f", distance);
+    return text;
+}
+
+// SPEC §7.2.1: "moved up to 0.024 = 1 px"; a move under half a pixel is "under 1 px".
+std::string curve_move_text(const CurveMove& moved)
+{
+    if (moved.world <= 0.0)
+        return "the curve did not move";
+    const long pixels = std::lround(moved.pixels);
+    return "moved up to " + world_distance_text(moved.world) + " = " +
+           (pixels == 0 ? std::string("under 1 px") : std::to_string(pixels) + " px");
 }
 
 // "1 change", "3 changes".
@@ -44,12 +124,46 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     fit_view();
 }
 
-// Initial_Graphics fixes the view for the whole adjusting, so that each key's effect is seen
-// against a still picture; the waypoint editor fits it again when it is left.
+// Initial_Graphics fits the view to the path (SPEC §7.2.1: filled); it stays fixed while the staff
+// or the waypoint editor changes the path, so that each key's effect is seen against a still
+// picture, and is fitted again when they are left.
 void PathEditor::fit_view()
 {
-    m_picture.set_view(m_setup.points, fitted_view(m_setup, m_picture.evaluated()));
-    m_tangent_scale = tangent_arrow_scale(m_setup.points, m_picture.view());
+    const KeyFrames key_frames = m_show_key_frames ? KeyFrames::shown : KeyFrames::hidden;
+    m_fitted_view = shown_scene(m_setup, m_picture.evaluated(), key_frames).fill(m_setup.view_angles, layout::view_area);
+    // The arrows keep the fitted view's scale: Z magnifies them with the curve.
+    m_tangent_scale = tangent_arrow_scale(m_setup.points, *m_fitted_view);
+    show_view();
+}
+
+void PathEditor::show_view()
+{
+    const double factor = static_cast<double>(1 << m_zoom_level);
+    m_picture.set_view(m_setup.points,
+                       m_zoom_level == 0 ? *m_fitted_view : m_fitted_view->zoomed(factor, m_zoom_about, layout::view_area));
+}
+
+// Z: ×2, ×4, ×8, then the fitted view again; about the picked region, or the path's middle.
+bool PathEditor::zoom()
+{
+    m_zoom_level = m_zoom_level == deepest_zoom ? 0 : m_zoom_level + 1;
+    const std::optional<ControlRegion> region = picked_region();
+    // The path's middle: the sample halfway along the curve.
+    const SampledCurve& curve = m_picture.evaluated().curve;
+    std::string about = "the path's middle";
+    m_zoom_about.reset();
+    if (curve.sample_count() > 0)
+        m_zoom_about = curve.sample(curve.nearest_sample(curve.total_length() / 2.0));
+    if (region && !region->is_whole(m_setup.points)) {
+        m_zoom_about = region_middle(m_setup.points, *region);
+        about = region->first == region->last ? "control point " + std::to_string(region->first + 1)
+                                              : "control points " + std::to_string(region->first + 1) + " to " +
+                                                    std::to_string(region->last + 1);
+    }
+    show_view();
+    m_notice = m_zoom_level == 0 ? "zoom off: the view fitted to the path"
+                                 : "zoom ×" + std::to_string(1 << m_zoom_level) + " about " + about + " (Z: more)";
+    return true;
 }
 
 const PathPicture& PathEditor::picture() const
@@ -117,8 +231,10 @@ PathEditor::Outcome PathEditor::update(const Command& command)
 PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
     m_notice.clear();
+    m_moved.clear();
     if (update_views(command))
         return Outcome::editing;
+    const bool was_changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
     Transition transition =
         std::visit(Overloaded{
                        [&](ControlChoice&) { return check_global_or_local_control(command); },
@@ -130,6 +246,10 @@ PathEditor::Outcome PathEditor::take_command(const Command& command)
                    m_mode);
     if (transition.next)
         m_mode = std::move(*transition.next);
+    // Leaving the staff or the waypoint editor, the view is fitted to the path as it now stands.
+    const bool changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
+    if (was_changing_path && !changing_path)
+        fit_view();
     return transition.outcome;
 }
 
@@ -143,7 +263,22 @@ bool PathEditor::update_views(const Command& command)
         return true;
     };
     return std::visit(Overloaded{
-                          [&](const command::ToggleKeyFrames&) { return toggle(m_show_key_frames); },
+                          // K fits the view to the path and the key frames together, or to the
+                          // path alone again (the waypoint editor's view stays until it is left).
+                          [&](const command::ToggleKeyFrames&) {
+                              toggle(m_show_key_frames);
+                              if (!in_waypoints)
+                                  fit_view();
+                              return true;
+                          },
+                          [&](const command::Zoom&) { return !in_waypoints && zoom(); },
+                          [&](const command::ToggleGhost&) {
+                              toggle(m_show_ghost);
+                              m_notice = !m_show_ghost        ? "ghost hidden (O shows it)"
+                                         : picture().has_ghost() ? "ghost shown: the curve before the last change, dotted"
+                                                                 : "ghost shown after the next staff key or waypoint edit";
+                              return true;
+                          },
                           [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
                           [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
                           [&](const command::ChoosePoint& choose) {
@@ -218,6 +353,7 @@ PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Co
 PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 {
     assert(region.first <= region.last && region.last < m_setup.points.size());
+    m_picture.drop_ghost(); // a new region starts without one
     Staff staff{region, m_setup.points[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
     staff.line_start_value = staff.staff[staff.line];
     m_tangent_point = region.is_whole(m_setup.points) ? 1 : region.first;
@@ -236,7 +372,17 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     m_history.push_back(std::move(change));
+    m_picture.keep_ghost();
+    // The segments whose tangents the region's points can set (ends included), kept to measure
+    // how far the key moved the curve (an acceleration moves none).
+    const std::vector<HermiteSegment>& segments = m_picture.evaluated().curve.segments;
+    const std::size_t first = staff.region.first < 2 ? 0 : staff.region.first - 2;
+    const std::size_t end = what == PathChange::What::accelerations ? first : std::min(segments.size(), staff.region.last + 2);
+    const std::vector<MeasuredSegment> before = measured_segments(segments, first, end);
     reevaluate_region(staff.region, what);
+    m_moved = what == PathChange::What::accelerations
+                  ? "only the in-betweens moved"
+                  : curve_move_text(curve_move(before, m_picture.evaluated().curve, m_picture.view()));
 }
 
 // A key changes the staff values of a region: only the segments their tangents shape are sampled
@@ -274,10 +420,13 @@ PathEditor::Transition PathEditor::scan_parameters(Staff& staff, const Command& 
 PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding ending)
 {
     const bool kept = ending == LineEnding::kept;
-    if (kept)
+    if (kept) {
         set_staff_value(staff, staff.line_start_value);
+        m_moved.clear(); // the next line is named, not how far going back moved the curve
+    }
     m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
               (kept ? " (kept)" : ""));
+    m_picture.drop_ghost(); // the ghost lasts until the next line
     // A single control point starts no span of its own: its acceleration line is skipped.
     const bool single_point = staff.region.first == staff.region.last;
     if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
@@ -307,7 +456,10 @@ PathEditor::Transition PathEditor::update_value_field(Staff& staff, const Comman
 PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
 {
     return std::visit(Overloaded{
-                          [](const command::Yes&) { return Transition{ControlChoice{}}; },
+                          [&](const command::Yes&) {
+                              m_picture.drop_ghost();
+                              return Transition{ControlChoice{}};
+                          },
                           [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
                           [&](const command::Undo&) { return undo(); },
                           // Ask_Adjusting waits for Y or N.
@@ -337,6 +489,7 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
     const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
                                       ? PathChange::What::staff
                                       : PathChange::What::accelerations;
+    m_picture.keep_ghost();
     restore_staff_runs(m_setup.points, change.region, change.points_before);
     reevaluate_region(change.region, what);
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
@@ -355,13 +508,14 @@ PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
     case WaypointChange::Kind::move: m_notice = "Undone: the move of " + point; break;
     }
     m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
+    fit_view();
     return Transition{ControlChoice{}};
 }
 
 PathEditor::Waypoints PathEditor::open_waypoints()
 {
     m_log.log("waypoint editor");
-    const double step = waypoint_step(shown_scene(m_setup, m_picture.evaluated()).bounds());
+    const double step = waypoint_step(shown_scene(m_setup, m_picture.evaluated(), KeyFrames::shown).bounds());
     WaypointEditor::Setup setup{std::move(m_setup.points), std::move(m_origins), m_setup.settings, m_picture.view(), step};
     return Waypoints{WaypointEditor(std::move(setup), std::move(m_picture))};
 }
@@ -388,7 +542,6 @@ PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const 
     }
     m_log.log(m_notice);
     m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
-    fit_view();
     return Transition{ControlChoice{}};
 }
 

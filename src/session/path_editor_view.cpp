@@ -9,6 +9,13 @@ namespace apcs {
 
 namespace text = session_text;
 
+namespace {
+
+// The message line's text fits 79 columns (the 80th holds no text).
+constexpr std::size_t max_message_width = 79;
+
+} // namespace
+
 std::string PathEditor::message() const
 {
     if (!m_problem.empty())
@@ -22,12 +29,27 @@ std::string PathEditor::message() const
             [](const ControlChoice&) { return std::string(text::choose_control); },
             [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
             [&](const Staff& staff) {
-                return m_show_tangents ? tangent_numbers(m_picture.evaluated().curve.segments, m_tangent_point) : staff_message(staff);
+                const std::string shown = m_show_tangents ? tangent_numbers(m_picture.evaluated().curve.segments, m_tangent_point)
+                                                          : staff_message(staff);
+                return with_move(shown, staff);
             },
             [](const Waypoints& waypoints) { return waypoints.editor.message(); },
             [](const AskAgain&) { return std::string(text::ask_again); },
         },
         m_mode);
+}
+
+// After a staff key, how far it moved the curve (SPEC §7.2.1) follows what the line shows; when both
+// do not fit, the line's name and the move, unless frames freeze: that warning matters more.
+std::string PathEditor::with_move(const std::string& shown, const Staff& staff) const
+{
+    if (m_moved.empty())
+        return shown;
+    if (shown.size() + 2 + m_moved.size() <= max_message_width)
+        return shown + "  " + m_moved;
+    if (m_picture.evaluated().frames_freeze())
+        return shown;
+    return m_setup.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
 }
 
 std::string PathEditor::staff_message(const Staff& staff) const
@@ -122,6 +144,7 @@ GraphicsScreen PathEditor::view() const
     PathScreenContent content = screen_content();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
+    content.ghost = m_show_ghost;
     if (m_show_tangents)
         content.tangent_scale = m_tangent_scale;
     if (m_show_law)

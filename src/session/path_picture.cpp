@@ -25,6 +25,8 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
 void PathPicture::set_view(std::span<const ControlPoint> points, const ViewTransform& view)
 {
     m_view = view;
+    // A ghost drawn in another view would stand where the curve never was.
+    m_ghost.reset();
     m_point_runs = control_point_runs(points, *m_view);
     m_point_marks = control_point_marks(m_point_runs, m_region);
     draw_curve();
@@ -38,11 +40,14 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
     m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
+void PathPicture::keep_ghost() { m_ghost = m_curve.pixels(); }
+
 void PathPicture::draw_curve() { m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary); }
 
 GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
 {
-    return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks});
+    const Bitmap* ghost = content.ghost && m_ghost ? &*m_ghost : nullptr;
+    return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks, ghost});
 }
 
 } // namespace apcs

@@ -196,6 +196,17 @@ void draw_arrow(GraphicsScreen& screen, const PathScreenContent& content, const 
 }
 
 
+// The ghost dotted: its pixels in runs of 8 columns lit, 8 not (4 rows lit, 4 not; a diagonal
+// about 3 and 3), so that the gaps are a braille dot or more wide at 80x24 and the ghost never
+// reads as a second solid curve. Pixels the curve lights stay the curve's.
+void draw_ghost(Bitmap& bitmap, const Bitmap& ghost)
+{
+    for (int y = layout::inside_boundary.top; y < layout::inside_boundary.bottom; ++y)
+        for (int x = layout::inside_boundary.left; x < layout::inside_boundary.right; ++x)
+            if (((x + 2 * y) / 8) % 2 == 0 && ghost.get(x, y))
+                bitmap.set(x, y, true);
+}
+
 // The screen, with the curve and the control points' marks either drawn here (kept == nullptr) or
 // laid as an editor kept them.
 GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform& view, const KeptPathLayers* kept)
@@ -213,6 +224,8 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         draw_dotted(inside, polyline, view);
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
+        if (kept != nullptr && kept->ghost != nullptr)
+            draw_ghost(screen.bitmap, *kept->ghost);
         if (kept != nullptr)
             screen.bitmap.merge(kept->curve);
         else
@@ -230,6 +243,11 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         pre_draw(screen, kept->control_point_marks);
     else
         pre_draw(screen, control_point_marks(control_point_runs(content.control_points, view), content.region));
+    // A zoomed view (Z) leaves points beyond the boundary: their marks must not land on the staff.
+    std::erase_if(screen.marks, [](const PixelMark& mark) {
+        return (mark.kind == MarkKind::control_point || mark.kind == MarkKind::inbetween) &&
+               !layout::inside_boundary.contains(mark.at);
+    });
     draw_arrow(screen, content, view);
     draw_staff(screen, content);
     if (!content.message.empty())

@@ -73,6 +73,7 @@ WaypointEditor::Outcome WaypointEditor::discard()
 
 void WaypointEditor::apply(const WaypointChange& change)
 {
+    m_picture.keep_ghost(); // SPEC §7.2.1: the curve before the edit stays, dotted
     m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change));
     m_changes.push_back(change);
 }
@@ -134,6 +135,7 @@ void WaypointEditor::undo()
     }
     const WaypointChange change = m_changes.back();
     m_changes.pop_back();
+    m_picture.keep_ghost();
     m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change));
     m_chosen = std::min(change.index, m_setup.points.size() - 1);
 }

@@ -92,7 +92,29 @@ bool hull_inside_focus(const HermiteSegment& segment, const ViewTransform& view,
     return true;
 }
 
+// The extent's own hull test: every Bézier point strictly inside it, by hull_margin of its size.
+bool hull_inside_extent(const HermiteSegment& segment, const ViewTransform& view, const ProjectedExtent& extent)
+{
+    for (const Vec3& point : bezier_hull(segment))
+        if (!extent.holds(view.to_eye(point), hull_margin))
+            return false;
+    return true;
+}
+
 } // namespace
+
+ViewTransform ViewScene::fill(ViewAngles angles, PixelRect area) const
+{
+    ViewTransform view = ViewTransform::centred_on(angles, bounds(), area);
+    ProjectedExtent extent;
+    const auto reach = [&](const Vec3& point) { extent.add(view.to_eye(point)); };
+    for_each_control_point(reach);
+    const ProjectedExtent known = extent;
+    for_each_sample_beyond([&](const HermiteSegment& segment) { return hull_inside_extent(segment, view, known); },
+                           reach);
+    view.fill(extent, area);
+    return view;
+}
 
 // fit_visiting's two passes, each over the points and the curves' control points first, then the
 // samples of the segments that could reach further: the same extremes (maxima do not depend on

@@ -104,7 +104,7 @@ TEST_CASE("apcs path --svg holds the path's polyline through the control points'
     const ControlPoints control = control_points_from(*dat, StaffValues{});
     const EvaluatedPath path = evaluate_path(control, PathSettings{});
     const PathScreenContent content = path_screen_content(control, path);
-    const ViewTransform view = path_screen_scene(content).fit(ViewAngles{}, layout::view_area);
+    const ViewTransform view = path_screen_scene(content).fill(ViewAngles{}, layout::view_area);
     for (const ControlPoint& point : control)
         CHECK(points.find(" " + svg_point_text(view.to_device(point.position).rounded()) + " ") != std::string::npos);
     const auto paths = elements_named(elements, "path");

@@ -130,10 +130,10 @@ TEST_CASE("at a text prompt every printable key is typed text, digits and letter
 
 TEST_CASE("the key line of graphics mode is made from the key map's rows", "[session][keys]")
 {
-    REQUIRE(key_help(KeyContext::staff) == "4/6 J/L step  = type  Enter accept  Esc keep  U undo  K/T/G show  ? help");
-    REQUIRE(key_help(KeyContext::control_choice) == "W waypoints  U undo  K/T/G show  ? help  q quit");
-    REQUIRE(key_help(KeyContext::region_pick) == "K/T/G show  ? help  q quit");
-    REQUIRE(key_help(KeyContext::adjust_again) == "U undo  K/T/G show  ? help  q quit");
+    REQUIRE(key_help(KeyContext::staff) == "4/6 J/L step  = type  Enter accept  Esc keep  U undo  K/T/G/O/Z view  ? help");
+    REQUIRE(key_help(KeyContext::control_choice) == "W waypoints  U undo  K/T/G/O/Z view  ? help  q quit");
+    REQUIRE(key_help(KeyContext::region_pick) == "K/T/G/O/Z view  ? help  q quit");
+    REQUIRE(key_help(KeyContext::adjust_again) == "U undo  K/T/G/O/Z view  ? help  q quit");
     REQUIRE(key_help(KeyContext::waypoints) ==
             "Tab point  2468 +- move  I/D ins/del  U undo  Enter keep  Esc drop  ? help");
     REQUIRE(key_help(KeyContext::value_field) == "Enter set  Backspace erase  Esc close");

@@ -58,7 +58,7 @@ TEST_CASE("T shows the KB tangents of Eq. 3.1.4 at the chosen control point; Tab
     type(editor, "0.5");
     apply(editor, {cmd::SubmitLine{}});
     // c = 0.5: DS = [0.5·(2,0,0) + 1.5·(0,2,0)] / 2, DD = [1.5·(2,0,0) + 0.5·(0,2,0)] / 2.
-    REQUIRE(message_of(editor.view()) == "point 2  DS 0.50 1.50 0.00  DD 1.50 0.50 0.00");
+    REQUIRE(message_of(editor.view()) == "point 2  DS 0.50 1.50 0.00  DD 1.50 0.50 0.00  moved up to 0.08 = 8 px");
     apply(editor, {cmd::ChoosePoint{+1}});
     REQUIRE(message_of(editor.view()) == "point 3  DS 1.50 0.50 0.00  DD 0.50 1.50 0.00");
     apply(editor, {cmd::ChoosePoint{+1}});
@@ -82,7 +82,7 @@ TEST_CASE("tension 1 shrinks both tangents to 0 and their arrows vanish", "[sess
     apply(editor, {cmd::OpenValueField{}});
     type(editor, "1");
     apply(editor, {cmd::SubmitLine{}});
-    REQUIRE(message_of(editor.view()) == "point 2  DS 0.00 0.00 0.00  DD 0.00 0.00 0.00");
+    REQUIRE(message_of(editor.view()) == "point 2  DS 0.00 0.00 0.00  DD 0.00 0.00 0.00  moved up to 0.15 = 15 px");
     // Only the end arrows (slopes, not tension) are left: fewer lit pixels than with t = 0.
     apply(editor, {cmd::ToggleTangents{}});
     const std::size_t lit_tense_without = editor.view().bitmap.lit_count();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
 namespace apcs {
@@ -40,6 +41,19 @@ struct DevicePoint {
     double x = 0.0;
     double y = 0.0;
     PixelPoint rounded() const;
+};
+
+// What a scene's points reach on the projection plane: the least and greatest x_e/z_e and y_e/z_e.
+struct ProjectedExtent {
+    double left = 0.0;
+    double right = 0.0;
+    double bottom = 0.0;
+    double top = 0.0;
+    bool empty = true;
+
+    void add(const EyePoint& eye);
+    // Whether `eye` lies inside, `margin` (a fraction of the extent's size) from every side.
+    bool holds(const EyePoint& eye, double margin) const;
 };
 
 // World → eye → device (thesis VIEW_Transform, SPEC §4.5). The viewpoint sits at distance D from
@@ -92,8 +106,20 @@ public:
     static ViewTransform centred_on(ViewAngles angles, const BoundingBox& box, PixelRect drawing_area);
     void focus_on(double widest, double tallest, PixelRect drawing_area);
 
+    // Filling (SPEC §7.2.1, the path screen): d/S the largest that keeps `extent` inside `area`
+    // (all of it, at SCF), the extent's middle on the area's middle; a view centred_on a scene's box
+    // before. A projection of almost no size (a straight path seen end on) is magnified no more
+    // than 100 times the view that fits the scene's bounding sphere, so rounding dust is never
+    // blown up to fill the screen.
+    void fill(const ProjectedExtent& extent, PixelRect area);
+    // The view magnified `factor` times (clamped to ≥ 1) with `about` (world) on the middle of
+    // `area`; without `about`, what lies on the area's middle stays there.
+    ViewTransform zoomed(double factor, std::optional<Vec3> about, PixelRect area) const;
+
 private:
     ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);
+    // L and M such that the projection (x_e/z_e, y_e/z_e) = (x, y) falls on the middle of `area`.
+    void place(double x, double y, PixelRect area);
 
     double m_sin_theta = 0.0;
     double m_cos_theta = 1.0;

@@ -42,6 +42,10 @@ struct Keep : Signal<Keep> {};
 // Esc while picking: one step back.
 struct Back : Signal<Back> {};
 struct ToggleKeyFrames : Signal<ToggleKeyFrames> {};
+// Z: the path screen's view magnified ×2, ×4, ×8 and back to fitted; O: the ghost of the curve as
+// it was before the last change shown or hidden (SPEC §7.2.1).
+struct Zoom : Signal<Zoom> {};
+struct ToggleGhost : Signal<ToggleGhost> {};
 
 // Teaching and editing on the path screen (thesis Ch. 6's future work).
 // T: the tangents DS and DD drawn at every control point; G: the inset graph of the span's law.
@@ -90,7 +94,8 @@ namespace apcs {
 
 using Command = std::variant<command::TypeCharacter, command::EraseCharacter, command::ClearLine, command::SubmitLine,
                              command::ChooseGlobal, command::ChooseLocal, command::ArrowMove, command::StaffStep,
-                             command::Accept, command::Keep, command::Back, command::ToggleKeyFrames,
+                             command::Accept, command::Keep, command::Back, command::ToggleKeyFrames, command::Zoom,
+                             command::ToggleGhost,
                              command::ToggleTangents, command::ToggleLawGraph, command::ChoosePoint,
                              command::OpenValueField, command::OpenWaypoints, command::InsertPoint,
                              command::DeletePoint, command::MovePoint, command::Undo, command::Yes,

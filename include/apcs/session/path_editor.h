@@ -131,13 +131,17 @@ private:
     Transition undo();
     Transition undo_change(const StaffChange& change);
     Transition undo_change(const WaypointChange& change);
+    // The view filled with the path (and the key frames while K shows them), then zoomed.
     void fit_view();
+    void show_view();
+    bool zoom();
     // The picture shown: the waypoint editor's while it is open (it holds the path then).
     const PathPicture& picture() const;
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message() const;
     std::string staff_message(const Staff& staff) const;
+    std::string with_move(const std::string& shown, const Staff& staff) const;
     PathScreenContent screen_content() const;
 
     Setup m_setup;
@@ -147,6 +151,12 @@ private:
     // change refreshes only what it touched. The waypoint editor holds it (with the points) while
     // it is open.
     PathPicture m_picture;
+    // SPEC §7.2.1: the view filled with what is shown, fixed while the staff or the waypoint editor
+    // changes the path (refitted when they are left, and by K); Z magnifies it 2^m_zoom_level
+    // times (0 to 3) about m_zoom_about (the region's middle, or the sample halfway along the curve).
+    std::optional<ViewTransform> m_fitted_view;
+    int m_zoom_level = 0;
+    std::optional<Vec3> m_zoom_about;
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale = 0.0;
     Mode m_mode;
@@ -154,11 +164,15 @@ private:
     // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped
     // value).
     bool m_show_key_frames = false;
+    // O: the ghost of the curve before the last staff key or waypoint edit (PathPicture keeps it).
+    bool m_show_ghost = true;
     bool m_show_tangents = false;
     std::size_t m_tangent_point = 1;
     bool m_show_law = false;
     std::string m_problem;
     std::string m_notice;
+    // After a staff key: how far it moved the curve ("moved up to 0.024 = 1 px").
+    std::string m_moved;
     // Every change since the path was opened, oldest first: U takes back the last.
     std::vector<Change> m_history;
 };

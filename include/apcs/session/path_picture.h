@@ -33,6 +33,12 @@ public:
     // changes (a path of 10^6 points scribbled over the screen has up to one mark per pixel).
     void box_region(std::optional<ControlRegion> region);
 
+    // SPEC §7.2.1's ghost: the curve's pixels as they are now, kept (and drawn dotted when the
+    // content asks) until drop_ghost or another view; the next keep_ghost replaces them.
+    void keep_ghost();
+    void drop_ghost() { m_ghost.reset(); }
+    bool has_ghost() const { return m_ghost.has_value(); }
+
     const EvaluatedPath& evaluated() const { return m_evaluated; }
     // Only after set_view.
     const ViewTransform& view() const { return *m_view; }
@@ -50,6 +56,7 @@ private:
     std::vector<ControlPointRun> m_point_runs;
     std::optional<ControlRegion> m_region;
     std::vector<PixelMark> m_point_marks;
+    std::optional<Bitmap> m_ghost;
 };
 
 } // namespace apcs

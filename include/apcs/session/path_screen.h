@@ -56,6 +56,8 @@ struct PathScreenContent {
     std::vector<std::vector<Vec3>> key_frame_polylines;
     // T: the tangents at every control point, drawn as tangent x this scale (path_overlays.h).
     std::optional<double> tangent_scale;
+    // O: the ghost an editor kept (KeptPathLayers::ghost), drawn dotted.
+    bool ghost = false;
     // G: the inset graph of this acceleration span's law.
     std::optional<std::size_t> law_span;
     std::string message;
@@ -79,6 +81,8 @@ GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTran
 struct KeptPathLayers {
     const Bitmap& curve;
     std::span<const PixelMark> control_point_marks;
+    // The curve before the last change (SPEC §7.2.1), none if not shown.
+    const Bitmap* ghost = nullptr;
 };
 // The same screen with the curve and the control points' marks laid as kept.
 GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view, const KeptPathLayers& kept);

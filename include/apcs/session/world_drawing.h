@@ -25,6 +25,11 @@ public:
     ViewScene& add(const std::vector<std::vector<Vec3>>& polylines);
 
     ViewTransform fit(ViewAngles angles, PixelRect drawing_area) const;
+    // The view that fills `area` with the scene (ViewTransform::fill, SPEC §7.2.1): the same
+    // viewpoint as fit's, the projection's extent (not its largest distance from the box's middle)
+    // spread over the whole area. One pass over the points and the curves' control points, then the
+    // samples of the segments that could reach further.
+    ViewTransform fill(ViewAngles angles, PixelRect area) const;
     BoundingBox bounds() const;
 
 private:
