@@ -254,7 +254,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     FrameSequence frames = animation.all_frames();
     const std::size_t frame_count = frames.frame_count();
     FramesOverlay overlay = scene_overlay(*scene, animation);
-    if (options.png || options.png_raw || options.svg) {
+    if (still_pictures_asked(options)) {
         const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
         if (Expected<void> done = write_pictures(
                 frames_overlay_screen(frames, animation.structure(), shown.view, caption, overlay), shown, out);
