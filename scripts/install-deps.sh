@@ -7,10 +7,13 @@
 # bash-completion add-on, dpkg-dev, fakeroot, lintian, and man-db for `man apcs`.
 set -euo pipefail
 
-build_and_run=(g++ cmake make libcli11-dev libpng-dev libgif-dev libncurses-dev console-setup-linux)
+# libchafa-dev's pkg-config file asks for glib's (libglib2.0-dev), which Debian 12 does not bring with it.
+build_and_run=(g++ cmake make pkgconf libcli11-dev libpng-dev libgif-dev libchafa-dev libglib2.0-dev libncurses-dev
+               console-setup-linux)
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
 # `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
-# librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do).
+# librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do; terminal_pictures.sh
+# decodes the sixel files).
 testing=(catch2 tmux procps groff-base python3 bsdutils mount librsvg2-bin imagemagick)
 case "${1:-}" in
   --run) testing=(); shift ;;

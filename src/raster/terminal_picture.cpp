@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string_view>
 #include <vector>
 
 namespace apcs {
@@ -60,6 +61,19 @@ std::unique_ptr<ChafaCanvasConfig, ConfigRelease> exact_config(int width, int he
     return config;
 }
 
+// libchafa 1.12 (Debian 12) base64-encodes each 512-byte chunk of a kitty picture on its own and
+// writes a chunk's last byte wrong when two bytes are left over: the third character of "XYZ=" holds
+// the byte's low four bits unshifted (b & 0x0f, not (b << 2) & 0x3c), so a decoder reads 0xff as
+// 0xf3. Every chunk here ends on a pixel (512 and the picture are whole pixels) and every pixel is
+// opaque, so that byte is always an alpha of 255: right, the character is '8'; from the defect, 'P'.
+// A 'P' there becomes '8'; a libchafa without the defect writes '8' and is left alone.
+void mend_kitty_chunk_ends(std::string& sequences)
+{
+    constexpr std::string_view chunk_end = "P=\x1b\\";
+    for (std::size_t at = sequences.find(chunk_end); at != std::string::npos; at = sequences.find(chunk_end, at + 1))
+        sequences[at] = '8';
+}
+
 } // namespace
 
 std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol)
@@ -81,6 +95,8 @@ std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, Termina
         return std::nullopt;
     std::string sequences(printed->str, printed->len);
     g_string_free(printed, TRUE);
+    if (protocol == TerminalPictureProtocol::kitty)
+        mend_kitty_chunk_ends(sequences);
     sequences += '\n';
     return sequences;
 }
