@@ -163,8 +163,8 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
                             const TerminalPlayerRunner& terminal, std::ostream& err)
 {
     if (!terminal || !::isatty(STDIN_FILENO)) {
-        err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg or --gif to play a "
-               "scene without one\n";
+        err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg, --sixel, --kitty or --gif "
+               "to play a scene without one\n";
         return ExitStatus::terminal_problem;
     }
     const Expected<GlyphSet> glyphs = terminal_glyphs_here(options.glyphs);
