@@ -371,8 +371,8 @@ constexpr std::array<Subcommand, 6> subcommands{{
      },
      [](ParsedLine& line, const RunPlace& place) {
          if (!pictures_asked(line.options))
-             return usage_error("apcs draw writes a picture: give --png, --png-raw, --svg, --sixel or --kitty", &place.command,
-                                place.err);
+             return usage_error("apcs draw writes a picture: give --png, --png-raw, --svg, --sixel or --kitty",
+                                &place.command, place.err);
          return to_int(run_draw_command(line.draw_files, line.options, place.out, place.err));
      }},
     {"play", "play a scene of several objects and actors (.scn)", "one scene file SCENE.scn",

@@ -81,7 +81,7 @@ std::string alternatives(const std::vector<std::string>& names)
 
 // A picture's name ends in its format's extension (any case) or has none: PNG bytes in x.svg
 // would mislead.
-// `a_file` is "a PNG file", say; `wanted` ".png", or ".six or .sixel" for two.
+// `a_file` is "a PNG file", say; `wanted` its extension (".png"), `also` another one or none.
 CLI::Validator picture_name(const std::string& a_file, const std::string& wanted, const std::string& also = {})
 {
     return CLI::Validator(

@@ -62,8 +62,8 @@ picture_targets(const CommonOptions& options);
 // extension); then "TARGET: is an input of this run; --png never writes over an input".
 Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs);
 
-// Every still picture `options` asks for (--png, --png-raw, --svg, --sixel, --kitty) of `screen`, no backup replacing
-// one of options.read_files; the first problem.
+// Every still picture `options` asks for (--png, --png-raw, --svg, --sixel, --kitty) of `screen`, no
+// backup replacing one of options.read_files; the first problem.
 Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the
