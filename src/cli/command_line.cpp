@@ -322,7 +322,8 @@ struct Subcommand {
 constexpr std::array<Subcommand, 6> subcommands{{
     {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
      "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
-     "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png",
+     "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png\n"
+     "  apcs path way1.dat --sixel -         (the picture in xterm -ti vt340, not through tmux)",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
          add_path_command_options(command, line.options, line.slopes);

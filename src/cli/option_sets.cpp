@@ -226,12 +226,12 @@ void add_terminal_pictures(CLI::App& command, CommonOptions& options, const std:
 {
     command.add_option("--sixel", options.sixel,
                        "write " + what + " as --png does, as sixel escape sequences (xterm -ti vt340, foot, WezTerm, "
-                       "mlterm, mintty show it)")
+                       "mlterm, mintty show it; tmux and screen do not pass it)")
         ->check(sixel_name)
         ->type_name("FILE");
     command.add_option("--kitty", options.kitty,
                        "write " + what + " as --png does, in the kitty graphics protocol (kitty, WezTerm, Ghostty, "
-                       "Konsole show it)")
+                       "Konsole show it; tmux and screen do not pass it)")
         ->check(kitty_name)
         ->type_name("FILE");
 }
