@@ -22,12 +22,13 @@ _apcs_options()
     local curve="--slopes --samples --spacing --inbetweens"
     local view="--theta --phi --view"
     local pictures="--png --png-raw --svg"
+    local terminal_pictures="--sixel --kitty"
     case $1 in
-        path) echo "$staff $curve $view $pictures --print --help" ;;
-        fit) echo "$staff $curve --surface $view $pictures --gif --delay --print --out --help" ;;
-        inbetween) echo "--inbetweens --frames --law --pad $view $pictures --gif --delay --print --out --help" ;;
-        draw) echo "$view $pictures --help" ;;
-        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures --gif --delay --print --out --tree --help" ;;
+        path) echo "$staff $curve $view $pictures $terminal_pictures --print --help" ;;
+        fit) echo "$staff $curve --surface $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
+        inbetween) echo "--inbetweens --frames --law --pad $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
+        draw) echo "$view $pictures $terminal_pictures --help" ;;
+        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
         *) echo "$staff $curve --surface $view --delay --glyphs --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
     esac
@@ -51,6 +52,8 @@ _apcs()
         --png | --png-raw) _apcs_files png "$current"; return ;;
         --svg) _apcs_files svg "$current"; return ;;
         --gif) _apcs_files gif "$current"; return ;;
+        --sixel) _apcs_files six "$current"; return ;;
+        --kitty) _apcs_files kitty "$current"; return ;;
         --out | --workdir | --handout) mapfile -t COMPREPLY < <(compgen -d -- "$current"); return ;;
         --tension | --continuity | --bias | --accel | --slopes | --samples | --inbetweens | --theta | \
             --phi | --delay | --step | --frames) return ;;

@@ -258,12 +258,14 @@ std::optional<std::string> standard_stream_clash(const CommonOptions& options,
     const std::filesystem::path dash(standard_stream_name);
     if (std::count(inputs.begin(), inputs.end(), dash) > 1)
         return "standard input (-) can be read only once";
-    const int writers = (options.print ? 1 : 0) + (options.png == dash ? 1 : 0) + (options.png_raw == dash ? 1 : 0) +
-                        (options.svg == dash ? 1 : 0) + (options.gif == dash ? 1 : 0);
+    int writers = options.print ? 1 : 0;
+    for (const auto& [option, target] : picture_targets(options))
+        writers += *target == dash ? 1 : 0;
     if (session && writers > 0)
         return "the session's standard output is its screen: name a file for --png, --png-raw and --svg";
     if (writers > 1)
-        return "only one of --print, --png -, --png-raw -, --svg - and --gif - can write to standard output";
+        return "only one of --print, --png -, --png-raw -, --svg -, --gif -, --sixel - and --kitty - can write to "
+               "standard output";
     return std::nullopt;
 }
 
@@ -320,7 +322,8 @@ struct Subcommand {
 constexpr std::array<Subcommand, 6> subcommands{{
     {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
      "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
-     "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png",
+     "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png\n"
+     "  apcs path way1.dat --sixel -         (the picture in xterm -ti vt340, not through tmux)",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
          add_path_command_options(command, line.options, line.slopes);
@@ -369,8 +372,8 @@ constexpr std::array<Subcommand, 6> subcommands{{
      },
      [](ParsedLine& line, const RunPlace& place) {
          if (!pictures_asked(line.options))
-             return usage_error("apcs draw writes a picture: give --png, --png-raw or --svg", &place.command,
-                                place.err);
+             return usage_error("apcs draw writes a picture: give --png, --png-raw, --svg, --sixel or --kitty",
+                                &place.command, place.err);
          return to_int(run_draw_command(line.draw_files, line.options, place.out, place.err));
      }},
     {"play", "play a scene of several objects and actors (.scn)", "one scene file SCENE.scn",

@@ -81,15 +81,17 @@ std::string alternatives(const std::vector<std::string>& names)
 
 // A picture's name ends in its format's extension (any case) or has none: PNG bytes in x.svg
 // would mislead.
-// `a_file` is "a PNG file", say.
-CLI::Validator picture_name(const std::string& a_file, const std::string& wanted)
+// `a_file` is "a PNG file", say; `wanted` its extension (".png"), `also` another one or none.
+CLI::Validator picture_name(const std::string& a_file, const std::string& wanted, const std::string& also = {})
 {
     return CLI::Validator(
-        [a_file, wanted](std::string& text) -> std::string {
+        [a_file, wanted, also](std::string& text) -> std::string {
             const std::string extension = std::filesystem::path(text).extension().string();
-            if (extension.empty() || equals_ignoring_case(extension, wanted))
+            if (extension.empty() || equals_ignoring_case(extension, wanted) ||
+                (!also.empty() && equals_ignoring_case(extension, also)))
                 return {};
-            return a_file + "'s name ends in " + wanted + ", found '" + text + "'";
+            return a_file + "'s name ends in " + wanted + (also.empty() ? "" : " or " + also) + ", found '" + text +
+                   "'";
         },
         "");
 }
@@ -97,6 +99,8 @@ CLI::Validator picture_name(const std::string& a_file, const std::string& wanted
 const CLI::Validator png_name = picture_name("a PNG file", ".png");
 const CLI::Validator svg_name = picture_name("an SVG file", ".svg");
 const CLI::Validator gif_name = picture_name("a GIF file", ".gif");
+const CLI::Validator sixel_name = picture_name("a sixel file", ".six", ".sixel");
+const CLI::Validator kitty_name = picture_name("a kitty picture", ".kitty");
 
 } // namespace
 
@@ -216,6 +220,22 @@ void add_pictures(CLI::App& command, CommonOptions& options, const std::string& 
         ->type_name("FILE");
 }
 
+// The picture of --png as the escape sequences that draw it on a terminal (SPEC §7.2.1); the batch
+// commands only: the session's own pictures are --pixels' business.
+void add_terminal_pictures(CLI::App& command, CommonOptions& options, const std::string& what)
+{
+    command.add_option("--sixel", options.sixel,
+                       "write " + what + " as --png does, as sixel escape sequences (xterm -ti vt340, foot, WezTerm, "
+                       "mlterm, mintty show it; tmux and screen do not pass it)")
+        ->check(sixel_name)
+        ->type_name("FILE");
+    command.add_option("--kitty", options.kitty,
+                       "write " + what + " as --png does, in the kitty graphics protocol (kitty, WezTerm, Ghostty, "
+                       "Konsole show it; tmux and screen do not pass it)")
+        ->check(kitty_name)
+        ->type_name("FILE");
+}
+
 void add_delay(CLI::App& command, CommonOptions& options)
 {
     command.add_option("--delay", options.delay_ms, "milliseconds per animation frame, default 200")
@@ -312,6 +332,7 @@ void add_path_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_inbetween_count(command, options);
     add_view(command, options);
     add_pictures(command, options, "the path's screen");
+    add_terminal_pictures(command, options, "the path's screen");
     add_print(command, options);
 }
 
@@ -323,6 +344,7 @@ void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vec
     add_inbetween_count(command, options);
     add_view(command, options);
     add_pictures(command, options, "all frames overlaid");
+    add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);
     add_print(command, options);
     add_out(command, options, "the in-between files");
@@ -352,6 +374,7 @@ void add_inbetween_command_options(CLI::App& command, CommonOptions& options, In
         ->type_name(alternatives(paddings));
     add_view(command, options);
     add_pictures(command, options, "all frames overlaid");
+    add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);
     add_print(command, options);
     add_out(command, options, "the in-between files");
@@ -361,6 +384,7 @@ void add_draw_command_options(CLI::App& command, CommonOptions& options)
 {
     add_view(command, options);
     add_pictures(command, options, "the drawing");
+    add_terminal_pictures(command, options, "the drawing");
 }
 
 void add_play_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes, bool& tree)
@@ -372,6 +396,7 @@ void add_play_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_view(command, options);
     add_glyphs(command, options);
     add_pictures(command, options, "all frames overlaid");
+    add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);
     add_print(command, options);
     command.add_option("--out", options.out, "folder to write the frames to as frm000.dat ...")->type_name("DIR");

@@ -71,10 +71,27 @@ Expected<void> write_svg_file(const std::filesystem::path& target, const Graphic
     return write_picture_bytes(target, encode_svg(screen), inputs, out);
 }
 
-std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
+Expected<void> write_terminal_picture_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                                           TerminalPictureProtocol protocol, const KeyFileGuard& inputs,
+                                           std::ostream& out)
+{
+    const std::optional<std::string> picture = encode_terminal_picture(render_raster(screen), protocol);
+    if (!picture)
+        return Diagnostic{target.string(), 0,
+                          protocol == TerminalPictureProtocol::sixel ? "cannot encode the sixel picture"
+                                                                     : "cannot encode the kitty picture"};
+    return write_picture_bytes(target, *picture, inputs, out);
+}
+
+std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 6>
 picture_targets(const CommonOptions& options)
 {
-    return {{{"--png", &options.png}, {"--png-raw", &options.png_raw}, {"--svg", &options.svg}, {"--gif", &options.gif}}};
+    return {{{"--png", &options.png},
+             {"--png-raw", &options.png_raw},
+             {"--svg", &options.svg},
+             {"--gif", &options.gif},
+             {"--sixel", &options.sixel},
+             {"--kitty", &options.kitty}}};
 }
 
 Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs)
@@ -94,6 +111,11 @@ Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions&
     for (const auto& [target, shape] : {std::pair{options.png, PngShape::monitor}, std::pair{options.png_raw, PngShape::raw}})
         if (target)
             if (auto outcome = write_png_file(*target, screen, shape, inputs, out); !outcome)
+                return outcome.error();
+    for (const auto& [target, protocol] : {std::pair{options.sixel, TerminalPictureProtocol::sixel},
+                                           std::pair{options.kitty, TerminalPictureProtocol::kitty}})
+        if (target)
+            if (auto outcome = write_terminal_picture_file(*target, screen, protocol, inputs, out); !outcome)
                 return outcome.error();
     if (options.svg)
         return write_svg_file(*options.svg, screen, inputs, out);

@@ -167,8 +167,8 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
                             const TerminalPlayerRunner& terminal, std::ostream& err)
 {
     if (!terminal || !::isatty(STDIN_FILENO)) {
-        err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg or --gif to play a "
-               "scene without one\n";
+        err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg, --sixel, --kitty or --gif "
+               "to play a scene without one\n";
         return ExitStatus::terminal_problem;
     }
     const Expected<GlyphSet> glyphs = terminal_glyphs_here(options.glyphs);
@@ -258,7 +258,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     FrameSequence frames = animation.all_frames();
     const std::size_t frame_count = frames.frame_count();
     FramesOverlay overlay = scene_overlay(*scene, animation);
-    if (options.png || options.png_raw || options.svg) {
+    if (still_pictures_asked(options)) {
         const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + scene_name;
         if (Expected<void> done = write_pictures(
                 frames_overlay_screen(frames, animation.structure(), shown.view, caption, overlay), shown, out);

@@ -255,6 +255,10 @@ TEST_CASE("a picture name of the wrong kind, or draw without a picture, is exit 
         {"inbetween", key, key, "--svg", "x.png"},
         {"--svg", "-"},
         {"draw", key, "--svg", "-", "--png", "-"},
+        {"draw", key, "--sixel", "x.png"},
+        {"path", key, "--kitty", "x.six"},
+        {"draw", key, "--sixel", "-", "--kitty", "-"},
+        {"path", key, "--sixel", "x", "--kitty", "x"},
     };
     for (const auto& usage : usages) {
         INFO(usage.front() << " " << usage.back());
@@ -263,6 +267,10 @@ TEST_CASE("a picture name of the wrong kind, or draw without a picture, is exit 
         CHECK(std::count(result.err.begin(), result.err.end(), '\n') == 2); // the line, then "Try ..."
         CHECK(result.out.empty());
     }
-    CHECK(run_apcs({"draw", key}).err.find("--png, --png-raw or --svg") != std::string::npos);
+    CHECK(run_apcs({"draw", key}).err.find("--png, --png-raw, --svg, --sixel or --kitty") != std::string::npos);
+    CHECK(run_apcs({"draw", key, "--sixel", "x.png"}).err.find("a sixel file's name ends in .six or .sixel") !=
+          std::string::npos);
+    CHECK(run_apcs({"path", key, "--kitty", "x.six"}).err.find("a kitty picture's name ends in .kitty") !=
+          std::string::npos);
     CHECK(run_apcs({"draw", key, "--svg", "x.png"}).err.find("an SVG file's name ends in .svg") != std::string::npos);
 }

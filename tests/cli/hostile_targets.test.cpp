@@ -30,6 +30,9 @@ std::vector<OutputCase> output_cases()
 {
     return {
         {"path --png", {"path", "{W}/way1.dat", "--png", "{T}"}, {"way1.dat"}, ".png"},
+        {"path --sixel", {"path", "{W}/way1.dat", "--sixel", "{T}"}, {"way1.dat"}, ".six"},
+        {"draw --kitty", {"draw", "{W}/key1.dat", "{W}/key2.dat", "--kitty", "{T}"}, {"key1.dat", "key2.dat"},
+         ".kitty"},
         // An input named as a picture's backup would be (way1.bak beside way1.png, PIC.bak).
         {"draw --svg", {"draw", "{W}/key1.dat", "{W}/way1.bak", "{W}/pic.bak", "--svg", "{T}"},
          {"key1.dat", "way1.bak", "pic.bak"}, ".svg"},

@@ -24,7 +24,7 @@ import tempfile
 
 EXAMPLES = ("n-to-l", "stick", "snake-apple", "robot", "bicycle", "car")
 COMMANDS = ("path", "inbetween", "fit", "draw", "play", "figures")
-OUTPUTS = ("--print", "--out", "--png", "--png-raw", "--svg", "--gif", "--tree")
+OUTPUTS = ("--print", "--out", "--png", "--png-raw", "--svg", "--gif", "--sixel", "--kitty", "--tree")
 
 
 class Line:

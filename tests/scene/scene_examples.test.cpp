@@ -343,8 +343,8 @@ TEST_CASE("apcs play prints, writes and draws a scene; without a terminal it say
     const auto no_terminal = run_apcs({"play", car});
     REQUIRE(no_terminal.status == 3);
     REQUIRE(no_terminal.err ==
-            "apcs: standard input is not a terminal; give --print, --out, --png, --svg or --gif to play a scene without "
-            "one\n");
+            "apcs: standard input is not a terminal; give --print, --out, --png, --svg, --sixel, --kitty or --gif to "
+            "play a scene without one\n");
     const auto missing = run_apcs({"play", (folder.path() / "none.scn").string(), "--print"});
     REQUIRE(missing.status == 1);
     REQUIRE(missing.out.empty());

@@ -42,6 +42,8 @@ struct CommonOptions {
     std::optional<std::filesystem::path> png_raw; // the bare 720x348 raster
     std::optional<std::filesystem::path> svg;     // the same drawing as vector lines
     std::optional<std::filesystem::path> gif;     // the frames, animated (fit, inbetween)
+    std::optional<std::filesystem::path> sixel;   // as --png, in sixel escape sequences
+    std::optional<std::filesystem::path> kitty;   // as --png, in the kitty graphics protocol
     bool print = false;
     std::optional<std::filesystem::path> out;
     GivenOptions given;
@@ -52,10 +54,13 @@ struct CommonOptions {
     std::vector<std::filesystem::path> read_files;
 };
 
-// Whether a picture was asked for (--png, --png-raw, --svg or --gif).
-inline bool pictures_asked(const CommonOptions& options)
+// Whether a still picture was asked for (--png, --png-raw, --svg, --sixel or --kitty).
+inline bool still_pictures_asked(const CommonOptions& options)
 {
-    return options.png || options.png_raw || options.svg || options.gif;
+    return options.png || options.png_raw || options.svg || options.sixel || options.kitty;
 }
+
+// Whether a picture was asked for (a still one or --gif).
+inline bool pictures_asked(const CommonOptions& options) { return still_pictures_asked(options) || options.gif; }
 
 } // namespace apcs

@@ -6,6 +6,7 @@
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/png_encoder.h"
+#include "apcs/raster/terminal_picture.h"
 
 #include <array>
 #include <filesystem>
@@ -47,16 +48,22 @@ Expected<void> write_png_file(const std::filesystem::path& target, const Graphic
 Expected<void> write_svg_file(const std::filesystem::path& target, const GraphicsScreen& screen,
                               const KeyFileGuard& inputs, std::ostream& out);
 
-// The picture options and where each writes: --png, --png-raw, --svg, --gif.
-std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 4>
+// Writes the screen's raster as the escape sequences of a terminal picture (encode_terminal_picture),
+// atomically; to `out` when `target` is "-". The old picture's backup never replaces one of `inputs`.
+Expected<void> write_terminal_picture_file(const std::filesystem::path& target, const GraphicsScreen& screen,
+                                           TerminalPictureProtocol protocol, const KeyFileGuard& inputs,
+                                           std::ostream& out);
+
+// The picture options and where each writes: --png, --png-raw, --svg, --gif, --sixel, --kitty.
+std::array<std::pair<const char*, const std::optional<std::filesystem::path>*>, 6>
 picture_targets(const CommonOptions& options);
 
 // ok unless a picture option names one of `inputs` (through a link, in another case, without an
 // extension); then "TARGET: is an input of this run; --png never writes over an input".
 Expected<void> check_pictures_spare_inputs(const CommonOptions& options, std::span<const std::filesystem::path> inputs);
 
-// Every picture `options` asks for (--png, --png-raw, --svg) of `screen`, no backup replacing
-// one of options.read_files; the first problem.
+// Every still picture `options` asks for (--png, --png-raw, --svg, --sixel, --kitty) of `screen`, no
+// backup replacing one of options.read_files; the first problem.
 Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions& options, std::ostream& out);
 
 // The path screen of `apcs path --png`: curve, control points, in-betweens, the staff showing the

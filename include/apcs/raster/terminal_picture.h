@@ -1,0 +1,32 @@
+#pragma once
+
+#include "apcs/raster/bitmap.h"
+
+#include <optional>
+#include <string>
+
+namespace apcs {
+
+// The two ways a terminal shows real pixels (SPEC §7.2.1): DEC sixel graphics (xterm -ti vt340,
+// foot, WezTerm, mlterm, mintty) and the kitty graphics protocol (kitty, WezTerm, Ghostty, Konsole).
+enum class TerminalPictureProtocol {
+    sixel,
+    kitty,
+};
+
+// The cells a terminal picture of the monitor's shape covers: 9x18-pixel cells, so that the
+// 720x522 picture is 80 columns by 29 rows; kitty shows it on that many cells of whatever size its
+// own are, a sixel terminal at its pixel size.
+inline constexpr int terminal_picture_cell_width = 9;
+inline constexpr int terminal_picture_cell_height = 18;
+
+// The bitmap as the monitor showed it (PngShape::monitor: 720x348 becomes 720x522, each raster row
+// 1.5 pixels tall), white on black, as the escape sequences that draw it in `protocol`, encoded by
+// libchafa (no scaling, no dithering: every pixel is the PNG's), then a newline so that a `cat` of
+// it leaves the prompt below the picture. Sixel: one DCS sequence, every pixel painted (black as a
+// colour, not transparent). Kitty: `a=T,f=32` (RGBA) in base64 chunks, placed on 80x29 cells. A
+// picture whose size is not a whole number of cells is scaled by libchafa to the cells that hold
+// it. Empty when libchafa fails.
+std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol);
+
+} // namespace apcs
