@@ -4,7 +4,7 @@ The robot is drawn face-on in the plane x = 0 (y forward, z up), in its own coor
 (walk.dat, the robot's MOVE) carries it. Every limb is RIGID in robot.scn, so its two key drawings
 must be congruent: each is drawn here from one shape turned to the limb's angle in each key.
 
-- The standing leg (right) is straight, 3.8 long, and turns about its ankle: 14.48 degrees forward
+- The standing leg (right) is straight, 3.8 long, and leans 14.48 degrees forward
   in KEY1 (asin 0.25), as far back in KEY2, so the hip travels an arc of radius 3.8 about the ankle
   and moves 1.9 forward. walk.dat holds that arc as 7 control points: the hip's path. Its ankle is
   one world point in both keys (0.95 ahead of the hip at the start).
@@ -99,7 +99,7 @@ def main():
     arc = [(ankle[0] - LEG * math.sin(STEP - 2 * STEP * k / 6), ankle[1] + LEG * math.cos(STEP - 2 * STEP * k / 6))
            for k in range(7)]
     write("walk.dat", "; The robot's walk: its hip's arc about the standing ankle, radius 3.8, one step of 1.9\n"
-          "; (make_robot.py). The standing leg turns about that ankle by the same law, so the foot stays.\n", arc)
+          "; (make_robot.py). The standing leg, hung from the hip, turns by the same law: the foot stays.\n", arc)
 
 
 main()
