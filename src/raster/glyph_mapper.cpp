@@ -260,6 +260,22 @@ AxisMap map_axis(int pixels, int cells, int subdivisions)
     return axis;
 }
 
+// A pooled ASCII cell that is two adjacent full sub-rows and nothing else, as its upper row alone:
+// for cell rows of fewer pixels than the 7 sub-rows (5 or 6 at 200x60), where map_axis gives one
+// pixel row to two sub-rows, so that a 1-pixel line (the frame's top edge) pools as two bands, the
+// font's '=' (its bars 2 pixels apart fall in adjacent sub-rows at 80x24), a double line where the
+// screen has one. Cells of 7 pixel rows or more are left as pooled.
+unsigned one_line_of_band(unsigned pooled_mask)
+{
+    constexpr unsigned full_row = (1u << ascii_pool_columns) - 1;
+    for (int row = 0; row + 1 < ascii_pool_rows; ++row) {
+        const unsigned band = (full_row | (full_row << ascii_pool_columns)) << (row * ascii_pool_columns);
+        if (pooled_mask == band)
+            return full_row << (row * ascii_pool_columns);
+    }
+    return pooled_mask;
+}
+
 char32_t glyph_of(unsigned mask, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     switch (glyphs) {
@@ -309,12 +325,16 @@ CellGrid map_to_cells(const Bitmap& bitmap, CellArea area, GlyphSet glyphs, Asci
             }
         }
     }
-    for (int row = 0; row < area.rows; ++row)
-        for (int column = 0; column < area.columns; ++column)
-            grid.set(column, row,
-                     glyph_of(masks[static_cast<std::size_t>(row) * static_cast<std::size_t>(area.columns) +
-                                    static_cast<std::size_t>(column)],
-                              glyphs, cache));
+    const bool ascii = glyphs == GlyphSet::ascii || glyphs == GlyphSet::automatic;
+    for (int row = 0; row < area.rows; ++row) {
+        const bool short_row = ascii && (row + 1) * bitmap.height() / area.rows - row * bitmap.height() / area.rows <
+                                            ascii_pool_rows;
+        for (int column = 0; column < area.columns; ++column) {
+            const unsigned mask = masks[static_cast<std::size_t>(row) * static_cast<std::size_t>(area.columns) +
+                                        static_cast<std::size_t>(column)];
+            grid.set(column, row, glyph_of(short_row ? one_line_of_band(mask) : mask, glyphs, cache));
+        }
+    }
     return grid;
 }
 

@@ -67,9 +67,44 @@ TEST_CASE("the four corners of a frame are + in ascii at 80x24 and at 200x60, it
         CHECK(grid.at(area.columns - 1, bottom) == U'+');
         CHECK(grid.at(0, bottom / 2) == U'|');
         CHECK(grid.at(area.columns - 1, bottom / 2) == U'|');
-        CHECK(std::u32string_view(U"-_=").find(grid.at(area.columns / 2, 0)) != std::u32string_view::npos);
+        CHECK(std::u32string_view(U"-_").find(grid.at(area.columns / 2, 0)) != std::u32string_view::npos);
         CHECK(std::u32string_view(U"-_").find(grid.at(area.columns / 2, bottom)) != std::u32string_view::npos);
     }
+}
+
+TEST_CASE("a frame's top and bottom edges are each one line, one character from corner to corner, never =",
+          "[raster][glyphs]")
+{
+    // At 200x60 a cell row is 5 or 6 pixels, fewer than the 7 pooled sub-rows: the top edge's one
+    // pixel row fell in two sub-rows and read as '=' (the font's two bars pool so at 80x24).
+    Bitmap raster;
+    Painter(raster).rectangle({0, 0, 720, 259});
+    for (const CellArea area : {CellArea{80, 24}, CellArea{100, 30}, CellArea{133, 40}, CellArea{200, 60},
+                                CellArea{240, 72}}) {
+        const CellGrid grid = map_to_cells(raster, area, GlyphSet::ascii);
+        const int bottom = cell_of_pixel(258, 348, area.rows);
+        CAPTURE(area.columns);
+        for (const int row : {0, bottom}) {
+            CAPTURE(row);
+            const char32_t edge = grid.at(1, row);
+            CHECK(std::u32string_view(U"-_").find(edge) != std::u32string_view::npos);
+            for (int column = 1; column + 1 < area.columns; ++column)
+                REQUIRE(grid.at(column, row) == edge);
+        }
+    }
+}
+
+TEST_CASE("a one-pixel line in a cell row shorter than 7 pixels is '-', where two lines in a 14-pixel row stay '='",
+          "[raster][glyphs]")
+{
+    // 6 pixel rows: the line at the cell's top pixel row pools into sub-rows 0 and 1.
+    Bitmap short_cell(9, 6);
+    Painter(short_cell).line({0, 0}, {8, 0});
+    CHECK(map_to_cells(short_cell, {1, 1}, GlyphSet::ascii).at(0, 0) == U'-');
+    Bitmap cell(9, 14);
+    Painter(cell).line({0, 5}, {8, 5});
+    Painter(cell).line({0, 7}, {8, 7});
+    CHECK(map_to_cells(cell, {1, 1}, GlyphSet::ascii).at(0, 0) == U'=');
 }
 
 TEST_CASE("a cell where a line turns at the cell's side is a corner, +; a straight line keeps its glyph", "[raster][glyphs]")
