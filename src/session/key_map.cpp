@@ -281,7 +281,7 @@ bool over_path_screen(KeyContext context)
 // SPEC §7.2.1's legend, each overlay's name in its own colour role, from `row` on (three rows).
 void put_colour_legend(CellGrid& grid, int row)
 {
-    grid.put_text(0, row, "  Colours (--color; one colour with NO_COLOR or --color never, the ghost then dotted):");
+    grid.put_text(0, row, "  Colours (--color; NO_COLOR or --color never: one colour, the ghost dotted):");
     int column = 2;
     ++row;
     for (const ColourRole role : colour_roles) {

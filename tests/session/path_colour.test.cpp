@@ -137,5 +137,8 @@ TEST_CASE("the path screen's help names each overlay's colour in that colour", "
         const std::size_t line_start = text.rfind('\n', at) == std::string::npos ? 0 : text.rfind('\n', at) + 1;
         REQUIRE(help.role_at(static_cast<int>(at - line_start), row) == role);
     }
+    // Every legend row fits the 80 columns with a column to spare.
+    for (int row = 0; row < help.rows(); ++row)
+        REQUIRE(help.at(help.columns() - 1, row) == U' ');
     REQUIRE(key_help_screen("KEY1", KeyContext::text_line).to_text().find("Colours") == std::string::npos);
 }
