@@ -276,6 +276,22 @@ void add_glyphs(CLI::App& command, CommonOptions& options)
         ->type_name(alternatives(glyphs));
 }
 
+void add_colour(CLI::App& command, CommonOptions& options)
+{
+    const std::vector<std::string> choices{"auto", "always", "never"};
+    command.add_option_function<std::string>(
+           "--color",
+           [&options](const std::string& name) {
+               options.colour = name == "always" ? ColourChoice::always
+                                : name == "never" ? ColourChoice::never
+                                                  : ColourChoice::automatic;
+           },
+           "the path screen's overlays (ghost, tangents, law, region, key frames, in-betweens) each in its own "
+           "colour; default auto: where the terminal has 8 colours and NO_COLOR is unset or empty")
+        ->check(one_of(choices))
+        ->type_name(alternatives(choices));
+}
+
 } // namespace
 
 void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
@@ -287,6 +303,7 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     add_view(app, options);
     add_delay(app, options);
     add_glyphs(app, options);
+    add_colour(app, options);
     app.add_option("--step", options.step,
                    "staff step per key, " + range_text(limits::staff_step) + ", default 0.05")
         ->check(number_in(limits::staff_step))

@@ -285,7 +285,8 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
                            const TerminalSessionRunner& terminal, const ReplayHooks& hooks,
                            std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
 {
-    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, recorded, hooks);
+    const ColourChoice colour = session_colour(options.colour, std::getenv("NO_COLOR"));
+    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, colour, recorded, hooks);
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -511,6 +512,12 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     if (const std::optional<ExitStatus> refused = record_keys(options, files_read(options, session, folder), recorded, out, err))
         return status == ExitStatus::stopped ? status : *refused;
     return status;
+}
+
+ColourChoice session_colour(ColourChoice asked, const char* no_color)
+{
+    const bool refused = no_color != nullptr && *no_color != '\0';
+    return asked == ColourChoice::automatic && refused ? ColourChoice::never : asked;
 }
 
 } // namespace apcs

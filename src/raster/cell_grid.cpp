@@ -13,6 +13,7 @@ CellGrid::CellGrid(int columns, int rows)
     , m_rows(std::max(rows, 0))
     , m_cells(static_cast<std::size_t>(m_columns) * static_cast<std::size_t>(m_rows), U' ')
     , m_styles(m_cells.size(), CellStyle::plain)
+    , m_roles(m_cells.size(), ColourRole::monitor)
 {
 }
 
@@ -37,6 +38,20 @@ void CellGrid::set_style(int column, int row, CellStyle style)
     m_styles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = style;
 }
 
+ColourRole CellGrid::role_at(int column, int row) const
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return ColourRole::monitor;
+    return m_roles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+}
+
+void CellGrid::set_role(int column, int row, ColourRole role)
+{
+    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return;
+    m_roles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = role;
+}
+
 void CellGrid::set(int column, int row, char32_t glyph)
 {
     if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
@@ -50,7 +65,7 @@ void CellGrid::set(int column, int row, char32_t glyph)
     m_cells[index] = glyph;
 }
 
-void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle style)
+void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle style, ColourRole role)
 {
     for (const char32_t code_point : decode_utf8(utf8)) {
         const int width = cell_width(code_point);
@@ -59,9 +74,11 @@ void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle 
         if (width == 2 && column + 1 >= m_columns)
             break;
         set_style(column, row, style);
+        set_role(column, row, role);
         set(column++, row, code_point);
         if (width == 2) {
             set_style(column, row, style);
+            set_role(column, row, role);
             set(column++, row, wide_tail);
         }
     }
@@ -117,5 +134,56 @@ std::string CellGrid::to_text() const
         text += row_text(row) + '\n';
     return text;
 }
+
+std::string CellGrid::roles_text() const
+{
+    std::string text;
+    for (int row = 0; row < m_rows; ++row) {
+        for (int column = 0; column < m_columns; ++column) {
+            const char32_t glyph = at(column, row);
+            text += glyph == U' ' || glyph == U'\u2800' ? ' ' : colour_letter(role_at(column, row));
+        }
+        text += '\n';
+    }
+    return text;
+}
+
+namespace {
+
+struct RoleColour {
+    ColourRole role;
+    int priority;
+    char letter;
+    std::string_view colour;
+    int number; // curses' COLOR_*: 0 black 1 red 2 green 3 yellow 4 blue 5 magenta 6 cyan 7 white
+    std::string_view name;
+};
+
+// The one table of the roles' colours (SPEC §7.2.1): the eight colours every colour terminal has.
+constexpr RoleColour role_colours[] = {
+    {ColourRole::monitor, 2, 'm', "the terminal's own", -1, "curve, x marks, staff, text (1989)"},
+    {ColourRole::key_frame, 0, 'k', "cyan", 6, "key frames (K)"},
+    {ColourRole::ghost, 1, 'g', "blue", 4, "ghost: the curve before the last change (O)"},
+    {ColourRole::inbetween, 3, 'i', "red", 1, "in-between marks"},
+    {ColourRole::region, 4, 'r', "magenta", 5, "picked region"},
+    {ColourRole::tangent, 5, 't', "yellow", 3, "tangents (T)"},
+    {ColourRole::law, 6, 'l', "green", 2, "law inset (G)"},
+};
+
+const RoleColour& colour_of(ColourRole role)
+{
+    for (const RoleColour& entry : role_colours)
+        if (entry.role == role)
+            return entry;
+    return role_colours[0];
+}
+
+} // namespace
+
+int colour_priority(ColourRole role) { return colour_of(role).priority; }
+char colour_letter(ColourRole role) { return colour_of(role).letter; }
+std::string_view colour_name(ColourRole role) { return colour_of(role).colour; }
+int colour_number(ColourRole role) { return colour_of(role).number; }
+std::string_view colour_role_name(ColourRole role) { return colour_of(role).name; }
 
 } // namespace apcs

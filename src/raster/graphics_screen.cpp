@@ -116,6 +116,7 @@ void lay_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area, Glyp
             }
             grid.set(column, row, glyph);
             grid.set_style(column, row, mark.style);
+            grid.set_role(column, row, mark.role);
         }
 }
 
@@ -140,7 +141,75 @@ void lay_ticked_lines(CellGrid& grid, const GraphicsScreen& screen, CellArea are
     }
 }
 
+std::size_t pixel_index(const Bitmap& bitmap, int x, int y)
+{
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(bitmap.width()) + static_cast<std::size_t>(x);
+}
+
+// Each cell of the raster in the role of its lit pixel of highest priority.
+void lay_pixel_roles(CellGrid& grid, const GraphicsScreen& screen, CellArea area)
+{
+    if (screen.pixel_roles.empty())
+        return;
+    const Bitmap& bitmap = screen.bitmap;
+    for (int y = 0; y < bitmap.height(); ++y) {
+        const int row = cell_of_pixel(y, bitmap.height(), area.rows);
+        for (int x = 0; x < bitmap.width(); ++x) {
+            if (!bitmap.get(x, y))
+                continue;
+            const int column = cell_of_pixel(x, bitmap.width(), area.columns);
+            const ColourRole role = screen.pixel_roles[pixel_index(bitmap, x, y)];
+            if (colour_priority(role) > colour_priority(grid.role_at(column, row)))
+                grid.set_role(column, row, role);
+        }
+    }
+}
+
+// Raster cells default to monitor, whose priority is above the ghost's and the key frames': a cell
+// of ghost pixels only must start below them.
+void lay_roles_under_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area)
+{
+    if (screen.pixel_roles.empty())
+        return;
+    for (int row = 0; row < grid.rows(); ++row)
+        for (int column = 0; column < grid.columns(); ++column)
+            grid.set_role(column, row, ColourRole::key_frame);
+    lay_pixel_roles(grid, screen, area);
+    for (int row = 0; row < grid.rows(); ++row)
+        for (int column = 0; column < grid.columns(); ++column)
+            if (grid.at(column, row) == U' ' || grid.at(column, row) == U'\u2800')
+                grid.set_role(column, row, ColourRole::monitor);
+}
+
 } // namespace
+
+void paint_layer(GraphicsScreen& screen, const Bitmap& layer, ColourRole role)
+{
+    Bitmap& bitmap = screen.bitmap;
+    if (screen.pixel_roles.empty() && role == ColourRole::monitor) {
+        bitmap.merge(layer);
+        return;
+    }
+    if (screen.pixel_roles.empty())
+        screen.pixel_roles.assign(static_cast<std::size_t>(bitmap.width()) * static_cast<std::size_t>(bitmap.height()),
+                                  ColourRole::monitor);
+    for (int y = 0; y < std::min(bitmap.height(), layer.height()); ++y)
+        for (int x = 0; x < std::min(bitmap.width(), layer.width()); ++x) {
+            if (!layer.get(x, y))
+                continue;
+            ColourRole& shown = screen.pixel_roles[pixel_index(bitmap, x, y)];
+            if (!bitmap.get(x, y) || colour_priority(role) > colour_priority(shown))
+                shown = role;
+            bitmap.set(x, y, true);
+        }
+}
+
+ColourRole pixel_role(const GraphicsScreen& screen, int x, int y)
+{
+    if (screen.pixel_roles.empty() || !screen.bitmap.contains(x, y))
+        return ColourRole::monitor;
+    return screen.pixel_roles[pixel_index(screen.bitmap, x, y)];
+}
 
 Bitmap render_raster(const GraphicsScreen& screen)
 {
@@ -165,6 +234,7 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
+    lay_roles_under_marks(grid, screen, area);
     lay_ticked_lines(grid, screen, area, glyphs);
     lay_marks(grid, screen, area, glyphs);
     for (const TextLine& line : screen.text) {
@@ -175,7 +245,7 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
         const int column = cell_of_pixel(centre_x, screen.bitmap.width(), area.columns);
         const int row = std::min(cell_of_pixel(centre_y, screen.bitmap.height(), area.rows), area.rows - 1);
         // Text replaces the raster glyphs of the cells it covers.
-        grid.put_text(column, row, line.text, line.style);
+        grid.put_text(column, row, line.text, line.style, line.role);
     }
     return grid;
 }

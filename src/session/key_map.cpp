@@ -262,15 +262,54 @@ std::vector<std::string> key_help_lines(KeyContext context, std::string_view emp
     return text;
 }
 
+namespace {
+
+// Whether the help of `context` is opened over the path screen (its colour legend belongs there).
+bool over_path_screen(KeyContext context)
+{
+    switch (context) {
+    case KeyContext::control_choice:
+    case KeyContext::region_pick:
+    case KeyContext::staff:
+    case KeyContext::value_field:
+    case KeyContext::waypoints:
+    case KeyContext::adjust_again: return true;
+    default: return false;
+    }
+}
+
+// SPEC §7.2.1's legend, each overlay's name in its own colour role, from `row` on (three rows).
+void put_colour_legend(CellGrid& grid, int row)
+{
+    grid.put_text(0, row, "  Colours (--color; NO_COLOR or --color never: one colour, the ghost dotted):");
+    int column = 2;
+    ++row;
+    for (const ColourRole role : colour_roles) {
+        const std::string item = std::string(colour_role_name(role)) + " " + std::string(colour_name(role));
+        if (column + static_cast<int>(item.size()) + 2 > grid.columns()) {
+            column = 2;
+            ++row;
+        }
+        grid.put_text(column, row, item, CellStyle::plain, role);
+        column += static_cast<int>(item.size()) + 2;
+    }
+}
+
+} // namespace
+
 CellGrid key_help_screen(std::string_view what, KeyContext context, std::string_view empty_answer)
 {
     constexpr int rows = text_screen_rows;
+    constexpr int legend_rows = 4;
     CellGrid grid(text_screen_columns, rows);
     grid.put_text(0, 0, "APCS help - the keys of " + std::string(what));
+    const int legend_row = over_path_screen(context) ? rows - 3 - legend_rows : rows - 3;
     int row = 2;
     for (const std::string& line : key_help_lines(context, empty_answer))
-        if (row < rows - 3)
+        if (row < legend_row)
             grid.put_text(0, row++, line);
+    if (legend_row < rows - 3)
+        put_colour_legend(grid, legend_row);
     grid.put_text(0, rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (every file stays whole).");
     grid.put_text(0, rows - 1, "Any key closes this help.");
     return grid;

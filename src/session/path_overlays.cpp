@@ -57,12 +57,12 @@ void draw_tangent_arrows(GraphicsScreen& screen, Painter& painter, std::span<con
         if (tangents.outgoing) {
             const Vec3 tip = at + scale * *tangents.outgoing;
             world_arrow(painter, view, at, tip, LineStyle::solid);
-            screen.marks.push_back({view.to_device(tip).rounded(), MarkKind::tangent_end});
+            screen.marks.push_back({view.to_device(tip).rounded(), MarkKind::tangent_end, CellStyle::plain, ColourRole::tangent});
         }
         if (tangents.incoming) {
             const Vec3 tail = at - scale * *tangents.incoming;
             world_arrow(painter, view, tail, at, LineStyle::dashed);
-            screen.marks.push_back({view.to_device(tail).rounded(), MarkKind::tangent_end});
+            screen.marks.push_back({view.to_device(tail).rounded(), MarkKind::tangent_end, CellStyle::plain, ColourRole::tangent});
         }
     }
 }
@@ -191,7 +191,8 @@ std::string inset_title(const SpanTiming& timing, std::size_t span, std::size_t 
 void draw_law(GraphicsScreen& screen, const LawInset& inset, const EvaluatedPath& path, std::size_t span)
 {
     const SpanTiming& timing = path.span_timings[span];
-    Painter painter(screen.bitmap, {inset.box.left, inset.box.top, inset.box.right + 1, inset.box.bottom + 1});
+    Bitmap layer;
+    Painter painter(layer, {inset.box.left, inset.box.top, inset.box.right + 1, inset.box.bottom + 1});
     painter.rectangle(inset.box);
     const PixelRect& plot = inset.plot;
     painter.line(plot_point(plot, 0, 0), plot_point(plot, 1, 0));
@@ -204,11 +205,14 @@ void draw_law(GraphicsScreen& screen, const LawInset& inset, const EvaluatedPath
                      plot_point(plot, to, acceleration_distance_fraction(to, timing.span.acceleration)));
     }
     for (const LawTick& tick : law_ticks(path, span)) {
-        screen.marks.push_back({plot_point(plot, tick.frame_fraction, tick.distance_fraction), MarkKind::inbetween});
+        screen.marks.push_back({plot_point(plot, tick.frame_fraction, tick.distance_fraction), MarkKind::inbetween,
+                                CellStyle::plain, ColourRole::law});
         const PixelPoint on_axis = plot_point(plot, 0, tick.distance_fraction);
         painter.line({on_axis.x - 6, on_axis.y}, {on_axis.x - 3, on_axis.y});
     }
-    screen.text.push_back({inset.title_column, inset.title_row, inset_title(timing, span, path.span_timings.size())});
+    paint_layer(screen, layer, ColourRole::law);
+    screen.text.push_back({inset.title_column, inset.title_row, inset_title(timing, span, path.span_timings.size()),
+                           CellStyle::plain, ColourRole::law});
 }
 
 } // namespace

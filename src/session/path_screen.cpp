@@ -91,7 +91,7 @@ std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std:
         }
         if (run.first < region->first)
             marks.push_back({run.at, MarkKind::control_point});
-        marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse});
+        marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse, ColourRole::region});
         if (run.last > region->last)
             marks.push_back({run.at, MarkKind::control_point});
     }
@@ -132,7 +132,7 @@ std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs
         if (last[pixel(mark)] != i)
             continue;
         if (boxed[pixel(mark)] && mark.style != CellStyle::reverse)
-            kept.push_back({mark.at, MarkKind::control_point, CellStyle::reverse});
+            kept.push_back({mark.at, MarkKind::control_point, CellStyle::reverse, ColourRole::region});
         kept.push_back(mark);
     }
     return kept;
@@ -176,7 +176,8 @@ void draw_dotted(Painter& painter, const std::vector<Vec3>& polyline, const View
 void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const ViewTransform& view)
 {
     for (const Inbetween& inbetween : path.inbetweens)
-        screen.marks.push_back({view.to_device(inbetween.position).rounded(), MarkKind::inbetween});
+        screen.marks.push_back(
+            {view.to_device(inbetween.position).rounded(), MarkKind::inbetween, CellStyle::plain, ColourRole::inbetween});
 }
 
 // Pre_Draw: every control point marked with an x; those of the picked region in reverse video.
@@ -199,12 +200,38 @@ void draw_arrow(GraphicsScreen& screen, const PathScreenContent& content, const 
 // The ghost dotted: its pixels in runs of 8 columns lit, 8 not (4 rows lit, 4 not; a diagonal
 // about 3 and 3), so that the gaps are a braille dot or more wide at 80x24 and the ghost never
 // reads as a second solid curve. Pixels the curve lights stay the curve's.
-void draw_ghost(Bitmap& bitmap, const Bitmap& ghost)
+void draw_ghost(GraphicsScreen& screen, const Bitmap& ghost)
 {
+    Bitmap dotted;
     for (int y = layout::inside_boundary.top; y < layout::inside_boundary.bottom; ++y)
         for (int x = layout::inside_boundary.left; x < layout::inside_boundary.right; ++x)
             if (((x + 2 * y) / 8) % 2 == 0 && ghost.get(x, y))
-                bitmap.set(x, y, true);
+                dotted.set(x, y, true);
+    paint_layer(screen, dotted, ColourRole::ghost);
+}
+
+// A layer drawn inside the boundary on a raster of its own, then painted in its role: `draw` gets
+// the layer's painter (recording strokes when the content asks).
+template <typename Draw>
+void inside_layer(GraphicsScreen& screen, const PathScreenContent& content, ColourRole role, Draw draw)
+{
+    Bitmap layer;
+    Painter inside(layer, layout::inside_boundary);
+    if (content.record_strokes)
+        inside.record_into(screen.strokes);
+    draw(inside);
+    paint_layer(screen, layer, role);
+}
+
+void draw_tangents(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
+{
+    inside_layer(screen, content, ColourRole::tangent, [&](Painter& inside) {
+        draw_tangent_arrows(screen, inside, content.path->curve.segments, view, *content.tangent_scale);
+    });
+    // An arrow's line is clipped at the boundary; its end mark must not sit on it or beside it.
+    std::erase_if(screen.marks, [](const PixelMark& mark) {
+        return mark.kind == MarkKind::tangent_end && !layout::view_area.contains(mark.at);
+    });
 }
 
 // The screen, with the curve and the control points' marks either drawn here (kept == nullptr) or
@@ -217,27 +244,23 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
     if (content.record_strokes)
         painter.record_into(screen.strokes);
     painter.rectangle(layout::drawing_area);
-    Painter inside(screen.bitmap, layout::inside_boundary);
-    if (content.record_strokes)
-        inside.record_into(screen.strokes);
-    for (const auto& polyline : content.key_frame_polylines)
-        draw_dotted(inside, polyline, view);
+    if (!content.key_frame_polylines.empty())
+        inside_layer(screen, content, ColourRole::key_frame, [&](Painter& inside) {
+            for (const auto& polyline : content.key_frame_polylines)
+                draw_dotted(inside, polyline, view);
+        });
     if (content.path != nullptr) {
         // DRAW: the KB curve, sampled.
         if (kept != nullptr && kept->ghost != nullptr)
-            draw_ghost(screen.bitmap, *kept->ghost);
+            draw_ghost(screen, *kept->ghost);
         if (kept != nullptr)
-            screen.bitmap.merge(kept->curve);
+            paint_layer(screen, kept->curve, ColourRole::monitor);
         else
-            draw_world_curve(inside, content.path->curve, view);
+            inside_layer(screen, content, ColourRole::monitor,
+                         [&](Painter& inside) { draw_world_curve(inside, content.path->curve, view); });
         draw_ani_path(screen, *content.path, view);
-        if (content.tangent_scale) {
-            draw_tangent_arrows(screen, inside, content.path->curve.segments, view, *content.tangent_scale);
-            // An arrow's line is clipped at the boundary; its end mark must not sit on it or beside it.
-            std::erase_if(screen.marks, [](const PixelMark& mark) {
-                return mark.kind == MarkKind::tangent_end && !layout::view_area.contains(mark.at);
-            });
-        }
+        if (content.tangent_scale)
+            draw_tangents(screen, content, view);
     }
     if (kept != nullptr)
         pre_draw(screen, kept->control_point_marks);

@@ -46,6 +46,24 @@ attr_t attributes_of(CellStyle style)
     return A_NORMAL;
 }
 
+// Colour pair n + 1 for the role of index n after monitor (monitor is pair 0: the default colours).
+void start_role_colours()
+{
+    start_color();
+    use_default_colors();
+    for (const ColourRole role : colour_roles)
+        if (role != ColourRole::monitor)
+            init_pair(static_cast<short>(role), static_cast<short>(colour_number(role)), -1);
+}
+
+bool colour_wanted(ColourChoice colour)
+{
+    if (colour == ColourChoice::never || !has_colors())
+        return false;
+    // COLORS is known only after start_color: terminfo's count is asked instead.
+    return colour == ColourChoice::always || tigetnum("colors") >= 8;
+}
+
 } // namespace
 
 // What get_wch gave: its result (OK, KEY_CODE_YES) and the character or key code.
@@ -58,6 +76,7 @@ struct Terminal::State {
     SCREEN* screen = nullptr;
     CellGrid shown;
     bool valid = false;
+    bool colour = false;
     // A key code read while deciding what an Esc was, handed out next.
     std::optional<RawKey> pending;
     // Installed once the terminal is taken over; destroyed after it is given back.
@@ -104,7 +123,7 @@ bool Terminal::State::escape_stands()
 
 Terminal::Terminal() : m_state(std::make_unique<State>()) {}
 
-Expected<std::unique_ptr<Terminal>> Terminal::open()
+Expected<std::unique_ptr<Terminal>> Terminal::open(ColourChoice colour)
 {
     if (!::isatty(STDIN_FILENO) || !::isatty(STDOUT_FILENO))
         return terminal_problem("standard input and output must be a terminal");
@@ -135,6 +154,9 @@ Expected<std::unique_ptr<Terminal>> Terminal::open()
     if (std::getenv("ESCDELAY") == nullptr)
         set_escdelay(default_escape_delay_ms);
     curs_set(0);
+    state.colour = colour_wanted(colour);
+    if (state.colour)
+        start_role_colours();
     state.stop.emplace();
     return terminal;
 }
@@ -220,7 +242,8 @@ void Terminal::show(const CellGrid& grid)
         erase();
     const auto changed = [&](int column, int row) {
         return full || grid.at(column, row) != state.shown.at(column, row) ||
-               grid.style_at(column, row) != state.shown.style_at(column, row);
+               grid.style_at(column, row) != state.shown.style_at(column, row) ||
+               (state.colour && grid.role_at(column, row) != state.shown.role_at(column, row));
     };
     for (int row = 0; row < grid.rows(); ++row) {
         int column = 0;
@@ -234,18 +257,20 @@ void Terminal::show(const CellGrid& grid)
             if (grid.at(column, row) == CellGrid::wide_tail && column > 0)
                 --column;
             const CellStyle style = grid.style_at(column, row);
+            const short pair = state.colour ? static_cast<short>(grid.role_at(column, row)) : 0;
             std::string run;
             const int start = column;
             const auto continues_run = [&](int next) {
                 return grid.at(next, row) == CellGrid::wide_tail ||
-                       (changed(next, row) && grid.style_at(next, row) == style);
+                       (changed(next, row) && grid.style_at(next, row) == style &&
+                        (!state.colour || static_cast<short>(grid.role_at(next, row)) == pair));
             };
             while (column < grid.columns() && (column == start || continues_run(column))) {
                 if (grid.at(column, row) != CellGrid::wide_tail)
                     append_utf8(run, grid.at(column, row));
                 ++column;
             }
-            attr_set(attributes_of(style), 0, nullptr);
+            attr_set(attributes_of(style), pair, nullptr);
             mvaddstr(row, start, run.c_str());
         }
     }

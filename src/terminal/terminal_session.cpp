@@ -175,9 +175,10 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 }
 
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)
+                                          GlyphSet glyphs, ColourChoice colour, std::vector<KeyEvent>& recorded,
+                                          const ReplayHooks& hooks)
 {
-    Expected<std::unique_ptr<Terminal>> opened = Terminal::open();
+    Expected<std::unique_ptr<Terminal>> opened = Terminal::open(colour);
     if (!opened)
         return opened.error();
     const std::unique_ptr<Terminal> terminal = std::move(*opened);

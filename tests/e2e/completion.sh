@@ -34,6 +34,7 @@ expect() { # expected, then the command line
 
 expect "figures fit" apcs "fi"
 expect "blocks braille" apcs --glyphs b
+expect "always auto" apcs --color a
 expect "blocks braille" apcs path a.dat --glyphs b
 expect "exact nearest" apcs fit --spacing ""
 expect "front" apcs --view fr

@@ -101,9 +101,11 @@ if [ "$part" = core ]; then
   # --- A cell whose style alone changes is sent again: the control point picked, its 'x' the
   # same character, shows in reverse video (SPEC 7.2).
   styled() { tmux -L "$socket" capture-pane -p -e -t "$1"; }
-  styled braille | grep -qF $'\e[7mx' && fail "a control point in reverse video before any pick" braille
+  # With colour (--color auto) a region's x is also in the region's colour: \e[7m\e[35mx.
+  reversed_x() { styled braille | grep -qE $'\e\\[7m(\e\\[[0-9;]*m)*x'; }
+  reversed_x && fail "a control point in reverse video before any pick" braille
   keys braille Enter
-  styled braille | grep -qF $'\e[7mx' || fail "the picked control point is not shown in reverse video" braille
+  reversed_x || fail "the picked control point is not shown in reverse video" braille
   tmux -L "$socket" kill-session -t braille
   for _ in $(seq 1 50); do [ -s "$work/braille.keys" ] && break; sleep 0.1; done
   grep -qw "CTRL-L" "$work/braille.keys" || { echo "Ctrl-L not recorded:"; cat "$work/braille.keys"; exit 1; }

@@ -136,7 +136,8 @@ TEST_CASE("a scribbled path's control points, one mark per pixel, show what a ma
     std::erase_if(every.marks, [](const PixelMark& mark) { return mark.kind == MarkKind::control_point; });
     for (std::size_t k = 0; k < editor.points().size(); ++k)
         every.marks.push_back({editor.view_transform().to_device(editor.points()[k].position).rounded(),
-                               MarkKind::control_point, k >= 4000 && k <= 6000 ? CellStyle::reverse : CellStyle::plain});
+                               MarkKind::control_point, k >= 4000 && k <= 6000 ? CellStyle::reverse : CellStyle::plain,
+                               k >= 4000 && k <= 6000 ? ColourRole::region : ColourRole::monitor});
     const auto control_marks = [](const GraphicsScreen& screen) {
         return std::count_if(screen.marks.begin(), screen.marks.end(),
                              [](const PixelMark& mark) { return mark.kind == MarkKind::control_point; });

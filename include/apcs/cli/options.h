@@ -33,6 +33,7 @@ struct CommonOptions {
     int delay_ms = 200;
     std::filesystem::path workdir;
     GlyphSet glyphs = GlyphSet::automatic;
+    ColourChoice colour = ColourChoice::automatic; // --color (SPEC §7.2.1)
     double step = 0.05;
     std::optional<std::filesystem::path> keys;
     std::optional<std::filesystem::path> record;

@@ -20,7 +20,12 @@ namespace apcs {
 // terminal ("apcs: PROBLEM").
 using TerminalSessionRunner =
     std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                       std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)>;
+                                       ColourChoice colour, std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)>;
+
+// --color as the session uses it (SPEC §7.2.1): automatic becomes never when the environment's
+// NO_COLOR (`no_color`, null when unset) is set and not empty; always and never stand as given
+// (an option on the command line outranks the environment, as no-color.org asks).
+ColourChoice session_colour(ColourChoice asked, const char* no_color);
 
 // Whether a locale's codeset, as nl_langinfo(CODESET) names it, is UTF-8 ("UTF-8", "utf8", …).
 bool is_utf8_codeset(std::string_view codeset);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace apcs {
@@ -14,6 +15,33 @@ enum class CellStyle : unsigned char { plain, bold, reverse };
 // same on every machine: Unicode's widths as the C.UTF-8 locale knows them, whatever the user's
 // locale (a wide character counts 1 only where that locale is missing).
 int cell_width(char32_t code_point);
+
+// What a cell is drawn in where the terminal has colour (SPEC §7.2.1), decided where each layer is
+// painted; the terminal maps it to a colour of its own. `monitor` is the 1989 screen's one colour
+// (curve, x marks, staff, text: the terminal's default foreground); each other role is an overlay
+// that goes beyond the 1989 screen. Without colour every role is drawn alike.
+enum class ColourRole : unsigned char { monitor, key_frame, ghost, inbetween, region, tangent, law };
+inline constexpr ColourRole colour_roles[] = {ColourRole::monitor, ColourRole::key_frame, ColourRole::ghost,
+                                              ColourRole::inbetween, ColourRole::region, ColourRole::tangent,
+                                              ColourRole::law};
+
+// --color (SPEC §7.2.1): colour where the terminal has it (at least 8 colours), always, or never.
+enum class ColourChoice : unsigned char { automatic, always, never };
+
+// Which role a pixel or cell lit by two layers shows: law inset > tangents > region > in-between
+// marks > monitor (the curve, the 1989 marks) > ghost > key frames. The overlays a class turned on
+// to see stand over the curve; the curve stands over what it is compared with (the ghost, the key
+// frames).
+int colour_priority(ColourRole role);
+// One letter per role for test dumps: m k g i r t l.
+char colour_letter(ColourRole role);
+// The legend's name of the colour a terminal draws `role` in ("yellow"), and the curses colour
+// number (0-7: black red green yellow blue magenta cyan white) it means; monitor is the default
+// foreground (-1).
+std::string_view colour_name(ColourRole role);
+int colour_number(ColourRole role);
+// What the overlay of `role` is, for the legend ("tangents (T)").
+std::string_view colour_role_name(ColourRole role);
 
 // What a character terminal shows: columns x rows cells of one code point and one style each. A
 // wide character fills two cells: its own, then one holding wide_tail.
@@ -30,22 +58,29 @@ public:
     CellStyle style_at(int column, int row) const;
     void set(int column, int row, char32_t glyph);
     void set_style(int column, int row, CellStyle style);
+    ColourRole role_at(int column, int row) const;
+    void set_role(int column, int row, ColourRole role);
     // Writes UTF-8 text from (column, row) on, each character in cell_width columns, clipped at the
     // right edge (a wide character that would be cut in half is left out); zero-width and control
     // characters are left out, so the columns stay those of the terminal.
-    void put_text(int column, int row, const std::string& utf8, CellStyle style = CellStyle::plain);
+    void put_text(int column, int row, const std::string& utf8, CellStyle style = CellStyle::plain,
+                  ColourRole role = ColourRole::monitor);
     bool operator==(const CellGrid&) const = default;
 
     // Row `row` as UTF-8, trailing spaces kept; a wide character appears once.
     std::string row_text(int row) const;
     // All rows, each followed by '\n'.
     std::string to_text() const;
+    // The roles as letters (colour_letter), one row per line; a blank cell is a blank whatever its
+    // role, so the dump reads beside to_text().
+    std::string roles_text() const;
 
 private:
     int m_columns;
     int m_rows;
     std::vector<char32_t> m_cells;
     std::vector<CellStyle> m_styles;
+    std::vector<ColourRole> m_roles;
 };
 
 void append_utf8(std::string& text, char32_t code_point);

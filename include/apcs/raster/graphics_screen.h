@@ -16,6 +16,7 @@ struct TextLine {
     int row = 0;
     std::string text; // UTF-8
     CellStyle style = CellStyle::plain;
+    ColourRole role = ColourRole::monitor;
 };
 
 // What a mark stands for. Marks are kept apart from the raster's lines so that at any terminal size
@@ -34,6 +35,7 @@ struct PixelMark {
     PixelPoint at;
     MarkKind kind = MarkKind::control_point;
     CellStyle style = CellStyle::plain;
+    ColourRole role = ColourRole::monitor;
 };
 
 // A horizontal line with upright ticks: a line of the four-line staff (fig. 3.1.5), in raster
@@ -59,7 +61,16 @@ struct GraphicsScreen {
     std::vector<TextLine> text;
     std::vector<PixelMark> marks;
     std::vector<Stroke> strokes;
+    // The colour role of each raster pixel (row by row), empty while every lit pixel is the
+    // monitor's; paint_layer fills it. Pictures ignore it (SPEC §7.1: the monitor had one colour).
+    std::vector<ColourRole> pixel_roles;
 };
+
+// Lights the pixels `layer` lights, in `role`: a pixel lit before keeps the role of higher
+// colour_priority, so the order layers are painted in does not change what a cell shows.
+void paint_layer(GraphicsScreen& screen, const Bitmap& layer, ColourRole role);
+// The role pixel (x, y) was painted in (monitor where none was given).
+ColourRole pixel_role(const GraphicsScreen& screen, int x, int y);
 
 // The character a mark shows in `glyphs`.
 char32_t mark_glyph(MarkKind kind, GlyphSet glyphs);
@@ -83,7 +94,8 @@ Bitmap render_raster(const GraphicsScreen& screen);
 // The raster mapped to characters, then the ticked lines, the marks and the text laid over it as
 // real characters, each at its share of the area (80x24 text cells scale with the area). Marks take the cell their
 // pixel falls in, control points before the others; two or more in-betweens in one cell show their
-// count (2 … 9).
+// count (2 … 9). A raster cell's colour role is the highest colour_priority of its lit pixels'; a
+// mark or text cell has the mark's or the text's.
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
 

@@ -25,7 +25,9 @@ public:
     // cannot move its cursor, stdin or stdout not a terminal) as "apcs: PROBLEM". Keys are
     // decoded by ncurses (keypad, with the sequences of key_sequences() bound by define_key); Esc
     // counts after ESCDELAY ms, the environment's, else 100 (SPEC §7.3).
-    [[nodiscard]] static Expected<std::unique_ptr<Terminal>> open();
+    // `colour`: automatic draws the cells' colour roles where the terminal has colours (has_colors
+    // and at least 8), always where it has any, never in the default colours only.
+    [[nodiscard]] static Expected<std::unique_ptr<Terminal>> open(ColourChoice colour = ColourChoice::never);
     ~Terminal();
     Terminal(const Terminal&) = delete;
     Terminal& operator=(const Terminal&) = delete;
@@ -34,8 +36,8 @@ public:
     // Waits up to timeout_ms (negative: for ever, but still wakes for signals). An escape
     // sequence ncurses does not know is read to its end and dropped, never typed (escape_tail).
     TerminalInput read_key(int timeout_ms, KeyEvent& key);
-    // Shows the grid at the top-left, each cell in its style (bold, reverse video), sending only
-    // the cells whose character or style changed since the last call; a run of changed cells of
+    // Shows the grid at the top-left, each cell in its style (bold, reverse video) and, with colour,
+    // its role's colour, sending only the cells whose character, style or role changed since the last call; a run of changed cells of
     // one style goes out as one string.
     void show(const CellGrid& grid);
     // Forgets what is on the screen, so that the next show() repaints everything.

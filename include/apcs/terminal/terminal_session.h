@@ -29,9 +29,9 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 // keyboard takes over) and other keys are ignored. Returns success when the program ended,
 // stopped when stopped by a signal or a lost terminal, or why there is no usable terminal
 // ("apcs: PROBLEM"). The terminal is given back on every way out, exceptions included. `hooks`
-// hear of each caption reached (replay_hooks.h), until Esc ends the replay.
+// hear of each caption reached; `colour` is the resolved --color (Terminal::open) (replay_hooks.h), until Esc ends the replay.
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& program, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, std::vector<KeyEvent>& recorded,
+                                          GlyphSet glyphs, ColourChoice colour, std::vector<KeyEvent>& recorded,
                                           const ReplayHooks& hooks = {});
 
 } // namespace apcs
