@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <locale.h>
+#include <optional>
 #include <wchar.h>
 
 namespace apcs {
@@ -17,46 +18,59 @@ CellGrid::CellGrid(int columns, int rows)
 {
 }
 
-char32_t CellGrid::at(int column, int row) const
+std::optional<std::size_t> CellGrid::index_of(int column, int row) const
 {
     if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+        return std::nullopt;
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column);
+}
+
+char32_t CellGrid::at(int column, int row) const
+{
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
         return U' ';
-    return m_cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+    return m_cells[*index];
 }
 
 CellStyle CellGrid::style_at(int column, int row) const
 {
-    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
         return CellStyle::plain;
-    return m_styles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+    return m_styles[*index];
 }
 
 void CellGrid::set_style(int column, int row, CellStyle style)
 {
-    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
         return;
-    m_styles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = style;
+    m_styles[*index] = style;
 }
 
 ColourRole CellGrid::role_at(int column, int row) const
 {
-    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
         return ColourRole::monitor;
-    return m_roles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)];
+    return m_roles[*index];
 }
 
 void CellGrid::set_role(int column, int row, ColourRole role)
 {
-    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
         return;
-    m_roles[static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column)] = role;
+    m_roles[*index] = role;
 }
 
 void CellGrid::set(int column, int row, char32_t glyph)
 {
-    if (column < 0 || row < 0 || column >= m_columns || row >= m_rows)
+    const std::optional<std::size_t> found = index_of(column, row);
+    if (!found)
         return;
-    const std::size_t index = static_cast<std::size_t>(row) * static_cast<std::size_t>(m_columns) + static_cast<std::size_t>(column);
+    const std::size_t index = *found;
     // Half a wide character is never left behind: its other half becomes a blank.
     if (m_cells[index] == wide_tail && glyph != wide_tail)
         m_cells[index - 1] = U' ';

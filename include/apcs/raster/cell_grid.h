@@ -2,6 +2,7 @@
 
 #include <string>
 #include <string_view>
+#include <optional>
 #include <vector>
 
 namespace apcs {
@@ -76,6 +77,9 @@ public:
     std::string roles_text() const;
 
 private:
+    // Where cell (column, row) is in the row-major vectors; none outside the grid.
+    std::optional<std::size_t> index_of(int column, int row) const;
+
     int m_columns;
     int m_rows;
     std::vector<char32_t> m_cells;
