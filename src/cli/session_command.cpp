@@ -435,11 +435,16 @@ std::optional<ExitStatus> open_handout(const CommonOptions& options, std::option
 }
 
 // The hooks of the replay: each caption's page of the handout, none without one.
-ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options, const Session& session,
+ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options, Session& session,
                          const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
 {
     ReplayHooks hooks;
-    hooks.goal_progress = [&session, &script](std::size_t index) { return check_goal(script.goals[index], session); };
+    // The student sees the goal's point marked until the goal holds.
+    hooks.goal_progress = [&session, &script](std::size_t index) {
+        const GoalProgress progress = check_goal(script.goals[index], session);
+        session.mark_goal(progress.reached ? std::nullopt : goal_point(script.goals[index]));
+        return progress;
+    };
     if (handout)
         hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
                                                                                        const SessionScreen& shown) {

@@ -182,6 +182,7 @@ constexpr RoleColour role_colours[] = {
     {ColourRole::region, 4, 'r', "magenta", 5, "picked region"},
     {ColourRole::tangent, 5, 't', "yellow", 3, "tangents (T)"},
     {ColourRole::law, 6, 'l', "green", 2, "law inset (G)"},
+    {ColourRole::goal, 7, 'o', "white", 7, "goal"},
 };
 
 const RoleColour& colour_of(ColourRole role)

@@ -18,6 +18,7 @@ char32_t mark_glyph(MarkKind kind, GlyphSet glyphs)
     case MarkKind::arrow: return ascii ? U'>' : U'\u2192';
     case MarkKind::staff_value: return U'O';
     case MarkKind::tangent_end: return U'+';
+    case MarkKind::goal: return U'@';
     }
     return U'?';
 }
@@ -80,11 +81,18 @@ void draw_mark_pixels(Painter& painter, const PixelMark& mark)
         painter.line({at.x - 2, at.y}, {at.x + 2, at.y});
         painter.line({at.x, at.y - 2}, {at.x, at.y + 2});
         return;
+    case MarkKind::goal:
+        painter.line({at.x - 5, at.y}, {at.x, at.y - 5});
+        painter.line({at.x, at.y - 5}, {at.x + 5, at.y});
+        painter.line({at.x + 5, at.y}, {at.x, at.y + 5});
+        painter.line({at.x, at.y + 5}, {at.x - 5, at.y});
+        painter.dot_marker(at);
+        return;
     }
 }
 
 // The order marks are laid over the cells: a later kind hides an earlier one in the same cell.
-constexpr int top_mark_layer = 4;
+constexpr int top_mark_layer = 5;
 int mark_layer(MarkKind kind)
 {
     switch (kind) {
@@ -92,7 +100,8 @@ int mark_layer(MarkKind kind)
     case MarkKind::tangent_end: return 1;
     case MarkKind::staff_value: return 2;
     case MarkKind::arrow: return 3;
-    case MarkKind::control_point: return top_mark_layer;
+    case MarkKind::control_point: return 4;
+    case MarkKind::goal: return top_mark_layer;
     }
     return 0;
 }

@@ -187,6 +187,10 @@ std::string mark_element(const PixelMark& mark)
     case MarkKind::tangent_end:
         path = segment({at.x - 2, at.y}, {at.x + 2, at.y}) + segment({at.x, at.y - 2}, {at.x, at.y + 2});
         break;
+    case MarkKind::goal:
+        path = segment({at.x - 5, at.y}, {at.x, at.y - 5}) + "L" + svg_point_text({at.x + 5, at.y}) + " L" +
+               svg_point_text({at.x, at.y + 5}) + " Z ";
+        break;
     }
     path.pop_back();
     return "<path class=\"mark\" d=\"" + path + "\"/>\n";

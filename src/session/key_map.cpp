@@ -116,6 +116,7 @@ constexpr auto key_map = [] {
         {{waypoints}, Pattern::letter(U'T'),       cmd::ToggleTangents{},    "",             "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
         {{waypoints}, Pattern::letter(U'G'),       cmd::ToggleLawGraph{},    "",             "law graph on/off: distance against frame in the span"},
         {{waypoints}, Pattern::letter(U'O'),       cmd::ToggleGhost{},       "",             "ghost on/off: the curve before the last change, dotted"},
+        {{waypoints}, Pattern::letter(U'Z'),       cmd::Zoom{},              "",             "zoom x2, x4, x8 about the chosen point, then back"},
 
         // Showing_Animation.
         {{animation}, Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop",    "stop the animation"},

@@ -371,15 +371,17 @@ void PathEditor::set_staff_value(Staff& staff, double value)
         return;
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
+    PathPicture::PointsBack back = [region = staff.region, runs = change.points_before](ControlPoints& points) {
+        restore_staff_runs(points, region, runs);
+    };
     m_history.push_back(std::move(change));
-    m_picture.keep_ghost();
     // The segments whose tangents the region's points can set (ends included), kept to measure
     // how far the key moved the curve (an acceleration moves none).
     const std::vector<HermiteSegment>& segments = m_picture.evaluated().curve.segments;
     const std::size_t first = staff.region.first < 2 ? 0 : staff.region.first - 2;
     const std::size_t end = what == PathChange::What::accelerations ? first : std::min(segments.size(), staff.region.last + 2);
     const std::vector<MeasuredSegment> before = measured_segments(segments, first, end);
-    reevaluate_region(staff.region, what);
+    reevaluate_region(staff.region, what, std::move(back));
     m_moved = what == PathChange::What::accelerations
                   ? "only the in-betweens moved"
                   : curve_move_text(curve_move(before, m_picture.evaluated().curve, m_picture.view()));
@@ -388,10 +390,10 @@ void PathEditor::set_staff_value(Staff& staff, double value)
 // A key changes the staff values of a region: only the segments their tangents shape are sampled
 // again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
 // interactive).
-void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what)
+void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back)
 {
     const std::size_t count = region.last - region.first + 1;
-    m_picture.refresh(m_setup.points, PathChange{region.first, count, count, what});
+    m_picture.refresh(m_setup.points, PathChange{region.first, count, count, what}, std::move(back));
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -489,9 +491,10 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
     const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
                                       ? PathChange::What::staff
                                       : PathChange::What::accelerations;
-    m_picture.keep_ghost();
+    PathPicture::PointsBack back = [region = change.region, runs = staff_runs(m_setup.points, change.region)](
+                                       ControlPoints& points) { restore_staff_runs(points, region, runs); };
     restore_staff_runs(m_setup.points, change.region, change.points_before);
-    reevaluate_region(change.region, what);
+    reevaluate_region(change.region, what, std::move(back));
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
     return Transition{Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt}};

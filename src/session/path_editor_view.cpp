@@ -139,9 +139,10 @@ PathScreenContent PathEditor::screen_content() const
     return content;
 }
 
-GraphicsScreen PathEditor::view() const
+GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
 {
     PathScreenContent content = screen_content();
+    content.goal_point = goal_point;
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
     content.ghost = m_show_ghost;

@@ -10,7 +10,20 @@ PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSetting
 {
 }
 
+void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change, PointsBack back)
+{
+    m_ghost = m_curve.pixels();
+    m_ghost_back = std::move(back);
+    remake(points, change);
+}
+
 void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change)
+{
+    drop_ghost();
+    remake(points, change);
+}
+
+void PathPicture::remake(std::span<const ControlPoint> points, const PathChange& change)
 {
     m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change));
     if (!m_view)
@@ -25,11 +38,28 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
 void PathPicture::set_view(std::span<const ControlPoint> points, const ViewTransform& view)
 {
     m_view = view;
-    // A ghost drawn in another view would stand where the curve never was.
-    m_ghost.reset();
     m_point_runs = control_point_runs(points, *m_view);
     m_point_marks = control_point_marks(m_point_runs, m_region);
     draw_curve();
+    draw_ghost(points);
+}
+
+// The ghost's pixels in this view, from its path: the points now taken back over the last change.
+void PathPicture::draw_ghost(std::span<const ControlPoint> points)
+{
+    if (!m_ghost || !m_ghost_back)
+        return;
+    ControlPoints before(points.begin(), points.end());
+    m_ghost_back(before);
+    CurveRaster ghost;
+    ghost.update(evaluate_path(before, m_settings).curve, *m_view, layout::inside_boundary);
+    m_ghost = ghost.pixels();
+}
+
+void PathPicture::drop_ghost()
+{
+    m_ghost.reset();
+    m_ghost_back = nullptr;
 }
 
 void PathPicture::box_region(std::optional<ControlRegion> region)
@@ -39,8 +69,6 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
     m_region = region;
     m_point_marks = control_point_marks(m_point_runs, m_region);
 }
-
-void PathPicture::keep_ghost() { m_ghost = m_curve.pixels(); }
 
 void PathPicture::draw_curve() { m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary); }
 

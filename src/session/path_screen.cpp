@@ -272,6 +272,11 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
                !layout::inside_boundary.contains(mark.at);
     });
     draw_arrow(screen, content, view);
+    if (content.goal_point) {
+        const PixelPoint at = view.to_device(*content.goal_point).rounded();
+        if (layout::inside_boundary.contains(at))
+            screen.marks.push_back({at, MarkKind::goal, CellStyle::plain, ColourRole::goal});
+    }
     draw_staff(screen, content);
     if (!content.message.empty())
         screen.text.push_back({1, layout::message_row, content.message});

@@ -143,4 +143,11 @@ std::string goal_text(const ScriptGoal& goal)
     return {};
 }
 
+std::optional<Vec3> goal_point(const ScriptGoal& goal)
+{
+    if (goal.kind == ScriptGoal::Kind::value)
+        return std::nullopt;
+    return goal.point;
+}
+
 } // namespace apcs

@@ -258,7 +258,7 @@ SessionScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
         return {false, key_help_screen(phase_name(phase()), help->keys, help->empty_answer), {}};
-    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view()); },
+    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point)); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
                                      SessionScreen shown{false, console_screen(), {}};

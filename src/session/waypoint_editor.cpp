@@ -3,6 +3,7 @@
 #include "apcs/animation/arc_length.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/session/overloaded.h"
+#include "apcs/session/screen_layout.h"
 
 #include <algorithm>
 #include <cassert>
@@ -42,6 +43,7 @@ WaypointEditor::Outcome WaypointEditor::update(const Command& command)
 WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
 {
     m_problem.clear();
+    m_notice.clear();
     const auto editing = [](auto&& edit) {
         edit();
         return Outcome::editing;
@@ -55,9 +57,10 @@ WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
             [&](const command::InsertPoint&) { return editing([&] { insert_point(); }); },
             [&](const command::DeletePoint&) { return editing([&] { delete_point(); }); },
             [&](const command::Undo&) { return editing([&] { undo(); }); },
+            [&](const command::Zoom&) { return editing([&] { zoom(); }); },
             [](const command::Accept&) { return Outcome::kept; },
             [&](const command::Back&) { return discard(); },
-            // The editor waits for Tab, a move, I, D, U, Enter or Esc.
+            // The editor waits for Tab, a move, I, D, U, Z, Enter or Esc.
             [](const auto&) { return Outcome::editing; },
         },
         command);
@@ -73,8 +76,12 @@ WaypointEditor::Outcome WaypointEditor::discard()
 
 void WaypointEditor::apply(const WaypointChange& change)
 {
-    m_picture.keep_ghost(); // SPEC §7.2.1: the curve before the edit stays, dotted
-    m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change));
+    // SPEC §7.2.1: the curve before the edit stays, dotted.
+    m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change),
+                      [change](ControlPoints& points) {
+                          std::vector<std::size_t> origins(points.size());
+                          revert_change(points, origins, change);
+                      });
     m_changes.push_back(change);
 }
 
@@ -135,15 +142,33 @@ void WaypointEditor::undo()
     }
     const WaypointChange change = m_changes.back();
     m_changes.pop_back();
-    m_picture.keep_ghost();
-    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change));
+    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change),
+                      [change](ControlPoints& points) {
+                          std::vector<std::size_t> origins(points.size());
+                          apply_change(points, origins, change);
+                      });
     m_chosen = std::min(change.index, m_setup.points.size() - 1);
+}
+
+void WaypointEditor::zoom()
+{
+    constexpr int deepest_zoom = 3; // ×8
+    m_zoom_level = m_zoom_level == deepest_zoom ? 0 : m_zoom_level + 1;
+    const int factor = 1 << m_zoom_level;
+    const Vec3 about = m_setup.points[m_chosen].position;
+    m_picture.set_view(m_setup.points,
+                       m_zoom_level == 0 ? m_setup.view : m_setup.view.zoomed(factor, about, layout::view_area));
+    m_notice = m_zoom_level == 0 ? "zoom off: the view the editor opened with"
+                                 : "zoom ×" + std::to_string(factor) + " about control point " +
+                                       std::to_string(m_chosen + 1) + " (Z: more)";
 }
 
 std::string WaypointEditor::message() const
 {
     if (!m_problem.empty())
         return m_problem;
+    if (!m_notice.empty())
+        return m_notice;
     const Vec3 from_centre = m_setup.points[m_chosen].position - m_setup.view.centre();
     const double depth = dot(from_centre, m_setup.view.toward_viewer());
     return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(m_setup.points.size()) +

@@ -40,7 +40,9 @@ for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
 export DISPLAY=":$(cat "$work/display")"
 case $terminal_name in
   xterm) xterm -ti vt340 -fn 9x15 -geometry 100x45+0+0 -e sh -c "cat '$file'; sleep 60" & ;;
-  kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o background=#ffffff -o foreground=#000000 -o font_size=11 \
+  # kitty opens 640x400 pixels (or the size it remembered) unless told: too small for the picture.
+  kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o remember_window_size=no -o initial_window_width=1000 \
+           -o initial_window_height=700 -o background=#ffffff -o foreground=#000000 -o font_size=11 \
            sh -c "cat '$file'; sleep 60" > "$work/kitty.log" 2>&1 & ;;
 esac
 terminal=$!

@@ -2,8 +2,10 @@
 // zoom, the ghost and the displacement said in numbers.
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/geometry/hercules.h"
+#include "apcs/session/curve_raster.h"
 #include "apcs/session/path_editor.h"
 #include "apcs/session/screen_layout.h"
 
@@ -302,4 +304,101 @@ TEST_CASE("a waypoint edit leaves the curve before it as a ghost", "[session][ed
     const std::size_t ghost = pixels_beyond(with_ghost, without_ghost);
     REQUIRE(ghost > 50);
     REQUIRE(pixels_beyond(with_ghost, without_ghost, &before) == ghost);
+}
+
+namespace {
+
+// The curve of `points` as the path screen draws it in `view`.
+Bitmap curve_pixels(const ControlPoints& points, const PathSettings& settings, const ViewTransform& view)
+{
+    CurveRaster curve;
+    curve.update(evaluate_path(points, settings).curve, view, layout::inside_boundary);
+    return curve.pixels();
+}
+
+// The ghost's pixels now: those that O takes away.
+Bitmap ghost_pixels(PathEditor& editor)
+{
+    const Bitmap with_ghost = editor.view().bitmap;
+    apply(editor, {cmd::ToggleGhost{}});
+    const Bitmap without_ghost = editor.view().bitmap;
+    apply(editor, {cmd::ToggleGhost{}});
+    Bitmap ghost(with_ghost.width(), with_ghost.height());
+    for (int y = 0; y < ghost.height(); ++y)
+        for (int x = 0; x < ghost.width(); ++x)
+            if (with_ghost.get(x, y) && !without_ghost.get(x, y))
+                ghost.set(x, y, true);
+    return ghost;
+}
+
+} // namespace
+
+TEST_CASE("the ghost stays through Z and K, drawn again in the new view from the path before the change",
+          "[session][editor][view]")
+{
+    LogLines log;
+    const PathEditor::Setup setup = shipped_setup({"n-to-l", "way1.dat", {0, 90}});
+    const ControlPoints before = setup.points;
+    PathEditor editor(setup, log);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::StaffStep{-6}});
+    const Bitmap fitted_ghost = ghost_pixels(editor);
+    REQUIRE(pixels_beyond(fitted_ghost, Bitmap(fitted_ghost.width(), fitted_ghost.height())) > 50);
+    for (const Command& view_key : std::vector<Command>{cmd::Zoom{}, cmd::Zoom{}, cmd::ToggleKeyFrames{}}) {
+        apply(editor, {view_key});
+        const Bitmap ghost = ghost_pixels(editor);
+        const Bitmap old_curve = curve_pixels(before, setup.settings, editor.view_transform());
+        const Bitmap empty(ghost.width(), ghost.height());
+        CAPTURE(apcs::test::message_of(editor.view()));
+        // Dotted, every dot on the old curve in this view, and a new picture, not the last one.
+        REQUIRE(pixels_beyond(ghost, empty) > 50);
+        REQUIRE(pixels_beyond(ghost, empty, &old_curve) == pixels_beyond(ghost, empty));
+        REQUIRE(ghost != fitted_ghost);
+    }
+    // Undo: the ghost is the curve the key made, and it too follows the view.
+    apply(editor, {cmd::Undo{}, cmd::Zoom{}});
+    CHECK(apcs::test::message_of(editor.view()) == "zoom ×8 about the path's middle (Z: more)");
+    PathEditor changed_editor(setup, log);
+    apply(changed_editor, {cmd::ChooseGlobal{}, cmd::StaffStep{-6}});
+    const Bitmap ghost = ghost_pixels(editor);
+    const Bitmap key_curve = curve_pixels(changed_editor.points(), setup.settings, editor.view_transform());
+    const Bitmap empty(ghost.width(), ghost.height());
+    REQUIRE(pixels_beyond(ghost, empty) > 50);
+    REQUIRE(pixels_beyond(ghost, empty, &key_curve) == pixels_beyond(ghost, empty));
+}
+
+TEST_CASE("the waypoint editor's ghost follows its zoom", "[session][editor][view]")
+{
+    LogLines log;
+    const PathEditor::Setup setup = shipped_setup({"n-to-l", "way1.dat", {0, 90}});
+    PathEditor editor(setup, log);
+    apply(editor, {cmd::OpenWaypoints{}, cmd::ChoosePoint{+1}, cmd::MovePoint{+3, 0, 0}, cmd::Zoom{}});
+    REQUIRE(apcs::test::message_of(editor.view()).find("zoom ×2 about control point 2") != std::string::npos);
+    const Bitmap ghost = ghost_pixels(editor);
+    const Bitmap old_curve = curve_pixels(setup.points, setup.settings, editor.view_transform());
+    const Bitmap empty(ghost.width(), ghost.height());
+    REQUIRE(pixels_beyond(ghost, empty) > 50);
+    REQUIRE(pixels_beyond(ghost, empty, &old_curve) == pixels_beyond(ghost, empty));
+}
+
+TEST_CASE("an exercise's goal point is marked @ where the view shows it, in the goal's colour", "[session][editor][view]")
+{
+    LogLines log;
+    PathEditor editor(shipped_setup({"n-to-l", "way1.dat", {0, 90}}), log);
+    // exercise-4-near.keys: the first chord's middle.
+    const Vec3 goal{1.5, -2.0, 2.5};
+    const GraphicsScreen marked = editor.view(goal);
+    const auto is_goal = [](const PixelMark& mark) { return mark.kind == MarkKind::goal; };
+    REQUIRE(std::count_if(marked.marks.begin(), marked.marks.end(), is_goal) == 1);
+    const PixelMark& mark = *std::find_if(marked.marks.begin(), marked.marks.end(), is_goal);
+    REQUIRE(mark.at == editor.view_transform().to_device(goal).rounded());
+    REQUIRE(mark.role == ColourRole::goal);
+    const CellGrid cells = render_cells(marked, {80, 24}, GlyphSet::ascii);
+    const int column = cell_of_pixel(mark.at.x, marked.bitmap.width(), 80);
+    const int row = cell_of_pixel(mark.at.y, marked.bitmap.height(), 24);
+    REQUIRE(cells.at(column, row) == U'@');
+    REQUIRE(cells.role_at(column, row) == ColourRole::goal);
+    // No goal, no mark; a goal the view does not show, no mark on the boundary or the staff.
+    REQUIRE(std::none_of(editor.view().marks.begin(), editor.view().marks.end(), is_goal));
+    const GraphicsScreen far_away = editor.view(Vec3{0.0, 1000.0, 0.0});
+    REQUIRE(std::none_of(far_away.marks.begin(), far_away.marks.end(), is_goal));
 }

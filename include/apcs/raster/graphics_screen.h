@@ -27,6 +27,7 @@ enum class MarkKind {
     arrow,         // `>` in ascii, `→` elsewhere, in the cell left of `at`; pixels: an arrow
     staff_value,   // `O`; pixels: two short vertical lines around the value
     tangent_end,   // `+`: the free end of a tangent arrow (the handle); pixels: a plus of 5x5
+    goal,          // `@`: an exercise's goal point (GOAL NEAR, INBETWEEN); pixels: a diamond of 11x11
 };
 
 // A mark at a raster pixel. A reverse-styled control point is one of the picked region: reverse

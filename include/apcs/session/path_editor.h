@@ -49,7 +49,8 @@ public:
     PathEditor(Setup setup, SessionLog& log);
 
     Outcome update(const Command& command);
-    GraphicsScreen view() const;
+    // The path screen, with an exercise's goal point marked when one is given.
+    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt) const;
 
     SessionPhase phase() const;
     KeyContext key_context() const;
@@ -127,7 +128,7 @@ private:
     Staff start_staff(ControlRegion region);
     Waypoints open_waypoints();
     void set_staff_value(Staff& staff, double value);
-    void reevaluate_region(ControlRegion region, PathChange::What what);
+    void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
     Transition undo();
     Transition undo_change(const StaffChange& change);
     Transition undo_change(const WaypointChange& change);

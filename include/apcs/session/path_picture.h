@@ -8,6 +8,7 @@
 #include "apcs/session/curve_raster.h"
 #include "apcs/session/path_screen.h"
 
+#include <functional>
 #include <optional>
 #include <span>
 #include <vector>
@@ -25,18 +26,23 @@ public:
     // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
     PathPicture(std::span<const ControlPoint> points, const PathSettings& settings);
 
-    // The points changed as `change` says (`points` are those after it).
+    // Turns the points after a change back into those before it: the ghost's path, drawn again
+    // when the view changes (SPEC §7.2.1: the ghost stays through Z and K).
+    using PointsBack = std::function<void(ControlPoints&)>;
+
+    // The points changed as `change` says (`points` are those after it); the ghost goes.
     void refresh(std::span<const ControlPoint> points, const PathChange& change);
-    // Another view: the curve and the control points projected again.
+    // The same, and the curve as it was becomes the ghost (SPEC §7.2.1), its path `back` of the
+    // points; the next change replaces it.
+    void refresh(std::span<const ControlPoint> points, const PathChange& change, PointsBack back);
+    // Another view: the curve, the control points and the ghost projected again.
     void set_view(std::span<const ControlPoint> points, const ViewTransform& view);
     // The region whose control points' marks are boxed; the marks are made again only when it
     // changes (a path of 10^6 points scribbled over the screen has up to one mark per pixel).
     void box_region(std::optional<ControlRegion> region);
 
-    // SPEC §7.2.1's ghost: the curve's pixels as they are now, kept (and drawn dotted when the
-    // content asks) until drop_ghost or another view; the next keep_ghost replaces them.
-    void keep_ghost();
-    void drop_ghost() { m_ghost.reset(); }
+    // The ghost is drawn dotted when the content asks, until drop_ghost or a change without one.
+    void drop_ghost();
     bool has_ghost() const { return m_ghost.has_value(); }
 
     const EvaluatedPath& evaluated() const { return m_evaluated; }
@@ -47,7 +53,9 @@ public:
     GraphicsScreen draw(const PathScreenContent& content) const;
 
 private:
+    void remake(std::span<const ControlPoint> points, const PathChange& change);
     void draw_curve();
+    void draw_ghost(std::span<const ControlPoint> points);
 
     PathSettings m_settings;
     EvaluatedPath m_evaluated;
@@ -57,6 +65,7 @@ private:
     std::optional<ControlRegion> m_region;
     std::vector<PixelMark> m_point_marks;
     std::optional<Bitmap> m_ghost;
+    PointsBack m_ghost_back;
 };
 
 } // namespace apcs

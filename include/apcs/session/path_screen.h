@@ -60,6 +60,8 @@ struct PathScreenContent {
     bool ghost = false;
     // G: the inset graph of this acceleration span's law.
     std::optional<std::size_t> law_span;
+    // An exercise's goal point (GOAL NEAR, INBETWEEN), marked where the view shows it.
+    std::optional<Vec3> goal_point;
     std::string message;
     std::string key_help;
 };

@@ -5,6 +5,7 @@
 #include "apcs/geometry/vec3.h"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -38,6 +39,9 @@ struct ScriptGoal {
 // K X Y Z D; found …" and a reason. before_event and answer_end are left to the caller.
 [[nodiscard]] Expected<ScriptGoal> parse_goal_line(std::string_view words, const std::string& file_name,
                                                    int line_number);
+
+// The point a NEAR or INBETWEEN goal names, to be marked on screen; none for VALUE.
+std::optional<Vec3> goal_point(const ScriptGoal& goal);
 
 // "tension within +0.40 to +0.60", "the curve within 0.10 of (0.00, 1.00, 2.00)", "in-between 3
 // within 0.10 of (…)": the goal in words, for messages.

@@ -48,6 +48,8 @@ public:
     const PathEditor* path_editor() const;
     // The last write that failed, if any did (the step that tried it was asked again).
     const std::optional<Diagnostic>& write_problem() const { return m_model.written.problem(); }
+    // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
+    void mark_goal(std::optional<Vec3> point) { m_goal_point = point; }
 
 private:
     StepContext context();
@@ -71,6 +73,7 @@ private:
     Overlays m_overlays;
     // What the last key did that the message line tells once (a picture written), if anything.
     std::string m_notice;
+    std::optional<Vec3> m_goal_point;
 };
 
 } // namespace apcs

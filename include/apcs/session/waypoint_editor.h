@@ -61,6 +61,8 @@ private:
     void delete_point();
     void move_point(const command::MovePoint& move);
     void undo();
+    // Z: ×2, ×4, ×8 about the chosen point, then the view the editor opened with.
+    void zoom();
     // Esc: every change since the editor opened taken back, newest first.
     Outcome discard();
     void apply(const WaypointChange& change);
@@ -72,6 +74,8 @@ private:
     std::size_t m_chosen = 0;
     std::vector<WaypointChange> m_changes;
     std::string m_problem;
+    std::string m_notice; // what the last key did, when it says more than the status
+    int m_zoom_level = 0;
 };
 
 // One step of the editor: 1 % of the diagonal of the bounding box of what the view shows.
