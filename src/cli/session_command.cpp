@@ -230,12 +230,17 @@ class HeadlessGoals {
 public:
     HeadlessGoals(const KeyScript& script, std::string file_name) : m_script(script), m_file_name(std::move(file_name)) {}
 
-    void played(std::size_t keys, const Session& session)
+    // The goal's point is marked from its GOAL line until it is judged, as a student sees it.
+    void played(std::size_t keys, Session& session)
     {
-        for (; m_next < m_script.goals.size() && m_script.goals[m_next].answer_end <= keys; ++m_next)
+        for (; m_next < m_script.goals.size() && m_script.goals[m_next].answer_end <= keys; ++m_next) {
             judge(m_script.goals[m_next], session);
+            session.mark_goal(std::nullopt);
+        }
+        if (m_next < m_script.goals.size() && m_script.goals[m_next].before_event <= keys)
+            session.mark_goal(goal_point(m_script.goals[m_next]));
     }
-    void finish(const Session& session) { played(m_script.events.size(), session); }
+    void finish(Session& session) { played(m_script.events.size(), session); }
     const std::optional<Diagnostic>& failed() const { return m_failed; }
 
 private:
@@ -267,7 +272,7 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     };
     HeadlessGoals goals(script, file_name);
     recorded = run_headless_session(session, script, glyphs, out, reached,
-                                    [&goals](std::size_t keys, const Session& shown) { goals.played(keys, shown); });
+                                    [&goals, &session](std::size_t keys, const Session&) { goals.played(keys, session); });
     goals.finish(session);
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
