@@ -163,6 +163,25 @@ FramesOverlay scene_overlay(const Scene& scene, const SceneAnimation& animation)
     return overlay;
 }
 
+// The scene as the options play it, and the .dat files it reads (`inputs`), which no picture may
+// write over.
+Expected<Scene> read_played_scene(const PlayRequest& request, const CommonOptions& options,
+                                  std::vector<std::filesystem::path>& inputs)
+{
+    Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
+    if (!scene)
+        return scene;
+    // An explicit --slopes overrides the PATHS files' SLOPES lines, as in apcs fit (SPEC §2.1).
+    if (options.given.slopes)
+        for (SceneObject& object : scene->objects)
+            if (object.keys)
+                object.keys->first_slopes = object.keys->last_slopes = std::nullopt;
+    // The .dat files a scene reads are known only now; the command line checked the scene file.
+    if (Expected<void> done = check_pictures_spare_inputs(options, inputs); !done)
+        return done.error();
+    return scene;
+}
+
 ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& options,
                             const TerminalPlayerRunner& terminal, std::ostream& err)
 {
@@ -220,17 +239,9 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         return ExitStatus::bad_usage;
     }
     std::vector<std::filesystem::path> inputs;
-    Expected<Scene> scene = read_scene_file(request.scene, options.staff, &inputs);
+    Expected<Scene> scene = read_played_scene(request, options, inputs);
     if (!scene)
         return report_bad_input(scene.error(), err);
-    // An explicit --slopes overrides the PATHS files' SLOPES lines, as in apcs fit (SPEC §2.1).
-    if (options.given.slopes)
-        for (SceneObject& object : scene->objects)
-            if (object.keys)
-                object.keys->first_slopes = object.keys->last_slopes = std::nullopt;
-    // The .dat files a scene reads are known only now; the command line checked the scene file.
-    if (Expected<void> done = check_pictures_spare_inputs(options, inputs); !done)
-        return report_bad_input(done.error(), err);
     const std::string scene_name = request.scene.filename().string();
     if (request.tree) {
         out << format_scene_tree(*scene, scene_name);
