@@ -51,8 +51,12 @@ void PathPicture::draw_ghost(std::span<const ControlPoint> points)
         return;
     ControlPoints before(points.begin(), points.end());
     m_ghost_back(before);
+    // Only the curve is drawn: no in-betweens, so no arc lengths (seconds on 10^6 points).
+    PathSettings curve_only = m_settings;
+    curve_only.inbetween_count = 0;
+    curve_only.spacing = Spacing::nearest;
     CurveRaster ghost;
-    ghost.update(evaluate_path(before, m_settings).curve, *m_view, layout::inside_boundary);
+    ghost.update(evaluate_path(before, curve_only).curve, *m_view, layout::inside_boundary);
     m_ghost = ghost.pixels();
 }
 
