@@ -54,6 +54,15 @@ public:
     bool mid_step() const { return m_played < m_step_end; }
     ReplayPace::Kind pace() const { return m_pace.kind; }
     int pace_ms() const { return m_pace.milliseconds; }
+    // Played a step per Space, a Space typed while the animation plays is the replay's next step,
+    // held until the animation ends (not the animation's pause key, which would stop the lesson).
+    bool holds_space(const InteractiveProgram& program, const KeyEvent& key) const
+    {
+        return key.key == Key::space && m_pace.kind == ReplayPace::Kind::on_space && playing() && !m_stopped &&
+               program.animating();
+    }
+    void hold_step() { m_step_held = true; }
+    bool take_held_step() { return std::exchange(m_step_held, false); }
     KeyEvent next()
     {
         if (!mid_step()) {
@@ -124,6 +133,7 @@ private:
     bool m_stopped = false;
     std::size_t m_goal = 0;
     std::string m_goal_said;
+    bool m_step_held = false;
 };
 
 // The next input of a replay that waits to play a key: the script's key at its pace (`scripted`
@@ -131,7 +141,7 @@ private:
 // (Esc ends the replay); nullopt means there is nothing to act on this time round.
 std::optional<TerminalInput> replay_input(Terminal& terminal, Replay& replay, KeyEvent& key)
 {
-    if (replay.pace() == ReplayPace::Kind::at_once || replay.mid_step()) {
+    if (replay.pace() == ReplayPace::Kind::at_once || replay.mid_step() || replay.take_held_step()) {
         key = replay.next();
         return TerminalInput::key;
     }
@@ -197,6 +207,10 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
             input = replay_input(*terminal, replay, key);
         else
             input = terminal->read_key(session.busy() ? 0 : session.animating() ? session.delay_ms() : -1, key);
+        if (input == TerminalInput::key && !at_goal && replay.holds_space(session, key)) {
+            replay.hold_step();
+            continue;
+        }
         if (!input)
             continue;
         switch (*input) {

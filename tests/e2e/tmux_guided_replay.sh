@@ -12,7 +12,7 @@ command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
 source "$(dirname "$0")/tmux_lib.sh"
 tmux_test_folder guided
-cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
+cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$data"/way4.dat "$data"/lesson-surface.keys "$work"/
 
 start() { start_80x24 "$@"; }
 keys() { keys_to "$@"; }
@@ -71,4 +71,19 @@ wait_for stepped "Please keyin the anix.dat filename"
 screen stepped | grep -q "Step 2: the viewer" && fail "the caption stayed after the keyboard took over" stepped
 keys stepped C-c
 wait_for stepped "EXITED=130"
-echo "passed: paced replay with captions on the key-hint row, the played key shown, a TEXT line per Space, Esc hands over"
+# A Space while the animation plays is the lesson's next step, played when the animation ends (it
+# was the animation's pause key, and the lesson stood still paused).
+start surface "$apcs --keys lesson-surface.keys --pace step --glyphs ascii"
+wait_for surface "Surface fitting (Ch. 3.2)"
+for _ in $(seq 1 60); do
+  screen surface | grep -q "A key plays the frames" && break
+  keys surface Space
+  sleep 0.2
+done
+wait_for surface "A key plays the frames"
+keys surface Space
+keys surface Space
+wait_for surface "Dotted: 12 in-betweens"
+keys surface C-c
+wait_for surface "EXITED=130"
+echo "passed: paced replay with captions on the key-hint row, the played key shown, a TEXT line per Space, Esc hands over, a Space during the animation held for the next step"
