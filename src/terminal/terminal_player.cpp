@@ -10,7 +10,7 @@ Expected<ExitStatus> run_terminal_player(AnimationPlayer& player, int delay_ms, 
 {
     ScenePlayer program(player, delay_ms, save_picture);
     std::vector<KeyEvent> typed;
-    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, ColourChoice::never, typed);
+    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, ColourChoice::never, PixelChoice::off, typed);
 }
 
 } // namespace apcs

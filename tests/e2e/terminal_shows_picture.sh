@@ -12,18 +12,9 @@ apcs=$1
 data=$2
 terminal_name=$3
 here=$(cd "$(dirname "$0")" && pwd)
-for tool in Xvfb "$terminal_name" xwd convert python3; do
-  command -v "$tool" > /dev/null || { echo "skipped: no $tool (xvfb, $terminal_name, x11-apps, imagemagick)"; exit 77; }
-done
-work=$(mktemp -d)
-server=""
-terminal=""
-cleanup() {
-  [ -n "$terminal" ] && kill "$terminal" 2> /dev/null
-  [ -n "$server" ] && kill "$server" 2> /dev/null
-  rm -rf "$work"
-}
-trap cleanup EXIT
+source "$here/xvfb_lib.sh"
+xvfb_needs "$terminal_name"
+xvfb_test_folder
 fail() { echo "FAILED: $*"; exit 1; }
 
 case $terminal_name in
@@ -33,11 +24,7 @@ case $terminal_name in
 esac
 "$apcs" path "$data/n-to-l/way1.dat" --tension 0.5 "$option" "$file" --png "$work/way1.png" || fail "apcs path $option"
 convert "$work/way1.png" -colorspace gray -depth 8 "gray:$work/picture.grey" || fail "convert way1.png"
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3> "$work/display" 2> "$work/xvfb.log" &
-server=$!
-for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
-[ -s "$work/display" ] || { echo "skipped: Xvfb did not start: $(tail -1 "$work/xvfb.log")"; exit 77; }
-export DISPLAY=":$(cat "$work/display")"
+xvfb_start
 case $terminal_name in
   xterm) xterm -ti vt340 -fn 9x15 -geometry 100x45+0+0 -e sh -c "cat '$file'; sleep 60" & ;;
   kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o background=#ffffff -o foreground=#000000 -o font_size=11 \

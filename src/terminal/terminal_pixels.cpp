@@ -1,0 +1,86 @@
+#include "apcs/terminal/terminal_pixels.h"
+
+#include "apcs/geometry/hercules.h"
+#include "apcs/raster/terminal_picture.h"
+#include "apcs/session/screen_layout.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace apcs {
+
+TerminalPixels::TerminalPixels(Terminal& terminal, PixelDecision decision)
+    : m_terminal(terminal), m_protocol(decision.protocol), m_notice(std::move(decision.why_not))
+{
+}
+
+std::optional<PictureFrame> TerminalPixels::frame_for(TerminalSize size) const
+{
+    const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
+    if (!m_protocol || !area)
+        return std::nullopt;
+    const std::optional<CellPixels> cell = m_terminal.cell_pixels();
+    if (!cell)
+        return std::nullopt;
+    // The cell rows of the drawing area and its boundary (text rows 0-17 at 80x24), and the raster
+    // rows they show.
+    const int rows = cell_rows_above(layout::drawing_area.bottom + 1, hercules::screen_height, *area);
+    const int raster_rows = rows * hercules::screen_height / area->rows;
+    const std::optional<PicturePlacement> placement =
+        place_picture(*area, rows, hercules::screen_width, raster_rows, *cell);
+    if (!placement)
+        return std::nullopt;
+    return PictureFrame{*placement, rows};
+}
+
+void TerminalPixels::before_show(const std::optional<PictureFrame>& frame)
+{
+    if (frame || !m_sent_placement)
+        return;
+    if (m_protocol)
+        m_terminal.remove_pictures(*m_protocol);
+    m_terminal.redraw();
+    m_sent_placement.reset();
+}
+
+void TerminalPixels::show(const GraphicsScreen& screen, const PictureFrame& frame, bool repainted)
+{
+    if (!m_protocol)
+        return;
+    const PicturePlacement& placement = frame.placement;
+    const Bitmap picture = scale_to_picture(render_raster(screen), placement);
+    const bool whole = repainted || m_sent_placement != placement;
+    const std::optional<CellRowBand> band =
+        whole ? CellRowBand{0, placement.rows} : changed_band(m_sent, picture, placement.cell.height);
+    if (!band)
+        return;
+    const std::optional<std::string> sequences = encode_picture_band(picture, *band, placement.cell, *m_protocol);
+    if (!sequences) {
+        // Characters from now on: the next screen repaints every cell over what was sent.
+        m_notice = std::string(encoding_failed_line);
+        m_terminal.remove_pictures(*m_protocol);
+        m_protocol.reset();
+        m_sent_placement.reset();
+        m_terminal.redraw();
+        return;
+    }
+    // A whole kitty picture replaces the pictures before it, which kitty would keep beneath.
+    if (whole && m_sent_placement)
+        m_terminal.remove_pictures(*m_protocol);
+    m_terminal.send_picture(placement.column, band->first, *sequences);
+    m_sent = picture;
+    m_sent_placement = placement;
+}
+
+CellGrid without_rows(CellGrid grid, int rows)
+{
+    for (int row = 0; row < std::min(rows, grid.rows()); ++row)
+        for (int column = 0; column < grid.columns(); ++column) {
+            grid.set(column, row, U' ');
+            grid.set_style(column, row, CellStyle::plain);
+            grid.set_role(column, row, ColourRole::monitor);
+        }
+    return grid;
+}
+
+} // namespace apcs

@@ -1,0 +1,29 @@
+# Helpers for the tests that run a real terminal on a virtual X server; source it.
+
+# Skips the test (exit 77) unless every tool named is installed; $1 is the terminal's name, for the
+# message.
+xvfb_needs() {
+  local terminal_name=$1 tool
+  for tool in Xvfb "$@" xwd convert python3; do
+    command -v "$tool" > /dev/null || { echo "skipped: no $tool (xvfb, $terminal_name, x11-apps, imagemagick)"; exit 77; }
+  done
+}
+
+# A fresh work folder ($work), removed at the end with the X server ($server) and the terminal
+# ($terminal: set it to the terminal's pid), both ended by their pids.
+xvfb_test_folder() {
+  work=$(mktemp -d)
+  server=""
+  terminal=""
+  trap '[ -n "$terminal" ] && kill "$terminal" 2> /dev/null; [ -n "$server" ] && kill "$server" 2> /dev/null; rm -rf "$work"' EXIT
+}
+
+# Starts Xvfb at 1024x768 on a display of its choosing and exports DISPLAY; skips the test (exit 77)
+# where it cannot start.
+xvfb_start() {
+  Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3> "$work/display" 2> "$work/xvfb.log" &
+  server=$!
+  for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
+  [ -s "$work/display" ] || { echo "skipped: Xvfb did not start: $(tail -1 "$work/xvfb.log")"; exit 77; }
+  export DISPLAY=":$(cat "$work/display")"
+}
