@@ -9,6 +9,22 @@
 
 namespace apcs {
 
+namespace {
+
+// The raster as pictures show it (render_raster), dark below the drawing area's boundary: where the
+// terminal's cell rows do not end with the boundary (100x30: cell row 22 holds raster rows 255-266),
+// the picture's last row would show the top of the message row's text, which curses shows below.
+Bitmap drawing_area_raster(const GraphicsScreen& screen)
+{
+    Bitmap raster = render_raster(screen);
+    for (int y = layout::drawing_area.bottom + 1; y < raster.height(); ++y)
+        for (int x = 0; x < raster.width(); ++x)
+            raster.set(x, y, false);
+    return raster;
+}
+
+} // namespace
+
 TerminalPixels::TerminalPixels(Terminal& terminal, PixelDecision decision)
     : m_terminal(terminal), m_protocol(decision.protocol), m_notice(std::move(decision.why_not))
 {
@@ -48,7 +64,7 @@ void TerminalPixels::show(const GraphicsScreen& screen, const PictureFrame& fram
     if (!m_protocol)
         return;
     const PicturePlacement& placement = frame.placement;
-    const Bitmap picture = scale_to_picture(render_raster(screen), placement);
+    const Bitmap picture = scale_to_picture(drawing_area_raster(screen), placement);
     const bool whole = repainted || m_sent_placement != placement;
     const std::optional<CellRowBand> band =
         whole ? CellRowBand{0, placement.rows} : changed_band(m_sent, picture, placement.cell.height);

@@ -8,11 +8,16 @@ Usage: pixel_pty.py APCS WORKDIR MODE [STAFF_KEYS]
                TIOCGWINSZ, ignores the kitty query (as xterm -ti vt340 does); --pixels auto.
   MODE silent  answers nothing (a terminal that does not know the questions); --pixels sixel.
   MODE nopixel answers device attributes without 4 and no kitty; --pixels auto.
+  MODE kitty   answers the kitty query OK and device attributes without 4, gives the cell size
+               (9x15) in TIOCGWINSZ (as kitty does); --pixels auto.
 Runs the session at 80x24 with --keys WORKDIR/path.keys (which must end on the path screen's staff),
-types STAFF_KEYS (default 6) '6' keys, one when the screen has been quiet for 0.4 s, then ends it
-with SIGTERM. Prints, per line, `first-screen BYTES PICTURE_BYTES MS` and then
-`key N BYTES PICTURE_BYTES` (PICTURE_BYTES: inside sixel DCS strings), and `notice TEXT` when the
-screen says "pixels off: ...". Exit 0, or 1 with a reason."""
+types STAFF_KEYS (default 6) '6' keys, one when the screen has been quiet for 0.4 s, then Ctrl-L,
+makes the window 100x30, then ends it with SIGTERM. Prints, per line, `first-screen BYTES PICTURE_BYTES MS`, `pictures BYTES…` (each picture sent
+with the first screens, whole or band), and then
+`key N BYTES PICTURE_BYTES` (PICTURE_BYTES: inside sixel DCS or kitty APC strings), after them
+`redraw BYTES PICTURE_BYTES` for a Ctrl-L (the whole screen and picture again), `resize BYTES
+PICTURE_BYTES WIDTHxHEIGHT` for the window made 100x30 (the sixel picture's size), and `notice TEXT`
+when the screen says "pixels off: ...". Exit 0, or 1 with a reason."""
 import fcntl
 import os
 import re
@@ -29,9 +34,9 @@ staff_keys = int(sys.argv[4]) if len(sys.argv) > 4 else 6
 columns, rows, cell_width, cell_height = 80, 24, 9, 15
 
 master, slave = os.openpty()
-pixels = (columns * cell_width, rows * cell_height) if mode == "sixel" else (0, 0)
+pixels = (columns * cell_width, rows * cell_height) if mode in ("sixel", "kitty") else (0, 0)
 fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, *pixels))
-choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto"}[mode]
+choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto", "kitty": "auto"}[mode]
 environment = dict(os.environ, TERM="xterm", LANG="C.UTF-8", LC_ALL="C.UTF-8")
 for name in ("TMUX", "STY"):
     environment.pop(name, None)
@@ -47,7 +52,8 @@ child = subprocess.Popen([apcs, "--glyphs", "ascii", "--pixels", choice, "--keys
                          stdin=slave, stdout=slave, stderr=slave, env=environment, preexec_fn=controlling_terminal)
 os.close(slave)
 
-attributes = {"sixel": b"\x1b[?63;1;2;4;6;9;15;22c", "silent": None, "nopixel": b"\x1b[?62;1;6;22c"}[mode]
+attributes = {"sixel": b"\x1b[?63;1;2;4;6;9;15;22c", "silent": None, "nopixel": b"\x1b[?62;1;6;22c",
+              "kitty": b"\x1b[?62;c"}[mode]
 
 
 def read_until_quiet(quiet=0.4, limit=20.0):
@@ -65,6 +71,8 @@ def read_until_quiet(quiet=0.4, limit=20.0):
         if not chunk:
             return got
         got += chunk
+        if mode == "kitty" and b"\x1b_Gi=31," in chunk:
+            os.write(master, b"\x1b_Gi=31;OK\x1b\\")
         if attributes is not None:
             for _ in range(chunk.count(b"\x1b[c")):
                 os.write(master, attributes)
@@ -72,7 +80,7 @@ def read_until_quiet(quiet=0.4, limit=20.0):
 
 
 def picture_bytes(output):
-    return sum(len(m.group(0)) for m in re.finditer(rb"\x1bP[^\x1b]*\x1b\\", output, re.S))
+    return sum(len(m.group(0)) for m in re.finditer(rb"\x1b[P_][^\x1b]*\x1b\\", output, re.S))
 
 
 def fail(reason):
@@ -84,6 +92,8 @@ def fail(reason):
 first = read_until_quiet()
 first_ms = round((time.monotonic() - started) * 1000)
 print(f"first-screen {len(first)} {picture_bytes(first)} {first_ms}")
+# Each picture of the first screens: the whole one, then the bands of the replay's last keys.
+print("pictures " + " ".join(str(len(m.group(0))) for m in re.finditer(rb"\x1b\[[0-9;]*H\x1b[P_].*?(?=\x1b8)", first, re.S)))
 notice = re.search(rb"pixels off: [ -~]*", first)
 if notice:
     print("notice " + notice.group(0).decode().rstrip())
@@ -93,6 +103,16 @@ for key in range(1, staff_keys + 1):
     os.write(master, b"6")
     output = read_until_quiet()
     print(f"key {key} {len(output)} {picture_bytes(output)}")
+# Ctrl-L repaints the whole screen: the whole picture of the last key's screen.
+os.write(master, b"\x0c")
+output = read_until_quiet()
+print(f"redraw {len(output)} {picture_bytes(output)}")
+# A larger window (100x30 cells, the pixels to match): the whole picture again, at its new size.
+fcntl.ioctl(master, termios.TIOCSWINSZ, struct.pack("HHHH", 30, 100, *(100 * cell_width, 30 * cell_height) if any(pixels) else (0, 0)))
+child.send_signal(signal.SIGWINCH)
+output = read_until_quiet()
+size = re.search(rb"\x1bP0;1;0q\"1;1;([0-9]+);([0-9]+)", output)
+print(f"resize {len(output)} {picture_bytes(output)} {size.group(1).decode() + 'x' + size.group(2).decode() if size else '-'}")
 child.send_signal(signal.SIGTERM)
 try:
     child.wait(timeout=5)

@@ -4,7 +4,8 @@
 #            "no answer to device attributes" on the screen, and the keys still act;
 #   nopixel: device attributes without 4 and no kitty reply: characters, with why;
 #   sixel:   attributes with 4 and the cell size in TIOCGWINSZ: the first path screen carries the
-#            whole picture as sixel, each staff key only a band of it, smaller than the whole.
+#            whole picture as sixel, each staff key only a band of it, smaller than the whole;
+#            Ctrl-L sends the whole picture again, and so does a resize, at the new size.
 # Usage: pixels_pty.sh APCS DATA_FOLDER
 set -uo pipefail
 apcs=$1
@@ -43,5 +44,11 @@ while read -r _ key _ band; do
   [ "$band" -gt 0 ] && [ "$band" -lt "$whole" ] ||
     fail "sixel: staff key $key sent $band picture bytes (the whole picture is $whole)"
 done < <(grep '^key' "$work/sixel.out")
-echo "passed: silent and sixel-less terminals fall back with why; sixel: whole picture $whole bytes," \
-  "staff keys $(grep '^key' "$work/sixel.out" | awk '{print $4}' | paste -sd' ') bytes of picture"
+read -r _ _ redrawn _ < <(grep '^redraw' "$work/sixel.out")
+[ "$redrawn" -gt 1000 ] || fail "sixel: Ctrl-L did not send the whole picture again: $(cat "$work/sixel.out")"
+# 100x30 cells of 9x15: 23 cell rows of 15 (345, sent as 348) and 622 pixels across in 70 cells.
+read -r _ _ resized size < <(grep '^resize' "$work/sixel.out")
+[ "$resized" -gt 1000 ] && [ "$size" = 630x348 ] ||
+  fail "sixel: after a resize to 100x30 the picture is $size ($resized bytes), not 630x348"
+echo "passed: silent and sixel-less terminals fall back with why; sixel: whole picture $redrawn bytes (Ctrl-L)," \
+  "staff keys $(grep '^key' "$work/sixel.out" | awk '{print $4}' | paste -sd' ') bytes of picture, 100x30 $resized"
