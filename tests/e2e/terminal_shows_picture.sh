@@ -32,11 +32,6 @@ case $terminal_name in
 esac
 terminal=$!
 # The picture is where the terminal's text begins (its border, a few pixels in); polled until there.
-for _ in $(seq 40); do
-  sleep 0.5
-  xwd -root -silent > "$work/screen.xwd" 2> /dev/null || continue
-  convert "xwd:$work/screen.xwd" -colorspace gray -depth 8 "gray:$work/screen.grey" 2> /dev/null || continue
-  python3 "$here/find_picture.py" "$work/screen.grey" 1024 "$work/picture.grey" 720 10 > "$work/found" && break
-done
+xvfb_find_picture "$work/picture.grey" 720 40
 grep -q "^at " "$work/found" || fail "$terminal_name does not show the picture pixel for pixel: $(cat "$work/found")"
 echo "passed: $terminal_name shows apcs path $option's file $(cat "$work/found")"

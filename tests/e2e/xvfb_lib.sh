@@ -27,3 +27,17 @@ xvfb_start() {
   [ -s "$work/display" ] || { echo "skipped: Xvfb did not start: $(tail -1 "$work/xvfb.log")"; exit 77; }
   export DISPLAY=":$(cat "$work/display")"
 }
+
+# Polls the screen, TRIES times every 0.5 s, for PICTURE (8-bit grey, WIDTH wide) pixel for pixel
+# within 10 pixels of its top-left corner (find_picture.py); what it found is in $work/found, the
+# last screenshot in $work/screen.xwd.
+xvfb_find_picture() {
+  local picture=$1 width=$2 tries=$3
+  : > "$work/found"
+  for _ in $(seq "$tries"); do
+    sleep 0.5
+    xwd -root -silent > "$work/screen.xwd" 2> /dev/null || continue
+    convert "xwd:$work/screen.xwd" -colorspace gray -depth 8 "gray:$work/screen.grey" 2> /dev/null || continue
+    python3 "$here/find_picture.py" "$work/screen.grey" 1024 "$picture" "$width" 10 > "$work/found" && break
+  done
+}
