@@ -51,7 +51,9 @@ std::optional<PictureFrame> TerminalPixels::frame_for(TerminalSize size) const
 
 void TerminalPixels::before_show(const std::optional<PictureFrame>& frame)
 {
-    if (frame || !m_sent_placement)
+    // A picture stays where the next one covers it; one at another place or size (a resize) would
+    // leave its pixels beside the new one, where curses believes blank cells are.
+    if (!m_sent_placement || (frame && frame->placement == *m_sent_placement))
         return;
     if (m_protocol)
         m_terminal.remove_pictures(*m_protocol);

@@ -78,7 +78,7 @@ TEST_CASE("every command refuses each option of another command with exit 2 and 
     }
 }
 
-TEST_CASE("--pixels takes auto, sixel, kitty and off; another word is exit 2 with the four named", "[cli][pixels]")
+TEST_CASE("the session's --pixels takes auto, sixel, kitty and off, another word is exit 2 with the four named", "[cli][pixels]")
 {
     for (const char* word : {"bogus", "sixels", "", "on"}) {
         CAPTURE(word);

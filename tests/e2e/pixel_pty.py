@@ -8,6 +8,8 @@ Usage: pixel_pty.py APCS WORKDIR MODE [STAFF_KEYS]
                TIOCGWINSZ, ignores the kitty query (as xterm -ti vt340 does); --pixels auto.
   MODE silent  answers nothing (a terminal that does not know the questions); --pixels sixel.
   MODE nopixel answers device attributes without 4 and no kitty; --pixels auto.
+  MODE late    answers device attributes with 4, but 0.3 s late (after the 100 ms limit): the
+               answer reaches the session as input, where it must be dropped; --pixels sixel.
   MODE kitty   answers the kitty query OK and device attributes without 4, gives the cell size
                (9x15) in TIOCGWINSZ (as kitty does); --pixels auto.
 Runs the session at 80x24 with --keys WORKDIR/path.keys (which must end on the path screen's staff),
@@ -36,7 +38,7 @@ columns, rows, cell_width, cell_height = 80, 24, 9, 15
 master, slave = os.openpty()
 pixels = (columns * cell_width, rows * cell_height) if mode in ("sixel", "kitty") else (0, 0)
 fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, *pixels))
-choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto", "kitty": "auto"}[mode]
+choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto", "kitty": "auto", "late": "sixel"}[mode]
 environment = dict(os.environ, TERM="xterm", LANG="C.UTF-8", LC_ALL="C.UTF-8")
 for name in ("TMUX", "STY"):
     environment.pop(name, None)
@@ -53,7 +55,7 @@ child = subprocess.Popen([apcs, "--glyphs", "ascii", "--pixels", choice, "--keys
 os.close(slave)
 
 attributes = {"sixel": b"\x1b[?63;1;2;4;6;9;15;22c", "silent": None, "nopixel": b"\x1b[?62;1;6;22c",
-              "kitty": b"\x1b[?62;c"}[mode]
+              "kitty": b"\x1b[?62;c", "late": b"\x1b[?63;1;2;4;6;9;15;22c"}[mode]
 
 
 def read_until_quiet(quiet=0.4, limit=20.0):
@@ -75,6 +77,8 @@ def read_until_quiet(quiet=0.4, limit=20.0):
             os.write(master, b"\x1b_Gi=31;OK\x1b\\")
         if attributes is not None:
             for _ in range(chunk.count(b"\x1b[c")):
+                if mode == "late":
+                    time.sleep(0.3)
                 os.write(master, attributes)
     return got
 
@@ -107,9 +111,11 @@ for key in range(1, staff_keys + 1):
 os.write(master, b"\x0c")
 output = read_until_quiet()
 print(f"redraw {len(output)} {picture_bytes(output)}")
+# What the repainted screen says of the staff: each line's value, in the order drawn.
+print("staff " + " ".join(v.decode() for v in re.findall(rb"[+-][01]\.[0-9][0-9]", output)))
 # A larger window (100x30 cells, the pixels to match): the whole picture again, at its new size.
 fcntl.ioctl(master, termios.TIOCSWINSZ, struct.pack("HHHH", 30, 100, *(100 * cell_width, 30 * cell_height) if any(pixels) else (0, 0)))
-child.send_signal(signal.SIGWINCH)
+# (Setting the size sends the session SIGWINCH, as a terminal's resize does.)
 output = read_until_quiet()
 size = re.search(rb"\x1bP0;1;0q\"1;1;([0-9]+);([0-9]+)", output)
 print(f"resize {len(output)} {picture_bytes(output)} {size.group(1).decode() + 'x' + size.group(2).decode() if size else '-'}")

@@ -2,6 +2,7 @@
 # --pixels against terminals played by pixel_pty.py on a pseudo-terminal (no X needed):
 #   silent:  a terminal that answers nothing: characters within the 100 ms limit, never a hang,
 #            "no answer to device attributes" on the screen, and the keys still act;
+#   late:    device attributes 0.3 s late: characters, and the late answer is not typed as keys;
 #   nopixel: device attributes without 4 and no kitty reply: characters, with why;
 #   sixel:   attributes with 4 and the cell size in TIOCGWINSZ: the first path screen carries the
 #            whole picture as sixel, each staff key only a band of it, smaller than the whole;
@@ -31,6 +32,14 @@ grep -qF "notice pixels off: no answer to device attributes within 100 ms" "$wor
 read -r _ _ picture ms < <(grep '^first-screen' "$work/silent.out")
 [ "$picture" -eq 0 ] || fail "silent: a picture was sent"
 [ "$ms" -lt 1500 ] || fail "silent: the first screen took $ms ms"
+
+# An answer that comes after the limit reaches the session as input: dropped whole, never typed
+# (its Esc would leave TENSION, its digits move a staff line): one 6 sets TENSION alone.
+run late 1
+grep -qF "notice pixels off: no answer to device attributes within 100 ms" "$work/late.out" ||
+  fail "late: no fallback line: $(cat "$work/late.out")"
+grep -qx "staff +0.05 +0.00 +0.00 +0.00" "$work/late.out" ||
+  fail "late: the late answer was typed as keys: $(grep '^staff' "$work/late.out")"
 
 run nopixel 1
 grep -qF "notice pixels off: no sixel or kitty graphics in this terminal (xterm: -ti vt340)" "$work/nopixel.out" ||

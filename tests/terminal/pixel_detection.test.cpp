@@ -53,7 +53,7 @@ TEST_CASE("the kitty reply to query 31: OK accepts, an error refuses, another id
     CHECK(other.other.empty());
 }
 
-TEST_CASE("the cell size report CSI 6 ; height ; width t gives the cell in pixels", "[terminal][pixels]")
+TEST_CASE("the cell size report CSI 6 height width t gives the cell in pixels", "[terminal][pixels]")
 {
     const TerminalReplies replies = read_terminal_replies("\x1b[6;15;9t");
     REQUIRE(replies.cell);

@@ -28,8 +28,9 @@ public:
     // The picture's place on a terminal of `size` for a graphics screen; nullopt where the screen
     // stays characters (pixels off, the terminal below 80x24, no cell size in pixels).
     std::optional<PictureFrame> frame_for(TerminalSize size) const;
-    // Before curses shows a screen: one without a picture (`frame` nullopt) where a picture is on
-    // the terminal takes it off first, and has the terminal repaint every cell.
+    // Before curses shows a screen: one without a picture (`frame` nullopt), or with a picture at
+    // another place or size, where a picture is on the terminal takes it off first, and has the
+    // terminal clear and repaint every cell.
     void before_show(const std::optional<PictureFrame>& frame);
     // After curses showed `screen` with `frame`'s rows blank (`repainted`: every cell was sent,
     // Terminal::show): sends the picture, whole or its changed band.
