@@ -320,6 +320,9 @@ PixelDecision Terminal::detect_pixels(PixelChoice choice)
     // Keys typed during the questions are read next, in the order typed (ungetch pushes in front).
     for (auto key = typed.rbegin(); key != typed.rend(); ++key)
         ungetch(static_cast<unsigned char>(*key));
+    // A terminal that knows no APC string (the Linux console) may have printed the kitty query's
+    // text: the first screen clears the terminal.
+    redraw();
     return decision;
 }
 

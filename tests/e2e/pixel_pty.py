@@ -8,6 +8,8 @@ Usage: pixel_pty.py APCS WORKDIR MODE [STAFF_KEYS]
                TIOCGWINSZ, ignores the kitty query (as xterm -ti vt340 does); --pixels auto.
   MODE silent  answers nothing (a terminal that does not know the questions); --pixels sixel.
   MODE nopixel answers device attributes without 4 and no kitty; --pixels auto.
+  MODE csi16   as sixel, but TIOCGWINSZ has no pixels: answers CSI 16 t with 9x15 cells.
+  MODE nocell  as sixel, but TIOCGWINSZ has no pixels and CSI 16 t goes unanswered.
   MODE late    answers device attributes with 4, but 0.3 s late (after the 100 ms limit): the
                answer reaches the session as input, where it must be dropped; --pixels sixel.
   MODE kitty   answers the kitty query OK and device attributes without 4, gives the cell size
@@ -38,7 +40,8 @@ columns, rows, cell_width, cell_height = 80, 24, 9, 15
 master, slave = os.openpty()
 pixels = (columns * cell_width, rows * cell_height) if mode in ("sixel", "kitty") else (0, 0)
 fcntl.ioctl(slave, termios.TIOCSWINSZ, struct.pack("HHHH", rows, columns, *pixels))
-choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto", "kitty": "auto", "late": "sixel"}[mode]
+choice = {"sixel": "auto", "silent": "sixel", "nopixel": "auto", "kitty": "auto", "late": "sixel", "csi16": "sixel",
+          "nocell": "sixel"}[mode]
 environment = dict(os.environ, TERM="xterm", LANG="C.UTF-8", LC_ALL="C.UTF-8")
 for name in ("TMUX", "STY"):
     environment.pop(name, None)
@@ -55,7 +58,8 @@ child = subprocess.Popen([apcs, "--glyphs", "ascii", "--pixels", choice, "--keys
 os.close(slave)
 
 attributes = {"sixel": b"\x1b[?63;1;2;4;6;9;15;22c", "silent": None, "nopixel": b"\x1b[?62;1;6;22c",
-              "kitty": b"\x1b[?62;c", "late": b"\x1b[?63;1;2;4;6;9;15;22c"}[mode]
+              "kitty": b"\x1b[?62;c", "late": b"\x1b[?63;1;2;4;6;9;15;22c", "csi16": b"\x1b[?63;1;2;4;6;9;15;22c",
+              "nocell": b"\x1b[?63;1;2;4;6;9;15;22c"}[mode]
 
 
 def read_until_quiet(quiet=0.4, limit=20.0):
@@ -73,6 +77,8 @@ def read_until_quiet(quiet=0.4, limit=20.0):
         if not chunk:
             return got
         got += chunk
+        if mode == "csi16" and b"\x1b[16t" in chunk:
+            os.write(master, b"\x1b[6;%d;%dt" % (cell_height, cell_width))
         if mode == "kitty" and b"\x1b_Gi=31," in chunk:
             os.write(master, b"\x1b_Gi=31;OK\x1b\\")
         if attributes is not None:

@@ -3,6 +3,7 @@
 #   silent:  a terminal that answers nothing: characters within the 100 ms limit, never a hang,
 #            "no answer to device attributes" on the screen, and the keys still act;
 #   late:    device attributes 0.3 s late: characters, and the late answer is not typed as keys;
+#   csi16:   sixel, no pixels in TIOCGWINSZ: the cell size from CSI 16 t; unanswered: characters;
 #   nopixel: device attributes without 4 and no kitty reply: characters, with why;
 #   sixel:   attributes with 4 and the cell size in TIOCGWINSZ: the first path screen carries the
 #            whole picture as sixel, each staff key only a band of it, smaller than the whole;
@@ -41,6 +42,14 @@ grep -qF "notice pixels off: no answer to device attributes within 100 ms" "$wor
 grep -qx "staff +0.05 +0.00 +0.00 +0.00" "$work/late.out" ||
   fail "late: the late answer was typed as keys: $(grep '^staff' "$work/late.out")"
 
+# No pixels in TIOCGWINSZ: the cell size from CSI 16 t (a whole 504x270 picture), else characters.
+run csi16 1
+grep -q '^notice' "$work/csi16.out" && fail "csi16: a fallback line: $(cat "$work/csi16.out")"
+grep -q '^pictures .*[0-9]' "$work/csi16.out" || fail "csi16: no picture: $(cat "$work/csi16.out")"
+run nocell 1
+grep -qF "notice pixels off: the terminal gave no cell size in pixels (TIOCGWINSZ, CSI 16 t)" "$work/nocell.out" ||
+  fail "nocell: no fallback line: $(cat "$work/nocell.out")"
+
 run nopixel 1
 grep -qF "notice pixels off: no sixel or kitty graphics in this terminal (xterm: -ti vt340)" "$work/nopixel.out" ||
   fail "nopixel: no fallback line: $(cat "$work/nopixel.out")"
@@ -59,5 +68,5 @@ read -r _ _ redrawn _ < <(grep '^redraw' "$work/sixel.out")
 read -r _ _ resized size < <(grep '^resize' "$work/sixel.out")
 [ "$resized" -gt 1000 ] && [ "$size" = 630x348 ] ||
   fail "sixel: after a resize to 100x30 the picture is $size ($resized bytes), not 630x348"
-echo "passed: silent and sixel-less terminals fall back with why; sixel: whole picture $redrawn bytes (Ctrl-L)," \
+echo "passed: silent, late, cell-size-less and sixel-less terminals fall back with why, CSI 16 t gives the cell; sixel: whole picture $redrawn bytes (Ctrl-L)," \
   "staff keys $(grep '^key' "$work/sixel.out" | awk '{print $4}' | paste -sd' ') bytes of picture, 100x30 $resized"

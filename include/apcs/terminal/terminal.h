@@ -56,7 +56,8 @@ public:
     // attributes, then (auto, kitty) the kitty graphics query, then where TIOCGWINSZ gives no pixel
     // size the cell size, each answered within pixel_reply_limit_ms or taken as unanswered: never a
     // hang. Keys typed meanwhile are kept for read_key; a reply that comes late is dropped there as
-    // an escape sequence nobody knows (escape_tail). Call once, before the first show().
+    // an escape sequence nobody knows (escape_tail); the next show() clears the terminal, in case
+    // it printed a question it did not know. Call once, before the first show().
     PixelDecision detect_pixels(PixelChoice choice);
     // The size of a cell in screen pixels: TIOCGWINSZ's (asked anew, the font may have changed),
     // else what the terminal answered to detect_pixels' cell size query; nullopt when neither.
