@@ -33,7 +33,7 @@ import sys
 import termios
 import time
 
-apcs, workdir, mode = sys.argv[1], sys.argv[2], sys.argv[3]
+apcs, workdir, mode = os.path.abspath(sys.argv[1]), sys.argv[2], sys.argv[3]
 staff_keys = int(sys.argv[4]) if len(sys.argv) > 4 else 6
 columns, rows, cell_width, cell_height = 80, 24, 9, 15
 
