@@ -16,9 +16,10 @@ notice="pixels off: tmux passes no sixel or kitty pictures; run apcs outside it"
 
 for choice in sixel auto kitty; do
   start_80x24 "$choice" "LANG=C.UTF-8 LC_ALL=C.UTF-8 '$apcs' --glyphs ascii --pixels $choice --keys path.keys"
-  wait_for "$choice" "$notice"
-  # Characters: the path screen's staff and its drawing area in ASCII.
-  screen "$choice" | grep -q "TENSION" || fail_showing "--pixels $choice: no staff" "$choice"
+  # The line shows from the first screen on; the replay ends on the path screen's staff, in
+  # characters (the drawing area in ASCII), the line still there.
+  wait_for "$choice" "ACCELERATION"
+  screen "$choice" | grep -qF "$notice" || fail_showing "--pixels $choice: no line saying why" "$choice"
   screen "$choice" | head -18 | grep -q "x" || fail_showing "--pixels $choice: no control point in characters" "$choice"
   # The line stays until a key is typed, then the key-hint row is the session's again.
   keys_to "$choice" 6
