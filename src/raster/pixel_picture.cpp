@@ -35,13 +35,21 @@ int cell_rows_above(int raster_rows, int raster_height, CellArea area)
 }
 
 std::optional<PicturePlacement> place_picture(CellArea area, int cell_rows, int raster_width, int raster_rows,
-                                              CellPixels cell)
+                                              CellPixels cell, std::optional<PictureLimit> limit)
 {
     if (area.columns <= 0 || cell_rows <= 0 || raster_width <= 0 || raster_rows <= 0 || cell.width <= 0 ||
         cell.height <= 0)
         return std::nullopt;
-    const long long box_width = static_cast<long long>(area.columns) * cell.width;
-    const long long box_height = static_cast<long long>(cell_rows) * cell.height;
+    long long box_width = static_cast<long long>(area.columns) * cell.width;
+    long long box_height = static_cast<long long>(cell_rows) * cell.height;
+    if (limit) {
+        // Whole cells within the limit, and room for a sixel band's last rows (up to 5 more).
+        constexpr int sixel_slack = 5;
+        box_width = std::min(box_width, static_cast<long long>(limit->width / cell.width) * cell.width);
+        box_height = std::min(box_height, static_cast<long long>((limit->height - sixel_slack) / cell.height) * cell.height);
+        if (box_width <= 0 || box_height <= 0)
+            return std::nullopt;
+    }
     // The raster is raster_width wide and raster_rows · 3/2 tall (hercules::aspect_correction):
     // the width limits the scale when box_width / raster_width <= box_height / (1.5 · raster_rows).
     const bool width_limits = box_width * raster_rows * 3 <= box_height * raster_width * 2;

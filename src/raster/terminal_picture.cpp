@@ -45,16 +45,27 @@ struct CanvasRelease {
     void operator()(ChafaCanvas* canvas) const { chafa_canvas_unref(canvas); }
 };
 
-// libchafa's configuration for an exact picture: true colour (black and white are palette entries
-// as they are), no dithering, the cells a picture of `width` x `height` pixels fills.
+// How libchafa chooses a sixel picture's colour registers. `true_colour`: a palette of its own per
+// picture (black and white are entries as they are, among others it makes). `white_and_black`:
+// register 0 white, 1 black, in every picture alike: a VT340 (and xterm playing one) shares its
+// registers among the pictures on the screen, so a later band that defined register 5 as grey
+// turned an earlier band's white pixels of register 5 grey (seen in xterm 379 at 170x55).
+enum class SixelRegisters { true_colour, white_and_black };
+
+// libchafa's configuration for an exact picture: its registers as `registers` says, no dithering,
+// the cells a picture of `width` x `height` pixels fills.
 std::unique_ptr<ChafaCanvasConfig, ConfigRelease> exact_config(int width, int height, CellPixels cell,
-                                                               TerminalPictureProtocol protocol)
+                                                               TerminalPictureProtocol protocol,
+                                                               SixelRegisters registers)
 {
     std::unique_ptr<ChafaCanvasConfig, ConfigRelease> config(chafa_canvas_config_new());
     chafa_canvas_config_set_pixel_mode(config.get(), protocol == TerminalPictureProtocol::sixel
                                                          ? CHAFA_PIXEL_MODE_SIXELS
                                                          : CHAFA_PIXEL_MODE_KITTY);
-    chafa_canvas_config_set_canvas_mode(config.get(), CHAFA_CANVAS_MODE_TRUECOLOR);
+    // Foreground and background are white and black by default: FGBG draws lit pixels white.
+    chafa_canvas_config_set_canvas_mode(config.get(), registers == SixelRegisters::white_and_black
+                                                          ? CHAFA_CANVAS_MODE_FGBG
+                                                          : CHAFA_CANVAS_MODE_TRUECOLOR);
     chafa_canvas_config_set_dither_mode(config.get(), CHAFA_DITHER_MODE_NONE);
     chafa_canvas_config_set_cell_geometry(config.get(), cell.width, cell.height);
     chafa_canvas_config_set_geometry(config.get(), cells_holding(width, cell.width), cells_holding(height, cell.height));
@@ -77,11 +88,12 @@ void mend_kitty_chunk_ends(std::string& sequences)
 // `pixels` (opaque RGBA rows, `width` x `height`) as the escape sequences of `protocol`, on cells of
 // `cell` pixels; empty when libchafa fails.
 std::optional<std::string> encode_rgba(const std::vector<std::uint8_t>& pixels, int width, int height, CellPixels cell,
-                                       TerminalPictureProtocol protocol)
+                                       TerminalPictureProtocol protocol,
+                                       SixelRegisters registers = SixelRegisters::true_colour)
 {
     if (width <= 0 || height <= 0 || cell.width <= 0 || cell.height <= 0)
         return std::nullopt;
-    const auto config = exact_config(width, height, cell, protocol);
+    const auto config = exact_config(width, height, cell, protocol, registers);
     const std::unique_ptr<ChafaCanvas, CanvasRelease> canvas(chafa_canvas_new(config.get()));
     if (!canvas)
         return std::nullopt;
@@ -129,7 +141,8 @@ std::optional<std::string> encode_picture_band(const Bitmap& picture, CellRowBan
     const int sixel_height = cells_holding(height, sixel_rows) * sixel_rows;
     std::vector<std::uint8_t> pixels = monitor_rgba(picture, height, row_of);
     pixels.resize(static_cast<std::size_t>(picture.width()) * static_cast<std::size_t>(sixel_height) * bytes_per_pixel, 0);
-    return encode_rgba(pixels, picture.width(), sixel_height, {cell.width, sixel_rows}, protocol);
+    return encode_rgba(pixels, picture.width(), sixel_height, {cell.width, sixel_rows}, protocol,
+                       SixelRegisters::white_and_black);
 }
 
 } // namespace apcs

@@ -52,9 +52,16 @@ void read_csi(std::string_view sequence, TerminalReplies& replies)
 {
     const char final_byte = sequence.back();
     const std::string_view parameters = sequence.substr(2, sequence.size() - 3);
-    if (final_byte == 'c' && !parameters.empty() && parameters.front() == '?') {
-        if (const auto numbers = parameter_numbers(parameters.substr(1))) {
+    if (!parameters.empty() && parameters.front() == '?') {
+        const auto numbers = parameter_numbers(parameters.substr(1));
+        if (numbers && final_byte == 'c') {
             replies.device_attributes = *numbers;
+            return;
+        }
+        // XTSMGRAPHICS' answer for sixel geometry: item 2; status 0 (success) gives the size.
+        if (numbers && final_byte == 'S' && !numbers->empty() && (*numbers)[0] == 2) {
+            if (numbers->size() == 4 && (*numbers)[1] == 0 && (*numbers)[2] > 0 && (*numbers)[3] > 0)
+                replies.sixel_limit = PictureLimit{(*numbers)[2], (*numbers)[3]};
             return;
         }
     }

@@ -139,6 +139,8 @@ struct Terminal::State {
     std::optional<StopSignals> stop;
     // The cell size the terminal answered to CSI 16 t (detect_pixels), for when TIOCGWINSZ has none.
     std::optional<CellPixels> answered_cell;
+    // The largest sixel picture it shows, as it answered (detect_pixels).
+    std::optional<PictureLimit> sixel_limit;
 
     // After get_wch gave an Esc: whether it is the Esc key (true) or the start of an escape
     // sequence that ncurses does not know, read to its end and dropped (false). What follows the
@@ -300,7 +302,9 @@ PixelDecision Terminal::detect_pixels(PixelChoice choice)
     // What curses has to say goes out before the questions.
     refresh();
     const auto attributes_came = [](const TerminalReplies& replies) { return replies.device_attributes.has_value(); };
-    TerminalReplies replies = ask_terminal(device_attributes_query, attributes_came);
+    TerminalReplies replies =
+        ask_terminal(std::string(sixel_limit_query) + std::string(device_attributes_query), attributes_came);
+    m_state->sixel_limit = replies.sixel_limit;
     std::string typed = replies.other;
     if (asks_kitty(choice) && replies.device_attributes) {
         // The device attributes asked again after it: every terminal answers them, so their
@@ -332,6 +336,8 @@ std::optional<CellPixels> Terminal::cell_pixels() const
         return cell;
     return m_state->answered_cell;
 }
+
+std::optional<PictureLimit> Terminal::sixel_limit() const { return m_state->sixel_limit; }
 
 void Terminal::send_picture(int column, int row, std::string_view sequences)
 {

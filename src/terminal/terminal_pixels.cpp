@@ -42,8 +42,11 @@ std::optional<PictureFrame> TerminalPixels::frame_for(TerminalSize size) const
     // rows they show.
     const int rows = cell_rows_above(layout::drawing_area.bottom + 1, hercules::screen_height, *area);
     const int raster_rows = rows * hercules::screen_height / area->rows;
+    // xterm shows no sixel picture beyond its limit (1000x1000, and its window): not a smaller one.
+    const std::optional<PictureLimit> limit =
+        *m_protocol == TerminalPictureProtocol::sixel ? m_terminal.sixel_limit() : std::nullopt;
     const std::optional<PicturePlacement> placement =
-        place_picture(*area, rows, hercules::screen_width, raster_rows, *cell);
+        place_picture(*area, rows, hercules::screen_width, raster_rows, *cell, limit);
     if (!placement)
         return std::nullopt;
     return PictureFrame{*placement, rows};

@@ -18,10 +18,12 @@ xvfb_test_folder() {
   trap '[ -n "$terminal" ] && kill "$terminal" 2> /dev/null; [ -n "$server" ] && kill "$server" 2> /dev/null; rm -rf "$work"' EXIT
 }
 
-# Starts Xvfb at 1024x768 on a display of its choosing and exports DISPLAY; skips the test (exit 77)
-# where it cannot start.
+# Starts Xvfb at 1024x768 (or WIDTHxHEIGHT, $1) on a display of its choosing and exports DISPLAY;
+# skips the test (exit 77) where it cannot start. $xvfb_width is the screen's width.
 xvfb_start() {
-  Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3> "$work/display" 2> "$work/xvfb.log" &
+  local size=${1:-1024x768}
+  xvfb_width=${size%x*}
+  Xvfb -displayfd 3 -screen 0 "${size}x24" -nolisten tcp 3> "$work/display" 2> "$work/xvfb.log" &
   server=$!
   for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
   [ -s "$work/display" ] || { echo "skipped: Xvfb did not start: $(tail -1 "$work/xvfb.log")"; exit 77; }
@@ -38,6 +40,6 @@ xvfb_find_picture() {
     sleep 0.5
     xwd -root -silent > "$work/screen.xwd" 2> /dev/null || continue
     convert "xwd:$work/screen.xwd" -colorspace gray -depth 8 "gray:$work/screen.grey" 2> /dev/null || continue
-    python3 "$here/find_picture.py" "$work/screen.grey" 1024 "$picture" "$width" 10 > "$work/found" && break
+    python3 "$here/find_picture.py" "$work/screen.grey" "$xvfb_width" "$picture" "$width" 10 > "$work/found" && break
   done
 }

@@ -122,3 +122,32 @@ TEST_CASE("a picture of another size is changed as a whole", "[raster][pixels]")
     CHECK(changed_band(Bitmap(27, 60), Bitmap(18, 60), 15) == CellRowBand{0, 4});
     CHECK_FALSE(changed_band(Bitmap(27, 60), Bitmap(27, 60), 0));
 }
+
+TEST_CASE("a limit on the picture (xterm: 1000 pixels across) makes it smaller, in whole cells within it",
+          "[raster][pixels]")
+{
+    // 170 columns of 9: unlimited, the height limits the scale and the picture is 1,053 pixels
+    // across, which xterm (1000x1000 at most) would not show at all.
+    const std::optional<PicturePlacement> unlimited = place_picture({170, 51}, 38, 720, drawing_rows, {9, 15});
+    REQUIRE(unlimited);
+    CHECK(unlimited->content_width == 1048);
+    CHECK(unlimited->pixel_width() == 1053);
+    const std::optional<PicturePlacement> limited =
+        place_picture({170, 51}, 38, 720, drawing_rows, {9, 15}, PictureLimit{1000, 825});
+    REQUIRE(limited);
+    // 111 cells of 9 = 999 across limit the scale: 261 rows at 1.5 become 543.
+    CHECK(limited->content_width == 999);
+    CHECK(limited->content_height == 543);
+    CHECK(limited->columns == 111);
+    CHECK(limited->rows == 37);
+    CHECK(limited->column == 29);
+    // Its sixel bands, rounded up to 6 rows, stay within the limit's height too.
+    const std::optional<PicturePlacement> low =
+        place_picture({170, 51}, 38, 720, drawing_rows, {9, 15}, PictureLimit{1000, 300});
+    REQUIRE(low);
+    CHECK(low->pixel_height() + 5 <= 300);
+    CHECK(low->pixel_width() <= 1000);
+    // A limit under a cell leaves no picture.
+    CHECK_FALSE(place_picture({80, 24}, 18, 720, drawing_rows, {9, 15}, PictureLimit{8, 300}));
+    CHECK_FALSE(place_picture({80, 24}, 18, 720, drawing_rows, {9, 15}, PictureLimit{720, 19}));
+}

@@ -221,8 +221,10 @@ TEST_CASE("a sixel band is the picture's cell rows of the band, unscaled, each p
     REQUIRE(band);
     REQUIRE(band->starts_with("\x1bP"));
     REQUIRE(band->ends_with("\x1b\\"));
-    // 15 rows go out as 18, the sixels' multiple of 6; rows 15-17 are left unpainted.
-    CHECK(band->find("\"1;1;27;18") != std::string::npos);
+    // 15 rows go out as 18, the sixels' multiple of 6; rows 15-17 are left unpainted. White is
+    // register 0 and black 1, and no other register is defined.
+    CHECK(band->find("\"1;1;27;18#0;2;100;100;100#1;2;0;0;0#") != std::string::npos);
+    CHECK(band->find("#2;") == std::string::npos);
     const SixelPixels decoded = decode_sixel(*band, 27, 18);
     int wrong = 0;
     for (int y = 0; y < 18; ++y)

@@ -63,6 +63,20 @@ TEST_CASE("the cell size report CSI 6 height width t gives the cell in pixels", 
     CHECK_FALSE(read_terminal_replies("\x1b[6;0;9t").cell);
 }
 
+TEST_CASE("the sixel limit reply gives the largest picture, another status none, and is no key", "[terminal][pixels]")
+{
+    // xterm -ti vt340 in a window of 1530x825 pixels: 1000 across at most.
+    const TerminalReplies xterm = read_terminal_replies("\x1b[?2;0;1000;825S" + xterm_vt340_attributes);
+    REQUIRE(xterm.sixel_limit);
+    CHECK(*xterm.sixel_limit == PictureLimit{1000, 825});
+    CHECK(xterm.device_attributes);
+    CHECK(xterm.other.empty());
+    // Status 3: the terminal has no such setting; item 1 (colour registers) is not the size.
+    const TerminalReplies failed = read_terminal_replies("\x1b[?2;3;0S\x1b[?1;0;1024S");
+    CHECK_FALSE(failed.sixel_limit);
+    CHECK(failed.other == "\x1b[?1;0;1024S");
+}
+
 TEST_CASE("keys typed among the replies are kept in order, whole sequences included", "[terminal][pixels]")
 {
     const TerminalReplies replies = read_terminal_replies("a" + xterm_vt340_attributes + "\x1b[Ab\x1bOP");

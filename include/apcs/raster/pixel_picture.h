@@ -18,6 +18,14 @@ struct CellPixels {
     bool operator==(const CellPixels&) const = default;
 };
 
+// The largest picture a terminal shows, in screen pixels (xterm draws no sixel picture wider or
+// taller than its graphics limit, 1000x1000 by default, nor than its window).
+struct PictureLimit {
+    int width = 0;
+    int height = 0;
+    bool operator==(const PictureLimit&) const = default;
+};
+
 // Where the picture of the drawing area lies on the terminal and how large it is. The picture is
 // whole cells (`columns` x `rows`, at cell `column`, row 0), so that the terminal never scales it
 // and a band of it is whole cell rows; the raster's rows [0, raster_rows) fill its top-left
@@ -47,10 +55,12 @@ int cell_rows_above(int raster_rows, int raster_height, CellArea area);
 // The raster's rows [0, raster_rows) (a raster `raster_width` wide) as a picture in the top
 // `cell_rows` rows of `area`, on cells of `cell` screen pixels: scaled by the smaller of the two
 // scales that fit its width and its height (each raster row 1.5 times as tall as a raster column
-// is wide: hercules::aspect_correction), then centred across the area in whole cells. nullopt when
-// a size is not positive (no cell size known, an empty area).
+// is wide: hercules::aspect_correction), then centred across the area in whole cells. With a
+// `limit`, the picture's whole cells, and a sixel band's height rounded up to 6 (up to 5 rows more),
+// stay within it: the cells are fewer. nullopt when a size is not positive (no cell size known, an
+// empty area, a limit smaller than a cell).
 std::optional<PicturePlacement> place_picture(CellArea area, int cell_rows, int raster_width, int raster_rows,
-                                              CellPixels cell);
+                                              CellPixels cell, std::optional<PictureLimit> limit = std::nullopt);
 
 // The picture of `placement` drawn from `raster`: screen pixel (x, y) of the content is lit when
 // any raster pixel under it is (max pooling, as map_to_cells does: a one-pixel line stays a line

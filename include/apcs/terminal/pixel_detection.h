@@ -19,6 +19,10 @@ inline constexpr std::string_view device_attributes_query = "\x1b[c";
 // draws nothing; one without it ignores the APC string.
 inline constexpr std::string_view kitty_graphics_query = "\x1b_Gi=31,s=1,v=1,a=q,t=d,f=24;AAAA\x1b\\";
 inline constexpr int kitty_query_id = 31;
+// The largest sixel picture the terminal shows now (xterm's XTSMGRAPHICS, read the current sixel
+// geometry): ESC [ ? 2 ; 0 ; width ; height S. Sent before the device attributes, whose answer ends
+// the wait: a terminal that does not know it ignores it.
+inline constexpr std::string_view sixel_limit_query = "\x1b[?2;1;0S";
 // The cell size in pixels (xterm's window operation 16): ESC [ 6 ; height ; width t.
 inline constexpr std::string_view cell_size_query = "\x1b[16t";
 // How long each question waits for its answer; a terminal silent that long counts as no answer.
@@ -32,6 +36,7 @@ struct TerminalReplies {
     std::optional<std::vector<int>> device_attributes;
     KittyAnswer kitty = KittyAnswer::none;
     std::optional<CellPixels> cell; // from ESC [ 6 ; height ; width t
+    std::optional<PictureLimit> sixel_limit; // from ESC [ ? 2 ; 0 ; width ; height S
     // What was no reply, in order: keys typed meanwhile (whole escape sequences of keys included),
     // given back to the keyboard. A reply cut short at the end is neither.
     std::string other;
@@ -39,7 +44,8 @@ struct TerminalReplies {
 
 // The replies in `bytes`: device attributes (ESC [ ? n ; … c), the kitty graphics reply to the
 // query of id 31 (ESC _ G i=31 ; OK ESC \ is ok, any other message refused; other APC strings are
-// dropped), the cell size (ESC [ 6 ; h ; w t, both positive). Anything else goes to `other`.
+// dropped), the cell size (ESC [ 6 ; h ; w t, both positive), the sixel limit (ESC [ ? 2 ; 0 ; w ; h
+// S: status 0, both positive; another status is no limit known). Anything else goes to `other`.
 TerminalReplies read_terminal_replies(std::string_view bytes);
 
 // Whether device attributes name sixel graphics: a 4 among the attributes after the class.

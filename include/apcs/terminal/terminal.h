@@ -62,6 +62,8 @@ public:
     // The size of a cell in screen pixels: TIOCGWINSZ's (asked anew, the font may have changed),
     // else what the terminal answered to detect_pixels' cell size query; nullopt when neither.
     std::optional<CellPixels> cell_pixels() const;
+    // The largest sixel picture the terminal said it shows (detect_pixels), if it said.
+    std::optional<PictureLimit> sixel_limit() const;
     // Writes `sequences` (a picture: sixel or kitty) with its top-left corner at cell (column,
     // row), counted from 0; the cursor and what curses believes is on the screen stay as they were
     // (DECSC, DECRC around it). Call after show(): curses' output goes first.
