@@ -4,7 +4,8 @@
 # terminal's white background (painted, not left transparent or half opaque).
 #   xterm: apcs path --sixel, in xterm 379 (Debian 12's, sixel built in) started as a VT340;
 #   kitty: apcs path --kitty, in kitty 0.26 (software OpenGL), whose 11-point cells are 9x18 pixels
-#          here, so that the picture's 80x29 cells are its 720x522 pixels unscaled.
+#          here, so that the picture's 80x29 cells are its 720x522 pixels unscaled; in a window of
+#          100x40 cells (its default window, 80x24 cells here, scrolled the picture's top away).
 # Usage: terminal_shows_picture.sh APCS DATA_FOLDER xterm|kitty (skips, exit 77, without Xvfb, the
 # terminal, xwd, ImageMagick's convert or python3, or where Xvfb cannot start).
 set -uo pipefail
@@ -28,6 +29,7 @@ xvfb_start
 case $terminal_name in
   xterm) xterm -ti vt340 -fn 9x15 -geometry 100x45+0+0 -e sh -c "cat '$file'; sleep 60" & ;;
   kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o background=#ffffff -o foreground=#000000 -o font_size=11 \
+           -o initial_window_width=100c -o initial_window_height=40c -o remember_window_size=no \
            sh -c "cat '$file'; sleep 60" > "$work/kitty.log" 2>&1 & ;;
 esac
 terminal=$!
