@@ -28,7 +28,7 @@ _apcs_options()
         fit) echo "$staff $curve --surface $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures $terminal_pictures --help" ;;
-        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
+        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs --pixels $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
         *) echo "$staff $curve --surface $view --delay --glyphs --color --pixels --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
     esac

@@ -431,6 +431,7 @@ void add_play_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_surface(command, options);
     add_view(command, options);
     add_glyphs(command, options);
+    add_pixels(command, options);
     add_pictures(command, options, "all frames overlaid");
     add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);

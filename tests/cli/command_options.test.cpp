@@ -42,7 +42,7 @@ std::vector<CommandOptions> commands()
         {{"draw", "a.dat"}, joined({view, pictures})},
         {{"figures"}, joined({staff, curve, {"--workdir", "--out"}})},
         {{"play", "a.scn"},
-         joined({staff, view, pictures, {"--slopes", "--samples", "--spacing", "--glyphs", "--gif", "--delay", "--print",
+         joined({staff, view, pictures, {"--slopes", "--samples", "--spacing", "--glyphs", "--pixels", "--gif", "--delay", "--print",
                                          "--out", "--tree"}})},
     };
 }

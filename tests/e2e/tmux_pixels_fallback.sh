@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # --pixels inside tmux (SPEC §7.2.1): tmux 3.3 passes neither sixel nor kitty pictures, so even an
 # explicit --pixels sixel falls back to characters at once, asking the terminal nothing, with one
-# line saying why; the session goes on in characters and ends as usual. auto, too.
+# line saying why; the session goes on in characters and ends as usual. auto and kitty too, and
+# apcs play.
 # Usage: tmux_pixels_fallback.sh APCS DATA_FOLDER
 set -euo pipefail
 apcs=$1
@@ -30,4 +31,10 @@ for choice in sixel auto kitty; do
   keys_to "$choice" Y
   wait_for "$choice" "EXITED=0"
 done
-echo "passed: --pixels sixel, auto and kitty inside tmux fall back to characters with: $notice"
+# apcs play's animation too.
+start_80x24 play "LANG=C.UTF-8 LC_ALL=C.UTF-8 '$apcs' play '$data/../robot/robot.scn' --glyphs ascii --pixels sixel"
+wait_for play "$notice"
+wait_for play "robot.scn"
+keys_to play q
+wait_for play "EXITED=0"
+echo "passed: --pixels sixel, auto and kitty inside tmux (and apcs play's) fall back to characters with: $notice"
