@@ -28,9 +28,9 @@ _apcs_options()
         fit) echo "$staff $curve --surface $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures $terminal_pictures --help" ;;
-        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
+        play) echo "$staff --slopes --samples --spacing --surface $view --glyphs --pixels $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
-        *) echo "$staff $curve --surface $view --delay --glyphs --color --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
+        *) echo "$staff $curve --surface $view --delay --glyphs --color --pixels --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
     esac
 }
 
@@ -43,6 +43,7 @@ _apcs()
     case $previous in
         --glyphs) _apcs_words "ascii braille blocks" "$current"; return ;;
         --color) _apcs_words "auto always never" "$current"; return ;;
+        --pixels) _apcs_words "auto sixel kitty off" "$current"; return ;;
         --spacing) _apcs_words "nearest exact" "$current"; return ;;
         --surface) _apcs_words "blend ferguson" "$current"; return ;;
         --view) _apcs_words "front side top" "$current"; return ;;

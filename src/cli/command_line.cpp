@@ -405,6 +405,7 @@ void set_up_command_line(CLI::App& app, ParsedLine& line)
     app.footer("Examples, in a copy of the n-to-l example (data/n-to-l; installed: share/apcs/n-to-l):\n"
                "  apcs                                   the session, as in 1989\n"
                "  apcs --keys session.keys --pace 300    the shipped session replayed\n"
+               "  apcs --pixels sixel                    real pixels, in xterm -ti vt340 -fn 9x15 (not tmux)\n"
                "  apcs path way1.dat --print             a path's numbers\n\n" +
                manual);
     add_session_options(app, line.options, line.slopes);

@@ -292,6 +292,24 @@ void add_colour(CLI::App& command, CommonOptions& options)
         ->type_name(alternatives(choices));
 }
 
+void add_pixels(CLI::App& command, CommonOptions& options)
+{
+    const std::vector<std::string> choices{"auto", "sixel", "kitty", "off"};
+    command.add_option_function<std::string>(
+           "--pixels",
+           [&options](const std::string& name) {
+               options.pixels = name == "auto"    ? PixelChoice::automatic
+                                : name == "sixel" ? PixelChoice::sixel
+                                : name == "kitty" ? PixelChoice::kitty
+                                                  : PixelChoice::off;
+           },
+           "the drawing area as real pixels: sixel (xterm -ti vt340, foot, WezTerm, mlterm), kitty "
+           "(kitty, WezTerm, Ghostty, Konsole), or auto: as the terminal answers, never inside tmux or screen; "
+           "default off")
+        ->check(one_of(choices))
+        ->type_name(alternatives(choices));
+}
+
 } // namespace
 
 void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
@@ -304,6 +322,7 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     add_delay(app, options);
     add_glyphs(app, options);
     add_colour(app, options);
+    add_pixels(app, options);
     app.add_option("--step", options.step,
                    "staff step per key, " + range_text(limits::staff_step) + ", default 0.05")
         ->check(number_in(limits::staff_step))
@@ -412,6 +431,7 @@ void add_play_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_surface(command, options);
     add_view(command, options);
     add_glyphs(command, options);
+    add_pixels(command, options);
     add_pictures(command, options, "all frames overlaid");
     add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);

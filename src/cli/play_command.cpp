@@ -195,7 +195,7 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
         err << glyphs.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
-    const Expected<ExitStatus> played = terminal(player, options.delay_ms, *glyphs, save_screen_picture);
+    const Expected<ExitStatus> played = terminal(player, options.delay_ms, *glyphs, options.pixels, save_screen_picture);
     if (!played) {
         err << played.error().to_string() << '\n';
         return ExitStatus::terminal_problem;

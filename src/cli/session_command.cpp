@@ -291,7 +291,7 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
                            std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
 {
     const ColourChoice colour = session_colour(options.colour, std::getenv("NO_COLOR"));
-    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, colour, recorded, hooks);
+    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, colour, options.pixels, recorded, hooks);
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;

@@ -15,15 +15,18 @@ namespace {
 
 constexpr int bytes_per_pixel = 4; // CHAFA_PIXEL_RGBA8_UNASSOCIATED
 
-// The monitor's picture as opaque RGBA rows: lit pixels white, the others black.
-std::vector<std::uint8_t> monitor_rgba(const Bitmap& bitmap)
+int raster_row_of_monitor(int row) { return raster_row_of(row, PngShape::monitor); }
+
+// `rows` rows as the monitor showed them, opaque RGBA: lit pixels white, the others black; row y
+// is the bitmap's row `source_row(y)`.
+template <typename SourceRow>
+std::vector<std::uint8_t> monitor_rgba(const Bitmap& bitmap, int rows, SourceRow source_row)
 {
-    const int rows = png_rows(bitmap.height(), PngShape::monitor);
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(bitmap.width()) * static_cast<std::size_t>(rows) *
                                      bytes_per_pixel);
     std::size_t at = 0;
     for (int y = 0; y < rows; ++y) {
-        const int source = raster_row_of(y, PngShape::monitor);
+        const int source = source_row(y);
         for (int x = 0; x < bitmap.width(); ++x) {
             const std::uint8_t level = bitmap.get(x, source) ? 255 : 0;
             pixels[at++] = level;
@@ -35,8 +38,6 @@ std::vector<std::uint8_t> monitor_rgba(const Bitmap& bitmap)
     return pixels;
 }
 
-int cells_holding(int pixels, int cell) { return (pixels + cell - 1) / cell; }
-
 struct ConfigRelease {
     void operator()(ChafaCanvasConfig* config) const { chafa_canvas_config_unref(config); }
 };
@@ -44,20 +45,30 @@ struct CanvasRelease {
     void operator()(ChafaCanvas* canvas) const { chafa_canvas_unref(canvas); }
 };
 
-// libchafa's configuration for an exact picture: true colour (black and white are palette entries
-// as they are), no dithering, the cells a picture of `width` x `height` pixels fills.
-std::unique_ptr<ChafaCanvasConfig, ConfigRelease> exact_config(int width, int height,
-                                                               TerminalPictureProtocol protocol)
+// How libchafa chooses a sixel picture's colour registers. `true_colour`: a palette of its own per
+// picture (black and white are entries as they are, among others it makes). `white_and_black`:
+// register 0 white, 1 black, in every picture alike: a VT340 (and xterm playing one) shares its
+// registers among the pictures on the screen, so a later band that defined register 5 as grey
+// turned an earlier band's white pixels of register 5 grey (seen in xterm 379 at 170x55).
+enum class SixelRegisters { true_colour, white_and_black };
+
+// libchafa's configuration for an exact picture: its registers as `registers` says, no dithering,
+// the cells a picture of `width` x `height` pixels fills.
+std::unique_ptr<ChafaCanvasConfig, ConfigRelease> exact_config(int width, int height, CellPixels cell,
+                                                               TerminalPictureProtocol protocol,
+                                                               SixelRegisters registers)
 {
     std::unique_ptr<ChafaCanvasConfig, ConfigRelease> config(chafa_canvas_config_new());
     chafa_canvas_config_set_pixel_mode(config.get(), protocol == TerminalPictureProtocol::sixel
                                                          ? CHAFA_PIXEL_MODE_SIXELS
                                                          : CHAFA_PIXEL_MODE_KITTY);
-    chafa_canvas_config_set_canvas_mode(config.get(), CHAFA_CANVAS_MODE_TRUECOLOR);
+    // Foreground and background are white and black by default: FGBG draws lit pixels white.
+    chafa_canvas_config_set_canvas_mode(config.get(), registers == SixelRegisters::white_and_black
+                                                          ? CHAFA_CANVAS_MODE_FGBG
+                                                          : CHAFA_CANVAS_MODE_TRUECOLOR);
     chafa_canvas_config_set_dither_mode(config.get(), CHAFA_DITHER_MODE_NONE);
-    chafa_canvas_config_set_cell_geometry(config.get(), terminal_picture_cell_width, terminal_picture_cell_height);
-    chafa_canvas_config_set_geometry(config.get(), cells_holding(width, terminal_picture_cell_width),
-                                     cells_holding(height, terminal_picture_cell_height));
+    chafa_canvas_config_set_cell_geometry(config.get(), cell.width, cell.height);
+    chafa_canvas_config_set_geometry(config.get(), cells_holding(width, cell.width), cells_holding(height, cell.height));
     return config;
 }
 
@@ -74,16 +85,15 @@ void mend_kitty_chunk_ends(std::string& sequences)
         sequences[at] = '8';
 }
 
-} // namespace
-
-std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol)
+// `pixels` (opaque RGBA rows, `width` x `height`) as the escape sequences of `protocol`, on cells of
+// `cell` pixels; empty when libchafa fails.
+std::optional<std::string> encode_rgba(const std::vector<std::uint8_t>& pixels, int width, int height, CellPixels cell,
+                                       TerminalPictureProtocol protocol,
+                                       SixelRegisters registers = SixelRegisters::true_colour)
 {
-    const int width = bitmap.width();
-    const int height = png_rows(bitmap.height(), PngShape::monitor);
-    if (width <= 0 || height <= 0)
+    if (width <= 0 || height <= 0 || cell.width <= 0 || cell.height <= 0)
         return std::nullopt;
-    const std::vector<std::uint8_t> pixels = monitor_rgba(bitmap);
-    const auto config = exact_config(width, height, protocol);
+    const auto config = exact_config(width, height, cell, protocol, registers);
     const std::unique_ptr<ChafaCanvas, CanvasRelease> canvas(chafa_canvas_new(config.get()));
     if (!canvas)
         return std::nullopt;
@@ -97,8 +107,42 @@ std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, Termina
     g_string_free(printed, TRUE);
     if (protocol == TerminalPictureProtocol::kitty)
         mend_kitty_chunk_ends(sequences);
-    sequences += '\n';
     return sequences;
+}
+
+} // namespace
+
+std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol)
+{
+    const int height = png_rows(bitmap.height(), PngShape::monitor);
+    std::optional<std::string> sequences =
+        encode_rgba(monitor_rgba(bitmap, height, raster_row_of_monitor), bitmap.width(), height,
+                    {terminal_picture_cell_width, terminal_picture_cell_height}, protocol);
+    if (sequences)
+        *sequences += '\n';
+    return sequences;
+}
+
+std::optional<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
+                                               TerminalPictureProtocol protocol)
+{
+    if (cell.width <= 0 || cell.height <= 0 || band.first < 0 || band.end <= band.first ||
+        band.end * cell.height > picture.height())
+        return std::nullopt;
+    const int first_row = band.first * cell.height;
+    const auto row_of = [first_row](int y) { return first_row + y; };
+    const int height = (band.end - band.first) * cell.height;
+    if (protocol == TerminalPictureProtocol::kitty)
+        return encode_rgba(monitor_rgba(picture, height, row_of), picture.width(), height, cell, protocol);
+    // libchafa makes a sixel picture's height a multiple of 6 (a sixel's height), scaling the
+    // picture to fit: the band is sent that tall, its rows below the band transparent (left
+    // unpainted, so what is under them stays), on "cells" of six rows so nothing is scaled.
+    constexpr int sixel_rows = 6;
+    const int sixel_height = cells_holding(height, sixel_rows) * sixel_rows;
+    std::vector<std::uint8_t> pixels = monitor_rgba(picture, height, row_of);
+    pixels.resize(static_cast<std::size_t>(picture.width()) * static_cast<std::size_t>(sixel_height) * bytes_per_pixel, 0);
+    return encode_rgba(pixels, picture.width(), sixel_height, {cell.width, sixel_rows}, protocol,
+                       SixelRegisters::white_and_black);
 }
 
 } // namespace apcs

@@ -6,12 +6,15 @@
 #include <curses.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
 #include <optional>
+#include <poll.h>
 #include <string>
 #include <string_view>
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 namespace apcs {
@@ -64,6 +67,59 @@ bool colour_wanted(ColourChoice colour)
     return colour == ColourChoice::always || tigetnum("colors") >= 8;
 }
 
+// Writes all of `bytes` to the terminal, again after a signal cut a write short.
+void write_all(std::string_view bytes)
+{
+    while (!bytes.empty()) {
+        const ssize_t written = ::write(STDOUT_FILENO, bytes.data(), bytes.size());
+        if (written < 0) {
+            if (errno == EINTR || errno == EAGAIN)
+                continue;
+            return; // the terminal is gone: read_key will say so
+        }
+        bytes.remove_prefix(static_cast<std::size_t>(written));
+    }
+}
+
+// Asks `query` and reads what comes back until `answered` holds for the replies read or
+// pixel_reply_limit_ms have passed since the question: a terminal that does not answer costs that
+// long, never more.
+template <typename Answered>
+TerminalReplies ask_terminal(std::string_view query, Answered answered)
+{
+    write_all(query);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(pixel_reply_limit_ms);
+    std::string bytes;
+    while (true) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+        if (left <= 0)
+            break;
+        pollfd input{STDIN_FILENO, POLLIN, 0};
+        const int ready = ::poll(&input, 1, static_cast<int>(left));
+        if (ready < 0 && errno == EINTR)
+            continue;
+        if (ready <= 0 || (input.revents & POLLIN) == 0)
+            break;
+        char chunk[256];
+        const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
+        if (got <= 0)
+            break;
+        bytes.append(chunk, static_cast<std::size_t>(got));
+        if (answered(read_terminal_replies(bytes)))
+            break;
+    }
+    return read_terminal_replies(bytes);
+}
+
+// TIOCGWINSZ's cell size, where the terminal fills in its pixels.
+std::optional<CellPixels> window_cell_pixels()
+{
+    winsize size{};
+    if (::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) != 0)
+        return std::nullopt;
+    return cell_from_window(size.ws_xpixel, size.ws_ypixel, size.ws_col, size.ws_row);
+}
+
 } // namespace
 
 // What get_wch gave: its result (OK, KEY_CODE_YES) and the character or key code.
@@ -81,6 +137,10 @@ struct Terminal::State {
     std::optional<RawKey> pending;
     // Installed once the terminal is taken over; destroyed after it is given back.
     std::optional<StopSignals> stop;
+    // The cell size the terminal answered to CSI 16 t (detect_pixels), for when TIOCGWINSZ has none.
+    std::optional<CellPixels> answered_cell;
+    // The largest sixel picture it shows, as it answered (detect_pixels).
+    std::optional<PictureLimit> sixel_limit;
 
     // After get_wch gave an Esc: whether it is the Esc key (true) or the start of an escape
     // sequence that ncurses does not know, read to its end and dropped (false). What follows the
@@ -234,7 +294,68 @@ void Terminal::redraw()
     redrawwin(stdscr);
 }
 
-void Terminal::show(const CellGrid& grid)
+PixelDecision Terminal::detect_pixels(PixelChoice choice)
+{
+    if (const std::optional<PixelDecision> decided =
+            decide_before_asking(choice, multiplexer_around(std::getenv("TMUX"), std::getenv("STY"), std::getenv("TERM"))))
+        return *decided;
+    // What curses has to say goes out before the questions.
+    refresh();
+    const auto attributes_came = [](const TerminalReplies& replies) { return replies.device_attributes.has_value(); };
+    TerminalReplies replies =
+        ask_terminal(std::string(sixel_limit_query) + std::string(device_attributes_query), attributes_came);
+    m_state->sixel_limit = replies.sixel_limit;
+    std::string typed = replies.other;
+    if (asks_kitty(choice) && replies.device_attributes) {
+        // The device attributes asked again after it: every terminal answers them, so their
+        // answer ends the wait for a kitty reply that does not come.
+        const TerminalReplies kitty = ask_terminal(std::string(kitty_graphics_query) + std::string(device_attributes_query), attributes_came);
+        replies.kitty = kitty.kitty;
+        typed += kitty.other;
+    }
+    PixelDecision decision = decide_protocol(choice, replies);
+    if (decision.protocol && !window_cell_pixels()) {
+        const TerminalReplies cell = ask_terminal(cell_size_query, [](const TerminalReplies& answered) { return answered.cell.has_value(); });
+        m_state->answered_cell = cell.cell;
+        typed += cell.other;
+        if (!cell.cell)
+            decision = PixelDecision{std::nullopt, std::string(no_cell_size_line)};
+    }
+    // Keys typed during the questions are read next, in the order typed (ungetch pushes in front).
+    for (auto key = typed.rbegin(); key != typed.rend(); ++key)
+        ungetch(static_cast<unsigned char>(*key));
+    // A terminal that knows no APC string (the Linux console) may have printed the kitty query's
+    // text: the first screen clears the terminal.
+    redraw();
+    return decision;
+}
+
+std::optional<CellPixels> Terminal::cell_pixels() const
+{
+    if (const std::optional<CellPixels> cell = window_cell_pixels())
+        return cell;
+    return m_state->answered_cell;
+}
+
+std::optional<PictureLimit> Terminal::sixel_limit() const { return m_state->sixel_limit; }
+
+void Terminal::send_picture(int column, int row, std::string_view sequences)
+{
+    // DECSC, the cursor to the picture's top-left cell, the picture, DECRC.
+    std::string bytes = "\x1b" "7\x1b[" + std::to_string(row + 1) + ";" + std::to_string(column + 1) + "H";
+    bytes += sequences;
+    bytes += "\x1b" "8";
+    write_all(bytes);
+}
+
+void Terminal::remove_pictures(TerminalPictureProtocol protocol)
+{
+    // Kitty: delete every placement and free its image (d=A).
+    if (protocol == TerminalPictureProtocol::kitty)
+        write_all("\x1b_Ga=d,d=A,q=2\x1b\\");
+}
+
+bool Terminal::show(const CellGrid& grid)
 {
     State& state = *m_state;
     const bool full = !state.valid || state.shown.columns() != grid.columns() || state.shown.rows() != grid.rows();
@@ -278,6 +399,7 @@ void Terminal::show(const CellGrid& grid)
     refresh();
     state.shown = grid;
     state.valid = true;
+    return full;
 }
 
 } // namespace apcs

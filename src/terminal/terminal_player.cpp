@@ -5,12 +5,12 @@
 
 namespace apcs {
 
-Expected<ExitStatus> run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs,
+Expected<ExitStatus> run_terminal_player(AnimationPlayer& player, int delay_ms, GlyphSet glyphs, PixelChoice pixels,
                                          const PictureSaver& save_picture)
 {
     ScenePlayer program(player, delay_ms, save_picture);
     std::vector<KeyEvent> typed;
-    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, ColourChoice::never, typed);
+    return run_terminal_session(program, KeyScript{}, ReplayPace{}, glyphs, ColourChoice::never, pixels, typed);
 }
 
 } // namespace apcs

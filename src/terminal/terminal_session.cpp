@@ -2,6 +2,7 @@
 
 #include "apcs/session/replay_caption.h"
 #include "apcs/terminal/terminal.h"
+#include "apcs/terminal/terminal_pixels.h"
 
 #include <algorithm>
 #include <chrono>
@@ -23,14 +24,33 @@ struct ReplayShown {
     std::string_view played_key;
 };
 
-CellGrid grid_for(const InteractiveProgram& session, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
+CellGrid grid_for(const SessionScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache,
                   ReplayShown replay)
 {
-    const SessionScreen screen = with_caption(session.screen(), replay.caption);
     if (!fit_cell_area(size.columns, size.rows))
         return too_small_grid(size);
     return with_played_key(screen.graphics ? graphics_grid(screen.picture, size, glyphs, cache) : screen.text,
                            replay.played_key);
+}
+
+// The program's screen on the terminal: characters through curses and, where --pixels shows the
+// drawing area as a picture, the picture over the rows curses leaves blank. A replay's caption, else
+// why pictures are off (until a key is typed), goes on the caption row (with_caption).
+void show_screen(Terminal& terminal, TerminalPixels& pixels, const InteractiveProgram& program, GlyphSet glyphs,
+                 AsciiGlyphCache& cache, ReplayShown replay)
+{
+    if (replay.caption.empty())
+        replay.caption = pixels.notice();
+    const SessionScreen screen = with_caption(program.screen(), replay.caption);
+    const TerminalSize size = terminal.size();
+    const std::optional<PictureFrame> frame = screen.graphics ? pixels.frame_for(size) : std::nullopt;
+    pixels.before_show(frame);
+    CellGrid grid = grid_for(screen, size, glyphs, cache, replay);
+    if (frame)
+        grid = without_rows(std::move(grid), frame->blank_rows);
+    const bool repainted = terminal.show(grid);
+    if (frame)
+        pixels.show(screen.picture, *frame, repainted);
 }
 
 // The session's work (the split) for about a frame's time, then back to the keys: Esc or Ctrl-C
@@ -185,20 +205,21 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 }
 
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, ColourChoice colour, std::vector<KeyEvent>& recorded,
-                                          const ReplayHooks& hooks)
+                                          GlyphSet glyphs, ColourChoice colour, PixelChoice pixel_choice,
+                                          std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)
 {
     Expected<std::unique_ptr<Terminal>> opened = Terminal::open(colour);
     if (!opened)
         return opened.error();
     const std::unique_ptr<Terminal> terminal = std::move(*opened);
+    TerminalPixels pixels(*terminal, terminal->detect_pixels(pixel_choice));
     Replay replay(script, pace);
     AsciiGlyphCache cache;
     while (!session.finished()) {
         replay.tell_captions(session, hooks);
         // At a goal the keyboard is the student's (Esc included) until it holds.
         const bool at_goal = replay.goal_waiting(session, hooks).has_value();
-        terminal->show(grid_for(session, terminal->size(), glyphs, cache, replay.shown()));
+        show_screen(*terminal, pixels, session, glyphs, cache, replay.shown());
         KeyEvent key;
         std::optional<TerminalInput> input;
         // A scripted key waits for the split, as a typed one would (Esc would stop it).
@@ -232,8 +253,10 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
             // Keys typed at the too-small screen would act on a session nobody can see.
             if (!fit_cell_area(terminal->size().columns, terminal->size().rows))
                 break;
-            if (!scripted && !at_goal)
+            if (!scripted && !at_goal) {
                 replay.key_typed();
+                pixels.clear_notice();
+            }
             recorded.push_back(key);
             session.handle(key);
             break;

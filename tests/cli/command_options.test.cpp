@@ -34,7 +34,7 @@ std::set<std::string> joined(std::initializer_list<std::set<std::string>> sets)
 std::vector<CommandOptions> commands()
 {
     return {
-        {{}, joined({staff, curve, view, pictures, {"--delay", "--glyphs", "--step", "--workdir", "--keys", "--pace", "--record"}})},
+        {{}, joined({staff, curve, view, pictures, {"--delay", "--glyphs", "--pixels", "--step", "--workdir", "--keys", "--pace", "--record"}})},
         {{"path", "a.dat"}, joined({staff, curve, view, pictures, {"--print"}})},
         {{"fit", "a", "b", "c", "d"}, joined({staff, curve, view, pictures, {"--gif", "--delay", "--print", "--out"}})},
         {{"inbetween", "a", "b"},
@@ -42,7 +42,7 @@ std::vector<CommandOptions> commands()
         {{"draw", "a.dat"}, joined({view, pictures})},
         {{"figures"}, joined({staff, curve, {"--workdir", "--out"}})},
         {{"play", "a.scn"},
-         joined({staff, view, pictures, {"--slopes", "--samples", "--spacing", "--glyphs", "--gif", "--delay", "--print",
+         joined({staff, view, pictures, {"--slopes", "--samples", "--spacing", "--glyphs", "--pixels", "--gif", "--delay", "--print",
                                          "--out", "--tree"}})},
     };
 }
@@ -75,6 +75,16 @@ TEST_CASE("every command refuses each option of another command with exit 2 and 
             CHECK(result.status == 2);
             CHECK(result.err.find("apcs: " + option + " is not an option of") == 0);
         }
+    }
+}
+
+TEST_CASE("the session's --pixels takes auto, sixel, kitty and off, another word is exit 2 with the four named", "[cli][pixels]")
+{
+    for (const char* word : {"bogus", "sixels", "", "on"}) {
+        CAPTURE(word);
+        const auto result = run_apcs({"--pixels", word});
+        CHECK(result.status == 2);
+        CHECK(result.err.starts_with("apcs: --pixels: expected one of auto, sixel, kitty, off, found '"));
     }
 }
 

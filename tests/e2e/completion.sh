@@ -35,6 +35,7 @@ expect() { # expected, then the command line
 expect "figures fit" apcs "fi"
 expect "blocks braille" apcs --glyphs b
 expect "always auto" apcs --color a
+expect "sixel" apcs --pixels s
 expect "blocks braille" apcs path a.dat --glyphs b
 expect "exact nearest" apcs fit --spacing ""
 expect "front" apcs --view fr

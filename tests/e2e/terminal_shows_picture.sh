@@ -4,7 +4,8 @@
 # terminal's white background (painted, not left transparent or half opaque).
 #   xterm: apcs path --sixel, in xterm 379 (Debian 12's, sixel built in) started as a VT340;
 #   kitty: apcs path --kitty, in kitty 0.26 (software OpenGL), whose 11-point cells are 9x18 pixels
-#          here, so that the picture's 80x29 cells are its 720x522 pixels unscaled.
+#          here, so that the picture's 80x29 cells are its 720x522 pixels unscaled; in a window of
+#          100x40 cells (its default window, 80x24 cells here, scrolled the picture's top away).
 # Usage: terminal_shows_picture.sh APCS DATA_FOLDER xterm|kitty (skips, exit 77, without Xvfb, the
 # terminal, xwd, ImageMagick's convert or python3, or where Xvfb cannot start).
 set -uo pipefail
@@ -12,18 +13,9 @@ apcs=$1
 data=$2
 terminal_name=$3
 here=$(cd "$(dirname "$0")" && pwd)
-for tool in Xvfb "$terminal_name" xwd convert python3; do
-  command -v "$tool" > /dev/null || { echo "skipped: no $tool (xvfb, $terminal_name, x11-apps, imagemagick)"; exit 77; }
-done
-work=$(mktemp -d)
-server=""
-terminal=""
-cleanup() {
-  [ -n "$terminal" ] && kill "$terminal" 2> /dev/null
-  [ -n "$server" ] && kill "$server" 2> /dev/null
-  rm -rf "$work"
-}
-trap cleanup EXIT
+source "$here/xvfb_lib.sh"
+xvfb_needs "$terminal_name"
+xvfb_test_folder
 fail() { echo "FAILED: $*"; exit 1; }
 
 case $terminal_name in
@@ -33,25 +25,16 @@ case $terminal_name in
 esac
 "$apcs" path "$data/n-to-l/way1.dat" --tension 0.5 "$option" "$file" --png "$work/way1.png" || fail "apcs path $option"
 convert "$work/way1.png" -colorspace gray -depth 8 "gray:$work/picture.grey" || fail "convert way1.png"
-Xvfb -displayfd 3 -screen 0 1024x768x24 -nolisten tcp 3> "$work/display" 2> "$work/xvfb.log" &
-server=$!
-for _ in $(seq 50); do [ -s "$work/display" ] && break; sleep 0.1; done
-[ -s "$work/display" ] || { echo "skipped: Xvfb did not start: $(tail -1 "$work/xvfb.log")"; exit 77; }
-export DISPLAY=":$(cat "$work/display")"
+xvfb_start
 case $terminal_name in
   xterm) xterm -ti vt340 -fn 9x15 -geometry 100x45+0+0 -e sh -c "cat '$file'; sleep 60" & ;;
-  # kitty opens 640x400 pixels (or the size it remembered) unless told: too small for the picture.
-  kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o remember_window_size=no -o initial_window_width=1000 \
-           -o initial_window_height=700 -o background=#ffffff -o foreground=#000000 -o font_size=11 \
+  # kitty opens 80x24 cells (or the size it remembered) unless told: too small for the picture.
+  kitty) LIBGL_ALWAYS_SOFTWARE=1 kitty --config NONE -o background=#ffffff -o foreground=#000000 -o font_size=11 \
+           -o initial_window_width=100c -o initial_window_height=40c -o remember_window_size=no \
            sh -c "cat '$file'; sleep 60" > "$work/kitty.log" 2>&1 & ;;
 esac
 terminal=$!
 # The picture is where the terminal's text begins (its border, a few pixels in); polled until there.
-for _ in $(seq 40); do
-  sleep 0.5
-  xwd -root -silent > "$work/screen.xwd" 2> /dev/null || continue
-  convert "xwd:$work/screen.xwd" -colorspace gray -depth 8 "gray:$work/screen.grey" 2> /dev/null || continue
-  python3 "$here/find_picture.py" "$work/screen.grey" 1024 "$work/picture.grey" 720 10 > "$work/found" && break
-done
+xvfb_find_picture "$work/picture.grey" 720 40
 grep -q "^at " "$work/found" || fail "$terminal_name does not show the picture pixel for pixel: $(cat "$work/found")"
 echo "passed: $terminal_name shows apcs path $option's file $(cat "$work/found")"

@@ -130,6 +130,19 @@ std::vector<KittyCommand> kitty_commands(const std::string& text)
     return commands;
 }
 
+// The pixels the commands carry. Each chunk is whole base64 (padded where it ends), so each is
+// decoded on its own.
+std::vector<std::uint8_t> kitty_payload(const std::vector<KittyCommand>& commands)
+{
+    std::vector<std::uint8_t> rgba;
+    for (const KittyCommand& command : commands) {
+        const std::optional<std::vector<std::uint8_t>> chunk = decode_base64(command.payload);
+        REQUIRE(chunk);
+        rgba.insert(rgba.end(), chunk->begin(), chunk->end());
+    }
+    return rgba;
+}
+
 // The picture of `bitmap` in `protocol`, which must encode and end with the string terminator and
 // a newline.
 std::string encoded(const Bitmap& bitmap, TerminalPictureProtocol protocol)
@@ -175,13 +188,7 @@ TEST_CASE("a kitty picture's base64 chunks decode to the monitor's 720x522 pictu
     REQUIRE(commands.size() > 1);
     CHECK(commands.front().keys.find("a=T,f=32,s=720,v=522,c=80,r=29") != std::string::npos);
     CHECK(commands.back().keys.find("m=0") != std::string::npos);
-    // Each chunk is whole base64 (padded where it ends), so each is decoded on its own.
-    std::vector<std::uint8_t> rgba;
-    for (const KittyCommand& command : commands) {
-        const std::optional<std::vector<std::uint8_t>> chunk = decode_base64(command.payload);
-        REQUIRE(chunk);
-        rgba.insert(rgba.end(), chunk->begin(), chunk->end());
-    }
+    const std::vector<std::uint8_t> rgba = kitty_payload(commands);
     REQUIRE(rgba.size() == 720u * 522u * 4u);
     REQUIRE(wrong_pixels(bitmap, [&rgba](std::size_t pixel, bool lit) {
                 const std::uint8_t level = lit ? 255 : 0;
@@ -189,4 +196,76 @@ TEST_CASE("a kitty picture's base64 chunks decode to the monitor's 720x522 pictu
                 return rgba_pixel[0] == level && rgba_pixel[1] == level && rgba_pixel[2] == level &&
                        rgba_pixel[3] == 255;
             }) == 0);
+}
+
+namespace {
+
+// A picture of 3x2 cells of 9x15 pixels: a diagonal, a frame and a scatter, so that a band taken
+// from the wrong rows, or scaled, shows.
+Bitmap band_test_picture()
+{
+    Bitmap picture(27, 30);
+    for (int y = 0; y < picture.height(); ++y)
+        for (int x = 0; x < picture.width(); ++x)
+            picture.set(x, y, x == y || x == 0 || y == 29 || (x * 5 + y * 3) % 7 == 0);
+    return picture;
+}
+
+} // namespace
+
+TEST_CASE("a sixel band is the picture's cell rows of the band, unscaled, each pixel painted once, then transparent rows to a multiple of 6", "[raster][sixel][pixels]")
+{
+    const Bitmap picture = band_test_picture();
+    const CellPixels cell{9, 15};
+    const std::optional<std::string> band = encode_picture_band(picture, {1, 2}, cell, TerminalPictureProtocol::sixel);
+    REQUIRE(band);
+    REQUIRE(band->starts_with("\x1bP"));
+    REQUIRE(band->ends_with("\x1b\\"));
+    // 15 rows go out as 18, the sixels' multiple of 6; rows 15-17 are left unpainted. White is
+    // register 0 and black 1, and no other register is defined.
+    CHECK(band->find("\"1;1;27;18#0;2;100;100;100#1;2;0;0;0#") != std::string::npos);
+    CHECK(band->find("#2;") == std::string::npos);
+    const SixelPixels decoded = decode_sixel(*band, 27, 18);
+    int wrong = 0;
+    for (int y = 0; y < 18; ++y)
+        for (int x = 0; x < 27; ++x) {
+            const auto pixel = static_cast<std::size_t>(y * 27 + x);
+            if (y >= 15) {
+                wrong += decoded.paint_count[pixel] == 0 ? 0 : 1;
+                continue;
+            }
+            const std::array<int, 3> wanted = picture.get(x, 15 + y) ? std::array{100, 100, 100} : std::array{0, 0, 0};
+            wrong += decoded.paint_count[pixel] == 1 && decoded.palette.contains(decoded.colour[pixel]) &&
+                             decoded.palette.at(decoded.colour[pixel]) == wanted
+                         ? 0
+                         : 1;
+        }
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("a kitty band decodes to the band's RGBA pixels, placed on the band's cells", "[raster][kitty][pixels]")
+{
+    const Bitmap picture = band_test_picture();
+    const std::optional<std::string> band =
+        encode_picture_band(picture, {0, 2}, {9, 15}, TerminalPictureProtocol::kitty);
+    REQUIRE(band);
+    const std::vector<KittyCommand> commands = kitty_commands(*band);
+    REQUIRE_FALSE(commands.empty());
+    CHECK(commands.front().keys.find("a=T,f=32,s=27,v=30,c=3,r=2") != std::string::npos);
+    const std::vector<std::uint8_t> rgba = kitty_payload(commands);
+    REQUIRE(rgba.size() == 27u * 30u * 4u);
+    int wrong = 0;
+    for (int y = 0; y < 30; ++y)
+        for (int x = 0; x < 27; ++x)
+            wrong += rgba[static_cast<std::size_t>(y * 27 + x) * 4] == (picture.get(x, y) ? 255 : 0) ? 0 : 1;
+    CHECK(wrong == 0);
+}
+
+TEST_CASE("a band outside the picture, empty or of no cell height is refused", "[raster][pixels]")
+{
+    const Bitmap picture = band_test_picture();
+    CHECK_FALSE(encode_picture_band(picture, {1, 3}, {9, 15}, TerminalPictureProtocol::sixel));
+    CHECK_FALSE(encode_picture_band(picture, {1, 1}, {9, 15}, TerminalPictureProtocol::sixel));
+    CHECK_FALSE(encode_picture_band(picture, {-1, 1}, {9, 15}, TerminalPictureProtocol::sixel));
+    CHECK_FALSE(encode_picture_band(picture, {0, 1}, {9, 0}, TerminalPictureProtocol::kitty));
 }

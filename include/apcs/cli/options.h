@@ -5,6 +5,7 @@
 #include "apcs/animation/surface_construction.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/glyph_mapper.h"
+#include "apcs/raster/pixel_picture.h"
 #include "apcs/session/key_event.h"
 
 #include <cstdint>
@@ -34,6 +35,7 @@ struct CommonOptions {
     std::filesystem::path workdir;
     GlyphSet glyphs = GlyphSet::automatic;
     ColourChoice colour = ColourChoice::automatic; // --color (SPEC §7.2.1)
+    PixelChoice pixels = PixelChoice::off;          // --pixels (SPEC §7.2.1)
     double step = 0.05;
     std::optional<std::filesystem::path> keys;
     std::optional<std::filesystem::path> record;

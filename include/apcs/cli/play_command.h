@@ -14,10 +14,11 @@
 namespace apcs {
 
 // The terminal shell of apcs play, supplied by the executable (run_terminal_player): the player,
-// its delay and glyphs, what P does with the screen (returns the message line); success or
-// stopped, or why there is no usable terminal ("apcs: PROBLEM").
-using TerminalPlayerRunner = std::function<Expected<ExitStatus>(
-    AnimationPlayer&, int delay_ms, GlyphSet, const std::function<std::string(const GraphicsScreen&)>& save_picture)>;
+// its delay, glyphs and --pixels, what P does with the screen (returns the message line); success
+// or stopped, or why there is no usable terminal ("apcs: PROBLEM").
+using TerminalPlayerRunner =
+    std::function<Expected<ExitStatus>(AnimationPlayer&, int delay_ms, GlyphSet, PixelChoice,
+                                       const std::function<std::string(const GraphicsScreen&)>& save_picture)>;
 
 // P in apcs play: the screen as apcs001.png … (the first name free in the current folder), as the
 // monitor showed it; "wrote apcs001.png", or what went wrong.

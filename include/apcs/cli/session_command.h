@@ -20,7 +20,8 @@ namespace apcs {
 // terminal ("apcs: PROBLEM").
 using TerminalSessionRunner =
     std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                       ColourChoice colour, std::vector<KeyEvent>& recorded, const ReplayHooks& hooks)>;
+                                       ColourChoice colour, PixelChoice pixels, std::vector<KeyEvent>& recorded,
+                                       const ReplayHooks& hooks)>;
 
 // --color as the session uses it (SPEC §7.2.1): automatic becomes never when the environment's
 // NO_COLOR (`no_color`, null when unset) is set and not empty; always and never stand as given

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/raster/bitmap.h"
+#include "apcs/raster/pixel_picture.h"
 
 #include <optional>
 #include <string>
@@ -28,5 +29,16 @@ inline constexpr int terminal_picture_cell_height = 18;
 // picture whose size is not a whole number of cells is scaled by libchafa to the cells that hold
 // it. Empty when libchafa fails.
 std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol);
+
+// Cell rows `band` of `picture` (whole cells of `cell` screen pixels: scale_to_picture), lit pixels
+// white and the others black, as the escape sequences that draw it at the cursor in `protocol`,
+// unscaled, with no newline: sixel, one DCS sequence with every pixel of the band painted, white
+// in colour register 0 and black in 1 in every band alike (a VT340 shares its registers among the
+// pictures on the screen, so bands must not redefine each other's), as tall
+// as the next multiple of 6 pixels (sixels are six rows: the rows below the band are left
+// transparent); kitty, `a=T,f=32` placed on the band's cells. Empty when libchafa fails or the band
+// is not within the picture.
+std::optional<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
+                                               TerminalPictureProtocol protocol);
 
 } // namespace apcs

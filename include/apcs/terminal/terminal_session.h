@@ -29,9 +29,13 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 // keyboard takes over) and other keys are ignored. Returns success when the program ended,
 // stopped when stopped by a signal or a lost terminal, or why there is no usable terminal
 // ("apcs: PROBLEM"). The terminal is given back on every way out, exceptions included. `hooks`
-// hear of each caption reached; `colour` is the resolved --color (Terminal::open) (replay_hooks.h), until Esc ends the replay.
+// hear of each caption reached (replay_hooks.h), until Esc ends the replay; `colour` is the resolved
+// --color (Terminal::open). `pixels` (--pixels, SPEC §7.2.1) asks the terminal once at the start
+// (Terminal::detect_pixels): where it shows pictures, the graphics screens' drawing area is the raster
+// itself as a picture (TerminalPixels), the other rows characters; where it does not, characters, with
+// why on the caption row until a key is typed.
 Expected<ExitStatus> run_terminal_session(InteractiveProgram& program, const KeyScript& script, ReplayPace pace,
-                                          GlyphSet glyphs, ColourChoice colour, std::vector<KeyEvent>& recorded,
-                                          const ReplayHooks& hooks = {});
+                                          GlyphSet glyphs, ColourChoice colour, PixelChoice pixels,
+                                          std::vector<KeyEvent>& recorded, const ReplayHooks& hooks = {});
 
 } // namespace apcs
