@@ -142,6 +142,9 @@ PathScreenContent PathEditor::screen_content() const
 GraphicsScreen PathEditor::view() const
 {
     PathScreenContent content = screen_content();
+    // A first picture says it is one (its in-betweens are not drawn); a problem matters more.
+    if (m_problem.empty() && picture().refining())
+        content.message = picture().refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
     content.ghost = m_show_ghost;

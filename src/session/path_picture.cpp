@@ -4,15 +4,20 @@
 
 namespace apcs {
 
-PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings)
+PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings,
+                         PictureRefinement refinement)
     : m_settings(settings)
-    , m_evaluated(evaluate_path(points, settings))
+    , m_refinement(refinement)
 {
+    evaluate_path(points, settings, m_evaluated, refinement.when);
+    refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
 }
 
 void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change)
 {
-    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change));
+    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change, m_refinement.when));
+    // A local change is measured whole in the first step: its picture is the final one.
+    refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
     if (!m_view)
         return;
     draw_curve();
@@ -20,6 +25,34 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
         return;
     update_control_point_runs(m_point_runs, points, *m_view, change);
     m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }
+
+// The curve first (the picture), then the arc lengths.
+void PathPicture::refine_step(std::span<const ControlPoint> points)
+{
+    if (m_view && !m_curve.drawn())
+        draw_curve();
+    else
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+}
+
+void PathPicture::refine(std::span<const ControlPoint> points)
+{
+    if (m_view && !m_curve.drawn())
+        m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
+    refine_path(points, m_settings, m_evaluated, m_evaluated.curve.segments.size());
+}
+
+std::string PathPicture::refining_message() const
+{
+    if (m_view && !m_curve.drawn())
+        return "drawing the curve: " + std::to_string(m_curve.blocks_drawn()) + " of " +
+               std::to_string(m_curve.block_count()) + " blocks (keys are taken meanwhile)";
+    if (!m_evaluated.inbetweens_current)
+        return "measuring arc lengths for exact spacing: in-betweens shown when done";
+    return {};
 }
 
 void PathPicture::set_view(std::span<const ControlPoint> points, const ViewTransform& view)
@@ -40,9 +73,17 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
     m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
-void PathPicture::keep_ghost() { m_ghost = m_curve.pixels(); }
+void PathPicture::keep_ghost()
+{
+    if (m_curve.drawn())
+        m_ghost = m_curve.pixels();
+}
 
-void PathPicture::draw_curve() { m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary); }
+void PathPicture::draw_curve()
+{
+    m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary,
+                   m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step);
+}
 
 GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
 {
