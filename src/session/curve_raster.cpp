@@ -25,6 +25,7 @@ void CurveRaster::splice(const SegmentSplice& change)
         if (from >= to && !(change.removed == 0 && holds_start))
             continue;
         block.current = false;
+        m_composed_whole = false;
         block.segment_count -= from < to ? to - from : 0;
         if (!inserted_placed)
             block.segment_count += change.inserted;
@@ -44,12 +45,14 @@ void CurveRaster::split_large_blocks()
         second.segment_count = m_blocks[b].segment_count - segments_per_block;
         m_blocks[b].segment_count = segments_per_block;
         m_blocks[b].current = false;
+        m_composed_whole = false;
         m_blocks.insert(m_blocks.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(second));
     }
 }
 
 void CurveRaster::start_blocks(std::size_t segment_count)
 {
+    m_composed_whole = false;
     m_blocks.resize((segment_count + segments_per_block - 1) / segments_per_block);
     for (std::size_t b = 0; b < m_blocks.size(); ++b) {
         m_blocks[b].segment_count = std::min(segments_per_block, segment_count - b * segments_per_block);
@@ -93,7 +96,14 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
         // As many blocks as the work left allows at the cost of those drawn, two at the least.
         round = std::max<std::size_t>(2, work == 0 || work >= most_work ? 2 * round : (most_work - work) * done / work);
     }
-    compose();
+    // Blocks drawn on top of a picture of current blocks only are laid over it (a picture drawn
+    // in steps); else all are laid again.
+    if (!m_composed_whole)
+        return compose();
+    for (std::size_t i = 0; i < done; ++i) {
+        const Block& block = m_blocks[stale[i].first];
+        m_composed.merge(block.raster, block.first_row, block.end_row);
+    }
 }
 
 std::size_t CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const
@@ -128,6 +138,7 @@ void CurveRaster::compose()
     for (const Block& block : m_blocks)
         if (block.current)
             m_composed.merge(block.raster, block.first_row, block.end_row);
+    m_composed_whole = true;
 }
 
 } // namespace apcs

@@ -10,14 +10,13 @@ PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSetting
     , m_refinement(refinement)
 {
     evaluate_path(points, settings, m_evaluated, refinement.when);
-    refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+    refine_if_quick(points);
 }
 
 void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change)
 {
     m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change, m_refinement.when));
-    // A local change is measured whole in the first step: its picture is the final one.
-    refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+    refine_if_quick(points);
     if (!m_view)
         return;
     draw_curve();
@@ -25,6 +24,14 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
         return;
     update_control_point_runs(m_point_runs, points, *m_view, change);
     m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+// A local change's arc lengths are measured at once (its first picture is the final one); a
+// global change's all wait for the steps.
+void PathPicture::refine_if_quick(std::span<const ControlPoint> points)
+{
+    if (m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
 }
 
 bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }

@@ -43,6 +43,7 @@ public:
     // Every segment marked (the table made to fit `segments`).
     void mark_all(std::span<const HermiteSegment> segments);
     bool pending() const { return m_pending_first < m_pending_end || m_sum_from < m_cumulative.size(); }
+    std::size_t segments_pending() const { return m_pending_end - m_pending_first; }
     // Measures up to `most_segments` of the marked segments (in order), and adds the lengths up once
     // none is left. The numbers are then remeasure's, to the bit: each segment is measured alike.
     void measure_pending(std::span<const HermiteSegment> segments, std::size_t most_segments);

@@ -93,8 +93,10 @@ private:
     void compose();
 
     std::vector<Block> m_blocks;
-    // All blocks laid over one another, made again when one is drawn again.
+    // The current blocks laid over one another, made again when one is drawn again; while no block
+    // became stale since (m_composed_whole), blocks drawn are laid over it.
     Bitmap m_composed;
+    bool m_composed_whole = false;
     std::optional<ViewTransform> m_view;
     PixelRect m_clip;
     std::size_t m_segment_count = 0;

@@ -72,6 +72,7 @@ public:
 
 private:
     void draw_curve();
+    void refine_if_quick(std::span<const ControlPoint> points);
 
     PathSettings m_settings;
     PictureRefinement m_refinement;
