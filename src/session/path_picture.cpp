@@ -2,6 +2,8 @@
 
 #include "apcs/session/screen_layout.h"
 
+#include <algorithm>
+
 namespace apcs {
 
 PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings,
@@ -15,7 +17,13 @@ PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSetting
 
 void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change)
 {
-    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change, m_refinement.when));
+    // A change of a step's segments or fewer (a local key, an acceleration, a waypoint edit) on a
+    // refined path is evaluated at once: its first picture is its final one.
+    const std::size_t segments =
+        change.what == PathChange::What::accelerations ? 0 : std::max(change.removed, change.inserted) + 3;
+    const bool quick = segments <= m_refinement.segments_a_step && m_evaluated.inbetweens_current;
+    const Refinement when = quick ? Refinement::at_once : m_refinement.when;
+    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change, when));
     refine_if_quick(points);
     if (!m_view)
         return;
@@ -26,8 +34,8 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
     m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
-// A local change's arc lengths are measured at once (its first picture is the final one); a
-// global change's all wait for the steps.
+// Arc lengths left of no more than a step's segments (a path that short, or a local change over
+// one that was) are measured at once; a global change's all wait for the steps.
 void PathPicture::refine_if_quick(std::span<const ControlPoint> points)
 {
     if (m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)

@@ -34,9 +34,10 @@ class PathPicture {
 public:
     // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
     // Refinement::in_steps (the terminal): a change, a view or opening does at once what the first
-    // picture needs and one step more, and leaves the rest (exact spacing's arc lengths and the
-    // in-betweens on them, the curve's blocks past a step's work) to refine_step(); until then
-    // refining() is true and the in-betweens are not drawn. Refinement::at_once does it all at once.
+    // picture needs (the segments; the curve's blocks up to a step's work; the arc lengths too when
+    // no more than a step's are to be measured, as after a local key) and leaves the rest to
+    // refine_step(); until then refining() is true and the in-betweens are not drawn.
+    // Refinement::at_once does it all at once.
     PathPicture(std::span<const ControlPoint> points, const PathSettings& settings, PictureRefinement refinement = {});
 
     // The points changed as `change` says (`points` are those after it).
