@@ -5,6 +5,9 @@
 // waypoint-editor key (a point moved, inserted, deleted, in the middle of the path); and opening the
 // path to its first picture. How the cost grows with the points. The paths: a long trajectory
 // (along y, small wiggles in x and z) and a scribble (consecutive points across the screen).
+// The *_in_steps cases take the terminal's way (Refinement::in_steps, path_picture.h): the time to
+// the first picture (the key or the opening, and its screen), and to the final one (then every
+// refinement step until none is left, and the screen again); each key starts from a refined picture.
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
 #include "apcs/session/path_editor.h"
@@ -22,12 +25,15 @@ namespace {
 enum class KeyKind { global_tension, local_tension, global_acceleration };
 enum class WaypointKey { move, insert, remove };
 enum class Shape { trajectory, scribble };
+enum class Until { first_picture, final_picture };
 
-PathEditor::Setup long_path(std::size_t count, Spacing spacing, Shape shape = Shape::trajectory)
+PathEditor::Setup long_path(std::size_t count, Spacing spacing, Shape shape = Shape::trajectory,
+                            Refinement refinement = Refinement::at_once)
 {
     PathEditor::Setup setup;
     setup.path_name = "way1.dat";
     setup.settings.spacing = spacing;
+    setup.refinement.when = refinement;
     for (std::size_t k = 0; k < count; ++k) {
         const double t = static_cast<double>(k);
         const double along = shape == Shape::trajectory ? t * 2.0 : t * 1e-6;
@@ -84,6 +90,46 @@ void staff_key(benchmark::State& state, Shape shape)
 void staff_key_on_long_path(benchmark::State& state) { staff_key(state, Shape::trajectory); }
 void staff_key_on_scribble(benchmark::State& state) { staff_key(state, Shape::scribble); }
 
+void refine_all(PathEditor& editor)
+{
+    while (editor.refining())
+        editor.refine_step();
+}
+
+// The key's first picture, or its final one after every step (args: points, key, spacing, until).
+void staff_key_in_steps(benchmark::State& state, Shape shape)
+{
+    UnloggedSteps log;
+    PathEditor editor(long_path(static_cast<std::size_t>(state.range(0)), static_cast<Spacing>(state.range(2)), shape,
+                                Refinement::in_steps),
+                      log);
+    go_to_staff(editor, static_cast<KeyKind>(state.range(1)));
+    refine_all(editor);
+    if (editor.phase() != SessionPhase::staff) {
+        state.SkipWithError("the editor is not on the staff: the key would change nothing");
+        return;
+    }
+    const auto until = static_cast<Until>(state.range(3));
+    AsciiGlyphCache cache;
+    int step = 1;
+    for (auto _ : state) {
+        step = -step;
+        editor.update(command::StaffStep{step});
+        show(editor, cache);
+        if (until == Until::final_picture) {
+            refine_all(editor);
+            show(editor, cache);
+        } else {
+            state.PauseTiming();
+            refine_all(editor);
+            state.ResumeTiming();
+        }
+    }
+}
+
+void staff_key_in_steps_on_long_path(benchmark::State& state) { staff_key_in_steps(state, Shape::trajectory); }
+void staff_key_in_steps_on_scribble(benchmark::State& state) { staff_key_in_steps(state, Shape::scribble); }
+
 // A key in the waypoint editor on the middle control point; an insertion or deletion is undone (U,
 // not timed) before the next, so the path keeps its size.
 void waypoint_key(benchmark::State& state, Shape shape)
@@ -120,10 +166,12 @@ void waypoint_key_on_long_path(benchmark::State& state) { waypoint_key(state, Sh
 void waypoint_key_on_scribble(benchmark::State& state) { waypoint_key(state, Shape::scribble); }
 
 // Opening: the editor evaluates the path, fits the view and draws the first picture (the points
-// are made before the clock starts, as a file read would have made them).
-void open_long_path(benchmark::State& state)
+// are made before the clock starts, as a file read would have made them); the terminal's way
+// (Refinement::in_steps), to the first picture or to the final one.
+void open_path(benchmark::State& state, Refinement refinement, Until until)
 {
-    const PathEditor::Setup setup = long_path(static_cast<std::size_t>(state.range(0)), static_cast<Spacing>(state.range(1)));
+    const PathEditor::Setup setup = long_path(static_cast<std::size_t>(state.range(0)), static_cast<Spacing>(state.range(1)),
+                                              Shape::trajectory, refinement);
     AsciiGlyphCache cache;
     for (auto _ : state) {
         state.PauseTiming();
@@ -132,11 +180,24 @@ void open_long_path(benchmark::State& state)
         UnloggedSteps log;
         PathEditor editor(std::move(copy), log);
         show(editor, cache);
+        if (until == Until::final_picture) {
+            refine_all(editor);
+            show(editor, cache);
+        }
     }
+}
+
+void open_long_path(benchmark::State& state) { open_path(state, Refinement::at_once, Until::first_picture); }
+// Args: points, spacing, until.
+void open_long_path_in_steps(benchmark::State& state)
+{
+    open_path(state, Refinement::in_steps, static_cast<Until>(state.range(2)));
 }
 
 constexpr int nearest = static_cast<int>(Spacing::nearest);
 constexpr int exact = static_cast<int>(Spacing::exact);
+constexpr int first_picture = static_cast<int>(Until::first_picture);
+constexpr int final_picture = static_cast<int>(Until::final_picture);
 
 } // namespace
 
@@ -169,6 +230,29 @@ BENCHMARK(waypoint_key_on_scribble)
                    {static_cast<int>(WaypointKey::move), static_cast<int>(WaypointKey::insert),
                     static_cast<int>(WaypointKey::remove)}})
     ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(staff_key_in_steps_on_long_path)
+    ->ArgNames({"points", "key", "spacing", "until"})
+    ->ArgsProduct({{1'000'000},
+                   {static_cast<int>(KeyKind::global_tension), static_cast<int>(KeyKind::local_tension),
+                    static_cast<int>(KeyKind::global_acceleration)},
+                   {nearest, exact},
+                   {first_picture, final_picture}})
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(staff_key_in_steps_on_scribble)
+    ->ArgNames({"points", "key", "spacing", "until"})
+    ->ArgsProduct({{1'000'000},
+                   {static_cast<int>(KeyKind::global_tension), static_cast<int>(KeyKind::local_tension)},
+                   {nearest},
+                   {first_picture, final_picture}})
+    ->Unit(benchmark::kMillisecond);
+
+BENCHMARK(open_long_path_in_steps)
+    ->ArgNames({"points", "spacing", "until"})
+    ->ArgsProduct({{1'000'000}, {nearest, exact}, {first_picture, final_picture}})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 BENCHMARK(open_long_path)
     ->ArgNames({"points", "spacing"})

@@ -262,19 +262,65 @@ void CurveArcLengths::measure(std::span<const HermiteSegment> segments)
     m_cumulative.assign(segments.size() + 1, 0.0);
     measure_range(segments, 0, segments.size());
     add_up_from(0);
+    m_pending_first = m_pending_end = 0;
+    m_sum_from = m_cumulative.size();
 }
 
 void CurveArcLengths::remeasure(std::span<const HermiteSegment> segments, const SegmentSplice& change)
 {
+    mark_changed(segments, change);
+    measure_pending(segments, segments.size());
+}
+
+void CurveArcLengths::mark_changed(std::span<const HermiteSegment> segments, const SegmentSplice& change)
+{
     const bool fits = change.old_end() <= m_segment_length.size() &&
                       m_segment_length.size() - change.removed + change.inserted == segments.size();
     if (!fits)
-        return measure(segments);
+        return mark_all(segments);
+    // Where an index of the curve before the change stands after it; one inside the change goes to
+    // the change's start (a first) or end (an end).
+    const auto moved = [&](std::size_t index, bool is_end) {
+        if (index < change.first || (is_end && index == change.first))
+            return index;
+        if (index >= change.old_end())
+            return index - change.removed + change.inserted;
+        return is_end ? change.new_end() : change.first;
+    };
+    const bool had_pending = m_pending_first < m_pending_end;
+    const std::size_t first = had_pending ? std::min(moved(m_pending_first, false), change.first) : change.first;
+    const std::size_t end = had_pending ? std::max(moved(m_pending_end, true), change.new_end()) : change.new_end();
+    const std::size_t sum_from = std::min(m_sum_from >= m_cumulative.size() ? change.first : moved(m_sum_from, false),
+                                          change.first);
     splice_room(m_intervals, change);
     splice_room(m_segment_length, change);
     m_cumulative.resize(segments.size() + 1);
-    measure_range(segments, change.first, change.new_end());
-    add_up_from(change.first);
+    m_pending_first = first;
+    m_pending_end = end;
+    m_sum_from = sum_from;
+}
+
+void CurveArcLengths::mark_all(std::span<const HermiteSegment> segments)
+{
+    m_intervals.assign(segments.size(), 0);
+    m_segment_length.assign(segments.size(), 0.0);
+    m_cumulative.assign(segments.size() + 1, 0.0);
+    m_pending_first = 0;
+    m_pending_end = segments.size();
+    m_sum_from = 0;
+}
+
+void CurveArcLengths::measure_pending(std::span<const HermiteSegment> segments, std::size_t most_segments)
+{
+    const std::size_t end = m_pending_first + std::min(most_segments, m_pending_end - m_pending_first);
+    measure_range(segments, m_pending_first, end);
+    m_pending_first = end;
+    if (m_pending_first < m_pending_end)
+        return;
+    m_pending_first = m_pending_end = 0;
+    if (m_sum_from < m_cumulative.size())
+        add_up_from(m_sum_from);
+    m_sum_from = m_cumulative.size();
 }
 
 // A global change of 10^6 segments measures them on both cores; each segment alike either way.

@@ -88,15 +88,35 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
     return path;
 }
 
-void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
+void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                   Refinement refinement)
 {
     kb_segments(points, settings.slopes, path.curve.segments);
     sample_curve(path.curve, settings.samples_per_segment);
+    if (settings.spacing == Spacing::exact && refinement == Refinement::in_steps) {
+        path.arc_lengths.mark_all(path.curve.segments);
+        path.inbetweens_current = false;
+        return;
+    }
     if (settings.spacing == Spacing::exact)
         path.arc_lengths.measure(path.curve.segments);
     else
         path.arc_lengths = {};
     place_inbetweens(points, settings, path);
+}
+
+bool refine_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                 std::size_t most_segments)
+{
+    if (path.inbetweens_current)
+        return true;
+    if (path.arc_lengths.pending()) {
+        path.arc_lengths.measure_pending(path.curve.segments, most_segments);
+        if (path.arc_lengths.pending())
+            return false;
+    }
+    place_inbetweens(points, settings, path);
+    return true;
 }
 
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
@@ -158,6 +178,7 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
     path.inbetweens.clear();
     path.span_timings.clear();
     path.frozen_frames.clear();
+    path.inbetweens_current = true;
     if (path.curve.segments.empty())
         return;
     const int inbetween_count = std::max(settings.inbetween_count, 0);
@@ -166,6 +187,8 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
     CurveArcLengths& arc_lengths = path.arc_lengths;
     if (exact && arc_lengths.segment_count() != segments.size())
         arc_lengths.measure(segments);
+    else if (exact && arc_lengths.pending())
+        arc_lengths.measure_pending(segments, segments.size());
     // Distance from the curve's start to control point k, in the measure the spacing uses.
     const auto boundary = [&](std::size_t control_point) {
         return exact ? arc_lengths.length_to_segment_start(control_point) : path.curve.length_to_point[control_point];
@@ -281,29 +304,37 @@ std::size_t remake_segments(std::span<const ControlPoint> points, const PathSett
     return std::min(changed_first[0], changed_first[1]);
 }
 
-SegmentSplice evaluated_afresh(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
+SegmentSplice evaluated_afresh(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                               Refinement refinement = Refinement::at_once)
 {
     const std::size_t old_segments = path.curve.segments.size();
-    evaluate_path(points, settings, path);
+    evaluate_path(points, settings, path, refinement);
     return {0, old_segments, path.curve.segments.size()};
 }
 
 } // namespace
 
 SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                              const PathChange& change)
+                              const PathChange& change, Refinement refinement)
 {
     const std::size_t old_segments = path.curve.segments.size();
     if (!change_fits(points, settings, path, change))
-        return evaluated_afresh(points, settings, path);
+        return evaluated_afresh(points, settings, path, refinement);
+    // Exact spacing in steps: the arc lengths and the in-betweens wait for refine_path.
+    const bool later = refinement == Refinement::in_steps && settings.spacing == Spacing::exact;
     const bool same_count = change.removed == change.inserted;
-    std::vector<AccelerationSpan> spans =
-        same_count && change.inserted > 0 &&
-                same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1)
-            ? spans_of(path.span_timings)
-            : acceleration_spans(points);
+    // The spans placed last are those of the points only when the in-betweens are current.
+    std::vector<AccelerationSpan> spans;
+    if (!later)
+        spans = same_count && change.inserted > 0 && path.inbetweens_current &&
+                        same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1)
+                    ? spans_of(path.span_timings)
+                    : acceleration_spans(points);
     if (change.what == PathChange::What::accelerations) {
-        place_inbetweens_on(std::move(spans), points, settings, path);
+        if (later)
+            path.inbetweens_current = false;
+        else
+            place_inbetweens_on(std::move(spans), points, settings, path);
         return {change.first, 0, 0};
     }
     const SegmentSplice touched = segments_touched(change, old_segments, points.size() - 1);
@@ -316,6 +347,11 @@ SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSe
         add_up_lengths(curve, touched.first);
     else if (changed < touched.new_end())
         add_up_lengths(curve, changed);
+    if (later) {
+        path.arc_lengths.mark_changed(curve.segments, touched);
+        path.inbetweens_current = false;
+        return touched;
+    }
     if (settings.spacing == Spacing::exact)
         path.arc_lengths.remeasure(curve.segments, touched);
     place_inbetweens_on(std::move(spans), points, settings, path);

@@ -505,6 +505,9 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalSessi
     files.log("session started");
     SessionSettings settings = session_settings(options);
     settings.memory_limit_bytes = *limit;
+    // On a terminal a key's first picture comes at once and is refined while no key waits;
+    // headless, every key's work is done before the next (the screens printed are final).
+    settings.refinement = headless ? Refinement::at_once : Refinement::in_steps;
     Session session(std::move(settings), files);
     std::vector<KeyEvent> recorded;
     // With --record -, standard output holds the keystrokes, not the headless screens.

@@ -4,6 +4,7 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
+#include <array>
 
 namespace apcs {
 
@@ -24,6 +25,7 @@ void CurveRaster::splice(const SegmentSplice& change)
         if (from >= to && !(change.removed == 0 && holds_start))
             continue;
         block.current = false;
+        m_composed_whole = false;
         block.segment_count -= from < to ? to - from : 0;
         if (!inserted_placed)
             block.segment_count += change.inserted;
@@ -43,12 +45,14 @@ void CurveRaster::split_large_blocks()
         second.segment_count = m_blocks[b].segment_count - segments_per_block;
         m_blocks[b].segment_count = segments_per_block;
         m_blocks[b].current = false;
+        m_composed_whole = false;
         m_blocks.insert(m_blocks.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(second));
     }
 }
 
 void CurveRaster::start_blocks(std::size_t segment_count)
 {
+    m_composed_whole = false;
     m_blocks.resize((segment_count + segments_per_block - 1) / segments_per_block);
     for (std::size_t b = 0; b < m_blocks.size(); ++b) {
         m_blocks[b].segment_count = std::min(segments_per_block, segment_count - b * segments_per_block);
@@ -56,7 +60,7 @@ void CurveRaster::start_blocks(std::size_t segment_count)
     }
 }
 
-void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip)
+void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip, std::size_t most_work)
 {
     const std::size_t segment_count = curve.segments.size();
     if (m_view != view || m_clip != clip || m_segment_count != segment_count ||
@@ -75,15 +79,36 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
     if (stale.empty() && !m_blocks.empty())
         return;
     // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
-    split_across_cores(stale.size(), 1, [&](std::size_t first, std::size_t end) {
-        for (std::size_t i = first; i < end; ++i)
-            draw_block(m_blocks[stale[i].first], curve, stale[i].second);
-    });
-    compose();
+    std::size_t done = 0;
+    std::size_t work = 0;
+    std::size_t round = most_work == all_work ? stale.size() : 2;
+    while (done < stale.size() && work < most_work) {
+        const std::size_t count = std::min(round, stale.size() - done);
+        std::array<std::size_t, 2> halves{};
+        split_across_cores(count, 1, [&](std::size_t first, std::size_t end) {
+            std::size_t half = 0;
+            for (std::size_t i = done + first; i < done + end; ++i)
+                half += draw_block(m_blocks[stale[i].first], curve, stale[i].second);
+            halves[first == 0 ? 0 : 1] = half;
+        });
+        done += count;
+        work += halves[0] + halves[1];
+        // As many blocks as the work left allows at the cost of those drawn, two at the least.
+        round = std::max<std::size_t>(2, work == 0 || work >= most_work ? 2 * round : (most_work - work) * done / work);
+    }
+    // Blocks drawn on top of a picture of current blocks only are laid over it (a picture drawn
+    // in steps); else all are laid again.
+    if (!m_composed_whole)
+        return compose();
+    for (std::size_t i = 0; i < done; ++i) {
+        const Block& block = m_blocks[stale[i].first];
+        m_composed.merge(block.raster, block.first_row, block.end_row);
+    }
 }
 
-void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const
+std::size_t CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const
 {
+    std::size_t lines = 0;
     block.raster.clear();
     block.first_row = block.raster.height();
     block.end_row = 0;
@@ -93,10 +118,17 @@ void CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_
     for_each_curve_line(curve, *m_view, first_segment, first_segment + block.segment_count,
                         [&](const PixelLine& line) {
                             painter.styled_line(line.from, line.to, LineStyle::solid, phase);
+                            ++lines;
                             block.first_row = std::min({block.first_row, line.from.y, line.to.y});
                             block.end_row = std::max({block.end_row, line.from.y + 1, line.to.y + 1});
                         });
     block.current = true;
+    return lines + block.segment_count;
+}
+
+std::size_t CurveRaster::blocks_drawn() const
+{
+    return static_cast<std::size_t>(std::ranges::count_if(m_blocks, [](const Block& block) { return block.current; }));
 }
 
 // A long trajectory's blocks each reach a few rows: only those are laid.
@@ -104,7 +136,9 @@ void CurveRaster::compose()
 {
     m_composed.clear();
     for (const Block& block : m_blocks)
-        m_composed.merge(block.raster, block.first_row, block.end_row);
+        if (block.current)
+            m_composed.merge(block.raster, block.first_row, block.end_row);
+    m_composed_whole = true;
 }
 
 } // namespace apcs

@@ -118,7 +118,7 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
     , m_origins(file_origins(m_setup.points.size()))
     , m_log(log)
-    , m_picture(m_setup.points, m_setup.settings)
+    , m_picture(m_setup.points, m_setup.settings, m_setup.refinement)
 {
     assert(m_setup.points.size() >= 2);
     fit_view();
@@ -218,8 +218,34 @@ void PathEditor::show_problem(const std::string& message)
         m_mode = AskAgain{ControlRegion::whole(m_setup.points), m_setup.points.front().staff};
 }
 
+namespace {
+
+bool adds_to_refinement(const Command& command)
+{
+    return std::holds_alternative<command::StaffStep>(command) || std::holds_alternative<command::MovePoint>(command) ||
+           std::holds_alternative<command::InsertPoint>(command) || std::holds_alternative<command::DeletePoint>(command);
+}
+
+} // namespace
+
+void PathEditor::refine_step()
+{
+    if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
+        return waypoints->editor.refine_step();
+    m_picture.refine_step(m_setup.points);
+}
+
+void PathEditor::refine()
+{
+    if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
+        return waypoints->editor.refine();
+    m_picture.refine(m_setup.points);
+}
+
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
+    if (!adds_to_refinement(command))
+        refine();
     const Outcome outcome = take_command(command);
     // The waypoint editor boxes its chosen point in the picture it holds.
     if (!std::holds_alternative<Waypoints>(m_mode))

@@ -143,6 +143,9 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
 {
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
+    // A first picture says it is one (its in-betweens are not drawn); a problem matters more.
+    if (m_problem.empty() && picture().refining())
+        content.message = picture().refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
     content.ghost = m_show_ghost;

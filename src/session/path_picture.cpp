@@ -2,18 +2,32 @@
 
 #include "apcs/session/screen_layout.h"
 
+#include <algorithm>
+
 namespace apcs {
 
-PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings)
+PathPicture::PathPicture(std::span<const ControlPoint> points, const PathSettings& settings,
+                         PictureRefinement refinement)
     : m_settings(settings)
-    , m_evaluated(evaluate_path(points, settings))
+    , m_refinement(refinement)
 {
+    evaluate_path(points, settings, m_evaluated, refinement.when);
+    refine_if_quick(points);
 }
 
 void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange& change, PointsBack back)
 {
-    m_ghost = m_curve.pixels();
-    m_ghost_back = std::move(back);
+    if (m_curve.drawn()) {
+        m_ghost = m_curve.pixels();
+        m_ghost_back = std::move(back);
+    } else if (m_ghost && m_ghost_back) {
+        // While the curve is drawn in steps the ghost kept before stays (the last curve drawn
+        // whole): its path is now two changes back.
+        m_ghost_back = [this_change = std::move(back), earlier = std::move(m_ghost_back)](ControlPoints& points) {
+            this_change(points);
+            earlier(points);
+        };
+    }
     remake(points, change);
 }
 
@@ -25,7 +39,14 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
 
 void PathPicture::remake(std::span<const ControlPoint> points, const PathChange& change)
 {
-    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change));
+    // A change of a step's segments or fewer (a local key, an acceleration, a waypoint edit) on a
+    // refined path is evaluated at once: its first picture is its final one.
+    const std::size_t segments =
+        change.what == PathChange::What::accelerations ? 0 : std::max(change.removed, change.inserted) + 3;
+    const bool quick = segments <= m_refinement.segments_a_step && m_evaluated.inbetweens_current;
+    const Refinement when = quick ? Refinement::at_once : m_refinement.when;
+    m_curve.splice(reevaluate_path(points, m_settings, m_evaluated, change, when));
+    refine_if_quick(points);
     if (!m_view)
         return;
     draw_curve();
@@ -33,6 +54,42 @@ void PathPicture::remake(std::span<const ControlPoint> points, const PathChange&
         return;
     update_control_point_runs(m_point_runs, points, *m_view, change);
     m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+// Arc lengths left of no more than a step's segments (a path that short, or a local change over
+// one that was) are measured at once; a global change's all wait for the steps.
+void PathPicture::refine_if_quick(std::span<const ControlPoint> points)
+{
+    if (m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+}
+
+bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }
+
+// The curve first (the picture), then the arc lengths.
+void PathPicture::refine_step(std::span<const ControlPoint> points)
+{
+    if (m_view && !m_curve.drawn())
+        draw_curve();
+    else
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+}
+
+void PathPicture::refine(std::span<const ControlPoint> points)
+{
+    if (m_view && !m_curve.drawn())
+        m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
+    refine_path(points, m_settings, m_evaluated, m_evaluated.curve.segments.size());
+}
+
+std::string PathPicture::refining_message() const
+{
+    if (m_view && !m_curve.drawn())
+        return "drawing the curve: " + std::to_string(m_curve.blocks_drawn()) + " of " +
+               std::to_string(m_curve.block_count()) + " blocks (keys are taken meanwhile)";
+    if (!m_evaluated.inbetweens_current)
+        return "measuring arc lengths for exact spacing: in-betweens shown when done";
+    return {};
 }
 
 void PathPicture::set_view(std::span<const ControlPoint> points, const ViewTransform& view)
@@ -74,7 +131,11 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
     m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
-void PathPicture::draw_curve() { m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary); }
+void PathPicture::draw_curve()
+{
+    m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary,
+                   m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step);
+}
 
 GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
 {

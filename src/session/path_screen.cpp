@@ -175,6 +175,9 @@ void draw_dotted(Painter& painter, const std::vector<Vec3>& polyline, const View
 // Draw_Ani_Path: a mark at every in-between the path will show.
 void draw_ani_path(GraphicsScreen& screen, const EvaluatedPath& path, const ViewTransform& view)
 {
+    // In-betweens of an earlier state (exact spacing still measuring) would stand where none is.
+    if (!path.inbetweens_current)
+        return;
     for (const Inbetween& inbetween : path.inbetweens)
         screen.marks.push_back(
             {view.to_device(inbetween.position).rounded(), MarkKind::inbetween, CellStyle::plain, ColourRole::inbetween});
@@ -282,7 +285,7 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         screen.text.push_back({1, layout::message_row, content.message});
     if (!content.key_help.empty())
         screen.text.push_back({1, layout::key_help_row, content.key_help});
-    if (content.path != nullptr && content.law_span)
+    if (content.path != nullptr && content.law_span && content.path->inbetweens_current)
         draw_law_inset(screen, *content.path, *content.law_span);
     return screen;
 }

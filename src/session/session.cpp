@@ -245,8 +245,16 @@ void Session::tick()
         playing->player.tick();
 }
 
+bool Session::busy() const
+{
+    const auto* shaping = std::get_if<step::Shaping>(&m_step);
+    return std::holds_alternative<step::Splitting>(m_step) || (shaping != nullptr && shaping->editor.refining());
+}
+
 void Session::work()
 {
+    if (auto* shaping = std::get_if<step::Shaping>(&m_step))
+        return shaping->editor.refine_step();
     auto* splitting = std::get_if<step::Splitting>(&m_step);
     if (splitting == nullptr)
         return;
@@ -298,6 +306,9 @@ SessionScreen Session::graphics_screen(GraphicsScreen picture) const
 
 void Session::save_picture()
 {
+    // The picture written is the final one, never a first picture still refined.
+    if (auto* shaping = std::get_if<step::Shaping>(&m_step))
+        shaping->editor.refine();
     const SessionScreen shown = screen();
     if (!shown.graphics) {
         m_notice = "P writes a picture in graphics mode only";

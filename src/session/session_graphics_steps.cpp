@@ -44,7 +44,8 @@ Shaping Shaping::after(const SlopesPrompt& slopes, StepContext& context)
             key_frames.push_back(std::move(polyline));
     return {slopes.path,
             PathEditor(PathEditor::Setup{path.name, path.points, context.path_settings(slopes.path), model.view_angles,
-                                         std::move(key_frames), context.settings.step},
+                                         std::move(key_frames), context.settings.step,
+                                         PictureRefinement{.when = context.settings.refinement}},
                        context.files)};
 }
 

@@ -35,6 +35,18 @@ public:
     void measure(std::span<const HermiteSegment> segments);
     // `segments` is the curve after `change`; the curve before it was the one last measured.
     void remeasure(std::span<const HermiteSegment> segments, const SegmentSplice& change);
+    // The same in steps (a first picture, refined after): the table is made to fit the curve after
+    // `change` and the segments it made are only marked to be measured; a change marked before and
+    // not yet measured is kept (the two ranges become one). Until measure_pending() has measured
+    // them all, the lengths are those of no curve: pending() says so.
+    void mark_changed(std::span<const HermiteSegment> segments, const SegmentSplice& change);
+    // Every segment marked (the table made to fit `segments`).
+    void mark_all(std::span<const HermiteSegment> segments);
+    bool pending() const { return m_pending_first < m_pending_end || m_sum_from < m_cumulative.size(); }
+    std::size_t segments_pending() const { return m_pending_end - m_pending_first; }
+    // Measures up to `most_segments` of the marked segments (in order), and adds the lengths up once
+    // none is left. The numbers are then remeasure's, to the bit: each segment is measured alike.
+    void measure_pending(std::span<const HermiteSegment> segments, std::size_t most_segments);
 
     std::size_t segment_count() const { return m_segment_length.size(); }
     double total_length() const { return m_cumulative.empty() ? 0.0 : m_cumulative.back(); }
@@ -56,6 +68,11 @@ private:
     std::vector<double> m_segment_length;
     // m_cumulative[k] = length of segments 0 … k−1; size = segments + 1.
     std::vector<double> m_cumulative;
+    // mark_changed: segments m_pending_first … m_pending_end − 1 are to be measured, the sums from
+    // m_cumulative[m_sum_from + 1] on to be added up (m_sum_from = size: none).
+    std::size_t m_pending_first = 0;
+    std::size_t m_pending_end = 0;
+    std::size_t m_sum_from = 1;
 };
 
 // The arc lengths of a copy of `segments`, so that the table outlives its argument.

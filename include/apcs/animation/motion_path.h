@@ -76,6 +76,10 @@ struct EvaluatedPath {
     // a position on a path of some length; a path of zero length, all one point by nature, lists none.
     std::vector<std::size_t> frozen_frames;
     bool frames_freeze() const { return !frozen_frames.empty(); }
+    // False after a change evaluated with Refinement::in_steps under exact spacing, until
+    // refine_path has measured the arc lengths it marked and placed the in-betweens on them: the
+    // in-betweens, span timings and frozen frames are then those of an earlier state of the path.
+    bool inbetweens_current = true;
 };
 
 // The frozen frames named as the animator counts them, "KEY1=1, 5=6, 12=KEY2" (in-betweens by the
@@ -89,7 +93,10 @@ std::string describe_frozen_frames(const EvaluatedPath& path, std::size_t most_n
 EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings);
 // The same into `path`, whose arrays keep their room: an editor that evaluates a long path at
 // every key neither allocates nor faults in the pages of millions of samples again.
-void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path);
+// With Refinement::in_steps and exact spacing the arc lengths are only marked to be measured and
+// the in-betweens not placed (refine_path does both).
+void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                   Refinement refinement = Refinement::at_once);
 // `path` was evaluated from the points before `change` with `settings`; `points` are those after
 // it. Only the segments whose tangents the changed points set are made and measured again (and
 // their arc lengths, with exact spacing), the lengths after them added up again, and the
@@ -97,8 +104,16 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 // acceleration changes no segment. The result is evaluate_path's, to the bit; arrays that do not
 // fit the change, or a change outside the path, are evaluated afresh.
 // Returns the segments it made again (all of them when evaluated afresh: removed = the old count).
+// With Refinement::in_steps and exact spacing, the arc lengths of the segments made again are only
+// marked (kept with those a change before marked and refine_path has not measured yet) and the
+// in-betweens not placed: the curve is as at once, the rest waits for refine_path.
 SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                              const PathChange& change);
+                              const PathChange& change, Refinement refinement = Refinement::at_once);
+// One step of what Refinement::in_steps left: up to `most_segments` arc lengths measured, and once
+// all are, the in-betweens placed. Returns whether the path is then as evaluate_path makes it (to
+// the bit); `points` and `settings` are those of the last change.
+bool refine_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                 std::size_t most_segments);
 // The same for a change of staff values of control points first_changed … last_changed.
 SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                               std::size_t first_changed, std::size_t last_changed);

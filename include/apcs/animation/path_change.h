@@ -19,6 +19,11 @@ struct PathChange {
     What what = What::positions;
 };
 
+// When the work a change causes is done: all of it at once (scripts, tests, files), or the part a
+// first picture needs at once and the rest (exact spacing's arc lengths, the in-betweens on them,
+// the curve's pixels past a budget) in steps after it, while no key waits (the terminal).
+enum class Refinement { at_once, in_steps };
+
 // What a change did to a curve's segments: segments first … first + removed − 1 were replaced by
 // first … first + inserted − 1, and those before and after are as they were (shifted by
 // inserted − removed). A change of values only has removed == inserted; a control point inserted

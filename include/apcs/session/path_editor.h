@@ -41,6 +41,8 @@ public:
         // Both key frames as polylines: the view keeps them in sight, and K shows them.
         std::vector<std::vector<Vec3>> key_frame_polylines;
         double staff_step = 0.05;
+        // The terminal's: a key's first picture at once, the rest in refine_step() (path_picture.h).
+        PictureRefinement refinement;
     };
     enum class Outcome { editing, accepted };
 
@@ -48,9 +50,16 @@ public:
     // each key's effect is seen against a still picture.
     PathEditor(Setup setup, SessionLog& log);
 
+    // A staff step or a waypoint edit adds to what the keys before it left to refine (a key held
+    // down on a long path); any other command first finishes it, and so acts on the final picture.
     Outcome update(const Command& command);
     // The path screen, with an exercise's goal point marked when one is given.
     GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt) const;
+    // Refinement::in_steps: whether the last keys left work (PathPicture::refining), and one step of it.
+    bool refining() const { return picture().refining(); }
+    void refine_step();
+    // All of it (P writes a final picture).
+    void refine();
 
     SessionPhase phase() const;
     KeyContext key_context() const;

@@ -11,9 +11,19 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace apcs {
+
+// When a picture does the work a change causes (path_change.h), and how much one step of
+// Refinement::in_steps does: arc lengths measured, and the curve's drawing (CurveRaster::update's
+// work: a line drawn or a segment visited is one). A step is a few milliseconds of one core.
+struct PictureRefinement {
+    Refinement when = Refinement::at_once;
+    std::size_t segments_a_step = std::size_t{1} << 15;
+    std::size_t drawing_a_step = std::size_t{1} << 20;
+};
 
 // The picture of a path being edited, kept beside its control points (the model) for a still view:
 // the path evaluated (with its arc lengths under exact spacing), its curve drawn block by block, the
@@ -24,7 +34,12 @@ namespace apcs {
 class PathPicture {
 public:
     // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
-    PathPicture(std::span<const ControlPoint> points, const PathSettings& settings);
+    // Refinement::in_steps (the terminal): a change, a view or opening does at once what the first
+    // picture needs (the segments; the curve's blocks up to a step's work; the arc lengths too when
+    // no more than a step's are to be measured, as after a local key) and leaves the rest to
+    // refine_step(); until then refining() is true and the in-betweens are not drawn.
+    // Refinement::at_once does it all at once.
+    PathPicture(std::span<const ControlPoint> points, const PathSettings& settings, PictureRefinement refinement = {});
 
     // Turns the points after a change back into those before it: the ghost's path, drawn again
     // when the view changes (SPEC §7.2.1: the ghost stays through Z and K).
@@ -41,6 +56,15 @@ public:
     // changes (a path of 10^6 points scribbled over the screen has up to one mark per pixel).
     void box_region(std::optional<ControlRegion> region);
 
+    // What Refinement::in_steps left: one step of it (a few milliseconds), or all of it. Each
+    // takes the points of the last change. Once done, everything is as at once, to the bit and
+    // to the pixel; a change made meanwhile is added to what is left.
+    bool refining() const;
+    void refine_step(std::span<const ControlPoint> points);
+    void refine(std::span<const ControlPoint> points);
+    // While refining: what is left, for the message line ("drawing the curve: 12 of 245 blocks").
+    std::string refining_message() const;
+
     // The ghost is drawn dotted when the content asks, until drop_ghost or a change without one.
     void drop_ghost();
     bool has_ghost() const { return m_ghost.has_value(); }
@@ -56,8 +80,10 @@ private:
     void remake(std::span<const ControlPoint> points, const PathChange& change);
     void draw_curve();
     void draw_ghost(std::span<const ControlPoint> points);
+    void refine_if_quick(std::span<const ControlPoint> points);
 
     PathSettings m_settings;
+    PictureRefinement m_refinement;
     EvaluatedPath m_evaluated;
     std::optional<ViewTransform> m_view;
     CurveRaster m_curve;

@@ -32,11 +32,13 @@ public:
     void handle(const KeyEvent& event) override;
     void tick() override;
     // The split writes its path files a batch per work() (seconds for 10^5 points), so that Esc
-    // stops it at once; the screen shows how far it is.
+    // stops it at once; the screen shows how far it is. While a path is shaped, work() is a step of
+    // its picture's refinement.
     void work() override;
     bool finished() const override { return phase() == SessionPhase::finished; }
     bool animating() const override;
-    bool busy() const override { return std::holds_alternative<step::Splitting>(m_step); }
+    // Busy too while the path editor refines its picture (Refinement::in_steps): a step per work().
+    bool busy() const override;
     int delay_ms() const override { return m_model.delay_ms; }
     SessionScreen screen() const override;
 

@@ -34,6 +34,9 @@ struct SessionSettings {
     std::optional<std::string> overlay_svg; // the same as vector lines (--svg)
     // The memory one request may take (APCS_MEMORY_LIMIT): more points or samples are refused.
     std::uint64_t memory_limit_bytes = memory::default_limit_bytes;
+    // The terminal draws a long path's first picture after a key and refines it while no key waits
+    // (path_picture.h); scripts and tests take every key's work at once.
+    Refinement refinement = Refinement::at_once;
 };
 
 // What the terminal shows now: the DOS text console or the graphics screen.

@@ -42,6 +42,9 @@ public:
     const std::vector<std::size_t>& origins() const { return m_setup.origins; }
     const EvaluatedPath& evaluated() const { return m_picture.evaluated(); }
     const PathPicture& picture() const { return m_picture; }
+    // What the last edits left to refine (PathPicture::refine_step, refine).
+    void refine_step() { m_picture.refine_step(m_setup.points); }
+    void refine() { m_picture.refine(m_setup.points); }
     // Once left: the points with their origins and their picture, as kept or as they were.
     struct Path {
         ControlPoints points;

@@ -1,0 +1,280 @@
+// A first picture refined after (Refinement::in_steps, the terminal's): the work a change leaves —
+// exact spacing's arc lengths and the in-betweens on them, the curve's blocks past a step's work —
+// done in steps, changes made meanwhile added to it, comes out as the work done at once: the numbers
+// to the bit, the screen to the pixel.
+#include "apcs/session/path_editor.h"
+
+#include "support/session_keys.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace apcs;
+using apcs::test::apply;
+using apcs::test::LogLines;
+using apcs::test::message_of;
+namespace cmd = apcs::command;
+
+namespace {
+
+// Control points zigzagging over the screen: most samples on pixels of their own, every block of
+// the curve drawn at some cost.
+ControlPoints zigzag(int count)
+{
+    ControlPoints points;
+    for (int k = 0; k < count; ++k)
+        points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.001, std::cos(k * 0.37) * 2.0}, {}});
+    return points;
+}
+
+void require_same_numbers(const EvaluatedPath& kept, const EvaluatedPath& fresh)
+{
+    REQUIRE(kept.inbetweens_current);
+    REQUIRE(kept.curve.segments == fresh.curve.segments);
+    REQUIRE(kept.curve.segment_length == fresh.curve.segment_length);
+    REQUIRE(kept.curve.length_to_point == fresh.curve.length_to_point);
+    REQUIRE(kept.arc_lengths.segment_count() == fresh.arc_lengths.segment_count());
+    REQUIRE_FALSE(kept.arc_lengths.pending());
+    for (std::size_t k = 0; k <= fresh.arc_lengths.segment_count(); ++k)
+        REQUIRE(kept.arc_lengths.length_to_segment_start(k) == fresh.arc_lengths.length_to_segment_start(k));
+    REQUIRE(kept.inbetweens.size() == fresh.inbetweens.size());
+    for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j) {
+        REQUIRE(kept.inbetweens[j].position == fresh.inbetweens[j].position);
+        REQUIRE(kept.inbetweens[j].arc_fraction == fresh.inbetweens[j].arc_fraction);
+        REQUIRE(kept.inbetweens[j].sample_index == fresh.inbetweens[j].sample_index);
+    }
+    REQUIRE(kept.span_timings.size() == fresh.span_timings.size());
+    for (std::size_t s = 0; s < fresh.span_timings.size(); ++s) {
+        REQUIRE(kept.span_timings[s].start_fraction == fresh.span_timings[s].start_fraction);
+        REQUIRE(kept.span_timings[s].length_fraction == fresh.span_timings[s].length_fraction);
+        REQUIRE(kept.span_timings[s].inbetween_count == fresh.span_timings[s].inbetween_count);
+    }
+    REQUIRE(kept.frozen_frames == fresh.frozen_frames);
+}
+
+// Steps of `most` segments until refined; returns how many it took.
+int refine_in_steps(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                    std::size_t most)
+{
+    int steps = 1;
+    for (; !refine_path(points, settings, path, most); ++steps)
+        REQUIRE(steps < 100000);
+    return steps;
+}
+
+} // namespace
+
+TEST_CASE("exact spacing's arc lengths, marked by changes one over another and measured in small steps, are "
+          "those measured afresh",
+          "[animation][refinement]")
+{
+    ControlPoints points = zigzag(3000);
+    const PathSettings settings{{1, 1}, 8, 12, Spacing::exact};
+    EvaluatedPath path;
+    evaluate_path(points, settings, path, Refinement::in_steps);
+    REQUIRE_FALSE(path.inbetweens_current);
+    REQUIRE(path.arc_lengths.pending());
+    REQUIRE(refine_in_steps(points, settings, path, 700) == 5);
+    require_same_numbers(path, evaluate_path(points, settings));
+
+    const auto change = [&](const PathChange& what) { reevaluate_path(points, settings, path, what, Refinement::in_steps); };
+    // A global key, a third of it measured, then a local key, an insertion, a deletion and an
+    // acceleration, each over what the one before left.
+    for (ControlPoint& point : points)
+        point.staff.tension = 0.4;
+    change({0, points.size(), points.size(), PathChange::What::staff});
+    REQUIRE_FALSE(refine_path(points, settings, path, 1000));
+    for (std::size_t k = 2000; k < 2010; ++k)
+        points[k].staff.bias = -0.3;
+    change({2000, 10, 10, PathChange::What::staff});
+    points.insert(points.begin() + 1500, ControlPoint{{1.0, 1.5, -1.0}, {}});
+    change({1500, 0, 1, PathChange::What::positions});
+    REQUIRE_FALSE(refine_path(points, settings, path, 10));
+    points.erase(points.begin() + 2999);
+    change({2999, 1, 0, PathChange::What::positions});
+    for (std::size_t k = 100; k < 200; ++k)
+        points[k].staff.acceleration = 0.5;
+    change({100, 100, 100, PathChange::What::accelerations});
+    REQUIRE_FALSE(path.inbetweens_current);
+    refine_in_steps(points, settings, path, 333);
+    require_same_numbers(path, evaluate_path(points, settings));
+
+    SECTION("a change made at once over what steps left measures that too")
+    {
+        for (ControlPoint& point : points)
+            point.staff.continuity = -0.2;
+        change({0, points.size(), points.size(), PathChange::What::staff});
+        REQUIRE_FALSE(refine_path(points, settings, path, 100));
+        points[5].staff.tension = 0.9;
+        reevaluate_path(points, settings, path, PathChange{5, 1, 1, PathChange::What::staff});
+        require_same_numbers(path, evaluate_path(points, settings));
+    }
+    SECTION("nearest spacing leaves nothing to refine")
+    {
+        const PathSettings nearest{{1, 1}, 8, 12, Spacing::nearest};
+        EvaluatedPath near = evaluate_path(points, nearest);
+        points[7].staff.tension = -0.5;
+        reevaluate_path(points, nearest, near, PathChange{7, 1, 1, PathChange::What::staff}, Refinement::in_steps);
+        REQUIRE(near.inbetweens_current);
+        require_same_numbers(near, evaluate_path(points, nearest));
+    }
+}
+
+namespace {
+
+PathEditor::Setup zigzag_setup(Spacing spacing, Refinement when)
+{
+    PathEditor::Setup setup;
+    setup.path_name = "way1.dat";
+    // 13000: a global key leaves the curve three blocks (4096, 4096 and the rest), one more than
+    // the first round draws.
+    setup.points = zigzag(13000);
+    setup.settings = {{1, 1}, 8, 12, spacing};
+    // Small steps, so that a path of 13000 points takes many (the terminal's are 2^15 segments).
+    setup.refinement = {when, 900, 20000};
+    return setup;
+}
+
+std::vector<std::tuple<int, int, MarkKind, CellStyle>> marks_of(const GraphicsScreen& screen)
+{
+    std::vector<std::tuple<int, int, MarkKind, CellStyle>> marks;
+    for (const PixelMark& mark : screen.marks)
+        marks.emplace_back(mark.at.x, mark.at.y, mark.kind, mark.style);
+    return marks;
+}
+
+bool has_inbetween_marks(const GraphicsScreen& screen)
+{
+    for (const PixelMark& mark : screen.marks)
+        if (mark.kind == MarkKind::inbetween)
+            return true;
+    return false;
+}
+
+// Refines in steps, each first picture saying that it is one; returns the steps taken.
+int refine_editor(PathEditor& editor)
+{
+    int steps = 0;
+    while (editor.refining()) {
+        const GraphicsScreen first = editor.view();
+        const std::string message = message_of(first);
+        const bool says_so = message.starts_with("drawing the curve: ") || message.starts_with("measuring arc lengths");
+        REQUIRE(says_so);
+        if (message.starts_with("measuring"))
+            REQUIRE_FALSE(has_inbetween_marks(first));
+        editor.refine_step();
+        REQUIRE(++steps < 10000);
+    }
+    return steps;
+}
+
+} // namespace
+
+TEST_CASE("every key's picture, refined in steps before the next, is the picture made at once, ghost and message "
+          "line included",
+          "[session][editor][refinement]")
+{
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        CAPTURE(static_cast<int>(spacing));
+        LogLines log;
+        PathEditor at_once(zigzag_setup(spacing, Refinement::at_once), log);
+        PathEditor in_steps(zigzag_setup(spacing, Refinement::in_steps), log);
+        int steps_taken = refine_editor(in_steps);
+        const auto same_screen = [&](const char* after) {
+            CAPTURE(after);
+            steps_taken += refine_editor(in_steps);
+            const GraphicsScreen expected = at_once.view();
+            const GraphicsScreen shown = in_steps.view();
+            REQUIRE(shown.bitmap == expected.bitmap);
+            REQUIRE(marks_of(shown) == marks_of(expected));
+            REQUIRE(message_of(shown) == message_of(expected));
+            require_same_numbers(in_steps.evaluated(), at_once.evaluated());
+        };
+        const auto both = [&](std::initializer_list<Command> commands) {
+            apply(at_once, commands);
+            apply(in_steps, commands);
+        };
+        same_screen("opening");
+        both({cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
+        same_screen("a global key on TENSION");
+        both({cmd::StaffStep{-1}});
+        same_screen("another, with the ghost of the first");
+        both({cmd::Undo{}});
+        same_screen("its undo");
+        both({cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{-2}});
+        same_screen("a global key on ACCELERATION");
+        both({cmd::Accept{}, cmd::Yes{}, cmd::ChooseLocal{}, cmd::ArrowMove{1}, cmd::ArrowMove{4094}, cmd::Accept{},
+              cmd::ArrowMove{3}, cmd::Accept{}, cmd::StaffStep{-4}});
+        same_screen("a local key across two blocks");
+        both({cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Yes{}, cmd::OpenWaypoints{},
+              cmd::ChoosePoint{4095}, cmd::MovePoint{2, -1, 1}, cmd::InsertPoint{}, cmd::ChoosePoint{-3},
+              cmd::DeletePoint{}});
+        same_screen("waypoints moved, inserted and deleted");
+        both({cmd::Undo{}, cmd::Accept{}, cmd::Undo{}});
+        same_screen("waypoint changes undone");
+        // The steps were taken: the first pictures were first pictures (the curve's last block at
+        // opening and after each global key; 15 steps of arc lengths too for each with exact spacing).
+        REQUIRE(steps_taken >= (spacing == Spacing::exact ? 40 : 4));
+    }
+}
+
+TEST_CASE("keys pressed before the picture is refined are added to what is left; refined, the path and its "
+          "screen are those evaluated and drawn afresh",
+          "[session][editor][refinement]")
+{
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        CAPTURE(static_cast<int>(spacing));
+        LogLines log;
+        PathEditor editor(zigzag_setup(spacing, Refinement::in_steps), log);
+        const PathSettings settings = zigzag_setup(spacing, Refinement::at_once).settings;
+        apply(editor, {cmd::ToggleGhost{}}); // a fresh draw has no ghost; O finished the opening's steps
+        REQUIRE_FALSE(editor.refining());
+        const auto matches_fresh = [&](const char* after) {
+            CAPTURE(after);
+            refine_editor(editor);
+            require_same_numbers(editor.evaluated(), evaluate_path(editor.points(), settings));
+            const EvaluatedPath fresh = evaluate_path(editor.points(), settings);
+            PathScreenContent content = path_screen_content(editor.points(), fresh);
+            const GraphicsScreen drawn = draw_path_screen(content, editor.view_transform());
+            const GraphicsScreen shown = editor.view();
+            REQUIRE(shown.bitmap == drawn.bitmap);
+            const auto inbetweens = [](const GraphicsScreen& screen) {
+                std::vector<std::tuple<int, int>> at;
+                for (const PixelMark& mark : screen.marks)
+                    if (mark.kind == MarkKind::inbetween)
+                        at.emplace_back(mark.at.x, mark.at.y);
+                return at;
+            };
+            REQUIRE(inbetweens(shown) == inbetweens(drawn));
+        };
+        apply(editor, {cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
+        REQUIRE(editor.refining());
+        editor.refine_step();
+        apply(editor, {cmd::StaffStep{+2}});
+        editor.refine_step();
+        editor.refine_step();
+        apply(editor, {cmd::StaffStep{-7}});
+        REQUIRE(editor.refining());
+        matches_fresh("three global keys, each before the last was refined");
+        apply(editor, {cmd::StaffStep{+1}});
+        editor.refine_step();
+        // Undo is no staff step: it finishes what is left first, then is refined itself.
+        apply(editor, {cmd::Undo{}});
+        matches_fresh("an undo pressed mid-refinement");
+        apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{+4}, cmd::StaffStep{-1}});
+        matches_fresh("two ACCELERATION keys");
+        apply(editor, {cmd::Accept{}, cmd::Yes{}, cmd::OpenWaypoints{}, cmd::ChoosePoint{5000}, cmd::MovePoint{1, 1, 0},
+                       cmd::InsertPoint{}, cmd::InsertPoint{}, cmd::ChoosePoint{-4000}, cmd::DeletePoint{}});
+        matches_fresh("waypoint edits one over another");
+        apply(editor, {cmd::Accept{}, cmd::ChooseGlobal{}, cmd::StaffStep{-3}, cmd::StaffStep{-3}});
+        REQUIRE(editor.refining());
+        apply(editor, {cmd::Accept{}});
+        // Enter finished the refinement before it took the line.
+        REQUIRE_FALSE(editor.refining());
+        matches_fresh("Enter after two keys");
+    }
+}
