@@ -23,9 +23,9 @@ void PathPicture::refresh(std::span<const ControlPoint> points, const PathChange
     } else if (m_ghost && m_ghost_back) {
         // While the curve is drawn in steps the ghost kept before stays (the last curve drawn
         // whole): its path is now two changes back.
-        m_ghost_back = [this_change = std::move(back), earlier = std::move(m_ghost_back)](ControlPoints& points) {
-            this_change(points);
-            earlier(points);
+        m_ghost_back = [this_change = std::move(back), earlier = std::move(m_ghost_back)](ControlPoints& ghost_points) {
+            this_change(ghost_points);
+            earlier(ghost_points);
         };
     }
     remake(points, change);

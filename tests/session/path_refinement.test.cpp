@@ -2,7 +2,9 @@
 // exact spacing's arc lengths and the in-betweens on them, the curve's blocks past a step's work —
 // done in steps, changes made meanwhile added to it, comes out as the work done at once: the numbers
 // to the bit, the screen to the pixel.
+#include "apcs/session/curve_raster.h"
 #include "apcs/session/path_editor.h"
+#include "apcs/session/screen_layout.h"
 
 #include "support/session_keys.h"
 
@@ -277,4 +279,37 @@ TEST_CASE("keys pressed before the picture is refined are added to what is left;
         REQUIRE_FALSE(editor.refining());
         matches_fresh("Enter after two keys");
     }
+}
+
+TEST_CASE("keys pressed while the curve is still drawn keep the ghost drawn whole; Z draws it again from the path "
+          "two changes back",
+          "[session][editor][refinement][view]")
+{
+    LogLines log;
+    const PathEditor::Setup setup = zigzag_setup(Spacing::nearest, Refinement::in_steps);
+    const ControlPoints opened = setup.points;
+    PathEditor editor(setup, log);
+    refine_editor(editor);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
+    REQUIRE(message_of(editor.view()).rfind("drawing the curve", 0) == 0);
+    apply(editor, {cmd::StaffStep{+3}});
+    apply(editor, {cmd::Zoom{}});
+    refine_editor(editor); // the zoomed view's curve is drawn in steps too
+    // The ghost: what O takes away.
+    const Bitmap with_ghost = editor.view().bitmap;
+    apply(editor, {cmd::ToggleGhost{}});
+    const Bitmap without_ghost = editor.view().bitmap;
+    CurveRaster opened_curve;
+    opened_curve.update(evaluate_path(opened, setup.settings).curve, editor.view_transform(), layout::inside_boundary);
+    std::size_t ghost = 0;
+    std::size_t on_opened_curve = 0;
+    for (int y = 0; y < with_ghost.height(); ++y)
+        for (int x = 0; x < with_ghost.width(); ++x)
+            if (with_ghost.get(x, y) && !without_ghost.get(x, y)) {
+                ++ghost;
+                if (opened_curve.pixels().get(x, y))
+                    ++on_opened_curve;
+            }
+    REQUIRE(ghost > 50);
+    REQUIRE(on_opened_curve == ghost);
 }
