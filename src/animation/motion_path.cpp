@@ -170,6 +170,18 @@ void list_frozen_frames(EvaluatedPath& path)
         path.frozen_frames.push_back(path.inbetweens.size());
 }
 
+// A path of zero length (a point that stays) still has a pace: its in-betweens progress by the
+// first control point's law over one span, so that surface fitting never sees a neighbour stand
+// still and then jump (SPEC §5.3).
+void place_on_one_point(std::span<const ControlPoint> points, int inbetween_count, EvaluatedPath& path)
+{
+    for (int j = 1; j <= inbetween_count; ++j) {
+        const double tau = static_cast<double>(j) / (inbetween_count + 1);
+        path.inbetweens.push_back(
+            {path.curve.segments.front().start, acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
+    }
+}
+
 } // namespace
 
 void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const ControlPoint> points,
@@ -196,17 +208,8 @@ void place_inbetweens_on(std::vector<AccelerationSpan> spans, std::span<const Co
     const double total = exact ? arc_lengths.total_length() : path.curve.total_length();
 
     path.inbetweens.reserve(static_cast<std::size_t>(inbetween_count));
-    if (!(total > 0.0)) {
-        // A path of zero length (a point that stays) still has a pace: its in-betweens progress by
-        // the first control point's law over one span, so that surface fitting never sees a
-        // neighbour stand still and then jump (SPEC §5.3).
-        for (int j = 1; j <= inbetween_count; ++j) {
-            const double tau = static_cast<double>(j) / (inbetween_count + 1);
-            path.inbetweens.push_back(
-                {path.curve.segments.front().start, acceleration_distance_fraction(tau, points.front().staff.acceleration), 0});
-        }
-        return;
-    }
+    if (!(total > 0.0))
+        return place_on_one_point(points, inbetween_count, path);
 
     std::vector<double> span_lengths;
     for (const AccelerationSpan& span : spans)
