@@ -181,8 +181,8 @@ constexpr RoleColour role_colours[] = {
     {ColourRole::inbetween, 3, 'i', "red", 1, "in-between marks"},
     {ColourRole::region, 4, 'r', "magenta", 5, "picked region"},
     {ColourRole::tangent, 5, 't', "yellow", 3, "tangents (T)"},
-    {ColourRole::law, 6, 'l', "green", 2, "law inset (G)"},
-    {ColourRole::goal, 7, 'o', "white", 7, "goal"},
+    {ColourRole::law, 6, 'l', "green", 2, "law (G)"},
+    {ColourRole::goal, 7, 'o', "reverse", -1, "goal"},
 };
 
 const RoleColour& colour_of(ColourRole role)

@@ -529,7 +529,12 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
 // A waypoint edit is undone at the choice of control, where the editor was opened.
 PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
-    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_origins, change));
+    // The ghost: the path with the edit, as it was before U.
+    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_origins, change),
+                      [change](ControlPoints& points) {
+                          std::vector<std::size_t> origins(points.size());
+                          apply_change(points, origins, change);
+                      });
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;

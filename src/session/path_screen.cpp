@@ -278,7 +278,7 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
     if (content.goal_point) {
         const PixelPoint at = view.to_device(*content.goal_point).rounded();
         if (layout::inside_boundary.contains(at))
-            screen.marks.push_back({at, MarkKind::goal, CellStyle::plain, ColourRole::goal});
+            screen.marks.push_back({at, MarkKind::goal, CellStyle::reverse, ColourRole::goal});
     }
     draw_staff(screen, content);
     if (!content.message.empty())

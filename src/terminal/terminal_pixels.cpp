@@ -70,7 +70,7 @@ void TerminalPixels::show(const GraphicsScreen& screen, const PictureFrame& fram
         return;
     const PicturePlacement& placement = frame.placement;
     const Bitmap picture = scale_to_picture(drawing_area_raster(screen), placement);
-    const bool whole = repainted || m_sent_placement != placement;
+    const bool whole = repainted || m_sent_placement != placement || m_bands_since_whole >= most_bands;
     const std::optional<CellRowBand> band =
         whole ? CellRowBand{0, placement.rows} : changed_band(m_sent, picture, placement.cell.height);
     if (!band)
@@ -89,6 +89,7 @@ void TerminalPixels::show(const GraphicsScreen& screen, const PictureFrame& fram
     if (whole && m_sent_placement)
         m_terminal.remove_pictures(*m_protocol);
     m_terminal.send_picture(placement.column, band->first, *sequences);
+    m_bands_since_whole = whole ? 0 : m_bands_since_whole + 1;
     m_sent = picture;
     m_sent_placement = placement;
 }

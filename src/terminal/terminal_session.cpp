@@ -82,6 +82,8 @@ public:
                program.animating();
     }
     void hold_step() { m_step_held = true; }
+    // A goal is the student's: a Space held before it is not its answer.
+    void drop_held_step() { m_step_held = false; }
     bool take_held_step() { return std::exchange(m_step_held, false); }
     KeyEvent next()
     {
@@ -219,6 +221,8 @@ Expected<ExitStatus> run_terminal_session(InteractiveProgram& session, const Key
         replay.tell_captions(session, hooks);
         // At a goal the keyboard is the student's (Esc included) until it holds.
         const bool at_goal = replay.goal_waiting(session, hooks).has_value();
+        if (at_goal)
+            replay.drop_held_step();
         show_screen(*terminal, pixels, session, glyphs, cache, replay.shown());
         KeyEvent key;
         std::optional<TerminalInput> input;

@@ -48,6 +48,11 @@ private:
     // nullopt when none is.
     std::optional<PicturePlacement> m_sent_placement;
     Bitmap m_sent;
+    // Bands sent since the last whole picture: xterm keeps 16 sixel pictures at most and recycles
+    // the oldest (the whole one beneath the bands), kitty keeps every band as an image until the
+    // next whole picture removes them; so a whole picture goes again after most_bands of them.
+    int m_bands_since_whole = 0;
+    static constexpr int most_bands = 12;
 };
 
 // `grid` with rows 0 … rows − 1 blank: the cells under a picture, which curses must not paint.
