@@ -77,4 +77,16 @@ PathChange revert_change(ControlPoints& points, std::vector<std::size_t>& origin
     return moved_at(change.index);
 }
 
+void apply_change(ControlPoints& points, const WaypointChange& change)
+{
+    std::vector<std::size_t> origins(points.size());
+    apply_change(points, origins, change);
+}
+
+void revert_change(ControlPoints& points, const WaypointChange& change)
+{
+    std::vector<std::size_t> origins(points.size());
+    revert_change(points, origins, change);
+}
+
 } // namespace apcs

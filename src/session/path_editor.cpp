@@ -38,8 +38,6 @@ Vec3 region_middle(const ControlPoints& points, ControlRegion region)
     return box.centre();
 }
 
-constexpr int deepest_zoom = 3; // ×8
-
 // How far a staff key moved the curve at most: in world units, and in raster pixels of the view
 // shown (the larger of the x and y distances: the pixel steps a point of the curve went).
 struct CurveMove {
@@ -109,6 +107,12 @@ std::string curve_move_text(const CurveMove& moved)
            (pixels == 0 ? std::string("under 1 px") : std::to_string(pixels) + " px");
 }
 
+// The ghost's way back over a staff change: the region's runs as they were.
+PathPicture::PointsBack staff_runs_back(ControlRegion region, std::vector<StaffRun> runs)
+{
+    return [region, runs = std::move(runs)](ControlPoints& points) { restore_staff_runs(points, region, runs); };
+}
+
 // "1 change", "3 changes".
 std::string changes_text(std::size_t count) { return std::to_string(count) + (count == 1 ? " change" : " changes"); }
 
@@ -146,7 +150,7 @@ void PathEditor::show_view()
 // Z: ×2, ×4, ×8, then the fitted view again; about the picked region, or the path's middle.
 bool PathEditor::zoom()
 {
-    m_zoom_level = m_zoom_level == deepest_zoom ? 0 : m_zoom_level + 1;
+    m_zoom_level = next_zoom_level(m_zoom_level);
     const std::optional<ControlRegion> region = picked_region();
     // The path's middle: the sample halfway along the curve.
     const SampledCurve& curve = m_picture.evaluated().curve;
@@ -397,9 +401,7 @@ void PathEditor::set_staff_value(Staff& staff, double value)
         return;
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
-    PathPicture::PointsBack back = [region = staff.region, runs = change.points_before](ControlPoints& points) {
-        restore_staff_runs(points, region, runs);
-    };
+    PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
     m_history.push_back(std::move(change));
     // The segments whose tangents the region's points can set (ends included), kept to measure
     // how far the key moved the curve (an acceleration moves none).
@@ -517,8 +519,7 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
     const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
                                       ? PathChange::What::staff
                                       : PathChange::What::accelerations;
-    PathPicture::PointsBack back = [region = change.region, runs = staff_runs(m_setup.points, change.region)](
-                                       ControlPoints& points) { restore_staff_runs(points, region, runs); };
+    PathPicture::PointsBack back = staff_runs_back(change.region, staff_runs(m_setup.points, change.region));
     restore_staff_runs(m_setup.points, change.region, change.points_before);
     reevaluate_region(change.region, what, std::move(back));
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
@@ -531,10 +532,7 @@ PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
     // The ghost: the path with the edit, as it was before U.
     m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_origins, change),
-                      [change](ControlPoints& points) {
-                          std::vector<std::size_t> origins(points.size());
-                          apply_change(points, origins, change);
-                      });
+                      [change](ControlPoints& points) { apply_change(points, change); });
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;

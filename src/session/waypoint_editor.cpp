@@ -78,10 +78,7 @@ void WaypointEditor::apply(const WaypointChange& change)
 {
     // SPEC §7.2.1: the curve before the edit stays, dotted.
     m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change),
-                      [change](ControlPoints& points) {
-                          std::vector<std::size_t> origins(points.size());
-                          revert_change(points, origins, change);
-                      });
+                      [change](ControlPoints& points) { revert_change(points, change); });
     m_changes.push_back(change);
 }
 
@@ -143,17 +140,13 @@ void WaypointEditor::undo()
     const WaypointChange change = m_changes.back();
     m_changes.pop_back();
     m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change),
-                      [change](ControlPoints& points) {
-                          std::vector<std::size_t> origins(points.size());
-                          apply_change(points, origins, change);
-                      });
+                      [change](ControlPoints& points) { apply_change(points, change); });
     m_chosen = std::min(change.index, m_setup.points.size() - 1);
 }
 
 void WaypointEditor::zoom()
 {
-    constexpr int deepest_zoom = 3; // ×8
-    m_zoom_level = m_zoom_level == deepest_zoom ? 0 : m_zoom_level + 1;
+    m_zoom_level = next_zoom_level(m_zoom_level);
     const int factor = 1 << m_zoom_level;
     const Vec3 about = m_setup.points[m_chosen].position;
     m_picture.set_view(m_setup.points,

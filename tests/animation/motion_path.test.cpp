@@ -4,6 +4,8 @@
 #include "apcs/animation/sampled_curve.h"
 #include "apcs/animation/waypoint_change.h"
 
+#include "support/same_path.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <numbers>
 
 using namespace apcs;
+using apcs::test::require_same_path;
 
 namespace {
 
@@ -36,28 +39,6 @@ double widest_sample_gap(const SampledCurve& curve)
     for (std::size_t i = 1; i < curve.sample_count(); ++i)
         widest = std::max(widest, curve.chord_length(i) - curve.chord_length(i - 1));
     return widest;
-}
-
-// Equal to the bit: segments, samples, lengths, in-betweens and their spans.
-void require_same_path(const EvaluatedPath& left, const EvaluatedPath& right)
-{
-        REQUIRE(left.curve.segments == right.curve.segments);
-    REQUIRE(left.curve.segment_length == right.curve.segment_length);
-    REQUIRE(left.curve.length_to_point == right.curve.length_to_point);
-    REQUIRE(left.inbetweens.size() == right.inbetweens.size());
-    for (std::size_t j = 0; j < left.inbetweens.size(); ++j) {
-        REQUIRE(left.inbetweens[j].position == right.inbetweens[j].position);
-        REQUIRE(left.inbetweens[j].sample_index == right.inbetweens[j].sample_index);
-        REQUIRE(left.inbetweens[j].arc_fraction == right.inbetweens[j].arc_fraction);
-    }
-    REQUIRE(left.span_timings.size() == right.span_timings.size());
-    for (std::size_t s = 0; s < left.span_timings.size(); ++s) {
-        REQUIRE(left.span_timings[s].span.first_point == right.span_timings[s].span.first_point);
-        REQUIRE(left.span_timings[s].span.last_point == right.span_timings[s].span.last_point);
-        REQUIRE(left.span_timings[s].span.acceleration == right.span_timings[s].span.acceleration);
-        REQUIRE(left.span_timings[s].inbetween_count == right.span_timings[s].inbetween_count);
-    }
-    REQUIRE(left.frozen_frames == right.frozen_frames);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 #include "apcs/session/path_editor.h"
 #include "apcs/session/screen_layout.h"
 
+#include "support/same_path.h"
 #include "support/session_keys.h"
 
 #include <catch2/catch.hpp>
@@ -19,6 +20,7 @@ using namespace apcs;
 using apcs::test::apply;
 using apcs::test::LogLines;
 using apcs::test::message_of;
+using apcs::test::require_same_path;
 namespace cmd = apcs::command;
 
 namespace {
@@ -31,31 +33,6 @@ ControlPoints zigzag(int count)
     for (int k = 0; k < count; ++k)
         points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.001, std::cos(k * 0.37) * 2.0}, {}});
     return points;
-}
-
-void require_same_numbers(const EvaluatedPath& kept, const EvaluatedPath& fresh)
-{
-    REQUIRE(kept.inbetweens_current);
-    REQUIRE(kept.curve.segments == fresh.curve.segments);
-    REQUIRE(kept.curve.segment_length == fresh.curve.segment_length);
-    REQUIRE(kept.curve.length_to_point == fresh.curve.length_to_point);
-    REQUIRE(kept.arc_lengths.segment_count() == fresh.arc_lengths.segment_count());
-    REQUIRE_FALSE(kept.arc_lengths.pending());
-    for (std::size_t k = 0; k <= fresh.arc_lengths.segment_count(); ++k)
-        REQUIRE(kept.arc_lengths.length_to_segment_start(k) == fresh.arc_lengths.length_to_segment_start(k));
-    REQUIRE(kept.inbetweens.size() == fresh.inbetweens.size());
-    for (std::size_t j = 0; j < fresh.inbetweens.size(); ++j) {
-        REQUIRE(kept.inbetweens[j].position == fresh.inbetweens[j].position);
-        REQUIRE(kept.inbetweens[j].arc_fraction == fresh.inbetweens[j].arc_fraction);
-        REQUIRE(kept.inbetweens[j].sample_index == fresh.inbetweens[j].sample_index);
-    }
-    REQUIRE(kept.span_timings.size() == fresh.span_timings.size());
-    for (std::size_t s = 0; s < fresh.span_timings.size(); ++s) {
-        REQUIRE(kept.span_timings[s].start_fraction == fresh.span_timings[s].start_fraction);
-        REQUIRE(kept.span_timings[s].length_fraction == fresh.span_timings[s].length_fraction);
-        REQUIRE(kept.span_timings[s].inbetween_count == fresh.span_timings[s].inbetween_count);
-    }
-    REQUIRE(kept.frozen_frames == fresh.frozen_frames);
 }
 
 // Steps of `most` segments until refined; returns how many it took.
@@ -81,7 +58,7 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
     REQUIRE_FALSE(path.inbetweens_current);
     REQUIRE(path.arc_lengths.pending());
     REQUIRE(refine_in_steps(points, settings, path, 700) == 5);
-    require_same_numbers(path, evaluate_path(points, settings));
+    require_same_path(path, evaluate_path(points, settings));
 
     const auto change = [&](const PathChange& what) { reevaluate_path(points, settings, path, what, Refinement::in_steps); };
     // A global key, a third of it measured, then a local key, an insertion, a deletion and an
@@ -103,7 +80,7 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
     change({100, 100, 100, PathChange::What::accelerations});
     REQUIRE_FALSE(path.inbetweens_current);
     refine_in_steps(points, settings, path, 333);
-    require_same_numbers(path, evaluate_path(points, settings));
+    require_same_path(path, evaluate_path(points, settings));
 
     SECTION("a change made at once over what steps left measures that too")
     {
@@ -113,7 +90,7 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
         REQUIRE_FALSE(refine_path(points, settings, path, 100));
         points[5].staff.tension = 0.9;
         reevaluate_path(points, settings, path, PathChange{5, 1, 1, PathChange::What::staff});
-        require_same_numbers(path, evaluate_path(points, settings));
+        require_same_path(path, evaluate_path(points, settings));
     }
     SECTION("nearest spacing leaves nothing to refine")
     {
@@ -122,7 +99,7 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
         points[7].staff.tension = -0.5;
         reevaluate_path(points, nearest, near, PathChange{7, 1, 1, PathChange::What::staff}, Refinement::in_steps);
         REQUIRE(near.inbetweens_current);
-        require_same_numbers(near, evaluate_path(points, nearest));
+        require_same_path(near, evaluate_path(points, nearest));
     }
 }
 
@@ -194,7 +171,7 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
             REQUIRE(shown.bitmap == expected.bitmap);
             REQUIRE(marks_of(shown) == marks_of(expected));
             REQUIRE(message_of(shown) == message_of(expected));
-            require_same_numbers(in_steps.evaluated(), at_once.evaluated());
+            require_same_path(in_steps.evaluated(), at_once.evaluated());
         };
         const auto both = [&](std::initializer_list<Command> commands) {
             apply(at_once, commands);
@@ -238,7 +215,7 @@ TEST_CASE("keys pressed before the picture is refined are added to what is left;
         const auto matches_fresh = [&](const char* after) {
             CAPTURE(after);
             refine_editor(editor);
-            require_same_numbers(editor.evaluated(), evaluate_path(editor.points(), settings));
+            require_same_path(editor.evaluated(), evaluate_path(editor.points(), settings));
             const EvaluatedPath fresh = evaluate_path(editor.points(), settings);
             PathScreenContent content = path_screen_content(editor.points(), fresh);
             const GraphicsScreen drawn = draw_path_screen(content, editor.view_transform());

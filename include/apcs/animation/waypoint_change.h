@@ -34,5 +34,9 @@ struct WaypointChange {
 // programming error (asserted). Returns the points changed, for the path's picture to follow.
 PathChange apply_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
 PathChange revert_change(ControlPoints& points, std::vector<std::size_t>& origins, const WaypointChange& change);
+// The same on points whose origins nobody keeps (a copy taken back or forward over an edit: the
+// ghost's path).
+void apply_change(ControlPoints& points, const WaypointChange& change);
+void revert_change(ControlPoints& points, const WaypointChange& change);
 
 } // namespace apcs

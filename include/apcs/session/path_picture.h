@@ -31,6 +31,9 @@ struct PictureRefinement {
 // which makes again only what the change touched: the segments whose tangents the changed points
 // set, the blocks of the curve that hold them, the runs of control points around them. What it keeps
 // is what evaluating and drawing afresh gives, to the bit and to the pixel.
+// Z (SPEC §7.2.1): ×2, ×4, ×8 (levels 1-3), then the view it started from (level 0).
+inline int next_zoom_level(int level) { return level == 3 ? 0 : level + 1; }
+
 class PathPicture {
 public:
     // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
