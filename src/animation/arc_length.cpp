@@ -278,15 +278,7 @@ void CurveArcLengths::mark_changed(std::span<const HermiteSegment> segments, con
                       m_segment_length.size() - change.removed + change.inserted == segments.size();
     if (!fits)
         return mark_all(segments);
-    // Where an index of the curve before the change stands after it; one inside the change goes to
-    // the change's start (a first) or end (an end).
-    const auto moved = [&](std::size_t index, bool is_end) {
-        if (index < change.first || (is_end && index == change.first))
-            return index;
-        if (index >= change.old_end())
-            return index - change.removed + change.inserted;
-        return is_end ? change.new_end() : change.first;
-    };
+    const auto moved = [&](std::size_t index, bool is_end) { return change.moved(index, is_end); };
     const bool had_pending = m_pending_first < m_pending_end;
     const std::size_t first = had_pending ? std::min(moved(m_pending_first, false), change.first) : change.first;
     const std::size_t end = had_pending ? std::max(moved(m_pending_end, true), change.new_end()) : change.new_end();

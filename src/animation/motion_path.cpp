@@ -93,6 +93,7 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 {
     kb_segments(points, settings.slopes, path.curve.segments);
     sample_curve(path.curve, settings.samples_per_segment);
+    path.segments_unmade = {};
     if (settings.spacing == Spacing::exact && refinement == Refinement::in_steps) {
         path.arc_lengths.mark_all(path.curve.segments);
         path.inbetweens_current = false;
@@ -103,20 +104,6 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
     else
         path.arc_lengths = {};
     place_inbetweens(points, settings, path);
-}
-
-bool refine_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
-                 std::size_t most_segments)
-{
-    if (path.inbetweens_current)
-        return true;
-    if (path.arc_lengths.pending()) {
-        path.arc_lengths.measure_pending(path.curve.segments, most_segments);
-        if (path.arc_lengths.pending())
-            return false;
-    }
-    place_inbetweens(points, settings, path);
-    return true;
 }
 
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
@@ -307,6 +294,37 @@ std::size_t remake_segments(std::span<const ControlPoint> points, const PathSett
     return std::min(changed_first[0], changed_first[1]);
 }
 
+// Segments `unmade` (in the numbering before `change`) and those `change` touched, in the numbering
+// after it: one range holding both.
+SegmentRange joined(const SegmentRange& unmade, const SegmentSplice& change)
+{
+    const SegmentRange touched{change.first, change.new_end()};
+    if (unmade.empty())
+        return touched;
+    return {std::min(change.moved(unmade.first, false), touched.first),
+            std::max(change.moved(unmade.end, true), touched.end)};
+}
+
+// Makes up to `most` of the segments left unmade, in path order, and adds up the lengths: within
+// those made while some are left (the lengths before them are current), to the curve's end once
+// none is.
+void make_unmade_segments(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                          std::size_t most)
+{
+    SegmentRange& unmade = path.segments_unmade;
+    const std::size_t first = unmade.first;
+    const std::size_t end = first + std::min(most, unmade.size());
+    remake_segments(points, settings, path.curve, first, end);
+    unmade.first = end;
+    if (!unmade.empty()) {
+        for (std::size_t s = first; s < end; ++s)
+            path.curve.length_to_point[s + 1] = path.curve.length_to_point[s] + path.curve.segment_length[s];
+        return;
+    }
+    unmade = {};
+    add_up_lengths(path.curve, first);
+}
+
 SegmentSplice evaluated_afresh(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                                Refinement refinement = Refinement::at_once)
 {
@@ -323,21 +341,25 @@ SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSe
     const std::size_t old_segments = path.curve.segments.size();
     if (!change_fits(points, settings, path, change))
         return evaluated_afresh(points, settings, path, refinement);
-    // Exact spacing in steps: the arc lengths and the in-betweens wait for refine_path.
-    const bool later = refinement == Refinement::in_steps && settings.spacing == Spacing::exact;
+    const bool in_steps = refinement == Refinement::in_steps;
+    const bool exact = settings.spacing == Spacing::exact;
     const bool same_count = change.removed == change.inserted;
-    // The spans placed last are those of the points only when the in-betweens are current.
-    std::vector<AccelerationSpan> spans;
-    if (!later)
-        spans = same_count && change.inserted > 0 && path.inbetweens_current &&
-                        same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1)
-                    ? spans_of(path.span_timings)
-                    : acceleration_spans(points);
+    // The spans placed last are those of the points only when the in-betweens are current (read
+    // before anything here changes them).
+    const auto place = [&, were_current = path.inbetweens_current] {
+        const bool spans_kept =
+            same_count && change.inserted > 0 && were_current &&
+            same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1);
+        place_inbetweens_on(spans_kept ? spans_of(path.span_timings) : acceleration_spans(points), points, settings, path);
+    };
     if (change.what == PathChange::What::accelerations) {
-        if (later)
+        if (in_steps && (exact || !path.segments_unmade.empty())) {
             path.inbetweens_current = false;
-        else
-            place_inbetweens_on(std::move(spans), points, settings, path);
+            return {change.first, 0, 0};
+        }
+        if (!path.segments_unmade.empty())
+            make_unmade_segments(points, settings, path, path.segments_unmade.size());
+        place();
         return {change.first, 0, 0};
     }
     const SegmentSplice touched = segments_touched(change, old_segments, points.size() - 1);
@@ -345,19 +367,30 @@ SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSe
     splice_room(curve.segments, touched);
     splice_room(curve.segment_length, touched);
     curve.length_to_point.resize(curve.segments.size() + 1);
-    const std::size_t changed = remake_segments(points, settings, curve, touched.first, touched.new_end());
-    if (!same_count)
-        add_up_lengths(curve, touched.first);
-    else if (changed < touched.new_end())
-        add_up_lengths(curve, changed);
-    if (later) {
+    const bool had_unmade = !path.segments_unmade.empty();
+    const SegmentRange to_make = joined(path.segments_unmade, touched);
+    path.segments_unmade = {};
+    if (in_steps && exact)
         path.arc_lengths.mark_changed(curve.segments, touched);
+    // In steps, a change of values (a global key's 10^6 segments) makes none: its first picture waits
+    // for nothing but the key.
+    if (in_steps && same_count) {
+        path.segments_unmade = to_make;
         path.inbetweens_current = false;
         return touched;
     }
-    if (settings.spacing == Spacing::exact)
+    const std::size_t changed = remake_segments(points, settings, curve, to_make.first, to_make.end);
+    if (!same_count || had_unmade)
+        add_up_lengths(curve, to_make.first);
+    else if (changed < to_make.end)
+        add_up_lengths(curve, changed);
+    if (in_steps) {
+        path.inbetweens_current = false;
+        return touched;
+    }
+    if (exact)
         path.arc_lengths.remeasure(curve.segments, touched);
-    place_inbetweens_on(std::move(spans), points, settings, path);
+    place();
     return touched;
 }
 
@@ -368,6 +401,27 @@ SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSe
         return evaluated_afresh(points, settings, path);
     const std::size_t count = std::min(last_changed, points.size() - 1) - first_changed + 1;
     return reevaluate_path(points, settings, path, PathChange{first_changed, count, count, PathChange::What::staff});
+}
+
+bool refine_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
+                 std::size_t most_segments)
+{
+    if (path.inbetweens_current)
+        return true;
+    if (!path.segments_unmade.empty()) {
+        const std::size_t made = std::min(most_segments, path.segments_unmade.size());
+        make_unmade_segments(points, settings, path, made);
+        most_segments -= made;
+        if (!path.segments_unmade.empty() || most_segments == 0)
+            return false;
+    }
+    if (path.arc_lengths.pending()) {
+        path.arc_lengths.measure_pending(path.curve.segments, most_segments);
+        if (path.arc_lengths.pending())
+            return false;
+    }
+    place_inbetweens(points, settings, path);
+    return true;
 }
 
 } // namespace apcs

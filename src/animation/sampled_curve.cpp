@@ -125,10 +125,10 @@ SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_
     return curve;
 }
 
-SegmentMeasure::SegmentMeasure(std::span<const HermiteBasis> basis)
-    : m_x(basis.size())
-    , m_y(basis.size())
-    , m_z(basis.size())
+SegmentSampleColumns::SegmentSampleColumns(std::span<const HermiteBasis> basis)
+    : x(basis.size())
+    , y(basis.size())
+    , z(basis.size())
 {
     for (std::vector<double>& column : m_basis)
         column.reserve(basis.size());
@@ -140,10 +140,16 @@ SegmentMeasure::SegmentMeasure(std::span<const HermiteBasis> basis)
     }
 }
 
-// One coordinate of the samples, as HermiteSegment::apply computes it (the same operations in the
-// same order: the same bits); the ends are the control points themselves.
-void SegmentMeasure::sample_coordinate(double start, double end, double start_tangent, double end_tangent,
-                                       std::vector<double>& out) const
+void SegmentSampleColumns::sample(const HermiteSegment& segment)
+{
+    sample_coordinate(segment.start.x, segment.end.x, segment.start_tangent.x, segment.end_tangent.x, x);
+    sample_coordinate(segment.start.y, segment.end.y, segment.start_tangent.y, segment.end_tangent.y, y);
+    sample_coordinate(segment.start.z, segment.end.z, segment.start_tangent.z, segment.end_tangent.z, z);
+}
+
+// One coordinate of the samples, as HermiteSegment::apply computes it.
+void SegmentSampleColumns::sample_coordinate(double start, double end, double start_tangent, double end_tangent,
+                                             std::vector<double>& out) const
 {
     const std::size_t last = out.size() - 1;
     out[0] = start;
@@ -153,23 +159,29 @@ void SegmentMeasure::sample_coordinate(double start, double end, double start_ta
     out[last] = end;
 }
 
-// Coordinates and distances a column at a time, so that the compiler does several samples in one
-// instruction; only the sum runs one sample after another, in order (as chord_length sums).
+SegmentMeasure::SegmentMeasure(std::span<const HermiteBasis> basis)
+    : m_samples(basis)
+{
+}
+
+// Distances a column at a time; only the sum runs one sample after another, in order (as
+// chord_length sums).
 double SegmentMeasure::operator()(const HermiteSegment& segment)
 {
-    sample_coordinate(segment.start.x, segment.end.x, segment.start_tangent.x, segment.end_tangent.x, m_x);
-    sample_coordinate(segment.start.y, segment.end.y, segment.start_tangent.y, segment.end_tangent.y, m_y);
-    sample_coordinate(segment.start.z, segment.end.z, segment.start_tangent.z, segment.end_tangent.z, m_z);
-    // distance(previous, point) is the length of point − previous; m_x then holds the distances.
-    for (std::size_t j = 1; j < m_x.size(); ++j) {
-        const double dx = m_x[j] - m_x[j - 1];
-        const double dy = m_y[j] - m_y[j - 1];
-        const double dz = m_z[j] - m_z[j - 1];
-        m_x[j - 1] = std::sqrt(dx * dx + dy * dy + dz * dz);
+    m_samples.sample(segment);
+    std::vector<double>& x = m_samples.x;
+    const std::vector<double>& y = m_samples.y;
+    const std::vector<double>& z = m_samples.z;
+    // distance(previous, point) is the length of point − previous; x then holds the distances.
+    for (std::size_t j = 1; j < x.size(); ++j) {
+        const double dx = x[j] - x[j - 1];
+        const double dy = y[j] - y[j - 1];
+        const double dz = z[j] - z[j - 1];
+        x[j - 1] = std::sqrt(dx * dx + dy * dy + dz * dz);
     }
     double length = 0.0;
-    for (std::size_t j = 0; j + 1 < m_x.size(); ++j)
-        length += m_x[j];
+    for (std::size_t j = 0; j + 1 < x.size(); ++j)
+        length += x[j];
     return length;
 }
 

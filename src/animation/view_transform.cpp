@@ -8,17 +8,23 @@
 
 namespace apcs {
 
-PixelPoint DevicePoint::rounded() const
+namespace {
+
+// Clamped far outside the raster so that the int conversion is always defined; rounded half away
+// from zero as std::lround does, but inline: lround is a library call, and drawing a long path
+// rounds millions of points (16 % of a keystroke on 10^5 control points).
+int rounded_half_away(double value)
 {
-    // Clamped far outside the raster so that the int conversion is always defined; rounded half
-    // away from zero as std::lround does, but inline: lround is a library call, and drawing a
-    // long path rounds millions of points (16 % of a keystroke on 10^5 control points).
-    const auto to_int = [](double value) {
-        const double clamped = std::clamp(value, -1e6, 1e6);
-        return static_cast<int>(clamped < 0.0 ? clamped - 0.5 : clamped + 0.5);
-    };
-    return {to_int(x), to_int(y)};
+    const double clamped = std::min(std::max(value, -1e6), 1e6);
+    // Both computed, one chosen: no branch, so that a loop of them is done several at once.
+    const double down = clamped - 0.5;
+    const double up = clamped + 0.5;
+    return static_cast<int>(clamped < 0.0 ? down : up);
 }
+
+} // namespace
+
+PixelPoint DevicePoint::rounded() const { return {rounded_half_away(x), rounded_half_away(y)}; }
 
 ViewTransform::ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area)
     : m_centre(centre)
@@ -127,15 +133,30 @@ void ViewTransform::place(double x, double y, PixelRect area)
     m_centre_y = (area.top + area.bottom) / 2.0 + m_focus * y * m_half_height;
 }
 
-EyePoint ViewTransform::to_eye(const Vec3& world) const
+EyePoint ViewTransform::eye_of(double x, double y, double z) const
 {
-    const Vec3 p = world - m_centre;
+    const double px = x - m_centre.x;
+    const double py = y - m_centre.y;
+    const double pz = z - m_centre.z;
     return {
-        -p.x * m_sin_theta + p.y * m_cos_theta,
-        -p.x * m_cos_theta * m_cos_phi - p.y * m_sin_theta * m_cos_phi + p.z * m_sin_phi,
-        -p.x * m_cos_theta * m_sin_phi - p.y * m_sin_theta * m_sin_phi - p.z * m_cos_phi + m_viewer_distance,
+        -px * m_sin_theta + py * m_cos_theta,
+        -px * m_cos_theta * m_cos_phi - py * m_sin_theta * m_cos_phi + pz * m_sin_phi,
+        -px * m_cos_theta * m_sin_phi - py * m_sin_theta * m_sin_phi - pz * m_cos_phi + m_viewer_distance,
     };
 }
+
+DevicePoint ViewTransform::device_of(const EyePoint& eye) const
+{
+    // Points at or behind the eye cannot occur for a fitted scene (z_e ≥ 2R); a tiny depth keeps
+    // the mapping total for any other point.
+    const double depth = std::max(eye.z, 1e-9);
+    return {
+        m_centre_x + hercules::aspect_correction * m_focus * (eye.x / depth) * m_half_height,
+        m_centre_y - m_focus * (eye.y / depth) * m_half_height,
+    };
+}
+
+EyePoint ViewTransform::to_eye(const Vec3& world) const { return eye_of(world.x, world.y, world.z); }
 
 namespace {
 
@@ -161,16 +182,18 @@ Vec3 ViewTransform::toward_viewer() const
     return without_dust({m_cos_theta * m_sin_phi, m_sin_theta * m_sin_phi, m_cos_phi});
 }
 
-DevicePoint ViewTransform::to_device(const Vec3& world) const
+DevicePoint ViewTransform::to_device(const Vec3& world) const { return device_of(to_eye(world)); }
+
+// One point after another as to_device and rounded do, in a loop of no branch but selections: the
+// compiler does two or four points in one instruction, divisions included.
+void ViewTransform::to_pixels(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                              std::span<int> pixel_x, std::span<int> pixel_y) const
 {
-    const EyePoint eye = to_eye(world);
-    // Points at or behind the eye cannot occur for a fitted scene (z_e ≥ 2R); a tiny depth keeps
-    // the mapping total for any other point.
-    const double depth = std::max(eye.z, 1e-9);
-    return {
-        m_centre_x + hercules::aspect_correction * m_focus * (eye.x / depth) * m_half_height,
-        m_centre_y - m_focus * (eye.y / depth) * m_half_height,
-    };
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const DevicePoint device = device_of(eye_of(x[i], y[i], z[i]));
+        pixel_x[i] = rounded_half_away(device.x);
+        pixel_y[i] = rounded_half_away(device.y);
+    }
 }
 
 } // namespace apcs

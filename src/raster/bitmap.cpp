@@ -25,12 +25,28 @@ bool Bitmap::get(int x, int y) const
     return (row(y)[x >> 3] & bit_of(x)) != 0;
 }
 
-void Bitmap::set(int x, int y, bool lit)
+void Bitmap::set_run(int y, int first_x, int last_x)
 {
-    if (!contains(x, y))
+    if (y < 0 || y >= m_height)
         return;
-    std::uint8_t& byte = m_bits[static_cast<std::size_t>(y) * m_bytes_per_row + static_cast<std::size_t>(x >> 3)];
-    byte = lit ? static_cast<std::uint8_t>(byte | bit_of(x)) : static_cast<std::uint8_t>(byte & ~bit_of(x));
+    const int left = std::max(std::min(first_x, last_x), 0);
+    const int right = std::min(std::max(first_x, last_x), m_width - 1);
+    if (left > right)
+        return;
+    std::uint8_t* row_bits = m_bits.data() + static_cast<std::size_t>(y) * m_bytes_per_row;
+    const int first_byte = left >> 3;
+    const int last_byte = right >> 3;
+    // Most significant bit leftmost: the bits from x's on, and those up to x's.
+    const auto from_bit = [](int x) { return static_cast<std::uint8_t>(0xFFu >> (x & 7)); };
+    const auto to_bit = [](int x) { return static_cast<std::uint8_t>(0xFFu << (7 - (x & 7))); };
+    if (first_byte == last_byte) {
+        row_bits[first_byte] |= static_cast<std::uint8_t>(from_bit(left) & to_bit(right));
+        return;
+    }
+    row_bits[first_byte] |= from_bit(left);
+    for (int byte = first_byte + 1; byte < last_byte; ++byte)
+        row_bits[byte] = 0xFF;
+    row_bits[last_byte] |= to_bit(right);
 }
 
 void Bitmap::toggle(int x, int y)

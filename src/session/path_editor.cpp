@@ -2,6 +2,7 @@
 
 #include "apcs/animation/curve_move.h"
 #include "apcs/animation/input_limits.h"
+#include "apcs/animation/kochanek_bartels.h"
 #include "apcs/session/overloaded.h"
 #include "apcs/session/path_overlays.h"
 #include "apcs/session/screen_layout.h"
@@ -45,40 +46,37 @@ struct CurveMove {
     double pixels = 0.0;
 };
 
-// Segments of the curve before a key, each with its index: those the key may move, or on a long
-// region every stride-th of them (measured_segments).
-struct MeasuredSegment {
-    std::size_t index = 0;
-    HermiteSegment before;
-};
-
 // A region of more than this many segments is measured at as many, evenly spread: the exact
 // search costs about 2 µs a segment, and a global key on 10^6 control points must stay near its
 // 80 ms. The move said is then that of the segments measured.
 constexpr std::size_t most_measured_segments = 4096;
 
-std::vector<MeasuredSegment> measured_segments(const std::vector<HermiteSegment>& segments, std::size_t first,
-                                               std::size_t end)
+// The segments whose tangents the region's points can set (ends included), made from the points
+// as the curve makes them (the curve's own may wait for a refinement in steps).
+std::vector<SegmentBeforeKey> measured_segments(std::span<const ControlPoint> points, EndSlopes slopes,
+                                               ControlRegion region)
 {
+    const std::size_t first = region.first < 2 ? 0 : region.first - 2;
+    const std::size_t end = std::min(points.size() - 1, region.last + 2);
     const std::size_t count = end > first ? end - first : 0;
     const std::size_t stride = std::max<std::size_t>(1, (count + most_measured_segments - 1) / most_measured_segments);
-    std::vector<MeasuredSegment> measured;
+    std::vector<SegmentBeforeKey> measured;
     for (std::size_t index = first; index < end; index += stride)
-        measured.push_back({index, segments[index]});
+        measured.push_back({index, kb_segment(points, slopes, index)});
     return measured;
 }
 
-// `before` as measured_segments kept them, `after` the curve after the key. The pixels are
+// `before` as measured_segments kept them, `points` those after the key. The pixels are
 // measured at each segment's furthest-moved sample (SampleMove), not at every sample: one
 // projection pair per segment; a view seen nearly along the move may show another sample moved a
 // pixel more. Segments that cannot beat the furthest move found are not searched.
-CurveMove curve_move(std::span<const MeasuredSegment> before, const SampledCurve& after, const ViewTransform& view)
+CurveMove curve_move(std::span<const SegmentBeforeKey> before, std::span<const ControlPoint> points, EndSlopes slopes,
+                     std::span<const HermiteBasis> basis, const ViewTransform& view)
 {
     CurveMove moved;
-    for (const MeasuredSegment& segment : before) {
-        if (segment.index >= after.segments.size())
-            continue;
-        const SampleMove sample = furthest_sample_move(segment.before, after.segments[segment.index], after.basis, moved.world);
+    for (const SegmentBeforeKey& segment : before) {
+        const HermiteSegment after = kb_segment(points, slopes, segment.index);
+        const SampleMove sample = furthest_sample_move(segment.before, after, basis, moved.world);
         if (sample.distance <= 0.0)
             continue;
         moved.world = std::max(moved.world, sample.distance);
@@ -237,6 +235,7 @@ void PathEditor::refine_step()
     if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
         return waypoints->editor.refine_step();
     m_picture.refine_step(m_setup.points);
+    measure_move_when_refined();
 }
 
 void PathEditor::refine()
@@ -244,6 +243,16 @@ void PathEditor::refine()
     if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
         return waypoints->editor.refine();
     m_picture.refine(m_setup.points);
+    measure_move_when_refined();
+}
+
+void PathEditor::measure_move_when_refined()
+{
+    if (!m_move_unmeasured || m_picture.refining())
+        return;
+    m_moved = curve_move_text(curve_move(*m_move_unmeasured, m_setup.points, m_setup.settings.slopes,
+                                         m_picture.evaluated().curve.basis, m_picture.view()));
+    m_move_unmeasured.reset();
 }
 
 PathEditor::Outcome PathEditor::update(const Command& command)
@@ -262,6 +271,7 @@ PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
     m_notice.clear();
     m_moved.clear();
+    m_move_unmeasured.reset();
     if (update_views(command))
         return Outcome::editing;
     const bool was_changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
@@ -394,6 +404,7 @@ PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 // past the end of the line) is not.
 void PathEditor::set_staff_value(Staff& staff, double value)
 {
+    std::vector<SegmentBeforeKey> before = measured_segments(m_setup.points, m_setup.settings.slopes, staff.region);
     StaffChange change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
     staff.staff[staff.line] = snapped(value);
     change.points_before = apply_staff_to_region(m_setup.points, staff.region, staff.staff);
@@ -403,16 +414,14 @@ void PathEditor::set_staff_value(Staff& staff, double value)
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
     m_history.push_back(std::move(change));
-    // The segments whose tangents the region's points can set (ends included), kept to measure
-    // how far the key moved the curve (an acceleration moves none).
-    const std::vector<HermiteSegment>& segments = m_picture.evaluated().curve.segments;
-    const std::size_t first = staff.region.first < 2 ? 0 : staff.region.first - 2;
-    const std::size_t end = what == PathChange::What::accelerations ? first : std::min(segments.size(), staff.region.last + 2);
-    const std::vector<MeasuredSegment> before = measured_segments(segments, first, end);
     reevaluate_region(staff.region, what, std::move(back));
-    m_moved = what == PathChange::What::accelerations
-                  ? "only the in-betweens moved"
-                  : curve_move_text(curve_move(before, m_picture.evaluated().curve, m_picture.view()));
+    // An acceleration moves no segment.
+    if (what == PathChange::What::accelerations) {
+        m_moved = "only the in-betweens moved";
+        return;
+    }
+    m_move_unmeasured = std::move(before);
+    measure_move_when_refined();
 }
 
 // A key changes the staff values of a region: only the segments their tangents shape are sampled
@@ -453,6 +462,7 @@ PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding en
     if (kept) {
         set_staff_value(staff, staff.line_start_value);
         m_moved.clear(); // the next line is named, not how far going back moved the curve
+        m_move_unmeasured.reset();
     }
     m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
               (kept ? " (kept)" : ""));

@@ -3,6 +3,7 @@
 #include "apcs/session/screen_layout.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace apcs {
 
@@ -60,26 +61,32 @@ void PathPicture::remake(std::span<const ControlPoint> points, const PathChange&
 // one that was) are measured at once; a global change's all wait for the steps.
 void PathPicture::refine_if_quick(std::span<const ControlPoint> points)
 {
-    if (m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
+    if (m_evaluated.segments_unmade.empty() && m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
         refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
 }
 
 bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }
 
-// The curve first (the picture), then the arc lengths.
+// The segments first, and the blocks they complete drawn; then the rest of the curve (the
+// picture); then the arc lengths.
 void PathPicture::refine_step(std::span<const ControlPoint> points)
 {
-    if (m_view && !m_curve.drawn())
-        draw_curve();
-    else
+    if (!m_evaluated.segments_unmade.empty()) {
         refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+        if (m_view)
+            draw_curve();
+    } else if (m_view && !m_curve.drawn()) {
+        draw_curve();
+    } else {
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+    }
 }
 
 void PathPicture::refine(std::span<const ControlPoint> points)
 {
+    refine_path(points, m_settings, m_evaluated, std::numeric_limits<std::size_t>::max());
     if (m_view && !m_curve.drawn())
         m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
-    refine_path(points, m_settings, m_evaluated, m_evaluated.curve.segments.size());
 }
 
 std::string PathPicture::refining_message() const
@@ -134,7 +141,8 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
 void PathPicture::draw_curve()
 {
     m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary,
-                   m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step);
+                   m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step,
+                   m_evaluated.segments_unmade);
 }
 
 GraphicsScreen PathPicture::draw(const PathScreenContent& content) const

@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 namespace apcs {
 
@@ -80,22 +82,21 @@ void update_control_point_runs(std::vector<ControlPointRun>& runs, std::span<con
 
 namespace {
 
-// Each run's mark, split where the picked region starts or ends.
-std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std::optional<ControlRegion> region)
+// Calls mark(m) for each run's mark in order, split where the picked region starts or ends.
+template <typename Mark>
+void for_each_run_mark(std::span<const ControlPointRun> runs, std::optional<ControlRegion> region, Mark mark)
 {
-    std::vector<PixelMark> marks;
     for (const ControlPointRun& run : runs) {
         if (!region || run.last < region->first || run.first > region->last) {
-            marks.push_back({run.at, MarkKind::control_point});
+            mark(PixelMark{run.at, MarkKind::control_point});
             continue;
         }
         if (run.first < region->first)
-            marks.push_back({run.at, MarkKind::control_point});
-        marks.push_back({run.at, MarkKind::control_point, CellStyle::reverse, ColourRole::region});
+            mark(PixelMark{run.at, MarkKind::control_point});
+        mark(PixelMark{run.at, MarkKind::control_point, CellStyle::reverse, ColourRole::region});
         if (run.last > region->last)
-            marks.push_back({run.at, MarkKind::control_point});
+            mark(PixelMark{run.at, MarkKind::control_point});
     }
-    return marks;
 }
 
 } // namespace
@@ -105,36 +106,46 @@ std::vector<PixelMark> marks_of_runs(std::span<const ControlPointRun> runs, std:
 // was boxed and the last is not. Marks off the raster are kept as they are (part of an x may show).
 std::vector<PixelMark> control_point_marks(std::span<const ControlPointRun> runs, std::optional<ControlRegion> region)
 {
-    std::vector<PixelMark> all = marks_of_runs(runs, region);
+    std::vector<PixelMark> all;
     // A few thousand marks cost less laid twice than a table of every pixel.
     constexpr std::size_t worth_a_table = 4096;
-    if (all.size() <= worth_a_table)
-        return all;
+    if (runs.size() <= worth_a_table) {
+        for_each_run_mark(runs, region, [&](const PixelMark& mark) { all.push_back(mark); });
+        if (all.size() <= worth_a_table)
+            return all;
+    }
+    // A scribble's 10^6 runs: the marks are gone over twice rather than held (16 MB written and read).
     const Bitmap raster;
     const auto pixel = [&](const PixelMark& mark) {
         return static_cast<std::size_t>(mark.at.y) * static_cast<std::size_t>(raster.width()) +
                static_cast<std::size_t>(mark.at.x);
     };
-    std::vector<std::size_t> last(static_cast<std::size_t>(raster.width() * raster.height()), all.size());
-    std::vector<bool> boxed(last.size(), false);
-    for (std::size_t i = 0; i < all.size(); ++i)
-        if (raster.contains(all[i].at.x, all[i].at.y)) {
-            last[pixel(all[i])] = i;
-            boxed[pixel(all[i])] = boxed[pixel(all[i])] || all[i].style == CellStyle::reverse;
+    constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> last(static_cast<std::size_t>(raster.width() * raster.height()), none);
+    std::vector<std::uint8_t> boxed(last.size(), 0);
+    std::uint32_t index = 0;
+    for_each_run_mark(runs, region, [&](const PixelMark& mark) {
+        if (raster.contains(mark.at.x, mark.at.y)) {
+            last[pixel(mark)] = index;
+            if (mark.style == CellStyle::reverse)
+                boxed[pixel(mark)] = 1;
         }
+        ++index;
+    });
     std::vector<PixelMark> kept;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        const PixelMark& mark = all[i];
+    index = 0;
+    for_each_run_mark(runs, region, [&](const PixelMark& mark) {
+        const std::uint32_t this_one = index++;
         if (!raster.contains(mark.at.x, mark.at.y)) {
             kept.push_back(mark);
-            continue;
+            return;
         }
-        if (last[pixel(mark)] != i)
-            continue;
-        if (boxed[pixel(mark)] && mark.style != CellStyle::reverse)
+        if (last[pixel(mark)] != this_one)
+            return;
+        if (boxed[pixel(mark)] != 0 && mark.style != CellStyle::reverse)
             kept.push_back({mark.at, MarkKind::control_point, CellStyle::reverse, ColourRole::region});
         kept.push_back(mark);
-    }
+    });
     return kept;
 }
 

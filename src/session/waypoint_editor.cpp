@@ -1,6 +1,7 @@
 #include "apcs/session/waypoint_editor.h"
 
 #include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/session/overloaded.h"
 #include "apcs/session/screen_layout.h"
@@ -100,7 +101,9 @@ void WaypointEditor::insert_point()
     WaypointChange change;
     change.kind = WaypointChange::Kind::insert;
     change.index = from + 1;
-    change.point = {halfway_along(m_picture.evaluated().curve.segments, from), m_setup.points[m_chosen].staff};
+    // The segment from the points, as the curve makes it (the curve's own may wait for a refinement).
+    const HermiteSegment segment = kb_segment(m_setup.points, m_setup.settings.slopes, from);
+    change.point = {halfway_along(std::span(&segment, 1), 0), m_setup.points[m_chosen].staff};
     apply(change);
     m_chosen = change.index;
 }

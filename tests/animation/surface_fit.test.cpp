@@ -380,7 +380,7 @@ TEST_CASE("KEY1 along y and KEY2 along z: the Ferguson paths bend off their chor
     REQUIRE(std::abs(distance(off, dot(off, chord) / dot(chord, chord) * chord) - 3.0 * std::sqrt(6.0) / 256.0) < 1e-15);
 }
 
-TEST_CASE("the point at an arc fraction of a straight segment is that share of it; of a still segment, its start",
+TEST_CASE("the point at an arc fraction of a straight segment is that share of it — of a still segment, its start",
           "[animation][fit][ferguson]")
 {
     // A straight segment (tangents equal to its chord) has arc fraction = parameter share, so the

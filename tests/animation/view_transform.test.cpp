@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <vector>
 
 using namespace apcs;
@@ -91,5 +92,45 @@ TEST_CASE("the screen's axes in the world: right, up the screen and toward the v
         REQUIRE(eye.z - nearer.z == Approx(0.1));
         REQUIRE(nearer.x == Approx(eye.x));
         REQUIRE(nearer.y == Approx(eye.y));
+    }
+}
+
+TEST_CASE("to_pixels gives each point's to_device(point).rounded(), near and far, behind the eye and halfway "
+          "between pixels",
+          "[animation][view]")
+{
+    const std::vector<Vec3> scene{{-3, -1, -2}, {3, 1, 2}};
+    for (const ViewAngles angles : {ViewAngles{30, 40}, ViewAngles{0, 90}, ViewAngles{-90, 0}, ViewAngles{123, 17}}) {
+        const ViewTransform view = ViewTransform::fit(angles, scene, full_screen);
+        std::vector<double> x;
+        std::vector<double> y;
+        std::vector<double> z;
+        const auto add = [&](const Vec3& point) {
+            x.push_back(point.x);
+            y.push_back(point.y);
+            z.push_back(point.z);
+        };
+        for (int i = 0; i < 997; ++i) // an odd count: the loop's tail too
+            add({std::sin(i * 0.37) * 5.0, std::cos(i * 0.11) * 4.0, std::sin(i * 1.7) * 3.0});
+        // Far off the raster (clamped), at and behind the eye (the tiny depth), and not numbers.
+        for (const double far : {1e9, -1e9, 1e300, -1e300})
+            add({far, far / 3.0, -far});
+        add(view.centre() + view.toward_viewer() * view.viewer_distance());
+        add(view.centre() + view.toward_viewer() * (2.0 * view.viewer_distance()));
+        // Points that project halfway between two pixels, either side of 0.
+        for (const double device_x : {10.5, -10.5, 0.5, -0.5, 359.5}) {
+            const DevicePoint at_centre = view.to_device(view.centre());
+            const double world_per_pixel = 1.0 / (view.to_device(view.centre() + view.screen_right()).x - at_centre.x);
+            add(view.centre() + view.screen_right() * ((device_x - at_centre.x) * world_per_pixel));
+        }
+        std::vector<int> pixel_x(x.size());
+        std::vector<int> pixel_y(x.size());
+        view.to_pixels(x, y, z, pixel_x, pixel_y);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            CAPTURE(i, x[i], y[i], z[i]);
+            const PixelPoint one_by_one = view.to_device({x[i], y[i], z[i]}).rounded();
+            REQUIRE(pixel_x[i] == one_by_one.x);
+            REQUIRE(pixel_y[i] == one_by_one.y);
+        }
     }
 }

@@ -62,7 +62,7 @@ TEST_CASE("apcs fit --gif writes M+2 frames of 720x522 at the delay, looping", "
     CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
 }
 
-TEST_CASE("apcs inbetween --gif writes T+1 frames; --gif - writes them to standard output", "[cli][gif]")
+TEST_CASE("apcs inbetween --gif writes T+1 frames — --gif - writes them to standard output", "[cli][gif]")
 {
     const auto result = run_apcs({"inbetween", example("key1.dat"), example("key2.dat"), "--frames", "4", "--gif", "-"});
     REQUIRE(result.status == 0);
@@ -72,7 +72,7 @@ TEST_CASE("apcs inbetween --gif writes T+1 frames; --gif - writes them to standa
     CHECK(gif->frames.at(0).delay_centiseconds == 20);
 }
 
-TEST_CASE("a --gif name that does not end in .gif is exit 2; --gif is not an option of path or draw", "[cli][gif]")
+TEST_CASE("a --gif name that does not end in .gif is exit 2 — --gif is not an option of path or draw", "[cli][gif]")
 {
     for (const std::vector<std::string>& usage :
          {std::vector<std::string>{"inbetween", example("key1.dat"), example("key2.dat"), "--gif", "x.png"},

@@ -41,7 +41,7 @@ TEST_CASE("apcs figures draws the thesis' figures and the examples as approved r
     }
 }
 
-TEST_CASE("apcs figures makes its --out folder, one level; under a missing one it is exit 1", "[cli][figures]")
+TEST_CASE("apcs figures makes its --out folder, one level — under a missing one it is exit 1", "[cli][figures]")
 {
     const test::TempFolder folder;
     const auto nested = test::run_apcs({"figures", "--out", (folder / "none" / "figures").string()});

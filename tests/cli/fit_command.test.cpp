@@ -127,7 +127,7 @@ TEST_CASE("a path that does not start at the graphic point is refused with the e
     REQUIRE(wrong_end.err.find("expected the last graphic point's KEY1 position (0, 6, 10)") != std::string::npos);
 }
 
-TEST_CASE("apcs fit --out makes a missing folder, one level; a missing parent fails and writes nothing", "[cli][fit]")
+TEST_CASE("apcs fit --out makes a missing folder, one level — a missing parent fails and writes nothing", "[cli][fit]")
 {
     const TempFolder folder;
     write_example(folder);
@@ -256,7 +256,7 @@ TEST_CASE("the overlay of more frames lights more pixels: every frame is drawn",
     CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
 }
 
-TEST_CASE("apcs fit takes each path file's SLOPES; an explicit --slopes overrides them (SPEC 2.1)", "[cli][fit][slopes]")
+TEST_CASE("apcs fit takes each path file's SLOPES — an explicit --slopes overrides them (SPEC 2.1)", "[cli][fit][slopes]")
 {
     // The first path (0,0,0) → (0,0,10) with SLOPES 0 0 has zero end tangents: P(u) = F2(u)·(0,0,10), so
     // with 4 samples they lie at z = 0, 1.5625, 5, 8.4375, 10 (F2(1/4) = 0.15625), and in-between 1 of 3

@@ -408,7 +408,7 @@ TEST_CASE("a backup never replaces an input: the old file goes to NAME.b01 when 
     REQUIRE(write_file_atomically(target, "newer\n")->backup == folder / "ani1.bak");
 }
 
-TEST_CASE("writes left for one barrier are atomic and keep backups as ever; the barrier names a missing folder",
+TEST_CASE("writes left for one barrier are atomic and keep backups as ever — the barrier names a missing folder",
           "[formats][files]")
 {
     const TempFolder folder;

@@ -60,7 +60,7 @@ TEST_CASE("a key file among the targets stops the writing before any file is wri
     REQUIRE(read_all(key) == "9 9\n8 8\n");
 }
 
-TEST_CASE("in-betweens into a missing folder make it, one level only; a file of its name is refused",
+TEST_CASE("in-betweens into a missing folder make it, one level only — a file of its name is refused",
           "[formats][inbetween-files]")
 {
     const TempFolder folder;

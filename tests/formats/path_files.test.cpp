@@ -68,7 +68,7 @@ TEST_CASE("a rewritten path file keeps its comments, blank lines and line-end co
             "; way1: the N's first point\n\n0 0 0 0 0 0 0 ; KEY1\n; the bend\n3 -4 5 0.25 0 0 0\n0 0 10 0 0 0 0\n; end\n");
 }
 
-TEST_CASE("an inserted point gets a line after the point before it; a deleted one's comments stay", "[formats][path-files]")
+TEST_CASE("an inserted point gets a line after the point before it — a deleted one's comments stay", "[formats][path-files]")
 {
     const std::string text = "0 0 0\n; before the bend\n3 -4 5\n; before the end\n0 0 10\n";
     const DatFile file = *parse_dat(text, "way1.dat");
@@ -79,7 +79,7 @@ TEST_CASE("an inserted point gets a line after the point before it; a deleted on
             "0 0 0 0 0 0 0\n1 1 1 0 0 0 0\n; before the bend\n; before the end\n0 0 10 0 0 0 0\n");
 }
 
-TEST_CASE("a CRLF path file stays CRLF; one without comments is exactly format_dat's text", "[formats][path-files]")
+TEST_CASE("a CRLF path file stays CRLF — one without comments is exactly format_dat's text", "[formats][path-files]")
 {
     const std::string crlf = "; header\r\n0 0 0\r\n0 0 10\r\n";
     const DatFile crlf_file = *parse_dat(crlf, "a.dat");

@@ -107,7 +107,7 @@ TEST_CASE("a one-pixel line in a cell row shorter than 7 pixels is '-', where tw
     CHECK(map_to_cells(cell, {1, 1}, GlyphSet::ascii).at(0, 0) == U'=');
 }
 
-TEST_CASE("a cell where a line turns at the cell's side is a corner, +; a straight line keeps its glyph", "[raster][glyphs]")
+TEST_CASE("a cell where a line turns at the cell's side is a corner, + — a straight line keeps its glyph", "[raster][glyphs]")
 {
     CHECK(ascii_of([](Painter& p) { p.line({0, 0}, {8, 0}), p.line({0, 0}, {0, 13}); }) == U'+');
     CHECK(ascii_of([](Painter& p) { p.line({0, 13}, {8, 13}), p.line({8, 0}, {8, 13}); }) == U'+');

@@ -140,3 +140,27 @@ TEST_CASE("a clipped painter draws nothing outside its clip rectangle", "[raster
     // The line's 10 pixels from x = 10 to 19, and the one pixel inside.
     REQUIRE(lit == 11);
 }
+
+TEST_CASE("a run along a row lights what setting its pixels one by one lights, across bytes and off the raster",
+          "[raster][bitmap]")
+{
+    const std::vector<std::pair<int, int>> runs{{0, 0},   {3, 5},     {5, 3},     {7, 8},   {8, 15}, {0, 719},
+                                                {-5, 12}, {700, 900}, {-9, -1},   {720, 800}, {13, 13}, {6, 17},
+                                                {17, 6},  {1, 710},   {715, 719}, {16, 23}};
+    for (const auto& [first, last] : runs) {
+        for (const int y : {0, 200, 347, -1, 348}) {
+            CAPTURE(first, last, y);
+            Bitmap run;
+            Bitmap one_by_one;
+            // A row with something lit already: a run adds to it.
+            for (int x = 0; x < 720; x += 7) {
+                run.set(x, y, true);
+                one_by_one.set(x, y, true);
+            }
+            run.set_run(y, first, last);
+            for (int x = std::min(first, last); x <= std::max(first, last); ++x)
+                one_by_one.set(x, y, true);
+            REQUIRE(run == one_by_one);
+        }
+    }
+}

@@ -152,7 +152,7 @@ TEST_CASE("a child's change is its parent's followed by its own", "[scene]")
     REQUIRE(near(animation.frame(2)[1], {0, 1, 0}));
 }
 
-TEST_CASE("MOVE without TIMES spreads the path over FROM ... TO by its acceleration law; LOOP starts each lap at P0",
+TEST_CASE("MOVE without TIMES spreads the path over FROM ... TO by its acceleration law — LOOP starts each lap at P0",
           "[scene]")
 {
     DatFiles files;
@@ -235,7 +235,7 @@ TEST_CASE("timed waypoints: each control point at its frame, never running back,
     }
 }
 
-TEST_CASE("the distance-time function is monotone with a continuous slope; piecewise-even spacing would jump",
+TEST_CASE("the distance-time function is monotone with a continuous slope — piecewise-even spacing would jump",
           "[scene]")
 {
     const int frames[] = {0, 10, 35, 60};

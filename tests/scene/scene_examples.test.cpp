@@ -317,7 +317,7 @@ TEST_CASE("the snake-apple example keeps the apple still while the snake goes fr
     REQUIRE(checked == 13u);
 }
 
-TEST_CASE("apcs play prints, writes and draws a scene; without a terminal it says what to give", "[scene][cli]")
+TEST_CASE("apcs play prints, writes and draws a scene — without a terminal it says what to give", "[scene][cli]")
 {
     const std::string car = (data_folder / "car/car.scn").string();
     const auto printed = run_apcs({"play", car, "--print"});

@@ -55,7 +55,7 @@ TEST_CASE("a scene file gives its objects, parents, drawings and behaviours", "[
     REQUIRE(arm.scale->frames.to == 3);
 }
 
-TEST_CASE("a part's own STAFF replaces its parent's; seven-column paths keep their own values", "[scene]")
+TEST_CASE("a part's own STAFF replaces its parent's — seven-column paths keep their own values", "[scene]")
 {
     const Scene scene = scene_from("FRAMES 10\nOBJECT a\nSTAFF 0.5 0.5 0.5 0.5\nOBJECT b PARENT a\n"
                                    "STAFF -0.25 0 0 0\nMOVE path.dat\nOBJECT c PARENT a\nMOVE path7.dat\n",

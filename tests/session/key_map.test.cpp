@@ -195,7 +195,7 @@ TEST_CASE("a letter is spelt alike on the key line and on the help screen: q qui
             animation.end());
 }
 
-TEST_CASE("a text prompt's help names the answer an empty line takes there; a long one goes on below", "[session][keys]")
+TEST_CASE("a text prompt's help names the answer an empty line takes there — a long one goes on below", "[session][keys]")
 {
     const std::vector<std::string> key1 = key_help_lines(KeyContext::text_line, "key1.dat");
     REQUIRE(key1.front() == "  Enter           answer; an empty line takes key1.dat");
@@ -290,7 +290,7 @@ TEST_CASE("a key script's lines may end with LF, CR LF or CR alone, as a .dat fi
     REQUIRE(*typed == std::vector<KeyEvent>{KeyEvent::typed('a'), KeyEvent::typed('b'), KeyEvent::of(Key::enter)});
 }
 
-TEST_CASE("a DOS editor's Ctrl-Z ends a key script; more keys after it are refused at its line", "[session][keys]")
+TEST_CASE("a DOS editor's Ctrl-Z ends a key script — more keys after it are refused at its line", "[session][keys]")
 {
     const Expected<std::vector<KeyEvent>> ended = parse_key_script("Y\r\nENTER\r\n\x1A\r\n", "keys.txt");
     REQUIRE(ended);

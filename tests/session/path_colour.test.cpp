@@ -114,7 +114,7 @@ TEST_CASE("the colour roles of the path screen with T, G and K on match their ap
     test::check_golden("path_colour_roles_braille.txt", grid.to_text() + "\n" + grid.roles_text());
 }
 
-TEST_CASE("NO_COLOR set and not empty, or --color never, draw in one colour; --color always outranks NO_COLOR",
+TEST_CASE("NO_COLOR set and not empty, or --color never, draw in one colour — --color always outranks NO_COLOR",
           "[session][colour]")
 {
     REQUIRE(session_colour(ColourChoice::automatic, nullptr) == ColourChoice::automatic);

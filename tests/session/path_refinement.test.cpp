@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <tuple>
@@ -92,13 +93,50 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
         reevaluate_path(points, settings, path, PathChange{5, 1, 1, PathChange::What::staff});
         require_same_path(path, evaluate_path(points, settings));
     }
-    SECTION("nearest spacing leaves nothing to refine")
+    SECTION("nearest spacing: a change of values waits for its segments, made in steps in path order; a change "
+            "that inserts a point makes them at once")
     {
         const PathSettings nearest{{1, 1}, 8, 12, Spacing::nearest};
         EvaluatedPath near = evaluate_path(points, nearest);
+        const std::vector<HermiteSegment> before = near.curve.segments;
+        const auto change_near = [&](const PathChange& what) {
+            reevaluate_path(points, nearest, near, what, Refinement::in_steps);
+        };
+        for (ControlPoint& point : points)
+            point.staff.continuity = 0.3;
+        change_near({0, points.size(), points.size(), PathChange::What::staff});
+        // Not one segment made: the key's first picture waits for none.
+        REQUIRE_FALSE(near.inbetweens_current);
+        REQUIRE(near.segments_unmade == SegmentRange{0, points.size() - 1});
+        REQUIRE(near.curve.segments == before);
+        REQUIRE_FALSE(refine_path(points, nearest, near, 1000));
+        REQUIRE(near.segments_unmade == SegmentRange{1000, points.size() - 1});
+        const EvaluatedPath fresh = evaluate_path(points, nearest);
+        REQUIRE(std::equal(fresh.curve.segments.begin(), fresh.curve.segments.begin() + 1000, near.curve.segments.begin()));
+        REQUIRE(near.curve.segments[1000] == before[1000]);
+        // A local key before them joins what is left.
         points[7].staff.tension = -0.5;
-        reevaluate_path(points, nearest, near, PathChange{7, 1, 1, PathChange::What::staff}, Refinement::in_steps);
-        REQUIRE(near.inbetweens_current);
+        change_near({7, 1, 1, PathChange::What::staff});
+        REQUIRE(near.segments_unmade == SegmentRange{5, points.size() - 1});
+        REQUIRE_FALSE(refine_path(points, nearest, near, 2000));
+        // A point inserted: every segment left is made, only the in-betweens wait.
+        points.insert(points.begin() + 1500, ControlPoint{{1.0, 1.5, -1.0}, {}});
+        change_near({1500, 0, 1, PathChange::What::positions});
+        REQUIRE(near.segments_unmade.empty());
+        REQUIRE_FALSE(near.inbetweens_current);
+        REQUIRE(refine_in_steps(points, nearest, near, 500) == 1);
+        require_same_path(near, evaluate_path(points, nearest));
+        // A global key left in steps, then a local key and an acceleration made at once.
+        for (ControlPoint& point : points)
+            point.staff.bias = -0.1;
+        change_near({0, points.size(), points.size(), PathChange::What::staff});
+        REQUIRE_FALSE(refine_path(points, nearest, near, 700));
+        points[2500].staff.tension = 0.2;
+        reevaluate_path(points, nearest, near, PathChange{2500, 1, 1, PathChange::What::staff});
+        require_same_path(near, evaluate_path(points, nearest));
+        change_near({0, points.size(), points.size(), PathChange::What::staff});
+        points[40].staff.acceleration = 0.6;
+        reevaluate_path(points, nearest, near, PathChange{40, 1, 1, PathChange::What::accelerations});
         require_same_path(near, evaluate_path(points, nearest));
     }
 }
@@ -151,6 +189,24 @@ int refine_editor(PathEditor& editor)
     return steps;
 }
 
+// The same path in two editors, one making every key's picture at once, the other in steps.
+struct TwinEditors {
+    explicit TwinEditors(Spacing spacing)
+        : at_once(zigzag_setup(spacing, Refinement::at_once), log)
+        , in_steps(zigzag_setup(spacing, Refinement::in_steps), log)
+    {
+    }
+    void both(std::initializer_list<Command> commands)
+    {
+        apply(at_once, commands);
+        apply(in_steps, commands);
+    }
+
+    LogLines log;
+    PathEditor at_once;
+    PathEditor in_steps;
+};
+
 } // namespace
 
 TEST_CASE("every key's picture, refined in steps before the next, is the picture made at once, ghost and message "
@@ -159,9 +215,9 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
 {
     for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
         CAPTURE(static_cast<int>(spacing));
-        LogLines log;
-        PathEditor at_once(zigzag_setup(spacing, Refinement::at_once), log);
-        PathEditor in_steps(zigzag_setup(spacing, Refinement::in_steps), log);
+        TwinEditors twins(spacing);
+        PathEditor& at_once = twins.at_once;
+        PathEditor& in_steps = twins.in_steps;
         int steps_taken = refine_editor(in_steps);
         const auto same_screen = [&](const char* after) {
             CAPTURE(after);
@@ -173,10 +229,7 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
             REQUIRE(message_of(shown) == message_of(expected));
             require_same_path(in_steps.evaluated(), at_once.evaluated());
         };
-        const auto both = [&](std::initializer_list<Command> commands) {
-            apply(at_once, commands);
-            apply(in_steps, commands);
-        };
+        const auto both = [&](std::initializer_list<Command> commands) { twins.both(commands); };
         same_screen("opening");
         both({cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
         same_screen("a global key on TENSION");
@@ -201,7 +254,7 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
     }
 }
 
-TEST_CASE("keys pressed before the picture is refined are added to what is left; refined, the path and its "
+TEST_CASE("keys pressed before the picture is refined are added to what is left — refined, the path and its "
           "screen are those evaluated and drawn afresh",
           "[session][editor][refinement]")
 {
@@ -258,7 +311,7 @@ TEST_CASE("keys pressed before the picture is refined are added to what is left;
     }
 }
 
-TEST_CASE("keys pressed while the curve is still drawn keep the ghost drawn whole; Z draws it again from the path "
+TEST_CASE("keys pressed while the curve is still drawn keep the ghost drawn whole — Z draws it again from the path "
           "two changes back",
           "[session][editor][refinement][view]")
 {
@@ -289,4 +342,27 @@ TEST_CASE("keys pressed while the curve is still drawn keep the ghost drawn whol
             }
     REQUIRE(ghost > 50);
     REQUIRE(on_opened_curve == ghost);
+}
+
+TEST_CASE("a staff key pressed before the last one's picture is refined says, once refined, how far it moved the "
+          "curve, as the key made at once says",
+          "[session][editor][refinement]")
+{
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact}) {
+        CAPTURE(static_cast<int>(spacing));
+        TwinEditors twins(spacing);
+        refine_editor(twins.in_steps);
+        twins.both({cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
+        // The global key made no segment yet: its first picture waits for none.
+        REQUIRE(twins.in_steps.evaluated().segments_unmade.size() == twins.in_steps.points().size() - 1);
+        twins.in_steps.refine_step();
+        twins.both({cmd::StaffStep{+2}});
+        const std::string meanwhile = message_of(twins.in_steps.view());
+        CAPTURE(meanwhile);
+        REQUIRE(meanwhile.starts_with("drawing the curve: 0 of 3 blocks"));
+        refine_editor(twins.in_steps);
+        const std::string said = message_of(twins.at_once.view());
+        REQUIRE(said.find("moved up to") != std::string::npos);
+        REQUIRE(message_of(twins.in_steps.view()) == said);
+    }
 }

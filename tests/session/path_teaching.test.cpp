@@ -47,7 +47,7 @@ std::string staff_line_label(const GraphicsScreen& screen)
 
 } // namespace
 
-TEST_CASE("T shows the KB tangents of Eq. 3.1.4 at the chosen control point; Tab moves the choice", "[session][teaching]")
+TEST_CASE("T shows the KB tangents of Eq. 3.1.4 at the chosen control point — Tab moves the choice", "[session][teaching]")
 {
     LogLines log;
     PathEditor editor(zigzag(), log);

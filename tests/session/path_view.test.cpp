@@ -262,7 +262,7 @@ std::size_t pixels_beyond(const Bitmap& screen, const Bitmap& without, const Bit
 
 } // namespace
 
-TEST_CASE("the curve before the last staff key stays as a dotted ghost until the next line; O toggles it",
+TEST_CASE("the curve before the last staff key stays as a dotted ghost until the next line — O toggles it",
           "[session][editor][view]")
 {
     LogLines log;

@@ -9,7 +9,7 @@
 
 using namespace apcs;
 
-TEST_CASE("a ';;' comment is a caption placed after the keys before it; ';' comments and TEXT are not",
+TEST_CASE("a ' — —' comment is a caption placed after the keys before it — ' —' comments and TEXT are not",
           "[session][captions]")
 {
     const Expected<KeyScript> script = parse_captioned_key_script(";; Step 1: the key frames\n"
@@ -118,7 +118,7 @@ TEST_CASE("a caption wider than the key-hint row is refused with its file and li
     REQUIRE(parse_captioned_key_script("; " + widest + widest + "\n", "class.keys"));
 }
 
-TEST_CASE("a TEXT line is one step of a paced replay; any other key is a step of its own", "[session][captions]")
+TEST_CASE("a TEXT line is one step of a paced replay — any other key is a step of its own", "[session][captions]")
 {
     const Expected<KeyScript> script =
         parse_captioned_key_script("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\n4 J\nTEXT \n", "class.keys");

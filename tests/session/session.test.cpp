@@ -435,7 +435,7 @@ TEST_CASE("q asks before quitting an unsaved path, Enter means N, Y ends with th
     REQUIRE(files.log_lines[files.log_lines.size() - 2] == "quit at step 4: four-line staff");
 }
 
-TEST_CASE("Esc on an empty prompt asks Quit APCS ? (Y/N); N, Esc and Enter go back to the prompt as it was",
+TEST_CASE("Esc on an empty prompt asks Quit APCS ? (Y/N) — N, Esc and Enter go back to the prompt as it was",
           "[session][quit]")
 {
     MemoryFiles files = example_files();

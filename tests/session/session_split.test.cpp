@@ -119,7 +119,7 @@ TEST_CASE("Esc stops the split: the files written stay, KEY2 is asked again", "[
     REQUIRE(path_files_in(files) == large_count);
 }
 
-TEST_CASE("keys other than Esc and Q mean nothing while splitting; Q ends APCS with the files whole",
+TEST_CASE("keys other than Esc and Q mean nothing while splitting — Q ends APCS with the files whole",
           "[session][split]")
 {
     MemoryFiles files = large_keys();

@@ -120,7 +120,7 @@ TEST_CASE("the key frames' points are never moved or deleted, and the message sa
     REQUIRE(editor.message() == "control point 1 of 2  depth +0.00");
 }
 
-TEST_CASE("D deletes an interior control point; U and Esc take edits back exactly", "[session][waypoints]")
+TEST_CASE("D deletes an interior control point — U and Esc take edits back exactly", "[session][waypoints]")
 {
     WaypointEditor::Setup setup = two_point_path();
     setup.points.insert(setup.points.begin() + 1, ControlPoint{{0, 6, 3}, {0.5, 0, 0, 0}});

@@ -10,11 +10,12 @@
 namespace apcs::test {
 
 // `kept` (re-evaluated, refined, or evaluated into arrays that kept their room) equals `fresh`
-// to the bit: segments, lengths, exact spacing's arc lengths (none pending), in-betweens, their
+// to the bit: segments (none unmade), lengths, exact spacing's arc lengths (none pending), in-betweens, their
 // spans and the frames that freeze.
 inline void require_same_path(const EvaluatedPath& kept, const EvaluatedPath& fresh)
 {
     REQUIRE(kept.inbetweens_current);
+    REQUIRE(kept.segments_unmade.empty());
     REQUIRE(kept.curve.segments == fresh.curve.segments);
     REQUIRE(kept.curve.segment_length == fresh.curve.segment_length);
     REQUIRE(kept.curve.length_to_point == fresh.curve.length_to_point);

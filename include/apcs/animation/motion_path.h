@@ -80,6 +80,11 @@ struct EvaluatedPath {
     // refine_path has measured the arc lengths it marked and placed the in-betweens on them: the
     // in-betweens, span timings and frozen frames are then those of an earlier state of the path.
     bool inbetweens_current = true;
+    // Refinement::in_steps: segments whose control points a change of values or a point's move set
+    // anew but which are not made yet (their chord lengths, the lengths after them, their arc lengths
+    // and the in-betweens are those of an earlier state: inbetweens_current is false). refine_path
+    // makes them first, in path order.
+    SegmentRange segments_unmade;
 };
 
 // The frozen frames named as the animator counts them, "KEY1=1, 5=6, 12=KEY2" (in-betweens by the
@@ -104,13 +109,16 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 // acceleration changes no segment. The result is evaluate_path's, to the bit; arrays that do not
 // fit the change, or a change outside the path, are evaluated afresh.
 // Returns the segments it made again (all of them when evaluated afresh: removed = the old count).
-// With Refinement::in_steps and exact spacing, the arc lengths of the segments made again are only
-// marked (kept with those a change before marked and refine_path has not measured yet) and the
-// in-betweens not placed: the curve is as at once, the rest waits for refine_path.
+// With Refinement::in_steps the in-betweens are not placed, and the rest waits for refine_path too:
+// a change that keeps the number of segments (values, a point moved) makes none of them, they are
+// marked unmade (with those a change before left); a change that inserts or removes a point makes
+// its segments (and those left unmade) at once; with exact spacing the arc lengths of the segments
+// touched are only marked (kept with those a change before marked and refine_path has not measured
+// yet).
 SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                               const PathChange& change, Refinement refinement = Refinement::at_once);
-// One step of what Refinement::in_steps left: up to `most_segments` arc lengths measured, and once
-// all are, the in-betweens placed. Returns whether the path is then as evaluate_path makes it (to
+// One step of what Refinement::in_steps left: up to `most_segments` segments made, or once all are,
+// up to that many arc lengths measured, and once all are, the in-betweens placed. Returns whether the path is then as evaluate_path makes it (to
 // the bit); `points` and `settings` are those of the last change.
 bool refine_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                  std::size_t most_segments);

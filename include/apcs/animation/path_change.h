@@ -36,7 +36,28 @@ struct SegmentSplice {
 
     std::size_t old_end() const { return first + removed; }
     std::size_t new_end() const { return first + inserted; }
+    // Where index `index` of the curve before the change stands after it; one inside the change
+    // goes to the change's start (a range's first) or its end (a range's end).
+    std::size_t moved(std::size_t index, bool is_end) const
+    {
+        if (index < first || (is_end && index == first))
+            return index;
+        if (index >= old_end())
+            return index - removed + inserted;
+        return is_end ? new_end() : first;
+    }
     friend bool operator==(const SegmentSplice&, const SegmentSplice&) = default;
+};
+
+// Segments first … end − 1 (none when end ≤ first).
+struct SegmentRange {
+    std::size_t first = 0;
+    std::size_t end = 0;
+
+    bool empty() const { return end <= first; }
+    std::size_t size() const { return empty() ? 0 : end - first; }
+    bool meets(std::size_t from, std::size_t to) const { return !empty() && from < end && first < to; }
+    friend bool operator==(const SegmentRange&, const SegmentRange&) = default;
 };
 
 // Per-segment `values` made to fit the curve after `change`: the entries of the segments after it

@@ -88,22 +88,36 @@ private:
 SampledCurve sample_curve(std::span<const HermiteSegment> segments, int samples_per_segment);
 // Measures `curve.segments` (set by the caller, arrays' room kept) at samples_per_segment.
 void sample_curve(SampledCurve& curve, int samples_per_segment);
-// The chord length of a segment's samples, summed in order (as SampledCurve::chord_length sums):
-// what sample_curve keeps in segment_length, to the bit. Holds the basis in columns and room for
-// one segment's samples: one per thread.
-class SegmentMeasure {
+// One segment's samples 0 … samples_per_segment, a coordinate at a time (columns), as
+// SampledCurve::segment_sample computes each: the same operations in the same order, the same
+// bits, so that the compiler does several samples in one instruction; the ends are the control
+// points themselves. Holds the basis in columns and room for one segment: one per thread.
+class SegmentSampleColumns {
 public:
-    explicit SegmentMeasure(std::span<const HermiteBasis> basis);
-    double operator()(const HermiteSegment& segment);
+    explicit SegmentSampleColumns(std::span<const HermiteBasis> basis);
+    void sample(const HermiteSegment& segment);
+
+    // Sample j is (x[j], y[j], z[j]) after sample(); a caller may write over them.
+    std::vector<double> x;
+    std::vector<double> y;
+    std::vector<double> z;
 
 private:
     void sample_coordinate(double start, double end, double start_tangent, double end_tangent,
                            std::vector<double>& out) const;
 
     std::array<std::vector<double>, 4> m_basis; // f1 … f4 of every sample
-    std::vector<double> m_x;
-    std::vector<double> m_y;
-    std::vector<double> m_z;
+};
+
+// The chord length of a segment's samples, summed in order (as SampledCurve::chord_length sums):
+// what sample_curve keeps in segment_length, to the bit. One per thread.
+class SegmentMeasure {
+public:
+    explicit SegmentMeasure(std::span<const HermiteBasis> basis);
+    double operator()(const HermiteSegment& segment);
+
+private:
+    SegmentSampleColumns m_samples;
 };
 
 // After segment_length changed from segment `first` on: the lengths to the control points after it.

@@ -88,6 +88,10 @@ public:
 
     EyePoint to_eye(const Vec3& world) const;
     DevicePoint to_device(const Vec3& world) const;
+    // to_device(point).rounded() of the points (x[i], y[i], z[i]), i < x.size(), computed a column at
+    // a time: the same operations in the same order, the same pixels.
+    void to_pixels(std::span<const double> x, std::span<const double> y, std::span<const double> z,
+                   std::span<int> pixel_x, std::span<int> pixel_y) const;
 
     // Unit vectors in world coordinates along the screen's right and up, and toward the viewer:
     // a point moved along them moves right, up the screen, and nearer the eye (smaller z_e).
@@ -120,6 +124,8 @@ private:
     ViewTransform(ViewAngles angles, Vec3 centre, double viewer_distance, PixelRect drawing_area);
     // L and M such that the projection (x_e/z_e, y_e/z_e) = (x, y) falls on the middle of `area`.
     void place(double x, double y, PixelRect area);
+    EyePoint eye_of(double x, double y, double z) const;
+    DevicePoint device_of(const EyePoint& eye) const;
 
     double m_sin_theta = 0.0;
     double m_cos_theta = 1.0;

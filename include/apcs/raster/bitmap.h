@@ -20,8 +20,18 @@ public:
     bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < m_width && y < m_height; }
 
     bool get(int x, int y) const;
-    void set(int x, int y, bool lit);
+    void set(int x, int y, bool lit)
+    {
+        if (!contains(x, y))
+            return;
+        // Most significant bit leftmost.
+        const auto bit = static_cast<std::uint8_t>(0x80u >> (x & 7));
+        std::uint8_t& byte = m_bits[static_cast<std::size_t>(y) * m_bytes_per_row + static_cast<std::size_t>(x >> 3)];
+        byte = lit ? static_cast<std::uint8_t>(byte | bit) : static_cast<std::uint8_t>(byte & ~bit);
+    }
     void toggle(int x, int y);
+    // Lights pixels first_x … last_x (either order) of row y, those on the raster: a byte at a time.
+    void set_run(int y, int first_x, int last_x);
     void clear();
     std::size_t lit_count() const;
     // Lights every pixel lit in `other`, a bitmap of the same size: all of it, or its rows

@@ -45,8 +45,10 @@ public:
     // UTF-8 text in 9x14 cells, the first cell's top-left corner at `top_left`.
     void text(PixelPoint top_left, std::string_view utf8, DrawMode mode = DrawMode::set);
 
-private:
+    // Where it draws: the clip on the bitmap, or the whole bitmap.
     PixelRect bounds() const;
+
+private:
     void record(PixelPoint from, PixelPoint to, LineStyle style);
 
     Bitmap& m_target;

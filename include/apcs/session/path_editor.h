@@ -22,6 +22,13 @@
 
 namespace apcs {
 
+// A segment of the curve before a staff key, with its index: one the key may move (on a long
+// region every stride-th of them), to say how far the key moved the curve.
+struct SegmentBeforeKey {
+    std::size_t index = 0;
+    HermiteSegment before;
+};
+
 // Graphics mode while one graphic point's path is shaped (thesis Ch. 4.2 steps 3–5): the choice of
 // global or local control (Check_GorL_Control), picking the region with the arrow
 // (Scan_Control_Point), the four-line staff (Scan_Parameters, one Scan_*_Value per line, one
@@ -137,6 +144,8 @@ private:
     Staff start_staff(ControlRegion region);
     Waypoints open_waypoints();
     void set_staff_value(Staff& staff, double value);
+    // m_moved from m_move_unmeasured once the picture is refined.
+    void measure_move_when_refined();
     void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
     Transition undo();
     Transition undo_change(const StaffChange& change);
@@ -183,6 +192,10 @@ private:
     std::string m_notice;
     // After a staff key: how far it moved the curve ("moved up to 0.024 = 1 px").
     std::string m_moved;
+    // A staff key's segments before it, while its picture is refined in steps: the message line
+    // says what is refined meanwhile, and the search (about 8 ms for a global key's 4096 segments)
+    // need not hold up the first picture.
+    std::optional<std::vector<SegmentBeforeKey>> m_move_unmeasured;
     // Every change since the path was opened, oldest first: U takes back the last.
     std::vector<Change> m_history;
 };
