@@ -409,10 +409,9 @@ bool refine_path(std::span<const ControlPoint> points, const PathSettings& setti
     if (path.inbetweens_current)
         return true;
     if (!path.segments_unmade.empty()) {
-        const std::size_t made = std::min(most_segments, path.segments_unmade.size());
-        make_unmade_segments(points, settings, path, made);
-        most_segments -= made;
-        if (!path.segments_unmade.empty() || most_segments == 0)
+        make_unmade_segments(points, settings, path, most_segments);
+        // Arc lengths are measured in steps of their own.
+        if (!path.segments_unmade.empty() || path.arc_lengths.pending())
             return false;
     }
     if (path.arc_lengths.pending()) {

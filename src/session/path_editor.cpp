@@ -8,6 +8,7 @@
 #include "apcs/session/screen_layout.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdio>
@@ -51,22 +52,41 @@ struct CurveMove {
 // 80 ms. The move said is then that of the segments measured.
 constexpr std::size_t most_measured_segments = 4096;
 
-// The segments whose tangents the region's points can set (ends included), made from the points
-// as the curve makes them (the curve's own may wait for a refinement in steps).
-std::vector<SegmentBeforeKey> measured_segments(std::span<const ControlPoint> points, EndSlopes slopes,
-                                               ControlRegion region)
+// The segments whose tangents the region's points can set (ends included) as they were before a
+// key gave the region new staff values: each made from the points around it (kb_segment reads
+// points k − 1 … k + 2) with the region's values taken back from the runs the key replaced. Made
+// from the points, not read from the curve: the curve's own may wait for a refinement in steps.
+std::vector<SegmentBeforeKey> segments_before_key(std::span<const ControlPoint> points, EndSlopes slopes,
+                                                  ControlRegion region, const std::vector<StaffRun>& runs_before)
 {
+    std::vector<std::size_t> run_ends; // the point after each run
+    for (std::size_t end = region.first; const StaffRun& run : runs_before)
+        run_ends.push_back(end += run.count);
+    const auto staff_before = [&](std::size_t point) {
+        const auto run = std::upper_bound(run_ends.begin(), run_ends.end(), point) - run_ends.begin();
+        return runs_before[static_cast<std::size_t>(run)].staff;
+    };
     const std::size_t first = region.first < 2 ? 0 : region.first - 2;
     const std::size_t end = std::min(points.size() - 1, region.last + 2);
     const std::size_t count = end > first ? end - first : 0;
     const std::size_t stride = std::max<std::size_t>(1, (count + most_measured_segments - 1) / most_measured_segments);
     std::vector<SegmentBeforeKey> measured;
-    for (std::size_t index = first; index < end; index += stride)
-        measured.push_back({index, kb_segment(points, slopes, index)});
+    const std::size_t runs_end = run_ends.empty() ? region.first : run_ends.back();
+    for (std::size_t index = first; index < end; index += stride) {
+        const std::size_t window_first = index == 0 ? 0 : index - 1;
+        const std::size_t window_size = std::min(points.size(), index + 3) - window_first;
+        std::array<ControlPoint, 4> window{};
+        for (std::size_t k = 0; k < window_size; ++k) {
+            window[k] = points[window_first + k];
+            if (region.contains(window_first + k) && window_first + k < runs_end)
+                window[k].staff = staff_before(window_first + k);
+        }
+        measured.push_back({index, kb_segment(std::span(window.data(), window_size), slopes, index - window_first)});
+    }
     return measured;
 }
 
-// `before` as measured_segments kept them, `points` those after the key. The pixels are
+// `before` as segments_before_key made them, `points` those after the key. The pixels are
 // measured at each segment's furthest-moved sample (SampleMove), not at every sample: one
 // projection pair per segment; a view seen nearly along the move may show another sample moved a
 // pixel more. Segments that cannot beat the furthest move found are not searched.
@@ -404,7 +424,6 @@ PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 // past the end of the line) is not.
 void PathEditor::set_staff_value(Staff& staff, double value)
 {
-    std::vector<SegmentBeforeKey> before = measured_segments(m_setup.points, m_setup.settings.slopes, staff.region);
     StaffChange change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
     staff.staff[staff.line] = snapped(value);
     change.points_before = apply_staff_to_region(m_setup.points, staff.region, staff.staff);
@@ -413,6 +432,9 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
+    std::vector<SegmentBeforeKey> before;
+    if (what == PathChange::What::staff)
+        before = segments_before_key(m_setup.points, m_setup.settings.slopes, staff.region, change.points_before);
     m_history.push_back(std::move(change));
     reevaluate_region(staff.region, what, std::move(back));
     // An acceleration moves no segment.

@@ -72,7 +72,7 @@ bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (
 void PathPicture::refine_step(std::span<const ControlPoint> points)
 {
     if (!m_evaluated.segments_unmade.empty()) {
-        refine_path(points, m_settings, m_evaluated, m_refinement.segments_a_step);
+        refine_path(points, m_settings, m_evaluated, m_refinement.segments_made_a_step);
         if (m_view)
             draw_curve();
     } else if (m_view && !m_curve.drawn()) {
@@ -84,7 +84,8 @@ void PathPicture::refine_step(std::span<const ControlPoint> points)
 
 void PathPicture::refine(std::span<const ControlPoint> points)
 {
-    refine_path(points, m_settings, m_evaluated, std::numeric_limits<std::size_t>::max());
+    while (!refine_path(points, m_settings, m_evaluated, std::numeric_limits<std::size_t>::max()))
+        ;
     if (m_view && !m_curve.drawn())
         m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
 }

@@ -273,7 +273,8 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
             inside_layer(screen, content, ColourRole::monitor,
                          [&](Painter& inside) { draw_world_curve(inside, content.path->curve, view); });
         draw_ani_path(screen, *content.path, view);
-        if (content.tangent_scale)
+        // Tangents of segments not made yet would be those of an earlier state.
+        if (content.tangent_scale && content.path->segments_unmade.empty())
             draw_tangents(screen, content, view);
     }
     if (kept != nullptr)

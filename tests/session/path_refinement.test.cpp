@@ -151,8 +151,9 @@ PathEditor::Setup zigzag_setup(Spacing spacing, Refinement when)
     // the first round draws.
     setup.points = zigzag(13000);
     setup.settings = {{1, 1}, 8, 12, spacing};
-    // Small steps, so that a path of 13000 points takes many (the terminal's are 2^15 segments).
-    setup.refinement = {when, 900, 20000};
+    // Small steps, so that a path of 13000 points takes many (the terminal's are 2^15 arc lengths,
+    // 2^17 segments made).
+    setup.refinement = {when, 900, 20000, 1000};
     return setup;
 }
 
@@ -352,9 +353,17 @@ TEST_CASE("a staff key pressed before the last one's picture is refined says, on
         CAPTURE(static_cast<int>(spacing));
         TwinEditors twins(spacing);
         refine_editor(twins.in_steps);
+        const auto tangent_ends = [](const GraphicsScreen& screen) {
+            return std::ranges::count_if(screen.marks,
+                                         [](const PixelMark& mark) { return mark.kind == MarkKind::tangent_end; });
+        };
+        twins.both({cmd::ToggleTangents{}});
+        REQUIRE(tangent_ends(twins.in_steps.view()) > 0);
         twins.both({cmd::ChooseGlobal{}, cmd::StaffStep{+3}});
-        // The global key made no segment yet: its first picture waits for none.
+        // The global key made no segment yet: its first picture waits for none, and draws no
+        // tangent of an earlier state.
         REQUIRE(twins.in_steps.evaluated().segments_unmade.size() == twins.in_steps.points().size() - 1);
+        REQUIRE(tangent_ends(twins.in_steps.view()) == 0);
         twins.in_steps.refine_step();
         twins.both({cmd::StaffStep{+2}});
         const std::string meanwhile = message_of(twins.in_steps.view());
@@ -364,5 +373,6 @@ TEST_CASE("a staff key pressed before the last one's picture is refined says, on
         const std::string said = message_of(twins.at_once.view());
         REQUIRE(said.find("moved up to") != std::string::npos);
         REQUIRE(message_of(twins.in_steps.view()) == said);
+        REQUIRE(twins.in_steps.view().marks.size() == twins.at_once.view().marks.size());
     }
 }
