@@ -133,7 +133,7 @@ void ViewTransform::place(double x, double y, PixelRect area)
     m_centre_y = (area.top + area.bottom) / 2.0 + m_focus * y * m_half_height;
 }
 
-EyePoint ViewTransform::eye_of(double x, double y, double z) const
+inline EyePoint ViewTransform::eye_of(double x, double y, double z) const
 {
     const double px = x - m_centre.x;
     const double py = y - m_centre.y;
@@ -145,7 +145,7 @@ EyePoint ViewTransform::eye_of(double x, double y, double z) const
     };
 }
 
-DevicePoint ViewTransform::device_of(const EyePoint& eye) const
+inline DevicePoint ViewTransform::device_of(const EyePoint& eye) const
 {
     // Points at or behind the eye cannot occur for a fitted scene (z_e ≥ 2R); a tiny depth keeps
     // the mapping total for any other point.
