@@ -126,6 +126,21 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
         REQUIRE_FALSE(near.inbetweens_current);
         REQUIRE(refine_in_steps(points, nearest, near, 500) == 1);
         require_same_path(near, evaluate_path(points, nearest));
+        // An acceleration and a point moved while segments wait: the in-betweens wait, the move
+        // joins what is left.
+        for (ControlPoint& point : points)
+            point.staff.tension = 0.1;
+        change_near({0, points.size(), points.size(), PathChange::What::staff});
+        REQUIRE_FALSE(refine_path(points, nearest, near, 1200));
+        points[30].staff.acceleration = -0.4;
+        change_near({30, 1, 1, PathChange::What::accelerations});
+        REQUIRE(near.segments_unmade == SegmentRange{1200, points.size() - 1});
+        REQUIRE_FALSE(near.inbetweens_current);
+        points[600].position.x += 0.25;
+        change_near({600, 1, 1, PathChange::What::positions});
+        REQUIRE(near.segments_unmade == SegmentRange{598, points.size() - 1});
+        refine_in_steps(points, nearest, near, 400);
+        require_same_path(near, evaluate_path(points, nearest));
         // A global key left in steps, then a local key and an acceleration made at once.
         for (ControlPoint& point : points)
             point.staff.bias = -0.1;
