@@ -316,11 +316,8 @@ void make_unmade_segments(std::span<const ControlPoint> points, const PathSettin
     const std::size_t end = first + std::min(most, unmade.size());
     remake_segments(points, settings, path.curve, first, end);
     unmade.first = end;
-    if (!unmade.empty()) {
-        for (std::size_t s = first; s < end; ++s)
-            path.curve.length_to_point[s + 1] = path.curve.length_to_point[s] + path.curve.segment_length[s];
-        return;
-    }
+    if (!unmade.empty())
+        return add_up_lengths(path.curve, first, end);
     unmade = {};
     add_up_lengths(path.curve, first);
 }

@@ -185,9 +185,9 @@ double SegmentMeasure::operator()(const HermiteSegment& segment)
     return length;
 }
 
-void add_up_lengths(SampledCurve& curve, std::size_t first)
+void add_up_lengths(SampledCurve& curve, std::size_t first, std::size_t end)
 {
-    for (std::size_t s = first; s < curve.segment_length.size(); ++s)
+    for (std::size_t s = first; s < std::min(end, curve.segment_length.size()); ++s)
         curve.length_to_point[s + 1] = curve.length_to_point[s] + curve.segment_length[s];
 }
 

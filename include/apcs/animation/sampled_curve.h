@@ -121,6 +121,7 @@ private:
 };
 
 // After segment_length changed from segment `first` on: the lengths to the control points after it.
-void add_up_lengths(SampledCurve& curve, std::size_t first);
+// Those of segments first … end − 1 alone, the lengths before them current (a curve made in steps).
+void add_up_lengths(SampledCurve& curve, std::size_t first, std::size_t end = static_cast<std::size_t>(-1));
 
 } // namespace apcs
