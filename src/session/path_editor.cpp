@@ -12,6 +12,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 namespace apcs {
 
@@ -23,9 +24,10 @@ double snapped(double value) { return limits::staff_value.clamp(std::round(value
 enum class KeyFrames { shown, hidden };
 
 // What the view keeps in sight: the path, its control points, and both key frames while K shows them.
-ViewScene shown_scene(const PathEditor::Setup& setup, const EvaluatedPath& path, KeyFrames key_frames)
+ViewScene shown_scene(const PathEditor::Setup& setup, const ControlPoints& points, const EvaluatedPath& path,
+                      KeyFrames key_frames)
 {
-    PathScreenContent shown = path_screen_content(setup.points, path);
+    PathScreenContent shown = path_screen_content(points, path);
     if (key_frames == KeyFrames::shown)
         shown.key_frame_polylines = setup.key_frame_polylines;
     return path_screen_scene(shown);
@@ -138,11 +140,11 @@ std::string changes_text(std::size_t count) { return std::to_string(count) + (co
 
 PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
-    , m_origins(file_origins(m_setup.points.size()))
     , m_log(log)
-    , m_picture(m_setup.points, m_setup.settings, m_setup.refinement)
+    , m_document(std::make_unique<PathDocument>(std::exchange(m_setup.points, {})))
+    , m_picture(std::make_unique<PathPicture>(*m_document, m_setup.settings, m_setup.refinement))
 {
-    assert(m_setup.points.size() >= 2);
+    assert(points().size() >= 2);
     fit_view();
 }
 
@@ -152,17 +154,16 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
 void PathEditor::fit_view()
 {
     const KeyFrames key_frames = m_show_key_frames ? KeyFrames::shown : KeyFrames::hidden;
-    m_fitted_view = shown_scene(m_setup, m_picture.evaluated(), key_frames).fill(m_setup.view_angles, layout::view_area);
+    m_fitted_view = shown_scene(m_setup, points(), evaluated(), key_frames).fill(m_setup.view_angles, layout::view_area);
     // The arrows keep the fitted view's scale: Z magnifies them with the curve.
-    m_tangent_scale = tangent_arrow_scale(m_setup.points, *m_fitted_view);
+    m_tangent_scale = tangent_arrow_scale(points(), *m_fitted_view);
     show_view();
 }
 
 void PathEditor::show_view()
 {
     const double factor = static_cast<double>(1 << m_zoom_level);
-    m_picture.set_view(m_setup.points,
-                       m_zoom_level == 0 ? *m_fitted_view : m_fitted_view->zoomed(factor, m_zoom_about, layout::view_area));
+    m_picture->set_view(m_zoom_level == 0 ? *m_fitted_view : m_fitted_view->zoomed(factor, m_zoom_about, layout::view_area));
 }
 
 // Z: ×2, ×4, ×8, then the fitted view again; about the picked region, or the path's middle.
@@ -171,13 +172,13 @@ bool PathEditor::zoom()
     m_zoom_level = next_zoom_level(m_zoom_level);
     const std::optional<ControlRegion> region = picked_region();
     // The path's middle: the sample halfway along the curve.
-    const SampledCurve& curve = m_picture.evaluated().curve;
+    const SampledCurve& curve = m_picture->evaluated().curve;
     std::string about = "the path's middle";
     m_zoom_about.reset();
     if (curve.sample_count() > 0)
         m_zoom_about = curve.sample(curve.nearest_sample(curve.total_length() / 2.0));
-    if (region && !region->is_whole(m_setup.points)) {
-        m_zoom_about = region_middle(m_setup.points, *region);
+    if (region && !region->is_whole(points())) {
+        m_zoom_about = region_middle(points(), *region);
         about = region->first == region->last ? "control point " + std::to_string(region->first + 1)
                                               : "control points " + std::to_string(region->first + 1) + " to " +
                                                     std::to_string(region->last + 1);
@@ -186,24 +187,6 @@ bool PathEditor::zoom()
     m_notice = m_zoom_level == 0 ? "zoom off: the view fitted to the path"
                                  : "zoom ×" + std::to_string(1 << m_zoom_level) + " about " + about + " (Z: more)";
     return true;
-}
-
-const PathPicture& PathEditor::picture() const
-{
-    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
-    return waypoints != nullptr ? waypoints->editor.picture() : m_picture;
-}
-
-const ControlPoints& PathEditor::points() const
-{
-    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
-    return waypoints != nullptr ? waypoints->editor.points() : m_setup.points;
-}
-
-const std::vector<std::size_t>& PathEditor::point_origins() const
-{
-    const auto* waypoints = std::get_if<Waypoints>(&m_mode);
-    return waypoints != nullptr ? waypoints->editor.origins() : m_origins;
 }
 
 SessionPhase PathEditor::phase() const
@@ -237,7 +220,7 @@ void PathEditor::show_problem(const std::string& message)
 {
     m_problem = message;
     if (!std::holds_alternative<AskAgain>(m_mode))
-        m_mode = AskAgain{ControlRegion::whole(m_setup.points), m_setup.points.front().staff};
+        m_mode = AskAgain{ControlRegion::whole(points()), points().front().staff};
 }
 
 namespace {
@@ -252,26 +235,22 @@ bool adds_to_refinement(const Command& command)
 
 void PathEditor::refine_step()
 {
-    if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
-        return waypoints->editor.refine_step();
-    m_picture.refine_step(m_setup.points);
+    m_picture->refine_step();
     measure_move_when_refined();
 }
 
 void PathEditor::refine()
 {
-    if (auto* waypoints = std::get_if<Waypoints>(&m_mode))
-        return waypoints->editor.refine();
-    m_picture.refine(m_setup.points);
+    m_picture->refine();
     measure_move_when_refined();
 }
 
 void PathEditor::measure_move_when_refined()
 {
-    if (!m_move_unmeasured || m_picture.refining())
+    if (!m_move_unmeasured || m_picture->refining())
         return;
-    m_moved = curve_move_text(curve_move(*m_move_unmeasured, m_setup.points, m_setup.settings.slopes,
-                                         m_picture.evaluated().curve.basis, m_picture.view()));
+    m_moved = curve_move_text(curve_move(*m_move_unmeasured, points(), m_setup.settings.slopes,
+                                         m_picture->evaluated().curve.basis, m_picture->view()));
     m_move_unmeasured.reset();
 }
 
@@ -282,7 +261,7 @@ PathEditor::Outcome PathEditor::update(const Command& command)
     const Outcome outcome = take_command(command);
     // The waypoint editor boxes its chosen point in the picture it holds.
     if (!std::holds_alternative<Waypoints>(m_mode))
-        m_picture.box_region(picked_region());
+        m_picture->box_region(picked_region());
     return outcome;
 }
 
@@ -335,7 +314,7 @@ bool PathEditor::update_views(const Command& command)
                           [&](const command::ToggleGhost&) {
                               toggle(m_show_ghost);
                               m_notice = !m_show_ghost        ? "ghost hidden (O shows it)"
-                                         : picture().has_ghost() ? "ghost shown: the curve before the last change, dotted"
+                                         : m_picture->has_ghost() ? "ghost shown: the curve before the last change, dotted"
                                                                  : "ghost shown after the next staff key or waypoint edit";
                               return true;
                           },
@@ -343,7 +322,7 @@ bool PathEditor::update_views(const Command& command)
                           [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
                           [&](const command::ChoosePoint& choose) {
                               if (!in_waypoints)
-                                  m_tangent_point = wrapped_point(m_tangent_point, choose.by, m_setup.points.size());
+                                  m_tangent_point = wrapped_point(m_tangent_point, choose.by, points().size());
                               return !in_waypoints;
                           },
                           // Every other command is the mode's.
@@ -357,7 +336,7 @@ PathEditor::Transition PathEditor::check_global_or_local_control(const Command& 
     return std::visit(Overloaded{
                           [&](const command::ChooseGlobal&) {
                               m_log.log("global control");
-                              return Transition{start_staff(ControlRegion::whole(m_setup.points))};
+                              return Transition{start_staff(ControlRegion::whole(points()))};
                           },
                           [](const command::ChooseLocal&) { return Transition{RegionPick{}}; },
                           [&](const command::OpenWaypoints&) { return Transition{open_waypoints()}; },
@@ -370,7 +349,7 @@ PathEditor::Transition PathEditor::check_global_or_local_control(const Command& 
 
 PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Command& command)
 {
-    const std::size_t last_index = m_setup.points.size() - 1;
+    const std::size_t last_index = points().size() - 1;
     const auto pick_last = [&](std::size_t first, std::size_t last) {
         if (last < first) {
             m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
@@ -412,11 +391,11 @@ PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Co
 
 PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 {
-    assert(region.first <= region.last && region.last < m_setup.points.size());
-    m_picture.drop_ghost(); // a new region starts without one
-    Staff staff{region, m_setup.points[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
+    assert(region.first <= region.last && region.last < points().size());
+    m_picture->drop_ghost(); // a new region starts without one
+    Staff staff{region, points()[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
     staff.line_start_value = staff.staff[staff.line];
-    m_tangent_point = region.is_whole(m_setup.points) ? 1 : region.first;
+    m_tangent_point = region.is_whole(points()) ? 1 : region.first;
     return staff;
 }
 
@@ -424,18 +403,19 @@ PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 // past the end of the line) is not.
 void PathEditor::set_staff_value(Staff& staff, double value)
 {
-    StaffChange change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
+    StaffEdit change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
     staff.staff[staff.line] = snapped(value);
-    change.points_before = apply_staff_to_region(m_setup.points, staff.region, staff.staff);
-    if (staff.staff == change.staff && staff_runs(m_setup.points, staff.region) == change.points_before)
+    PathDocument::StaffSet set = m_document->set_staff(staff.region, staff.staff);
+    change.points_before = std::move(set.runs_before);
+    if (staff.staff == change.staff && !set.changed)
         return;
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
     std::vector<SegmentBeforeKey> before;
     if (what == PathChange::What::staff)
-        before = segments_before_key(m_setup.points, m_setup.settings.slopes, staff.region, change.points_before);
-    m_history.push_back(std::move(change));
+        before = segments_before_key(points(), m_setup.settings.slopes, staff.region, change.points_before);
+    m_document->record(std::move(change));
     reevaluate_region(staff.region, what, std::move(back));
     // An acceleration moves no segment.
     if (what == PathChange::What::accelerations) {
@@ -452,7 +432,7 @@ void PathEditor::set_staff_value(Staff& staff, double value)
 void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back)
 {
     const std::size_t count = region.last - region.first + 1;
-    m_picture.refresh(m_setup.points, PathChange{region.first, count, count, what}, std::move(back));
+    m_picture->refresh(PathChange{region.first, count, count, what}, std::move(back));
 }
 
 // Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
@@ -488,7 +468,7 @@ PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding en
     }
     m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
               (kept ? " (kept)" : ""));
-    m_picture.drop_ghost(); // the ghost lasts until the next line
+    m_picture->drop_ghost(); // the ghost lasts until the next line
     // A single control point starts no span of its own: its acceleration line is skipped.
     const bool single_point = staff.region.first == staff.region.last;
     if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
@@ -519,7 +499,7 @@ PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
 {
     return std::visit(Overloaded{
                           [&](const command::Yes&) {
-                              m_picture.drop_ghost();
+                              m_picture->drop_ghost();
                               return Transition{ControlChoice{}};
                           },
                           [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
@@ -532,27 +512,27 @@ PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
 
 PathEditor::Transition PathEditor::undo()
 {
-    if (m_history.empty()) {
+    if (m_document->edit_count() == 0) {
         m_notice = "Nothing to undo: the path is as it was opened";
         return Transition{};
     }
-    const Change change = std::move(m_history.back());
-    m_history.pop_back();
+    const PathEdit change = m_document->last_edit();
+    m_document->drop_last_edit();
     m_problem.clear();
     Transition transition = std::visit([this](const auto& last) { return undo_change(last); }, change);
-    m_notice += "; " + changes_text(m_history.size()) + " left to undo";
+    m_notice += "; " + changes_text(m_document->edit_count()) + " left to undo";
     m_log.log(m_notice);
     return transition;
 }
 
 // Back to the staff line the change was made on, with the staff as it was.
-PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
+PathEditor::Transition PathEditor::undo_change(const StaffEdit& change)
 {
-    const PathChange::What what = runs_change_shape(change.points_before, m_setup.points[change.region.first].staff)
+    const PathChange::What what = runs_change_shape(change.points_before, points()[change.region.first].staff)
                                       ? PathChange::What::staff
                                       : PathChange::What::accelerations;
-    PathPicture::PointsBack back = staff_runs_back(change.region, staff_runs(m_setup.points, change.region));
-    restore_staff_runs(m_setup.points, change.region, change.points_before);
+    PathPicture::PointsBack back = staff_runs_back(change.region, staff_runs(points(), change.region));
+    m_document->restore_staff(change.region, change.points_before);
     reevaluate_region(change.region, what, std::move(back));
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
@@ -563,15 +543,15 @@ PathEditor::Transition PathEditor::undo_change(const StaffChange& change)
 PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
     // The ghost: the path with the edit, as it was before U.
-    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_origins, change),
-                      [change](ControlPoints& points) { apply_change(points, change); });
+    const PathChange changed = m_document->revert(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;
     case WaypointChange::Kind::remove: m_notice = "Undone: the deletion of " + point; break;
     case WaypointChange::Kind::move: m_notice = "Undone: the move of " + point; break;
     }
-    m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
+    m_tangent_point = std::min(m_tangent_point, points().size() - 1);
     fit_view();
     return Transition{ControlChoice{}};
 }
@@ -579,33 +559,26 @@ PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 PathEditor::Waypoints PathEditor::open_waypoints()
 {
     m_log.log("waypoint editor");
-    const double step = waypoint_step(shown_scene(m_setup, m_picture.evaluated(), KeyFrames::shown).bounds());
-    WaypointEditor::Setup setup{std::move(m_setup.points), std::move(m_origins), m_setup.settings, m_picture.view(), step};
-    return Waypoints{WaypointEditor(std::move(setup), std::move(m_picture))};
+    const double step = waypoint_step(shown_scene(m_setup, points(), evaluated(), KeyFrames::shown).bounds());
+    return Waypoints{WaypointEditor(*m_document, *m_picture, {m_picture->view(), step})};
 }
 
 PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const Command& command)
 {
     WaypointEditor& editor = waypoints.editor;
+    const std::size_t changes = editor.change_count();
     const WaypointEditor::Outcome outcome = editor.update(command);
     if (outcome == WaypointEditor::Outcome::editing)
         return Transition{};
-    const std::size_t changes = editor.changes().size();
-    if (outcome == WaypointEditor::Outcome::kept)
-        m_history.insert(m_history.end(), editor.changes().begin(), editor.changes().end());
-    // Esc has taken the editor's changes back: the path is handed back as it was.
-    WaypointEditor::Path path = std::move(editor).hand_back();
-    m_setup.points = std::move(path.points);
-    m_origins = std::move(path.origins);
-    m_picture = std::move(path.picture);
+    // Esc has taken the editor's changes back: the path is as it was when the editor opened.
     if (outcome == WaypointEditor::Outcome::kept) {
-        m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(m_setup.points.size()) +
+        m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(points().size()) +
                    " control points";
     } else {
         m_notice = "Waypoints: " + changes_text(changes) + " undone";
     }
     m_log.log(m_notice);
-    m_tangent_point = std::min(m_tangent_point, m_setup.points.size() - 1);
+    m_tangent_point = std::min(m_tangent_point, points().size() - 1);
     return Transition{ControlChoice{}};
 }
 

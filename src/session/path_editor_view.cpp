@@ -29,7 +29,7 @@ std::string PathEditor::message() const
             [](const ControlChoice&) { return std::string(text::choose_control); },
             [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
             [&](const Staff& staff) {
-                const std::string shown = m_show_tangents ? tangent_numbers(m_picture.evaluated().curve.segments, m_tangent_point)
+                const std::string shown = m_show_tangents ? tangent_numbers(evaluated().curve.segments, m_tangent_point)
                                                           : staff_message(staff);
                 return with_move(shown, staff);
             },
@@ -47,7 +47,7 @@ std::string PathEditor::with_move(const std::string& shown, const Staff& staff) 
         return shown;
     if (shown.size() + 2 + m_moved.size() <= max_message_width)
         return shown + "  " + m_moved;
-    if (m_picture.evaluated().frames_freeze())
+    if (evaluated().frames_freeze())
         return shown;
     return m_setup.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
 }
@@ -57,14 +57,14 @@ std::string PathEditor::staff_message(const Staff& staff) const
     const std::string line(staff_line_name(staff.line));
     // A path of two control points has no interior one, where t, c and b act: say so, or the
     // animator sees nothing move and cannot tell why.
-    if (m_setup.points.size() == 2 && staff.line != StaffLine::acceleration)
+    if (points().size() == 2 && staff.line != StaffLine::acceleration)
         return line + std::string(text::no_interior_points);
     std::string message = m_setup.path_name + ": " + line;
     // The frames that freeze matter more than the region, whose marks the picture shows: the two
     // do not fit one 79-column line together.
-    if (m_picture.evaluated().frames_freeze())
-        return message + "  " + std::string(text::frames_freeze) + " at " + describe_frozen_frames(m_picture.evaluated(), 1);
-    const std::string of = " of " + std::to_string(m_setup.points.size());
+    if (evaluated().frames_freeze())
+        return message + "  " + std::string(text::frames_freeze) + " at " + describe_frozen_frames(evaluated(), 1);
+    const std::string of = " of " + std::to_string(points().size());
     const ControlRegion& region = staff.region;
     if (region.first == region.last)
         message += "  control point " + std::to_string(region.first + 1) + of + " (no span, no ACCELERATION)";
@@ -111,14 +111,14 @@ PathScreenContent PathEditor::screen_content() const
 {
     if (const auto* waypoints = std::get_if<Waypoints>(&m_mode)) {
         const WaypointEditor& editor = waypoints->editor;
-        PathScreenContent content = path_screen_content(editor.points(), editor.evaluated());
+        PathScreenContent content = path_screen_content(points(), evaluated());
         content.record_strokes = false;
         content.region = ControlRegion{editor.chosen(), editor.chosen()};
         content.arrow_at = editor.chosen();
         content.message = editor.message();
         return content;
     }
-    PathScreenContent content = path_screen_content(m_setup.points, m_picture.evaluated());
+    PathScreenContent content = path_screen_content(points(), evaluated());
     content.record_strokes = false;
     content.region = picked_region();
     std::visit(Overloaded{
@@ -144,8 +144,8 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
     // A first picture says it is one (its in-betweens are not drawn); a problem matters more.
-    if (m_problem.empty() && picture().refining())
-        content.message = picture().refining_message();
+    if (m_problem.empty() && m_picture->refining())
+        content.message = m_picture->refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
     content.ghost = m_show_ghost;
@@ -154,7 +154,7 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
     if (m_show_law)
         content.law_span = span_of_point(*content.path, law_point());
     content.key_help = key_help(key_context());
-    return picture().draw(content);
+    return m_picture->draw(content);
 }
 
 } // namespace apcs

@@ -12,32 +12,20 @@
 
 namespace apcs {
 
-WaypointEditor::WaypointEditor(Setup setup)
-    : m_setup(std::move(setup))
-    , m_picture(m_setup.points, m_setup.settings)
+WaypointEditor::WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup)
+    : m_document(&document)
+    , m_picture(&picture)
+    , m_setup(setup)
+    , m_first_edit(document.edit_count())
 {
-    assert(m_setup.points.size() >= 2 && m_setup.origins.size() == m_setup.points.size());
-    m_picture.set_view(m_setup.points, m_setup.view);
-    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
-}
-
-WaypointEditor::WaypointEditor(Setup setup, PathPicture picture)
-    : m_setup(std::move(setup))
-    , m_picture(std::move(picture))
-{
-    assert(m_setup.points.size() >= 2 && m_setup.origins.size() == m_setup.points.size());
-    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
-}
-
-WaypointEditor::Path WaypointEditor::hand_back() &&
-{
-    return {std::move(m_setup.points), std::move(m_setup.origins), std::move(m_picture)};
+    assert(points().size() >= 2);
+    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
 }
 
 WaypointEditor::Outcome WaypointEditor::update(const Command& command)
 {
     const Outcome outcome = take_command(command);
-    m_picture.box_region(ControlRegion{m_chosen, m_chosen});
+    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
     return outcome;
 }
 
@@ -52,7 +40,7 @@ WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
     return std::visit(
         Overloaded{
             [&](const command::ChoosePoint& choose) {
-                return editing([&] { m_chosen = wrapped_point(m_chosen, choose.by, m_setup.points.size()); });
+                return editing([&] { m_chosen = wrapped_point(m_chosen, choose.by, points().size()); });
             },
             [&](const command::MovePoint& move) { return editing([&] { move_point(move); }); },
             [&](const command::InsertPoint&) { return editing([&] { insert_point(); }); },
@@ -69,24 +57,32 @@ WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
 
 WaypointEditor::Outcome WaypointEditor::discard()
 {
-    for (auto change = m_changes.rbegin(); change != m_changes.rend(); ++change)
-        m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, *change));
-    m_changes.clear();
+    while (change_count() > 0)
+        revert_last();
     return Outcome::discarded;
 }
 
 void WaypointEditor::apply(const WaypointChange& change)
 {
     // SPEC §7.2.1: the curve before the edit stays, dotted.
-    m_picture.refresh(m_setup.points, apply_change(m_setup.points, m_setup.origins, change),
-                      [change](ControlPoints& points) { revert_change(points, change); });
-    m_changes.push_back(change);
+    const PathChange changed = m_document->apply(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { revert_change(points, change); });
+    m_document->record(change);
+}
+
+void WaypointEditor::revert_last()
+{
+    const WaypointChange change = std::get<WaypointChange>(m_document->last_edit());
+    m_document->drop_last_edit();
+    const PathChange changed = m_document->revert(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
+    m_chosen = std::min(change.index, points().size() - 1);
 }
 
 bool WaypointEditor::is_key_frame_point(std::size_t index)
 {
     const bool first = index == 0;
-    if (!first && index + 1 != m_setup.points.size())
+    if (!first && index + 1 != points().size())
         return false;
     m_problem = "Control point " + std::to_string(index + 1) + " is " + (first ? "KEY1" : "KEY2") +
                 "'s point: it is never moved or deleted";
@@ -96,14 +92,14 @@ bool WaypointEditor::is_key_frame_point(std::size_t index)
 // Halfway to the neighbour after the chosen point, or before it when the last is chosen.
 void WaypointEditor::insert_point()
 {
-    const bool last = m_chosen + 1 == m_setup.points.size();
+    const bool last = m_chosen + 1 == points().size();
     const std::size_t from = last ? m_chosen - 1 : m_chosen;
     WaypointChange change;
     change.kind = WaypointChange::Kind::insert;
     change.index = from + 1;
     // The segment from the points, as the curve makes it (the curve's own may wait for a refinement).
-    const HermiteSegment segment = kb_segment(m_setup.points, m_setup.settings.slopes, from);
-    change.point = {halfway_along(std::span(&segment, 1), 0), m_setup.points[m_chosen].staff};
+    const HermiteSegment segment = kb_segment(points(), m_picture->settings().slopes, from);
+    change.point = {halfway_along(std::span(&segment, 1), 0), points()[m_chosen].staff};
     apply(change);
     m_chosen = change.index;
 }
@@ -115,10 +111,10 @@ void WaypointEditor::delete_point()
     WaypointChange change;
     change.kind = WaypointChange::Kind::remove;
     change.index = m_chosen;
-    change.point = m_setup.points[m_chosen];
-    change.origin = m_setup.origins[m_chosen];
+    change.point = points()[m_chosen];
+    change.origin = origins()[m_chosen];
     apply(change);
-    m_chosen = std::min(m_chosen, m_setup.points.size() - 2);
+    m_chosen = std::min(m_chosen, points().size() - 2);
 }
 
 void WaypointEditor::move_point(const command::MovePoint& move)
@@ -136,24 +132,19 @@ void WaypointEditor::move_point(const command::MovePoint& move)
 
 void WaypointEditor::undo()
 {
-    if (m_changes.empty()) {
+    if (change_count() == 0) {
         m_problem = "Nothing to undo in the waypoint editor";
         return;
     }
-    const WaypointChange change = m_changes.back();
-    m_changes.pop_back();
-    m_picture.refresh(m_setup.points, revert_change(m_setup.points, m_setup.origins, change),
-                      [change](ControlPoints& points) { apply_change(points, change); });
-    m_chosen = std::min(change.index, m_setup.points.size() - 1);
+    revert_last();
 }
 
 void WaypointEditor::zoom()
 {
     m_zoom_level = next_zoom_level(m_zoom_level);
     const int factor = 1 << m_zoom_level;
-    const Vec3 about = m_setup.points[m_chosen].position;
-    m_picture.set_view(m_setup.points,
-                       m_zoom_level == 0 ? m_setup.view : m_setup.view.zoomed(factor, about, layout::view_area));
+    const Vec3 about = points()[m_chosen].position;
+    m_picture->set_view(m_zoom_level == 0 ? m_setup.view : m_setup.view.zoomed(factor, about, layout::view_area));
     m_notice = m_zoom_level == 0 ? "zoom off: the view the editor opened with"
                                  : "zoom ×" + std::to_string(factor) + " about control point " +
                                        std::to_string(m_chosen + 1) + " (Z: more)";
@@ -165,9 +156,9 @@ std::string WaypointEditor::message() const
         return m_problem;
     if (!m_notice.empty())
         return m_notice;
-    const Vec3 from_centre = m_setup.points[m_chosen].position - m_setup.view.centre();
+    const Vec3 from_centre = points()[m_chosen].position - m_setup.view.centre();
     const double depth = dot(from_centre, m_setup.view.toward_viewer());
-    return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(m_setup.points.size()) +
+    return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(points().size()) +
            "  depth " + format_staff_value(depth);
 }
 

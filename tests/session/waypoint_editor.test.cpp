@@ -22,16 +22,46 @@ BoundingBox box_of(std::initializer_list<Vec3> points)
 
 const Vec3 origin{0, 0, 0};
 
+struct PathSetup {
+    ControlPoints points;
+    std::vector<std::size_t> origins;
+    PathSettings settings;
+    ViewTransform view;
+    double step = 1.0;
+};
+
 // The thesis' two-point ani1.dat shape: a straight path up, seen from the front (+y right, +z up).
-WaypointEditor::Setup two_point_path(ViewAngles angles = {0, 90})
+PathSetup two_point_path(ViewAngles angles = {0, 90})
 {
-    WaypointEditor::Setup setup{{{origin, {0.2, 0.1, -0.3, 0.4}}, {{0, 0, 10}, {}}},
-                                {0, 1},
-                                {{1, 1}, 16, 5, Spacing::nearest},
-                                ViewTransform::fit(angles, std::vector<Vec3>{origin, {0, 0, 10}}, {0, 0, 720, 259}),
-                                0.1};
-    return setup;
+    return {{{origin, {0.2, 0.1, -0.3, 0.4}}, {{0, 0, 10}, {}}},
+            {0, 1},
+            {{1, 1}, 16, 5, Spacing::nearest},
+            ViewTransform::fit(angles, std::vector<Vec3>{origin, {0, 0, 10}}, {0, 0, 720, 259}),
+            0.1};
 }
+
+PathPicture viewed(const PathDocument& document, const PathSetup& setup)
+{
+    PathPicture picture(document, setup.settings);
+    picture.set_view(setup.view);
+    return picture;
+}
+
+// The waypoint editor on a document and its picture, as the path editor opens it.
+struct EditedPath {
+    explicit EditedPath(const PathSetup& setup)
+        : document(setup.points, setup.origins)
+        , picture(viewed(document, setup))
+        , editor(document, picture, {setup.view, setup.step})
+    {
+    }
+    EditedPath(const EditedPath&) = delete;
+    EditedPath& operator=(const EditedPath&) = delete;
+
+    PathDocument document;
+    PathPicture picture;
+    WaypointEditor editor;
+};
 
 void apply(WaypointEditor& editor, std::initializer_list<Command> commands)
 {
@@ -53,7 +83,8 @@ TEST_CASE("I inserts a control point halfway along the curve by arc length, with
 {
     SECTION("a straight path: the middle of the chord")
     {
-        WaypointEditor editor(two_point_path());
+        EditedPath path(two_point_path());
+        WaypointEditor& editor = path.editor;
         apply(editor, {cmd::InsertPoint{}});
         REQUIRE(editor.points().size() == 3);
         REQUIRE(editor.chosen() == 1);
@@ -63,12 +94,13 @@ TEST_CASE("I inserts a control point halfway along the curve by arc length, with
     }
     SECTION("a bent path: half of the segment's arc length on either side")
     {
-        WaypointEditor::Setup setup = two_point_path();
+        PathSetup setup = two_point_path();
         setup.points.insert(setup.points.begin() + 1, ControlPoint{{0, 6, 3}, {}});
         setup.origins = {0, 1, 2};
         const std::vector<HermiteSegment> before = kb_segments(setup.points, setup.settings.slopes);
         const double first_span = ArcLengthTable(before).length_to_segment_start(1);
-        WaypointEditor editor(setup);
+        EditedPath path(setup);
+        WaypointEditor& editor = path.editor;
         apply(editor, {cmd::InsertPoint{}});
         const Vec3 inserted = editor.points()[1].position;
         const ArcLengthTable table(before);
@@ -77,7 +109,8 @@ TEST_CASE("I inserts a control point halfway along the curve by arc length, with
     }
     SECTION("with the last point chosen: before it")
     {
-        WaypointEditor editor(two_point_path());
+        EditedPath path(two_point_path());
+        WaypointEditor& editor = path.editor;
         apply(editor, {cmd::ChoosePoint{-1}, cmd::InsertPoint{}});
         REQUIRE(editor.points().size() == 3);
         REQUIRE(editor.chosen() == 1);
@@ -89,7 +122,8 @@ TEST_CASE("I inserts a control point halfway along the curve by arc length, with
 
 TEST_CASE("the keypad moves the chosen point in the screen's plane, + and - in depth", "[session][waypoints]")
 {
-    WaypointEditor editor(two_point_path());
+    EditedPath path(two_point_path());
+    WaypointEditor& editor = path.editor;
     apply(editor, {cmd::InsertPoint{}});
     REQUIRE(editor.message() == "control point 2 of 3  depth +0.00");
     // Front view: up the screen is +z, right is +y, toward the viewer +x.
@@ -102,18 +136,19 @@ TEST_CASE("the keypad moves the chosen point in the screen's plane, + and - in d
     REQUIRE(editor.points()[1].position.y == Approx(-0.3));
     REQUIRE(editor.points()[1].position.x == Approx(0.2));
     REQUIRE(editor.message() == "control point 2 of 3  depth +0.20");
-    REQUIRE(editor.changes().size() == 8);
+    REQUIRE(editor.change_count() == 8);
 }
 
 TEST_CASE("the key frames' points are never moved or deleted, and the message says so", "[session][waypoints]")
 {
-    WaypointEditor editor(two_point_path());
+    EditedPath path(two_point_path());
+    WaypointEditor& editor = path.editor;
     const ControlPoints before = editor.points();
     apply(editor, {cmd::MovePoint{0, 1, 0}});
     REQUIRE(editor.message() == "Control point 1 is KEY1's point: it is never moved or deleted");
     apply(editor, {cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
     REQUIRE(editor.message() == "Control point 2 is KEY2's point: it is never moved or deleted");
-    REQUIRE(editor.changes().empty());
+    REQUIRE(editor.change_count() == 0);
     REQUIRE(editor.points()[0].position == before[0].position);
     REQUIRE(editor.points()[1].position == before[1].position);
     apply(editor, {cmd::ChoosePoint{+1}});
@@ -122,11 +157,12 @@ TEST_CASE("the key frames' points are never moved or deleted, and the message sa
 
 TEST_CASE("D deletes an interior control point — U and Esc take edits back exactly", "[session][waypoints]")
 {
-    WaypointEditor::Setup setup = two_point_path();
+    PathSetup setup = two_point_path();
     setup.points.insert(setup.points.begin() + 1, ControlPoint{{0, 6, 3}, {0.5, 0, 0, 0}});
     setup.origins = {0, 1, 2};
     const ControlPoints original = setup.points;
-    WaypointEditor editor(setup);
+    EditedPath path(setup);
+    WaypointEditor& editor = path.editor;
     apply(editor, {cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
     REQUIRE(editor.points().size() == 2);
     REQUIRE(editor.origins() == std::vector<std::size_t>{0, 2});
@@ -149,14 +185,15 @@ TEST_CASE("D deletes an interior control point — U and Esc take edits back exa
 
 TEST_CASE("Enter keeps the edits, listed as changes that revert to the points opened with", "[session][waypoints]")
 {
-    WaypointEditor editor(two_point_path({30, 40}));
+    EditedPath path(two_point_path({30, 40}));
+    WaypointEditor& editor = path.editor;
     apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{2, -1, 0}, cmd::InsertPoint{}, cmd::MovePoint{0, 0, -1},
                    cmd::ChoosePoint{-1}, cmd::DeletePoint{}});
     REQUIRE(editor.update(cmd::Accept{}) == WaypointEditor::Outcome::kept);
     ControlPoints points = editor.points();
     std::vector<std::size_t> origins = editor.origins();
-    for (auto change = editor.changes().rbegin(); change != editor.changes().rend(); ++change)
-        revert_change(points, origins, *change);
+    for (auto change = path.document.edits().rbegin(); change != path.document.edits().rend(); ++change)
+        revert_change(points, origins, std::get<WaypointChange>(*change));
     const ControlPoints opened = two_point_path().points;
     REQUIRE(points.size() == 2);
     REQUIRE(points[0].position == opened[0].position);

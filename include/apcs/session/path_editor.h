@@ -8,6 +8,7 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/command.h"
 #include "apcs/session/key_map.h"
+#include "apcs/session/path_document.h"
 #include "apcs/session/path_picture.h"
 #include "apcs/session/path_screen.h"
 #include "apcs/session/session_log.h"
@@ -15,6 +16,7 @@
 #include "apcs/session/value_field.h"
 #include "apcs/session/waypoint_editor.h"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <variant>
@@ -42,7 +44,7 @@ class PathEditor {
 public:
     struct Setup {
         std::string path_name;
-        ControlPoints points; // at least two
+        ControlPoints points; // at least two: they become the document's
         PathSettings settings;
         ViewAngles view_angles;
         // Both key frames as polylines: the view keeps them in sight, and K shows them.
@@ -63,7 +65,7 @@ public:
     // The path screen, with an exercise's goal point marked when one is given.
     GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt) const;
     // Refinement::in_steps: whether the last keys left work (PathPicture::refining), and one step of it.
-    bool refining() const { return picture().refining(); }
+    bool refining() const { return m_picture->refining(); }
     void refine_step();
     // All of it (P writes a final picture).
     void refine();
@@ -71,14 +73,15 @@ public:
     SessionPhase phase() const;
     KeyContext key_context() const;
     const std::string& path_name() const { return m_setup.path_name; }
-    // The path as edited (in the waypoint editor: as it stands there).
-    const ControlPoints& points() const;
+    // The path as edited (in the waypoint editor too).
+    const ControlPoints& points() const { return m_document->points(); }
     // Parallel to points(): each point's index among the path file's points, or new_point for one
     // the waypoint editor inserted (waypoint_change.h). The file's comments stay with their points.
-    const std::vector<std::size_t>& point_origins() const;
-    const EvaluatedPath& evaluated() const { return picture().evaluated(); }
+    const std::vector<std::size_t>& point_origins() const { return m_document->origins(); }
+    const PathDocument& document() const { return *m_document; }
+    const EvaluatedPath& evaluated() const { return m_picture->evaluated(); }
     // The view fixed when the path was opened (fitted again when the waypoint editor is left).
-    const ViewTransform& view_transform() const { return picture().view(); }
+    const ViewTransform& view_transform() const { return m_picture->view(); }
     // The staff's values for the region on it (while a staff line is active, and at "Adjust the
     // path again ?"); none before a region is chosen or in the waypoint editor.
     std::optional<StaffValues> region_staff() const;
@@ -119,16 +122,6 @@ private:
         Outcome outcome = Outcome::editing;
     };
 
-    // A key on the staff: the staff, the region and the line as they were, and the region's
-    // points' values before it.
-    struct StaffChange {
-        ControlRegion region;
-        StaffLine line = StaffLine::tension;
-        StaffValues staff;
-        double line_start_value = 0.0;
-        std::vector<StaffRun> points_before;
-    };
-    using Change = std::variant<StaffChange, WaypointChange>;
     // Enter takes the line's value as shown; Esc keeps the value the line had when it became active.
     enum class LineEnding { accepted, kept };
 
@@ -148,14 +141,12 @@ private:
     void measure_move_when_refined();
     void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
     Transition undo();
-    Transition undo_change(const StaffChange& change);
+    Transition undo_change(const StaffEdit& change);
     Transition undo_change(const WaypointChange& change);
     // The view filled with the path (and the key frames while K shows them), then zoomed.
     void fit_view();
     void show_view();
     bool zoom();
-    // The picture shown: the waypoint editor's while it is open (it holds the path then).
-    const PathPicture& picture() const;
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message() const;
@@ -164,12 +155,13 @@ private:
     PathScreenContent screen_content() const;
 
     Setup m_setup;
-    std::vector<std::size_t> m_origins;
     SessionLog& m_log;
-    // The path evaluated and drawn in the view fixed for the adjusting, kept between keys: every
-    // change refreshes only what it touched. The waypoint editor holds it (with the points) while
-    // it is open.
-    PathPicture m_picture;
+    // The path (its points, origins and undo history) and its picture: evaluated and drawn in the
+    // view fixed for the adjusting, kept between keys, every change refreshing only what it
+    // touched. Both editors change them in place; held apart so that their addresses outlive a
+    // move of the editor.
+    std::unique_ptr<PathDocument> m_document;
+    std::unique_ptr<PathPicture> m_picture;
     // SPEC §7.2.1: the view filled with what is shown, fixed while the staff or the waypoint editor
     // changes the path (refitted when they are left, and by K); Z magnifies it 2^m_zoom_level
     // times (0 to 3) about m_zoom_about (the region's middle, or the sample halfway along the curve).
@@ -196,8 +188,6 @@ private:
     // says what is refined meanwhile, and the search (about 8 ms for a global key's 4096 segments)
     // need not hold up the first picture.
     std::optional<std::vector<SegmentBeforeKey>> m_move_unmeasured;
-    // Every change since the path was opened, oldest first: U takes back the last.
-    std::vector<Change> m_history;
 };
 
 } // namespace apcs

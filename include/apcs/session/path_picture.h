@@ -6,11 +6,12 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/session/curve_raster.h"
+#include "apcs/session/path_document.h"
 #include "apcs/session/path_screen.h"
 
 #include <functional>
 #include <optional>
-#include <span>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -30,7 +31,7 @@ struct PictureRefinement {
     std::size_t segments_made_a_step = std::size_t{1} << 17;
 };
 
-// The picture of a path being edited, kept beside its control points (the model) for a still view:
+// The picture of a path being edited (a PathDocument, which it reads and never changes) for a still view:
 // the path evaluated (with its arc lengths under exact spacing), its curve drawn block by block, the
 // control points' pixels and their marks. Every change of the points goes through refresh(change),
 // which makes again only what the change touched: the segments whose tangents the changed points
@@ -47,29 +48,30 @@ public:
     // no more than a step's are to be measured, as after a local key) and leaves the rest to
     // refine_step(); until then refining() is true and the in-betweens are not drawn.
     // Refinement::at_once does it all at once.
-    PathPicture(std::span<const ControlPoint> points, const PathSettings& settings, PictureRefinement refinement = {});
+    // `document` outlives the picture and keeps its address.
+    PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {});
 
     // Turns the points after a change back into those before it: the ghost's path, drawn again
     // when the view changes (SPEC §7.2.1: the ghost stays through Z and K).
     using PointsBack = std::function<void(ControlPoints&)>;
 
-    // The points changed as `change` says (`points` are those after it); the ghost goes.
-    void refresh(std::span<const ControlPoint> points, const PathChange& change);
+    // The document's points changed as `change` says (called once it has changed); the ghost goes.
+    void refresh(const PathChange& change);
     // The same, and the curve as it was becomes the ghost (SPEC §7.2.1), its path `back` of the
     // points; the next change replaces it.
-    void refresh(std::span<const ControlPoint> points, const PathChange& change, PointsBack back);
+    void refresh(const PathChange& change, PointsBack back);
     // Another view: the curve, the control points and the ghost projected again.
-    void set_view(std::span<const ControlPoint> points, const ViewTransform& view);
+    void set_view(const ViewTransform& view);
     // The region whose control points' marks are boxed; the marks are made again only when it
     // changes (a path of 10^6 points scribbled over the screen has up to one mark per pixel).
     void box_region(std::optional<ControlRegion> region);
 
-    // What Refinement::in_steps left: one step of it (a few milliseconds), or all of it. Each
-    // takes the points of the last change. Once done, everything is as at once, to the bit and
-    // to the pixel; a change made meanwhile is added to what is left.
+    // What Refinement::in_steps left: one step of it (a few milliseconds), or all of it. Once
+    // done, everything is as at once, to the bit and to the pixel; a change made meanwhile is added
+    // to what is left.
     bool refining() const;
-    void refine_step(std::span<const ControlPoint> points);
-    void refine(std::span<const ControlPoint> points);
+    void refine_step();
+    void refine();
     // While refining: what is left, for the message line ("drawing the curve: 12 of 245 blocks").
     std::string refining_message() const;
 
@@ -78,6 +80,15 @@ public:
     bool has_ghost() const { return m_ghost.has_value(); }
 
     const EvaluatedPath& evaluated() const { return m_evaluated; }
+    const PathSettings& settings() const { return m_settings; }
+    // What the picture shows: the document's revision it was made of, and its own, which every
+    // change of the view, the ghost, the boxed region and every refinement step advance.
+    struct Revision {
+        std::uint64_t document = 0;
+        std::uint64_t picture = 0;
+        bool operator==(const Revision&) const = default;
+    };
+    Revision revision() const { return {m_document_revision, m_revision}; }
     // Only after set_view.
     const ViewTransform& view() const { return *m_view; }
     // The path screen of `content` (whose path is evaluated()) in this view, with the curve and the
@@ -85,11 +96,15 @@ public:
     GraphicsScreen draw(const PathScreenContent& content) const;
 
 private:
-    void remake(std::span<const ControlPoint> points, const PathChange& change);
+    void remake(const PathChange& change);
     void draw_curve();
-    void draw_ghost(std::span<const ControlPoint> points);
-    void refine_if_quick(std::span<const ControlPoint> points);
+    void draw_ghost();
+    void refine_if_quick();
+    const ControlPoints& points() const { return m_document->points(); }
 
+    const PathDocument* m_document;
+    std::uint64_t m_document_revision = 0;
+    std::uint64_t m_revision = 0;
     PathSettings m_settings;
     PictureRefinement m_refinement;
     EvaluatedPath m_evaluated;

@@ -6,6 +6,7 @@
 #include "apcs/animation/waypoint_change.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/session/command.h"
+#include "apcs/session/path_document.h"
 #include "apcs/session/path_picture.h"
 
 #include <cstddef>
@@ -22,39 +23,23 @@ namespace apcs {
 class WaypointEditor {
 public:
     struct Setup {
-        ControlPoints points;             // at least two
-        std::vector<std::size_t> origins; // parallel to points (waypoint_change.h)
-        PathSettings settings;            // to evaluate the path as it changes
-        ViewTransform view;               // the path screen's view: fixed while editing
-        double step = 1.0;                // world units of one step (waypoint_step)
+        ViewTransform view; // the path screen's view: fixed while editing
+        double step = 1.0;  // world units of one step (waypoint_step)
     };
     enum class Outcome { editing, kept, discarded };
 
-    // Chooses the first control point; evaluates and draws the path.
-    explicit WaypointEditor(Setup setup);
-    // The same with the path's picture as the path editor keeps it (of setup.points in setup.view):
-    // the editor refreshes it at each edit and hands it back when it is left.
-    WaypointEditor(Setup setup, PathPicture picture);
+    // Edits `document` in place and keeps `picture` (of the document, in setup.view) up to date;
+    // both outlive the editor. Chooses the first control point. Its edits join the document's
+    // history as they are made; Esc takes them back.
+    WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup);
 
     Outcome update(const Command& command);
 
-    const ControlPoints& points() const { return m_setup.points; }
-    const std::vector<std::size_t>& origins() const { return m_setup.origins; }
-    const EvaluatedPath& evaluated() const { return m_picture.evaluated(); }
-    const PathPicture& picture() const { return m_picture; }
-    // What the last edits left to refine (PathPicture::refine_step, refine).
-    void refine_step() { m_picture.refine_step(m_setup.points); }
-    void refine() { m_picture.refine(m_setup.points); }
-    // Once left: the points with their origins and their picture, as kept or as they were.
-    struct Path {
-        ControlPoints points;
-        std::vector<std::size_t> origins;
-        PathPicture picture;
-    };
-    Path hand_back() &&;
+    const ControlPoints& points() const { return m_document->points(); }
+    const std::vector<std::size_t>& origins() const { return m_document->origins(); }
     std::size_t chosen() const { return m_chosen; }
-    // The changes applied since the editor opened, oldest first.
-    const std::vector<WaypointChange>& changes() const { return m_changes; }
+    // The edits made since the editor opened (U takes back the last of them).
+    std::size_t change_count() const { return m_document->edit_count() - m_first_edit; }
     // "control point 2 of 5  depth +0.30", or the problem of the last key.
     std::string message() const;
 
@@ -69,13 +54,16 @@ private:
     // Esc: every change since the editor opened taken back, newest first.
     Outcome discard();
     void apply(const WaypointChange& change);
+    // The last edit taken back, the ghost the path with it.
+    void revert_last();
     // The key frames' points never move: true (and the message says why) for them.
     bool is_key_frame_point(std::size_t index);
 
+    PathDocument* m_document;
+    PathPicture* m_picture;
     Setup m_setup;
-    PathPicture m_picture;
+    std::size_t m_first_edit = 0;
     std::size_t m_chosen = 0;
-    std::vector<WaypointChange> m_changes;
     std::string m_problem;
     std::string m_notice; // what the last key did, when it says more than the status
     int m_zoom_level = 0;
