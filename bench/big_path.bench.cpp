@@ -9,9 +9,9 @@
 // the first picture (the key or the opening, and its screen), and to the final one (then every
 // refinement step until none is left, and the screen again); each key starts from a refined picture.
 #include "apcs/raster/graphics_screen.h"
-#include "apcs/session/command.h"
-#include "apcs/session/path_editor.h"
-#include "apcs/session/session_log.h"
+#include "apcs/input/command.h"
+#include "apcs/editor/path_editor.h"
+#include "apcs/base/session_log.h"
 
 #include <benchmark/benchmark.h>
 

@@ -3,8 +3,8 @@
 // diff the cells against the previous grid, at 80x24 and 200x60, for each glyph set.
 #include "cell_diff.h"
 
-#include "apcs/session/path_screen.h"
-#include "apcs/session/screen_layout.h"
+#include "apcs/screens/path_screen.h"
+#include "apcs/raster/screen_layout.h"
 
 #include <benchmark/benchmark.h>
 

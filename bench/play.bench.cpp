@@ -9,8 +9,8 @@
 #include "apcs/scene/scene_animation.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/scene/scene_file.h"
-#include "apcs/session/animation_player.h"
-#include "apcs/session/session_log.h"
+#include "apcs/playback/animation_player.h"
+#include "apcs/base/session_log.h"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,7 @@
 #include "apcs/base/stopping_signals.h"
 #include "apcs/cli/command_line.h"
 #include "apcs/formats/unfinished_files.h"
-#include "apcs/session/exit_status.h"
-#include "apcs/terminal/terminal_player.h"
+#include "apcs/base/exit_status.h"
 #include "apcs/terminal/terminal_session.h"
 
 #include <clocale>
@@ -39,7 +38,7 @@ int main(int argc, char** argv)
 {
     remove_unfinished_files_on_signals();
     // Any exception ends the program here, after unwinding has given the terminal back (the
-    // Terminal is owned inside run_terminal_session). Exit status 1, as for bad input or a failed
+    // Terminal is owned inside run_terminal_program). Exit status 1, as for bad input or a failed
     // write (SPEC §1 has no status of its own for it): the command did not do what it was asked.
     try {
         // The locale decides the default glyphs and refuses those it cannot show (the session
@@ -49,9 +48,8 @@ int main(int argc, char** argv)
         // threshold hands each back to the system when freed instead of letting glibc keep it in
         // the heap, so peak memory is what is in use at once.
         mallopt(M_MMAP_THRESHOLD, 256 * 1024);
-        const apcs::TerminalSessionRunner terminal = apcs::run_terminal_session;
-        const apcs::TerminalPlayerRunner player = apcs::run_terminal_player;
-        return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal, player));
+        const apcs::TerminalRunner terminal = apcs::run_terminal_program;
+        return static_cast<int>(apcs::run_command_line(argc, argv, std::cout, std::cerr, terminal));
     } catch (const std::bad_alloc&) {
         std::cerr << "apcs: out of memory\n";
     } catch (const std::exception& error) {

@@ -1,6 +1,6 @@
 #include "apcs/cli/command_line.h"
 
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 #include "apcs/cli/draw_command.h"
 #include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
@@ -302,8 +302,7 @@ struct ParsedLine {
 struct RunPlace {
     const CLI::App& app;
     const CLI::App& command;
-    const TerminalSessionRunner& terminal;
-    const TerminalPlayerRunner& player;
+    const TerminalRunner& terminal;
     std::ostream& out;
     std::ostream& err;
 };
@@ -385,7 +384,7 @@ constexpr std::array<Subcommand, 6> subcommands{{
      },
      [](ParsedLine& line, const RunPlace& place) {
          line.play.spacing_given = given_count(place.app, "--spacing") > 0;
-         return to_int(run_play_command(line.play, line.options, place.player, place.out, place.err));
+         return to_int(run_play_command(line.play, line.options, place.terminal, place.out, place.err));
      }},
     {"figures", "redraw the thesis' figures and examples as PNG", "no files (--out names the folder)",
      "  apcs figures --out figures",
@@ -471,7 +470,7 @@ void complete_options(const CLI::App& app, ParsedLine& line)
 }
 
 int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                  const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
+                  const TerminalRunner& terminal)
 {
     CLI::App app{"APCS - the Animation Path Control System of 1989: Kochanek-Bartels motion paths.\n"
                  "Without a command, the interactive session of the thesis (manual.txt, section 4).",
@@ -486,14 +485,14 @@ int parse_and_run(int argc, const char* const* argv, std::ostream& out, std::ost
     complete_options(app, line);
     for (const Subcommand& row : subcommands)
         if (chosen->get_name() == row.name)
-            return row.run(line, {app, *chosen, terminal, player, out, err});
+            return row.run(line, {app, *chosen, terminal, out, err});
     return to_int(run_session_command(line.options, terminal, out, err));
 }
 
 } // namespace
 
 int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                     const TerminalSessionRunner& terminal, const TerminalPlayerRunner& player)
+                     const TerminalRunner& terminal)
 {
     // Output that never arrived (a full disk, /dev/full, a closed pipe with SIGPIPE ignored) is a
     // failure, not a success. Standard output is buffered, so the failure may show only at the
@@ -502,7 +501,7 @@ int run_command_line(int argc, const char* const* argv, std::ostream& out, std::
     int status = 0;
     {
         const ReplacedBuffer replaced(out, &recorder);
-        status = parse_and_run(argc, argv, out, err, terminal, player);
+        status = parse_and_run(argc, argv, out, err, terminal);
         out.flush();
     }
     if (out.fail() || recorder.first_error() != 0) {

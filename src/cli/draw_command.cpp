@@ -4,9 +4,9 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/raster/painter.h"
-#include "apcs/session/frames_overlay.h"
-#include "apcs/session/screen_layout.h"
-#include "apcs/session/world_drawing.h"
+#include "apcs/screens/frames_overlay.h"
+#include "apcs/raster/screen_layout.h"
+#include "apcs/screens/world_drawing.h"
 
 namespace apcs {
 

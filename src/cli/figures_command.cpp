@@ -10,8 +10,8 @@
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_joints.h"
-#include "apcs/session/figures.h"
-#include "apcs/session/surface_figures.h"
+#include "apcs/screens/figures.h"
+#include "apcs/screens/surface_figures.h"
 
 #include <ostream>
 #include <string>

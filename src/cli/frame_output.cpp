@@ -7,8 +7,8 @@
 #include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/gif_encoder.h"
-#include "apcs/session/animation_player.h"
-#include "apcs/session/frames_overlay.h"
+#include "apcs/playback/animation_player.h"
+#include "apcs/screens/frames_overlay.h"
 
 #include <optional>
 #include <ostream>

@@ -3,7 +3,7 @@
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/raster/png_encoder.h"
-#include "apcs/session/handout.h"
+#include "apcs/lesson/handout.h"
 
 namespace apcs {
 
@@ -17,17 +17,17 @@ Expected<HandoutWriter> HandoutWriter::open(const std::filesystem::path& folder)
 void HandoutWriter::write(int number, std::string_view caption, const SessionScreen& shown, GlyphSet glyphs,
                           const KeyFileGuard& inputs)
 {
-    if (m_problem)
+    if (!m_outcome)
         return;
     const std::filesystem::path stem = m_folder / handout_file_stem(number, caption);
     const std::optional<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor);
     if (!png) {
-        m_problem = Diagnostic{stem.string() + ".png", 0, "cannot encode the PNG image"};
+        m_outcome = Diagnostic{stem.string() + ".png", 0, "cannot encode the PNG image"};
         return;
     }
     const Expected<WriteResult> picture = write_file_atomically(stem.string() + ".png", *png, &inputs);
     if (!picture) {
-        m_problem = picture.error();
+        m_outcome = picture.error();
         return;
     }
     m_written.push_back(stem.string() + ".png");
@@ -36,7 +36,7 @@ void HandoutWriter::write(int number, std::string_view caption, const SessionScr
         text_inputs.protect(picture->backup);
     const Expected<WriteResult> text = write_file_atomically(stem.string() + ".txt", screen_text(shown, glyphs), &text_inputs);
     if (!text) {
-        m_problem = text.error();
+        m_outcome = text.error();
         return;
     }
     m_written.push_back(stem.string() + ".txt");

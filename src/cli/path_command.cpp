@@ -9,8 +9,8 @@
 #include "apcs/formats/print_format.h"
 #include "apcs/raster/png_encoder.h"
 #include "apcs/raster/svg_encoder.h"
-#include "apcs/session/path_screen.h"
-#include "apcs/session/screen_layout.h"
+#include "apcs/screens/path_screen.h"
+#include "apcs/raster/screen_layout.h"
 
 #include <ostream>
 #include <utility>

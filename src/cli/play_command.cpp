@@ -15,8 +15,9 @@
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_tree.h"
-#include "apcs/session/frames_overlay.h"
-#include "apcs/session/session_log.h"
+#include "apcs/screens/frames_overlay.h"
+#include "apcs/base/session_log.h"
+#include "apcs/playback/scene_player.h"
 
 #include <unistd.h>
 
@@ -183,7 +184,7 @@ Expected<Scene> read_played_scene(const PlayRequest& request, const CommonOption
 }
 
 ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& options,
-                            const TerminalPlayerRunner& terminal, std::ostream& err)
+                            const TerminalRunner& terminal, std::ostream& err)
 {
     if (!terminal || !::isatty(STDIN_FILENO)) {
         err << "apcs: standard input is not a terminal; give --print, --out, --png, --svg, --sixel, --kitty or --gif "
@@ -195,7 +196,8 @@ ExitStatus play_on_terminal(AnimationPlayer& player, const CommonOptions& option
         err << glyphs.error().to_string() << '\n';
         return ExitStatus::bad_usage;
     }
-    const Expected<ExitStatus> played = terminal(player, options.delay_ms, *glyphs, options.pixels, save_screen_picture);
+    ScenePlayer program(player, options.delay_ms, save_screen_picture);
+    const Expected<ExitStatus> played = terminal(program, *glyphs, ColourChoice::never, options.pixels);
     if (!played) {
         err << played.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -232,7 +234,7 @@ std::string scene_frame_file_name(int frame, int last_frame)
 }
 
 ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& options,
-                            const TerminalPlayerRunner& terminal, std::ostream& out, std::ostream& err)
+                            const TerminalRunner& terminal, std::ostream& out, std::ostream& err)
 {
     if (request.tree && (options.print || options.out || pictures_asked(options))) {
         err << "apcs: --tree prints the scene's tree and nothing else; give --print, --out and the pictures without it\n";

@@ -5,9 +5,8 @@
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
-#include "apcs/session/goal_check.h"
-#include "apcs/session/handout.h"
-#include "apcs/session/replay_caption.h"
+#include "apcs/lesson/handout.h"
+#include "apcs/lesson/replay_driver.h"
 
 #include <algorithm>
 #include <cctype>
@@ -101,53 +100,32 @@ SessionSettings session_settings(const CommonOptions& options)
     return settings;
 }
 
-// Each step's screen as the step ends (its last key played), under the step's name; a caption
-// of the script as ";; TEXT" where the replay reaches it.
-std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached, const KeysPlayed& played)
+void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out)
 {
     std::string shown = screen_text(session.screen(), glyphs);
     SessionPhase shown_phase = session.phase();
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
-    std::size_t next_caption = 0;
-    const auto print_captions = [&](std::size_t keys) {
-        if (played)
-            played(keys, session);
-        for (; next_caption < script.captions.size() && script.captions[next_caption].before_event <= keys;
-             ++next_caption) {
-            out << ";; " << script.captions[next_caption].text << '\n';
-            if (reached)
-                reached(script.captions[next_caption], session);
-        }
-    };
-    std::size_t handled = 0;
-    for (const KeyEvent& key : script.events) {
-        if (session.finished())
-            break;
-        print_captions(handled);
-        ++handled;
-        session.handle(key);
+    while (replay.playing() && !session.finished()) {
+        replay.play_next();
         // Nobody can press Esc: the split runs to its end.
         while (session.busy())
-            session.work();
+            replay.work();
         if (session.phase() != shown_phase)
             print_shown();
         // The animation's last frame ends its step.
         while (session.animating()) {
             shown_phase = session.phase();
             shown = screen_text(session.screen(), glyphs);
-            session.tick();
+            replay.tick();
             if (session.phase() != shown_phase)
                 print_shown();
         }
         shown = screen_text(session.screen(), glyphs);
         shown_phase = session.phase();
     }
-    print_captions(handled);
+    replay.finish();
     // The last step: the end, or where a script that ends mid-step stopped and why.
     print_shown();
-    // The keys handled are the script's first ones: one copy of exactly their size.
-    return {script.events.begin(), script.events.begin() + static_cast<std::ptrdiff_t>(handled)};
 }
 
 Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)
@@ -224,74 +202,42 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
     return terminal_glyphs_here(asked);
 }
 
-// A headless replay's goals, each checked once its answer is played (or the session ended before
-// it was): the first that does not hold, as "FILE:LINE: goal not reached: …".
-class HeadlessGoals {
-public:
-    HeadlessGoals(const KeyScript& script, std::string file_name) : m_script(script), m_file_name(std::move(file_name)) {}
-
-    // The goal's point is marked from its GOAL line until it is judged, as a student sees it.
-    void played(std::size_t keys, Session& session)
-    {
-        for (; m_next < m_script.goals.size() && m_script.goals[m_next].answer_end <= keys; ++m_next) {
-            judge(m_script.goals[m_next], session);
-            session.mark_goal(std::nullopt);
-        }
-        if (m_next < m_script.goals.size() && m_script.goals[m_next].before_event <= keys)
-            session.mark_goal(goal_point(m_script.goals[m_next]));
-    }
-    void finish(Session& session) { played(m_script.events.size(), session); }
-    const std::optional<Diagnostic>& failed() const { return m_failed; }
-
-private:
-    void judge(const ScriptGoal& goal, const Session& session)
-    {
-        if (m_failed)
-            return;
-        const GoalProgress progress = check_goal(goal, session);
-        if (!progress.reached)
-            m_failed = Diagnostic{m_file_name, goal.line_number, "goal not reached: " + progress.said};
-    }
-
-    const KeyScript& m_script;
-    std::string m_file_name;
-    std::size_t m_next = 0;
-    std::optional<Diagnostic> m_failed;
-};
-
-// The script replayed at once, each step's screen on `out`. Nobody watched the screen: a file
-// that could not be written is the run's failure.
+// The script replayed at once, each step's screen on `out` and each caption as ";; TEXT" where
+// it is reached. Nobody watched the screen: a file that could not be written is the run's failure.
 ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name, GlyphSet glyphs,
-                           const ReplayHooks& hooks, std::vector<KeyEvent>& recorded, std::ostream& out,
-                           std::ostream& err)
+                           ReplayHooks hooks, std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
 {
-    std::size_t caption_index = 0;
-    const auto reached = [&](const ScriptCaption& caption, const Session& shown) {
-        if (hooks.caption_reached)
-            hooks.caption_reached(caption_index++, with_caption(shown.screen(), caption.text));
+    hooks.caption_reached = [&out, &script, pages = std::move(hooks.caption_reached)](std::size_t index,
+                                                                                     const SessionScreen& shown) {
+        out << ";; " << script.captions[index].text << '\n';
+        if (pages)
+            pages(index, shown);
     };
-    HeadlessGoals goals(script, file_name);
-    recorded = run_headless_session(session, script, glyphs, out, reached,
-                                    [&goals, &session](std::size_t keys, const Session&) { goals.played(keys, session); });
-    goals.finish(session);
+    ReplayDriver replay(session, script, file_name, ReplayPace{}, std::move(hooks), ReplayAudience::headless);
+    run_headless_session(replay, session, glyphs, out);
+    recorded = replay.handled();
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
-    if (goals.failed())
-        return report_bad_input(*goals.failed(), err);
-    if (session.write_problem()) {
-        err << "apcs: " << session.write_problem()->to_string() << '\n';
+    if (!replay.goals())
+        return report_bad_input(replay.goals().error(), err);
+    if (!session.writes()) {
+        err << "apcs: " << session.writes().error().to_string() << '\n';
         return ExitStatus::bad_input;
     }
     return ExitStatus::success;
 }
 
-// The session on the terminal; the files it wrote listed on `out` at its end.
+// The session on the terminal, the script replayed first; the files it wrote listed on `out` at
+// its end.
 ExitStatus run_on_terminal(Session& session, const KeyScript& script, const CommonOptions& options, GlyphSet glyphs,
-                           const TerminalSessionRunner& terminal, const ReplayHooks& hooks,
-                           std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
+                           const TerminalRunner& terminal, ReplayHooks hooks, std::vector<KeyEvent>& recorded,
+                           std::ostream& out, std::ostream& err)
 {
     const ColourChoice colour = session_colour(options.colour, std::getenv("NO_COLOR"));
-    const Expected<ExitStatus> ran = terminal(session, script, options.pace, glyphs, colour, options.pixels, recorded, hooks);
+    const std::string script_name = options.keys ? options.keys->string() : std::string();
+    ReplayDriver replay(session, script, script_name, options.pace, std::move(hooks), ReplayAudience::terminal);
+    const Expected<ExitStatus> ran = terminal(replay, glyphs, colour, options.pixels);
+    recorded = replay.handled();
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -444,12 +390,6 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
                          const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
 {
     ReplayHooks hooks;
-    // The student sees the goal's point marked until the goal holds.
-    hooks.goal_progress = [&session, &script](std::size_t index) {
-        const GoalProgress progress = check_goal(script.goals[index], session);
-        session.mark_goal(progress.reached ? std::nullopt : goal_point(script.goals[index]));
-        return progress;
-    };
     if (handout)
         hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
                                                                                        const SessionScreen& shown) {
@@ -462,15 +402,15 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
 // A handout that could not be written is the run's failure, unless a signal stopped it.
 ExitStatus handout_outcome(const std::optional<HandoutWriter>& handout, ExitStatus status, std::ostream& err)
 {
-    if (!handout || !handout->problem() || status == ExitStatus::stopped)
+    if (!handout || handout->outcome() || status == ExitStatus::stopped)
         return status;
-    err << "apcs: --handout: " << handout->problem()->to_string() << '\n';
+    err << "apcs: --handout: " << handout->outcome().error().to_string() << '\n';
     return ExitStatus::bad_input;
 }
 
 } // namespace
 
-ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
+ExitStatus run_session_command(const CommonOptions& options, const TerminalRunner& terminal, std::ostream& out,
                                std::ostream& err)
 {
     const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;

@@ -3,9 +3,7 @@
 #include "apcs/raster/painter.h"
 
 #include <algorithm>
-#include <locale.h>
 #include <optional>
-#include <wchar.h>
 
 namespace apcs {
 
@@ -95,40 +93,6 @@ void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle 
             set_role(column, row, role);
             set(column++, row, wide_tail);
         }
-    }
-}
-
-int cell_width(char32_t code_point)
-{
-    if (code_point >= 0x20 && code_point < 0x7F)
-        return 1;
-    // A locale of its own, used on this thread only for the call: the user's locale and every
-    // other thread are left as they are.
-    static const locale_t utf8 = ::newlocale(LC_CTYPE_MASK, "C.UTF-8", static_cast<locale_t>(nullptr));
-    if (utf8 == static_cast<locale_t>(nullptr))
-        return code_point < 0x20 || (code_point >= 0x7F && code_point < 0xA0) ? -1 : 1;
-    const locale_t previous = ::uselocale(utf8);
-    const int width = ::wcwidth(static_cast<wchar_t>(code_point));
-    ::uselocale(previous);
-    return width;
-}
-
-void append_utf8(std::string& text, char32_t code_point)
-{
-    if (code_point < 0x80) {
-        text += static_cast<char>(code_point);
-    } else if (code_point < 0x800) {
-        text += static_cast<char>(0xC0 | (code_point >> 6));
-        text += static_cast<char>(0x80 | (code_point & 0x3F));
-    } else if (code_point < 0x10000) {
-        text += static_cast<char>(0xE0 | (code_point >> 12));
-        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-        text += static_cast<char>(0x80 | (code_point & 0x3F));
-    } else {
-        text += static_cast<char>(0xF0 | (code_point >> 18));
-        text += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
-        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
-        text += static_cast<char>(0x80 | (code_point & 0x3F));
     }
 }
 

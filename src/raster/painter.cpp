@@ -161,29 +161,4 @@ void Painter::text(PixelPoint top_left, std::string_view utf8, DrawMode mode)
     }
 }
 
-std::u32string decode_utf8(std::string_view utf8)
-{
-    std::u32string decoded;
-    decoded.reserve(utf8.size());
-    for (std::size_t i = 0; i < utf8.size();) {
-        const auto lead = static_cast<unsigned char>(utf8[i]);
-        const int length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
-        if (length == 0 || i + static_cast<std::size_t>(length) > utf8.size()) {
-            decoded.push_back(U'\uFFFD');
-            ++i;
-            continue;
-        }
-        char32_t value = length == 1 ? lead : static_cast<char32_t>(lead & (0x7F >> length));
-        bool valid = true;
-        for (int k = 1; k < length; ++k) {
-            const auto next = static_cast<unsigned char>(utf8[i + static_cast<std::size_t>(k)]);
-            valid = valid && (next >> 6) == 0x2;
-            value = (value << 6) | (next & 0x3F);
-        }
-        decoded.push_back(valid ? value : U'\uFFFD');
-        i += valid ? static_cast<std::size_t>(length) : 1;
-    }
-    return decoded;
-}
-
 } // namespace apcs

@@ -1,42 +1,16 @@
 #include "apcs/session/session.h"
 
 #include "apcs/formats/numbered_files.h"
-#include "apcs/session/overloaded.h"
-#include "apcs/session/screen_layout.h"
+#include "apcs/base/overloaded.h"
+#include "apcs/raster/screen_layout.h"
 #include "apcs/session/session_graph.h"
 #include "apcs/session/session_pictures.h"
-#include "apcs/session/session_text.h"
+#include "apcs/screens/session_text.h"
 
 #include <algorithm>
 #include <utility>
 
 namespace apcs {
-
-const char* phase_name(SessionPhase phase)
-{
-    switch (phase) {
-    case SessionPhase::ask_key1: return "step 1: KEY1 file";
-    case SessionPhase::ask_key2: return "step 1: KEY2 file";
-    case SessionPhase::splitting: return "step 1: splitting into path files";
-    case SessionPhase::ask_view: return "step 2: view and delay";
-    case SessionPhase::ask_path_file: return "step 3: path file";
-    case SessionPhase::ask_slopes: return "step 3: end slopes";
-    case SessionPhase::choose_control: return "step 3: global or local control";
-    case SessionPhase::pick_region_first: return "step 3: first control point of the region";
-    case SessionPhase::pick_region_last: return "step 3: last control point of the region";
-    case SessionPhase::staff: return "step 4: four-line staff";
-    case SessionPhase::waypoints: return "step 3: waypoint editor";
-    case SessionPhase::ask_again: return "step 5: adjust again";
-    case SessionPhase::ask_next_path: return "step 5: next path";
-    case SessionPhase::ask_stop: return "step 6: stop the work";
-    case SessionPhase::ask_draw: return "step 6: surface fitting done";
-    case SessionPhase::animating: return "step 6: animation";
-    case SessionPhase::animation_done: return "step 6: animation done";
-    case SessionPhase::overlay: return "step 6: all frames";
-    case SessionPhase::finished: return "end";
-    }
-    return "";
-}
 
 namespace {
 
@@ -123,6 +97,31 @@ KeyContext Session::step_key_context() const
 }
 
 void Session::handle(const KeyEvent& event)
+{
+    const std::optional<ShapingLook> before = shaping_look();
+    take_key(event);
+    if (!before || shaping_look() != before)
+        ++m_revision;
+}
+
+std::optional<Session::ShapingLook> Session::shaping_look() const
+{
+    const auto* shaping = std::get_if<step::Shaping>(&m_step);
+    if (shaping == nullptr)
+        return std::nullopt;
+    const bool overlaid = m_overlays.help() != nullptr || m_overlays.quit_question() != nullptr;
+    return ShapingLook{shaping->editor.look(), m_notice, overlaid};
+}
+
+void Session::mark_goal(std::optional<Vec3> point)
+{
+    if (point == m_goal_point)
+        return;
+    m_goal_point = point;
+    ++m_revision;
+}
+
+void Session::take_key(const KeyEvent& event)
 {
     const KeyContext keys = m_overlays.key_context(step_key_context());
     const std::optional<Command> command = command_for(keys, event);
@@ -241,6 +240,7 @@ void Session::ask(const std::string& problem)
 
 void Session::tick()
 {
+    ++m_revision;
     if (auto* playing = std::get_if<step::Playing>(&m_step))
         playing->player.tick();
 }
@@ -253,6 +253,7 @@ bool Session::busy() const
 
 void Session::work()
 {
+    ++m_revision;
     if (auto* shaping = std::get_if<step::Shaping>(&m_step))
         return shaping->editor.refine_step();
     auto* splitting = std::get_if<step::Splitting>(&m_step);

@@ -6,7 +6,7 @@
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/session_budget.h"
-#include "apcs/session/session_text.h"
+#include "apcs/screens/session_text.h"
 
 #include <algorithm>
 #include <cassert>

@@ -2,7 +2,7 @@
 
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/terminal_picture.h"
-#include "apcs/session/screen_layout.h"
+#include "apcs/raster/screen_layout.h"
 
 #include <algorithm>
 #include <utility>

@@ -5,9 +5,9 @@
 #include "apcs/raster/svg_encoder.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
-#include "apcs/session/frames_overlay.h"
-#include "apcs/session/path_screen.h"
-#include "apcs/session/screen_layout.h"
+#include "apcs/screens/frames_overlay.h"
+#include "apcs/screens/path_screen.h"
+#include "apcs/raster/screen_layout.h"
 
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"

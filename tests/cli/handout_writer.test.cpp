@@ -1,5 +1,5 @@
-#include "apcs/session/handout.h"
-#include "apcs/session/key_event.h"
+#include "apcs/lesson/handout.h"
+#include "apcs/formats/key_event.h"
 
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apcs/session/session.h"
-#include "apcs/session/session_log.h"
+#include "apcs/base/session_log.h"
 
 #include <catch2/catch.hpp>
 

@@ -10,8 +10,9 @@ namespace apcs {
 // Parses the command line (SPEC §1) and runs the chosen command. Returns the exit status:
 // 0 success, 1 bad input, 2 bad usage (an unknown option or a bad value, with a one-line reason
 // and the usage on `err`), 3 a terminal problem.
-// `terminal` runs the interactive session in a terminal; without it only headless sessions run.
+// `terminal` runs the interactive session and apcs play in a terminal; without it only headless
+// sessions run.
 int run_command_line(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                     const TerminalSessionRunner& terminal = {}, const TerminalPlayerRunner& player = {});
+                     const TerminalRunner& terminal = {});
 
 } // namespace apcs

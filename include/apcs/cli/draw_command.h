@@ -4,7 +4,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/cli/options.h"
 #include "apcs/raster/graphics_screen.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 
 #include <filesystem>
 #include <iosfwd>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 #include "apcs/cli/options.h"
 
 #include <filesystem>

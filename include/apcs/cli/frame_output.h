@@ -6,8 +6,8 @@
 #include "apcs/cli/options.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/numbered_files.h"
-#include "apcs/session/animation_player.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/playback/animation_player.h"
+#include "apcs/base/exit_status.h"
 
 #include <filesystem>
 #include <functional>

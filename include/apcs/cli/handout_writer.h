@@ -26,13 +26,13 @@ public:
     // `glyphs`. Each file is written atomically as every picture of APCS is: an existing one is
     // replaced (kept as NN-STEP.bak; identical content leaves it untouched), never one of `inputs`.
     // When the PNG's old content took NN-STEP.bak this time, the text's goes to NN-STEP.b01 …, so
-    // that one backup never replaces the other. The first problem is kept (problem()); after it
+    // that one backup never replaces the other. The first problem is kept (outcome()); after it
     // nothing more is written.
     void write(int number, std::string_view caption, const SessionScreen& shown, GlyphSet glyphs,
                const KeyFileGuard& inputs);
 
-    // The first write that failed, if any.
-    const std::optional<Diagnostic>& problem() const { return m_problem; }
+    // ok, or the first write that failed.
+    const Expected<void>& outcome() const { return m_outcome; }
     // The files written so far, in order.
     const std::vector<std::filesystem::path>& written() const { return m_written; }
 
@@ -40,7 +40,7 @@ private:
     explicit HandoutWriter(std::filesystem::path folder) : m_folder(std::move(folder)) {}
 
     std::filesystem::path m_folder;
-    std::optional<Diagnostic> m_problem;
+    Expected<void> m_outcome = ok;
     std::vector<std::filesystem::path> m_written;
 };
 

@@ -2,7 +2,7 @@
 
 #include "apcs/animation/speed_law.h"
 #include "apcs/animation/vector_inbetween.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 #include "apcs/cli/options.h"
 
 #include <filesystem>

@@ -2,7 +2,7 @@
 
 #include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 
 #include <cstdint>
 #include <iosfwd>

@@ -6,7 +6,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/pixel_picture.h"
-#include "apcs/session/key_event.h"
+#include "apcs/formats/key_event.h"
 
 #include <cstdint>
 #include <filesystem>

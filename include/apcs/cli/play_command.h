@@ -3,22 +3,15 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
 #include "apcs/raster/glyph_mapper.h"
-#include "apcs/session/animation_player.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
+#include "apcs/cli/terminal_runner.h"
+#include "apcs/playback/animation_player.h"
 
 #include <filesystem>
-#include <functional>
 #include <iosfwd>
 #include <string>
 
 namespace apcs {
-
-// The terminal shell of apcs play, supplied by the executable (run_terminal_player): the player,
-// its delay, glyphs and --pixels, what P does with the screen (returns the message line); success
-// or stopped, or why there is no usable terminal ("apcs: PROBLEM").
-using TerminalPlayerRunner =
-    std::function<Expected<ExitStatus>(AnimationPlayer&, int delay_ms, GlyphSet, PixelChoice,
-                                       const std::function<std::string(const GraphicsScreen&)>& save_picture)>;
 
 // P in apcs play: the screen as apcs001.png … (the first name free in the current folder), as the
 // monitor showed it; "wrote apcs001.png", or what went wrong.
@@ -35,7 +28,7 @@ struct PlayRequest {
 // --png-raw, --svg) and the animation (--gif); with none of these it plays on the terminal (exit 3
 // without one).
 ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& options,
-                            const TerminalPlayerRunner& terminal, std::ostream& out, std::ostream& err);
+                            const TerminalRunner& terminal, std::ostream& out, std::ostream& err);
 
 // "frm000.dat" … "frm060.dat": frame `frame` of a scene whose last frame is `last_frame`, the
 // number as wide as the last needs, at least 3 digits.

@@ -2,7 +2,7 @@
 
 #include "apcs/animation/motion_path.h"
 #include "apcs/base/diagnostic.h"
-#include "apcs/session/exit_status.h"
+#include "apcs/base/exit_status.h"
 
 #include <iosfwd>
 #include <string>

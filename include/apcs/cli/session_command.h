@@ -2,26 +2,18 @@
 
 #include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
-#include "apcs/session/exit_status.h"
-#include "apcs/session/key_event.h"
-#include "apcs/session/replay_hooks.h"
+#include "apcs/base/exit_status.h"
+#include "apcs/cli/terminal_runner.h"
+#include "apcs/formats/key_event.h"
+#include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session.h"
 
-#include <functional>
 #include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace apcs {
-
-// The terminal shell of the session, supplied by the executable (the only part linked with
-// ncurses); see run_terminal_session. Returns success or stopped, or why there is no usable
-// terminal ("apcs: PROBLEM").
-using TerminalSessionRunner =
-    std::function<Expected<ExitStatus>(Session&, const KeyScript& script, ReplayPace pace, GlyphSet glyphs,
-                                       ColourChoice colour, PixelChoice pixels, std::vector<KeyEvent>& recorded,
-                                       const ReplayHooks& hooks)>;
 
 // --color as the session uses it (SPEC §7.2.1): automatic becomes never when the environment's
 // NO_COLOR (`no_color`, null when unset) is set and not empty; always and never stand as given
@@ -52,24 +44,17 @@ GlyphSet default_glyphs(std::string_view codeset, std::string_view term);
 // relative name is taken from the current folder, also with --workdir).
 SessionSettings session_settings(const CommonOptions& options);
 
-// Runs the session headless: every key of the script, the animation untimed, and each step's
-// final screen (after its last key) to `out`: a line "--- STEP", then the 80x24 screen, trailing
-// blanks removed; the script's captions as lines ";; TEXT" where the replay reaches them.
-// `reached`, if given, sees the session as each caption is reached (the screen a paced replay
-// shows it over). Returns the keys handled.
-// `played`, if given, sees the session before each key and at the end, with the count of keys
-// played so far.
-using CaptionReached = std::function<void(const ScriptCaption&, const Session&)>;
-using KeysPlayed = std::function<void(std::size_t played, const Session&)>;
-std::vector<KeyEvent> run_headless_session(Session& session, const KeyScript& script, GlyphSet glyphs,
-                                           std::ostream& out, const CaptionReached& reached = {},
-                                           const KeysPlayed& played = {});
+// Runs the session headless through `replay` (ReplayAudience::headless, of `session`): every key of
+// the script, the animation untimed, and each step's final screen (after its last key) to `out`:
+// a line "--- STEP", then the 80x24 screen, trailing blanks removed. The replay's hooks hear of
+// each caption as it is reached (the headless command prints ";; TEXT" there).
+void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out);
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,
 // for the process's locale and TERM (a set the locale cannot show: exit 2); without one it needs
 // --keys and runs headless (ascii unless --glyphs says otherwise); otherwise exit 3.
-ExitStatus run_session_command(const CommonOptions& options, const TerminalSessionRunner& terminal, std::ostream& out,
+ExitStatus run_session_command(const CommonOptions& options, const TerminalRunner& terminal, std::ostream& out,
                                std::ostream& err);
 
 } // namespace apcs

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/base/utf8.h"
+
 #include <string>
 #include <string_view>
 #include <optional>
@@ -10,12 +12,6 @@ namespace apcs {
 // How a cell is shown beyond its character: the terminal's attributes (SPEC §7.1: reverse video and
 // bold are the terminal's only; pictures do not have them).
 enum class CellStyle : unsigned char { plain, bold, reverse };
-
-// How many terminal columns `code_point` takes: 1, 2 for East Asian wide ones (CJK, fullwidth
-// forms, most emoji), 0 for combining and other zero-width ones, -1 for control characters. The
-// same on every machine: Unicode's widths as the C.UTF-8 locale knows them, whatever the user's
-// locale (a wide character counts 1 only where that locale is missing).
-int cell_width(char32_t code_point);
 
 // What a cell is drawn in where the terminal has colour (SPEC §7.2.1), decided where each layer is
 // painted; the terminal maps it to a colour of its own. `monitor` is the 1989 screen's one colour
@@ -86,7 +82,5 @@ private:
     std::vector<CellStyle> m_styles;
     std::vector<ColourRole> m_roles;
 };
-
-void append_utf8(std::string& text, char32_t code_point);
 
 } // namespace apcs

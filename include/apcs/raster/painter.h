@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/base/utf8.h"
+
 #include "apcs/geometry/pixel_point.h"
 #include "apcs/raster/bitmap.h"
 #include "apcs/raster/stroke.h"
@@ -55,8 +57,5 @@ private:
     std::optional<PixelRect> m_clip;
     std::vector<Stroke>* m_record = nullptr;
 };
-
-// Splits UTF-8 into code points; malformed bytes become U+FFFD.
-std::u32string decode_utf8(std::string_view utf8);
 
 } // namespace apcs

@@ -1,15 +1,15 @@
 #pragma once
 
 #include "apcs/raster/png_encoder.h"
-#include "apcs/session/interactive_program.h"
-#include "apcs/session/key_event.h"
-#include "apcs/session/overlays.h"
+#include "apcs/input/interactive_program.h"
+#include "apcs/formats/key_event.h"
+#include "apcs/input/overlays.h"
 #include "apcs/session/session_files.h"
 #include "apcs/session/session_model.h"
-#include "apcs/session/session_phase.h"
+#include "apcs/input/session_phase.h"
 #include "apcs/session/session_settings.h"
 #include "apcs/session/session_steps.h"
-#include "apcs/session/text_console.h"
+#include "apcs/screens/text_console.h"
 
 #include <array>
 #include <optional>
@@ -41,6 +41,9 @@ public:
     bool busy() const override;
     int delay_ms() const override { return m_model.delay_ms; }
     SessionScreen screen() const override;
+    // A key that changes nothing on the path screen (a staff step past +1, a key no mode takes)
+    // leaves it; any other key, tick or work advances it.
+    std::uint64_t screen_revision() const override { return m_revision; }
 
     SessionPhase phase() const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
@@ -49,11 +52,20 @@ public:
     // The path being shaped (steps 3 to 5 of one path), none at any other step.
     const PathEditor* path_editor() const;
     // The last write that failed, if any did (the step that tried it was asked again).
-    const std::optional<Diagnostic>& write_problem() const { return m_model.written.problem(); }
+    const Expected<void>& writes() const { return m_model.written.outcome(); }
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
-    void mark_goal(std::optional<Vec3> point) { m_goal_point = point; }
+    void mark_goal(std::optional<Vec3> point);
 
 private:
+    // What the path screen shows, as far as a key can change it: compared before and after a key.
+    struct ShapingLook {
+        PathEditor::Look editor;
+        std::string notice;
+        bool overlaid = false;
+        bool operator==(const ShapingLook&) const = default;
+    };
+    std::optional<ShapingLook> shaping_look() const;
+    void take_key(const KeyEvent& event);
     StepContext context();
     KeyContext step_key_context() const;
     void dispatch_to_step(const Command& command);
@@ -76,6 +88,7 @@ private:
     // What the last key did that the message line tells once (a picture written), if anything.
     std::string m_notice;
     std::optional<Vec3> m_goal_point;
+    std::uint64_t m_revision = 0;
 };
 
 } // namespace apcs

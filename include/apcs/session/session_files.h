@@ -5,7 +5,7 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
-#include "apcs/session/session_log.h"
+#include "apcs/base/session_log.h"
 
 #include <filesystem>
 #include <map>

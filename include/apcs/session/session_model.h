@@ -7,7 +7,7 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/session/session_files.h"
 #include "apcs/session/session_settings.h"
-#include "apcs/session/text_console.h"
+#include "apcs/screens/text_console.h"
 
 #include <array>
 #include <cstddef>
@@ -34,13 +34,14 @@ class WrittenFiles {
 public:
     void add(const std::string& name);
     const std::vector<std::string>& names() const { return m_names; }
-    const std::optional<Diagnostic>& problem() const { return m_problem; }
-    void set_problem(const Diagnostic& problem) { m_problem = problem; }
+    // ok, or the last write that failed.
+    const Expected<void>& outcome() const { return m_outcome; }
+    void set_problem(const Diagnostic& problem) { m_outcome = problem; }
 
 private:
     std::vector<std::string> m_names;
     std::unordered_set<std::string> m_known; // m_names', to find one among 10^6 at once
-    std::optional<Diagnostic> m_problem;
+    Expected<void> m_outcome = ok;
 };
 
 // What the steps made that the steps after them read: the key frames, the view, both paths.

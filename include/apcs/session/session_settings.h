@@ -4,8 +4,7 @@
 #include "apcs/animation/memory_budget.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/surface_construction.h"
-#include "apcs/raster/cell_grid.h"
-#include "apcs/raster/graphics_screen.h"
+#include "apcs/raster/session_screen.h"
 
 #include <cstdint>
 #include <optional>
@@ -37,13 +36,6 @@ struct SessionSettings {
     // The terminal draws a long path's first picture after a key and refines it while no key waits
     // (path_picture.h); scripts and tests take every key's work at once.
     Refinement refinement = Refinement::at_once;
-};
-
-// What the terminal shows now: the DOS text console or the graphics screen.
-struct SessionScreen {
-    bool graphics = false;
-    CellGrid text;          // 80x24, when !graphics
-    GraphicsScreen picture; // when graphics
 };
 
 } // namespace apcs

@@ -1,11 +1,11 @@
 #pragma once
 
 #include "apcs/animation/frame_sequence.h"
-#include "apcs/session/animation_player.h"
-#include "apcs/session/key_map.h"
-#include "apcs/session/path_editor.h"
+#include "apcs/playback/animation_player.h"
+#include "apcs/input/key_map.h"
+#include "apcs/editor/path_editor.h"
 #include "apcs/session/session_model.h"
-#include "apcs/session/session_phase.h"
+#include "apcs/input/session_phase.h"
 
 #include <cstddef>
 #include <optional>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/session/key_event.h"
+#include "apcs/formats/key_event.h"
 
 #include <cwchar>
 #include <optional>

@@ -4,7 +4,7 @@
 #include "apcs/raster/cell_grid.h"
 #include "apcs/raster/pixel_picture.h"
 #include "apcs/terminal/pixel_detection.h"
-#include "apcs/session/key_event.h"
+#include "apcs/formats/key_event.h"
 
 #include <memory>
 #include <optional>

@@ -1,0 +1,212 @@
+#pragma once
+
+#include "apcs/animation/control_region.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/animation/waypoint_change.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/input/command.h"
+#include "apcs/input/key_map.h"
+#include "apcs/editor/path_document.h"
+#include "apcs/editor/path_picture.h"
+#include "apcs/screens/path_screen.h"
+#include "apcs/base/session_log.h"
+#include "apcs/input/session_phase.h"
+#include "apcs/input/value_field.h"
+#include "apcs/editor/waypoint_editor.h"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace apcs {
+
+// A segment of the curve before a staff key, with its index: one the key may move (on a long
+// region every stride-th of them), to say how far the key moved the curve.
+struct SegmentBeforeKey {
+    std::size_t index = 0;
+    HermiteSegment before;
+};
+
+// Graphics mode while one graphic point's path is shaped (thesis Ch. 4.2 steps 3–5): the choice of
+// global or local control (Check_GorL_Control), picking the region with the arrow
+// (Scan_Control_Point), the four-line staff (Scan_Parameters, one Scan_*_Value per line, one
+// tnextpixel per key) and the question whether to adjust again (Ask_Adjusting). It owns the path
+// being shaped; the session takes it back when the animator accepts it.
+//
+// Beyond the 1989 screen (thesis Ch. 6's future work): the tangents (T) and the law of the span (G)
+// drawn over the path, a typed value on a staff line (=), the waypoint editor (W), a region of one
+// control point, and undo (U) of every change since the path was opened.
+class PathEditor {
+public:
+    struct Setup {
+        std::string path_name;
+        ControlPoints points; // at least two: they become the document's
+        PathSettings settings;
+        ViewAngles view_angles;
+        // Both key frames as polylines: the view keeps them in sight, and K shows them.
+        std::vector<std::vector<Vec3>> key_frame_polylines;
+        double staff_step = 0.05;
+        // The terminal's: a key's first picture at once, the rest in refine_step() (path_picture.h).
+        PictureRefinement refinement;
+    };
+    enum class Outcome { editing, accepted };
+
+    // Initial_Graphics: evaluates the path and fixes the view for the whole adjusting, so that
+    // each key's effect is seen against a still picture.
+    PathEditor(Setup setup, SessionLog& log);
+
+    // A staff step or a waypoint edit adds to what the keys before it left to refine (a key held
+    // down on a long path); any other command first finishes it, and so acts on the final picture.
+    Outcome update(const Command& command);
+    // The path screen, with an exercise's goal point marked when one is given.
+    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt) const;
+    // Refinement::in_steps: whether the last keys left work (PathPicture::refining), and one step of it.
+    bool refining() const { return m_picture->refining(); }
+    void refine_step();
+    // All of it (P writes a final picture).
+    void refine();
+
+    SessionPhase phase() const;
+    KeyContext key_context() const;
+    const std::string& path_name() const { return m_setup.path_name; }
+    // The path as edited (in the waypoint editor too).
+    const ControlPoints& points() const { return m_document->points(); }
+    // Parallel to points(): each point's index among the path file's points, or new_point for one
+    // the waypoint editor inserted (waypoint_change.h). The file's comments stay with their points.
+    const std::vector<std::size_t>& point_origins() const { return m_document->origins(); }
+    const PathDocument& document() const { return *m_document; }
+    const EvaluatedPath& evaluated() const { return m_picture->evaluated(); }
+    // The view fixed when the path was opened (fitted again when the waypoint editor is left).
+    const ViewTransform& view_transform() const { return m_picture->view(); }
+    // The staff's values for the region on it (while a staff line is active, and at "Adjust the
+    // path again ?"); none before a region is chosen or in the waypoint editor.
+    std::optional<StaffValues> region_staff() const;
+    // What the path screen shows, as far as a command can change it: two equal looks are the same
+    // screen.
+    struct Look {
+        std::uint64_t document = 0;
+        PathPicture::Revision picture;
+        SessionPhase phase = SessionPhase::choose_control;
+        KeyContext keys = KeyContext::control_choice;
+        std::string message;
+        std::optional<StaffValues> staff;
+        std::optional<StaffLine> line;
+        std::optional<std::size_t> arrow;
+        std::size_t law_point = 0;
+        std::size_t tangent_point = 0;
+        int zoom_level = 0;
+        std::array<bool, 4> shown{}; // K, O, T, G
+        bool operator==(const Look&) const = default;
+    };
+    Look look() const;
+    // The accepted path could not be written: say why and ask again.
+    void show_problem(const std::string& message);
+
+private:
+    // The editor's modes (lager's model: each owns what it alone needs; update visits them, so a
+    // mode without a case does not compile). phase() names them in transcripts.
+    struct ControlChoice {};
+    // Scan_Control_Point: the arrow waits at the top-left until moved; the region's first point
+    // once picked (then the last is picked).
+    struct RegionPick {
+        std::optional<std::size_t> arrow;
+        std::optional<std::size_t> first;
+    };
+    // Scan_Parameters: the region adjusted, the staff shown, its active line and that line's value
+    // when it became active (Esc puts it back), and the field "=" opened on the line.
+    struct Staff {
+        ControlRegion region;
+        StaffValues staff;
+        StaffLine line = StaffLine::tension;
+        double line_start_value = 0.0;
+        std::optional<ValueField> field;
+    };
+    struct Waypoints {
+        WaypointEditor editor;
+    };
+    // Ask_Adjusting: the region and staff just adjusted stay on the screen.
+    struct AskAgain {
+        ControlRegion region;
+        StaffValues staff;
+    };
+    using Mode = std::variant<ControlChoice, RegionPick, Staff, Waypoints, AskAgain>;
+    // What a command does to the mode: the next one (none: the mode stays, changed or not).
+    struct Transition {
+        std::optional<Mode> next;
+        Outcome outcome = Outcome::editing;
+    };
+
+    // Enter takes the line's value as shown; Esc keeps the value the line had when it became active.
+    enum class LineEnding { accepted, kept };
+
+    Outcome take_command(const Command& command);
+    bool update_views(const Command& command);
+    Transition check_global_or_local_control(const Command& command);
+    Transition scan_control_point(RegionPick& pick, const Command& command);
+    Transition scan_parameters(Staff& staff, const Command& command);
+    Transition accept_staff_line(Staff& staff, LineEnding ending);
+    Transition update_value_field(Staff& staff, const Command& command);
+    Transition update_waypoints(Waypoints& waypoints, const Command& command);
+    Transition ask_adjusting(const Command& command);
+    Staff start_staff(ControlRegion region);
+    Waypoints open_waypoints();
+    void set_staff_value(Staff& staff, double value);
+    // m_moved from m_move_unmeasured once the picture is refined.
+    void measure_move_when_refined();
+    void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
+    Transition undo();
+    Transition undo_change(const StaffEdit& change);
+    Transition undo_change(const WaypointChange& change);
+    // The view filled with the path (and the key frames while K shows them), then zoomed.
+    void fit_view();
+    void show_view();
+    bool zoom();
+    std::optional<ControlRegion> picked_region() const;
+    std::size_t law_point() const;
+    std::string message() const;
+    std::string staff_message(const Staff& staff) const;
+    std::string with_move(const std::string& shown, const Staff& staff) const;
+    PathScreenContent screen_content() const;
+
+    Setup m_setup;
+    SessionLog& m_log;
+    // The path (its points, origins and undo history) and its picture: evaluated and drawn in the
+    // view fixed for the adjusting, kept between keys, every change refreshing only what it
+    // touched. Both editors change them in place; held apart so that their addresses outlive a
+    // move of the editor.
+    std::unique_ptr<PathDocument> m_document;
+    std::unique_ptr<PathPicture> m_picture;
+    // SPEC §7.2.1: the view filled with what is shown, fixed while the staff or the waypoint editor
+    // changes the path (refitted when they are left, and by K); Z magnifies it 2^m_zoom_level
+    // times (0 to 3) about m_zoom_about (the region's middle, or the sample halfway along the curve).
+    std::optional<ViewTransform> m_fitted_view;
+    int m_zoom_level = 0;
+    std::optional<Vec3> m_zoom_about;
+    // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
+    double m_tangent_scale = 0.0;
+    Mode m_mode;
+    // What is shown over every mode (K, T, G and the point T numbers) and said on the message line:
+    // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped
+    // value).
+    bool m_show_key_frames = false;
+    // O: the ghost of the curve before the last staff key or waypoint edit (PathPicture keeps it).
+    bool m_show_ghost = true;
+    bool m_show_tangents = false;
+    std::size_t m_tangent_point = 1;
+    bool m_show_law = false;
+    std::string m_problem;
+    std::string m_notice;
+    // After a staff key: how far it moved the curve ("moved up to 0.024 = 1 px").
+    std::string m_moved;
+    // A staff key's segments before it, while its picture is refined in steps: the message line
+    // says what is refined meanwhile, and the search (about 8 ms for a global key's 4096 segments)
+    // need not hold up the first picture.
+    std::optional<std::vector<SegmentBeforeKey>> m_move_unmeasured;
+};
+
+} // namespace apcs

@@ -1,0 +1,70 @@
+#pragma once
+
+#include "apcs/input/command.h"
+#include "apcs/input/key_map.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+namespace apcs {
+
+// What any step may be asked (SPEC §3, §7.3): its help screen, a picture of the screen, and
+// ending the program. The help screen and the quit question are laid over the step, which stays
+// as it was underneath; the session and a scene's player (apcs play) share them.
+namespace overlay {
+// The keys of the step underneath, listed until any key closes the screen.
+struct HelpScreen {
+    KeyContext keys;
+    // At a text prompt, the answer an empty line takes there (the help names it); else empty.
+    std::string empty_answer;
+};
+// "Quit without saving this path ? (Y/N)" after q on the path screen, "Quit APCS ? (Y/N)" after
+// Esc on an empty text prompt (session_text.h holds both): Y quits; N, Enter or Esc goes back to
+// the step as it was; other keys do nothing.
+struct QuitQuestion {
+    std::string_view question;
+};
+} // namespace overlay
+
+// Quit at once, or ask first (only an unsaved path is worth the question).
+enum class QuitAsks { at_once, question_first };
+
+// What the step under the overlays tells them.
+struct OverlayStep {
+    // What q does there.
+    QuitAsks quit = QuitAsks::at_once;
+    // At a text prompt, the answer an empty line takes, for the help screen; else empty.
+    std::string empty_answer;
+};
+
+// What a command meant to the overlays: nothing (it is the step's), done, or what the program
+// must do for them.
+enum class OverlayAnswer { step_command, handled, save_picture, quit };
+
+class Overlays {
+public:
+    // The keys in force: the open overlay's, else the step's (`step`).
+    KeyContext key_context(KeyContext step) const;
+    // `command` as read in `context` (key_context's). Opens and closes the overlays.
+    OverlayAnswer handle(KeyContext context, const Command& command, const OverlayStep& step);
+    // The help screen for `keys` (a prompt's answer "?" asks for it too).
+    void open_help(KeyContext keys, std::string empty_answer) { m_open = overlay::HelpScreen{keys, std::move(empty_answer)}; }
+    // The quit question in the words `question` (a session_text constant: the view outlives the
+    // overlay). q on the path screen opens it through handle(); the session opens it for Esc on an
+    // empty text prompt, which the key map cannot tell from Esc on a typed line.
+    void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
+
+    const overlay::HelpScreen* help() const;
+    const overlay::QuitQuestion* quit_question() const;
+    bool asking_quit() const { return quit_question() != nullptr; }
+
+private:
+    OverlayAnswer answer_open(const Command& command);
+
+    std::optional<std::variant<overlay::HelpScreen, overlay::QuitQuestion>> m_open;
+};
+
+} // namespace apcs

@@ -1,0 +1,38 @@
+#pragma once
+
+#include "apcs/raster/glyph_mapper.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/raster/session_screen.h"
+
+#include <string>
+#include <string_view>
+
+namespace apcs {
+
+// A handout (--handout DIR, SPEC §3) holds, per caption of a key script, the screen a paced replay
+// shows it over: NN-STEP.png and NN-STEP.txt, NN the caption's number from 01 (two digits, three
+// past 99), STEP the caption's short name.
+
+// The most characters of a caption's short name.
+inline constexpr std::size_t max_step_name_length = 32;
+
+// A caption's short name, for file names that sort and print well: its ASCII letters (lowercased)
+// and digits, every run of anything else one '-', none at either end, cut to max_step_name_length
+// at the last '-' that fits (a single longer word is cut where it reaches the limit). A caption
+// with no letter or digit is "caption". "W opens the waypoint editor; I inserts a control point"
+// is "w-opens-the-waypoint-editor-i".
+std::string handout_step_name(std::string_view caption);
+
+// "NN-STEP" for caption `number` (1, 2, …): the handout's file names less .png and .txt.
+std::string handout_file_stem(int number, std::string_view caption);
+
+// The 80x24 screen as text, one line a row, trailing blanks removed, each line ending in a newline:
+// graphics mode mapped to characters in `glyphs`, the console as it is. What headless replays print
+// for each step and what the lessons' golden screens hold.
+std::string screen_text(const SessionScreen& screen, GlyphSet glyphs);
+
+// The screen as the Hercules card showed it: graphics mode's picture, or the text console's rows
+// drawn in the 9x14 font on an empty raster (80 columns fill its 720 pixels, 24 rows its top 336).
+GraphicsScreen screen_picture(const SessionScreen& screen);
+
+} // namespace apcs

@@ -1,0 +1,125 @@
+#pragma once
+
+#include "apcs/base/diagnostic.h"
+#include "apcs/formats/key_event.h"
+#include "apcs/input/interactive_program.h"
+#include "apcs/lesson/replay_hooks.h"
+#include "apcs/session/session.h"
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// Who watches a replay. On a terminal a person does: the script plays at its pace (ReplayPace),
+// Esc hands the keyboard over, a goal waits for the student's keys until it holds (a goal that
+// already holds is passed, its answer's keys skipped). Headless nobody does: the script plays at
+// once, each goal's point is marked from its GOAL line and the goal judged once its answer is
+// played.
+enum class ReplayAudience { terminal, headless };
+
+// A key script played into the session (SPEC §3, §3.1): its steps, captions and goals, its pace
+// and the step badge. The one replay of the program: the terminal drives it as any
+// InteractiveProgram (keys in, screens out), the headless replay a step at a time (play_next).
+// Every key the session handles passes through it, scripted or typed, and is kept (--record).
+class ReplayDriver final : public InteractiveProgram {
+public:
+    // `session` and `script` outlive the driver. The captions and goals at the script's start are
+    // reached at once (hooks told).
+    // `script_name` names the script in a goal's FILE:LINE.
+    ReplayDriver(Session& session, const KeyScript& script, std::string script_name, ReplayPace pace,
+                 ReplayHooks hooks, ReplayAudience audience);
+
+    // A key typed on the terminal. While the replay waits for its pace, Space plays the next step
+    // (on_space), Esc ends the replay and other keys are dropped; a Space typed while the
+    // animation plays is the next step, held until it ends. At a goal, after the replay, or while
+    // the session splits or animates, the key is the session's.
+    void handle(const KeyEvent& key) override;
+    void tick() override;
+    void work() override;
+    bool finished() const override { return m_session.finished(); }
+    bool animating() const override;
+    bool busy() const override;
+    int delay_ms() const override;
+    // The session's screen with the caption reached (or the goal's feedback) and, when paced, the
+    // step just played; neither once a key is typed after the replay.
+    SessionScreen screen() const override;
+    // The session's, advanced too when the caption or the badge changes: a key the replay swallows
+    // leaves it.
+    std::uint64_t screen_revision() const override { return m_session.screen_revision() + m_revision; }
+
+    // Whether script keys are left to play (Esc has not ended the replay).
+    bool playing() const { return m_played < m_script.events.size(); }
+    // Headless: the captions and goals before the next key reached, then that key played.
+    void play_next();
+    // Headless: the captions left told and the goals left judged (the script's end).
+    void finish();
+    // Headless: ok, or the first goal not reached, as "FILE:LINE: goal not reached: …".
+    const Expected<void>& goals() const { return m_goals; }
+    // Every key the session handled, in order.
+    const std::vector<KeyEvent>& handled() const { return m_handled; }
+
+private:
+    // What the replay lays over the session's screen.
+    struct Shown {
+        std::string caption;
+        std::string badge;
+        bool operator==(const Shown&) const = default;
+    };
+    Shown shown() const;
+    // `change` done, the revision advanced if what the replay shows changed.
+    template <typename Change>
+    void watching(Change change);
+    void take(const KeyEvent& key);
+    void take_tick();
+    void take_work();
+    // Where the replay stands with the session: captions told, goals met or waited for.
+    void settle();
+    void after_change();
+    void tell_captions();
+    void wait_at_goal();
+    void judge_goals(std::size_t played);
+    // The session neither splits nor animates: a scripted key may play, a caption be reached.
+    bool session_idle() const { return !m_session.busy() && !m_session.animating(); }
+    // The replay's next key may play now on a terminal: not at a goal, nor while the session
+    // works. Headless, only play_next plays a key.
+    bool script_ready() const
+    {
+        return m_audience == ReplayAudience::terminal && !m_at_goal && playing() && session_idle();
+    }
+    // It plays without waiting for a key or the clock: at once, the rest of a TEXT line, or a
+    // Space held through the animation.
+    bool plays_unasked() const;
+    bool paced_every() const { return m_pace.kind == ReplayPace::Kind::every; }
+    bool mid_step() const { return m_played < m_step_end; }
+    void play_scripted();
+    void to_session(const KeyEvent& key);
+    void stop();
+
+    Session& m_session;
+    const KeyScript& m_script;
+    std::string m_script_name;
+    ReplayPace m_pace;
+    ReplayHooks m_hooks;
+    ReplayAudience m_audience;
+    std::size_t m_played = 0;
+    std::size_t m_step_end = 0;
+    std::string m_step_label;
+    std::size_t m_captions_told = 0;
+    std::size_t m_next_goal = 0;
+    bool m_at_goal = false;
+    std::string m_goal_said;
+    bool m_step_held = false;
+    bool m_stopped = false;
+    bool m_typed_after = false;
+    Expected<void> m_goals = ok;
+    std::vector<KeyEvent> m_handled;
+    // Keys typed while the replay played unasked, the session's or the replay's once it stops.
+    std::deque<KeyEvent> m_typed_meanwhile;
+    std::uint64_t m_revision = 0;
+};
+
+} // namespace apcs

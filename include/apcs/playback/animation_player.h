@@ -1,0 +1,82 @@
+#pragma once
+
+#include "apcs/animation/frame_sequence.h"
+#include "apcs/animation/graphic.h"
+#include "apcs/animation/view_transform.h"
+#include "apcs/raster/graphics_screen.h"
+#include "apcs/input/command.h"
+#include "apcs/screens/frames_overlay.h"
+#include "apcs/input/key_map.h"
+#include "apcs/base/session_log.h"
+#include "apcs/input/session_phase.h"
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace apcs {
+
+// Graphics mode after surface fitting (thesis Showing_Animation, SPEC §3 step 6): KEY1, each
+// in-between and KEY2, one frame per tick, each erased before the next; Esc stops, Space pauses,
+// R replays. After the last frame a key shows all frames overlaid (figs. 5.1–5.2) as
+// frames_overlay_screen draws them (the first solid, the last dashed, the others dotted, a
+// legend), and another ends the session. No clock: the shell calls tick() every delay while playing().
+class AnimationPlayer {
+public:
+    enum class Outcome { showing, finished };
+
+    // `structure` gives the parts that draw each frame (the equalised KEY1); `key_names` name the
+    // first and the last frame on the screen.
+    AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names, ViewAngles angles,
+                    int delay_ms, SessionLog& log);
+
+    Outcome update(const Command& command);
+    void tick();
+    GraphicsScreen view() const;
+
+    SessionPhase phase() const;
+    bool playing() const;
+    KeyContext key_context() const;
+
+    // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
+    // inb003.dat", "KEY2: key2.dat"; for a scene (name_frames_by_scene) "Frame 3 of 60: car.scn".
+    std::string frame_label() const;
+    // The frames are a scene's 0 … N (apcs play), named by their number and the scene's file, on
+    // the screen and in the overlay's legend.
+    void name_frames_by_scene(std::string scene_name);
+    // Points the overlay of all frames marks and letters (a scene's timed waypoints), and the lines
+    // under its legend that say what they are.
+    void letter_points(std::vector<LetteredPoint> points, std::vector<std::string> notes);
+    // A line shown on the message line instead of the frame's name until the next key (P's
+    // "wrote apcs001.png" in apcs play).
+    void show_notice(std::string notice) { m_notice = std::move(notice); }
+
+private:
+    FrameSequence m_frames;
+    Graphic m_structure;
+    std::array<std::string, 2> m_key_names;
+    std::string m_scene_name;
+    std::string m_notice;
+    FramesOverlay m_overlay; // the legend's names, and lettered points
+    ViewTransform m_view;
+    SessionLog& m_log;
+    // The frames one at a time (Esc stops, Space pauses, R replays), the last frame shown until a
+    // key, then all frames overlaid until a key ends it.
+    struct Showing {
+        bool paused = false;
+    };
+    struct Stopped {};
+    struct Overlaid {};
+    using Mode = std::variant<Showing, Stopped, Overlaid>;
+
+    Outcome update_showing(Showing& showing, const Command& command);
+    std::string message() const;
+
+    Mode m_mode;
+    std::size_t m_frame = 0; // the frame on the screen while showing or stopped
+};
+
+} // namespace apcs

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "apcs/raster/cell_grid.h"
+#include "apcs/raster/session_screen.h"
+
+#include <string_view>
+
+namespace apcs {
+
+// A replay's caption (a ";;" comment of the script) on a row of its own, in reverse video, so that
+// the message line (DS/DD, "control point 2 of 3", questions, errors) stays in view: in graphics
+// mode on the key-hint row, in place of the hints; on the text console on the bottom row, the
+// console scrolled up one row when that row is in use. An empty caption leaves the screen as it is.
+SessionScreen with_caption(SessionScreen screen, std::string_view caption);
+
+// The most columns the played-key badge takes; a longer TEXT line is cut, ending in "...".
+inline constexpr int max_played_key_columns = 32;
+
+// What a paced replay just played (step_label: "ENTER", "TEXT ani1.dat"), shown as screencast
+// tools do: " key ENTER " in reverse video at the right end of the terminal's top row (the
+// boundary's top line in graphics mode, the oldest console line in text mode), two columns from
+// the edge. An empty label, or a grid too narrow for it, leaves the grid as it is.
+CellGrid with_played_key(CellGrid grid, std::string_view label);
+
+} // namespace apcs

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "apcs/raster/cell_grid.h"
+#include "apcs/raster/graphics_screen.h"
+
+#include <string>
+
+namespace apcs {
+
+// What the terminal shows now: the DOS text console or the graphics screen, and what a replay lays
+// over it where it is shown (replay_caption.h): its caption on a row of its own, and the step it
+// just played at the top right.
+struct SessionScreen {
+    bool graphics = false;
+    CellGrid text;          // 80x24, when !graphics
+    GraphicsScreen picture; // when graphics
+    std::string caption = {};
+    std::string badge = {};
+};
+
+} // namespace apcs

@@ -1,0 +1,67 @@
+#include "apcs/base/utf8.h"
+
+#include <locale.h>
+#include <wchar.h>
+
+namespace apcs {
+
+std::u32string decode_utf8(std::string_view utf8)
+{
+    std::u32string decoded;
+    decoded.reserve(utf8.size());
+    for (std::size_t i = 0; i < utf8.size();) {
+        const auto lead = static_cast<unsigned char>(utf8[i]);
+        const int length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+        if (length == 0 || i + static_cast<std::size_t>(length) > utf8.size()) {
+            decoded.push_back(U'\uFFFD');
+            ++i;
+            continue;
+        }
+        char32_t value = length == 1 ? lead : static_cast<char32_t>(lead & (0x7F >> length));
+        bool valid = true;
+        for (int k = 1; k < length; ++k) {
+            const auto next = static_cast<unsigned char>(utf8[i + static_cast<std::size_t>(k)]);
+            valid = valid && (next >> 6) == 0x2;
+            value = (value << 6) | (next & 0x3F);
+        }
+        decoded.push_back(valid ? value : U'\uFFFD');
+        i += valid ? static_cast<std::size_t>(length) : 1;
+    }
+    return decoded;
+}
+
+int cell_width(char32_t code_point)
+{
+    if (code_point >= 0x20 && code_point < 0x7F)
+        return 1;
+    // A locale of its own, used on this thread only for the call: the user's locale and every
+    // other thread are left as they are.
+    static const locale_t utf8 = ::newlocale(LC_CTYPE_MASK, "C.UTF-8", static_cast<locale_t>(nullptr));
+    if (utf8 == static_cast<locale_t>(nullptr))
+        return code_point < 0x20 || (code_point >= 0x7F && code_point < 0xA0) ? -1 : 1;
+    const locale_t previous = ::uselocale(utf8);
+    const int width = ::wcwidth(static_cast<wchar_t>(code_point));
+    ::uselocale(previous);
+    return width;
+}
+
+void append_utf8(std::string& text, char32_t code_point)
+{
+    if (code_point < 0x80) {
+        text += static_cast<char>(code_point);
+    } else if (code_point < 0x800) {
+        text += static_cast<char>(0xC0 | (code_point >> 6));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    } else if (code_point < 0x10000) {
+        text += static_cast<char>(0xE0 | (code_point >> 12));
+        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    } else {
+        text += static_cast<char>(0xF0 | (code_point >> 18));
+        text += static_cast<char>(0x80 | ((code_point >> 12) & 0x3F));
+        text += static_cast<char>(0x80 | ((code_point >> 6) & 0x3F));
+        text += static_cast<char>(0x80 | (code_point & 0x3F));
+    }
+}
+
+} // namespace apcs

@@ -1,0 +1,594 @@
+#include "apcs/editor/path_editor.h"
+
+#include "apcs/animation/curve_move.h"
+#include "apcs/animation/input_limits.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/base/overloaded.h"
+#include "apcs/screens/path_overlays.h"
+#include "apcs/raster/screen_layout.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace apcs {
+
+namespace {
+
+// Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
+double snapped(double value) { return limits::staff_value.clamp(std::round(value * 1e9) / 1e9); }
+
+enum class KeyFrames { shown, hidden };
+
+// What the view keeps in sight: the path, its control points, and both key frames while K shows them.
+ViewScene shown_scene(const PathEditor::Setup& setup, const ControlPoints& points, const EvaluatedPath& path,
+                      KeyFrames key_frames)
+{
+    PathScreenContent shown = path_screen_content(points, path);
+    if (key_frames == KeyFrames::shown)
+        shown.key_frame_polylines = setup.key_frame_polylines;
+    return path_screen_scene(shown);
+}
+
+// The middle of a region's control points (world), where Z magnifies.
+Vec3 region_middle(const ControlPoints& points, ControlRegion region)
+{
+    BoundingBox box;
+    for (std::size_t k = region.first; k <= region.last && k < points.size(); ++k)
+        box.add(points[k].position);
+    return box.centre();
+}
+
+// How far a staff key moved the curve at most: in world units, and in raster pixels of the view
+// shown (the larger of the x and y distances: the pixel steps a point of the curve went).
+struct CurveMove {
+    double world = 0.0;
+    double pixels = 0.0;
+};
+
+// A region of more than this many segments is measured at as many, evenly spread: the exact
+// search costs about 2 µs a segment, and a global key on 10^6 control points must stay near its
+// 80 ms. The move said is then that of the segments measured.
+constexpr std::size_t most_measured_segments = 4096;
+
+// The segments whose tangents the region's points can set (ends included) as they were before a
+// key gave the region new staff values: each made from the points around it (kb_segment reads
+// points k − 1 … k + 2) with the region's values taken back from the runs the key replaced. Made
+// from the points, not read from the curve: the curve's own may wait for a refinement in steps.
+std::vector<SegmentBeforeKey> segments_before_key(std::span<const ControlPoint> points, EndSlopes slopes,
+                                                  ControlRegion region, const std::vector<StaffRun>& runs_before)
+{
+    std::vector<std::size_t> run_ends; // the point after each run
+    for (std::size_t end = region.first; const StaffRun& run : runs_before)
+        run_ends.push_back(end += run.count);
+    const auto staff_before = [&](std::size_t point) {
+        const auto run = std::upper_bound(run_ends.begin(), run_ends.end(), point) - run_ends.begin();
+        return runs_before[static_cast<std::size_t>(run)].staff;
+    };
+    const std::size_t first = region.first < 2 ? 0 : region.first - 2;
+    const std::size_t end = std::min(points.size() - 1, region.last + 2);
+    const std::size_t count = end > first ? end - first : 0;
+    const std::size_t stride = std::max<std::size_t>(1, (count + most_measured_segments - 1) / most_measured_segments);
+    std::vector<SegmentBeforeKey> measured;
+    const std::size_t runs_end = run_ends.empty() ? region.first : run_ends.back();
+    for (std::size_t index = first; index < end; index += stride) {
+        const std::size_t window_first = index == 0 ? 0 : index - 1;
+        const std::size_t window_size = std::min(points.size(), index + 3) - window_first;
+        std::array<ControlPoint, 4> window{};
+        for (std::size_t k = 0; k < window_size; ++k) {
+            window[k] = points[window_first + k];
+            if (region.contains(window_first + k) && window_first + k < runs_end)
+                window[k].staff = staff_before(window_first + k);
+        }
+        measured.push_back({index, kb_segment(std::span(window.data(), window_size), slopes, index - window_first)});
+    }
+    return measured;
+}
+
+// `before` as segments_before_key made them, `points` those after the key. The pixels are
+// measured at each segment's furthest-moved sample (SampleMove), not at every sample: one
+// projection pair per segment; a view seen nearly along the move may show another sample moved a
+// pixel more. Segments that cannot beat the furthest move found are not searched.
+CurveMove curve_move(std::span<const SegmentBeforeKey> before, std::span<const ControlPoint> points, EndSlopes slopes,
+                     std::span<const HermiteBasis> basis, const ViewTransform& view)
+{
+    CurveMove moved;
+    for (const SegmentBeforeKey& segment : before) {
+        const HermiteSegment after = kb_segment(points, slopes, segment.index);
+        const SampleMove sample = furthest_sample_move(segment.before, after, basis, moved.world);
+        if (sample.distance <= 0.0)
+            continue;
+        moved.world = std::max(moved.world, sample.distance);
+        const DevicePoint was = view.to_device(sample.before);
+        const DevicePoint is = view.to_device(sample.after);
+        moved.pixels = std::max({moved.pixels, std::abs(is.x - was.x), std::abs(is.y - was.y)});
+    }
+    return moved;
+}
+
+// "0.024", "0.0012", "1.25": two significant digits below 1, two decimals above.
+std::string world_distance_text(double distance)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, distance < 1.0 ? "%.2g" : "%.2f", distance);
+    return text;
+}
+
+// SPEC §7.2.1: "moved up to 0.024 = 1 px"; a move under half a pixel is "under 1 px".
+std::string curve_move_text(const CurveMove& moved)
+{
+    if (moved.world <= 0.0)
+        return "the curve did not move";
+    const long pixels = std::lround(moved.pixels);
+    return "moved up to " + world_distance_text(moved.world) + " = " +
+           (pixels == 0 ? std::string("under 1 px") : std::to_string(pixels) + " px");
+}
+
+// The ghost's way back over a staff change: the region's runs as they were.
+PathPicture::PointsBack staff_runs_back(ControlRegion region, std::vector<StaffRun> runs)
+{
+    return [region, runs = std::move(runs)](ControlPoints& points) { restore_staff_runs(points, region, runs); };
+}
+
+// "1 change", "3 changes".
+std::string changes_text(std::size_t count) { return std::to_string(count) + (count == 1 ? " change" : " changes"); }
+
+} // namespace
+
+PathEditor::PathEditor(Setup setup, SessionLog& log)
+    : m_setup(std::move(setup))
+    , m_log(log)
+    , m_document(std::make_unique<PathDocument>(std::exchange(m_setup.points, {})))
+    , m_picture(std::make_unique<PathPicture>(*m_document, m_setup.settings, m_setup.refinement))
+{
+    assert(points().size() >= 2);
+    fit_view();
+}
+
+// Initial_Graphics fits the view to the path (SPEC §7.2.1: filled); it stays fixed while the staff
+// or the waypoint editor changes the path, so that each key's effect is seen against a still
+// picture, and is fitted again when they are left.
+void PathEditor::fit_view()
+{
+    const KeyFrames key_frames = m_show_key_frames ? KeyFrames::shown : KeyFrames::hidden;
+    m_fitted_view = shown_scene(m_setup, points(), evaluated(), key_frames).fill(m_setup.view_angles, layout::view_area);
+    // The arrows keep the fitted view's scale: Z magnifies them with the curve.
+    m_tangent_scale = tangent_arrow_scale(points(), *m_fitted_view);
+    show_view();
+}
+
+void PathEditor::show_view()
+{
+    const double factor = static_cast<double>(1 << m_zoom_level);
+    m_picture->set_view(m_zoom_level == 0 ? *m_fitted_view : m_fitted_view->zoomed(factor, m_zoom_about, layout::view_area));
+}
+
+// Z: ×2, ×4, ×8, then the fitted view again; about the picked region, or the path's middle.
+bool PathEditor::zoom()
+{
+    m_zoom_level = next_zoom_level(m_zoom_level);
+    const std::optional<ControlRegion> region = picked_region();
+    // The path's middle: the sample halfway along the curve.
+    const SampledCurve& curve = m_picture->evaluated().curve;
+    std::string about = "the path's middle";
+    m_zoom_about.reset();
+    if (curve.sample_count() > 0)
+        m_zoom_about = curve.sample(curve.nearest_sample(curve.total_length() / 2.0));
+    if (region && !region->is_whole(points())) {
+        m_zoom_about = region_middle(points(), *region);
+        about = region->first == region->last ? "control point " + std::to_string(region->first + 1)
+                                              : "control points " + std::to_string(region->first + 1) + " to " +
+                                                    std::to_string(region->last + 1);
+    }
+    show_view();
+    m_notice = m_zoom_level == 0 ? "zoom off: the view fitted to the path"
+                                 : "zoom ×" + std::to_string(1 << m_zoom_level) + " about " + about + " (Z: more)";
+    return true;
+}
+
+SessionPhase PathEditor::phase() const
+{
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) { return SessionPhase::choose_control; },
+                          [](const RegionPick& pick) {
+                              return pick.first ? SessionPhase::pick_region_last : SessionPhase::pick_region_first;
+                          },
+                          [](const Staff&) { return SessionPhase::staff; },
+                          [](const Waypoints&) { return SessionPhase::waypoints; },
+                          [](const AskAgain&) { return SessionPhase::ask_again; },
+                      },
+                      m_mode);
+}
+
+KeyContext PathEditor::key_context() const
+{
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) { return KeyContext::control_choice; },
+                          [](const RegionPick&) { return KeyContext::region_pick; },
+                          [](const Staff& staff) { return staff.field ? KeyContext::value_field : KeyContext::staff; },
+                          [](const Waypoints&) { return KeyContext::waypoints; },
+                          [](const AskAgain&) { return KeyContext::adjust_again; },
+                      },
+                      m_mode);
+}
+
+// Only an accepted path is written: the editor is then asking whether to adjust again.
+void PathEditor::show_problem(const std::string& message)
+{
+    m_problem = message;
+    if (!std::holds_alternative<AskAgain>(m_mode))
+        m_mode = AskAgain{ControlRegion::whole(points()), points().front().staff};
+}
+
+namespace {
+
+bool adds_to_refinement(const Command& command)
+{
+    return std::holds_alternative<command::StaffStep>(command) || std::holds_alternative<command::MovePoint>(command) ||
+           std::holds_alternative<command::InsertPoint>(command) || std::holds_alternative<command::DeletePoint>(command);
+}
+
+} // namespace
+
+void PathEditor::refine_step()
+{
+    m_picture->refine_step();
+    measure_move_when_refined();
+}
+
+void PathEditor::refine()
+{
+    m_picture->refine();
+    measure_move_when_refined();
+}
+
+void PathEditor::measure_move_when_refined()
+{
+    if (!m_move_unmeasured || m_picture->refining())
+        return;
+    m_moved = curve_move_text(curve_move(*m_move_unmeasured, points(), m_setup.settings.slopes,
+                                         m_picture->evaluated().curve.basis, m_picture->view()));
+    m_move_unmeasured.reset();
+}
+
+PathEditor::Outcome PathEditor::update(const Command& command)
+{
+    if (!adds_to_refinement(command))
+        refine();
+    const Outcome outcome = take_command(command);
+    // The waypoint editor boxes its chosen point in the picture it holds.
+    if (!std::holds_alternative<Waypoints>(m_mode))
+        m_picture->box_region(picked_region());
+    return outcome;
+}
+
+// lager's update: the mode takes the command and says which mode follows.
+PathEditor::Outcome PathEditor::take_command(const Command& command)
+{
+    m_notice.clear();
+    m_moved.clear();
+    m_move_unmeasured.reset();
+    if (update_views(command))
+        return Outcome::editing;
+    const bool was_changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
+    Transition transition =
+        std::visit(Overloaded{
+                       [&](ControlChoice&) { return check_global_or_local_control(command); },
+                       [&](RegionPick& pick) { return scan_control_point(pick, command); },
+                       [&](Staff& staff) { return scan_parameters(staff, command); },
+                       [&](Waypoints& waypoints) { return update_waypoints(waypoints, command); },
+                       [&](AskAgain&) { return ask_adjusting(command); },
+                   },
+                   m_mode);
+    if (transition.next)
+        m_mode = std::move(*transition.next);
+    // Leaving the staff or the waypoint editor, the view is fitted to the path as it now stands.
+    const bool changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
+    if (was_changing_path && !changing_path)
+        fit_view();
+    return transition.outcome;
+}
+
+// K, T, G and Tab change what is shown, never the path (Tab chooses the waypoint editor's point
+// there).
+bool PathEditor::update_views(const Command& command)
+{
+    const bool in_waypoints = std::holds_alternative<Waypoints>(m_mode);
+    const auto toggle = [](bool& shown) {
+        shown = !shown;
+        return true;
+    };
+    return std::visit(Overloaded{
+                          // K fits the view to the path and the key frames together, or to the
+                          // path alone again (the waypoint editor's view stays until it is left).
+                          [&](const command::ToggleKeyFrames&) {
+                              toggle(m_show_key_frames);
+                              if (!in_waypoints)
+                                  fit_view();
+                              return true;
+                          },
+                          [&](const command::Zoom&) { return !in_waypoints && zoom(); },
+                          [&](const command::ToggleGhost&) {
+                              toggle(m_show_ghost);
+                              m_notice = !m_show_ghost        ? "ghost hidden (O shows it)"
+                                         : m_picture->has_ghost() ? "ghost shown: the curve before the last change, dotted"
+                                                                 : "ghost shown after the next staff key or waypoint edit";
+                              return true;
+                          },
+                          [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
+                          [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
+                          [&](const command::ChoosePoint& choose) {
+                              if (!in_waypoints)
+                                  m_tangent_point = wrapped_point(m_tangent_point, choose.by, points().size());
+                              return !in_waypoints;
+                          },
+                          // Every other command is the mode's.
+                          [](const auto&) { return false; },
+                      },
+                      command);
+}
+
+PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)
+{
+    return std::visit(Overloaded{
+                          [&](const command::ChooseGlobal&) {
+                              m_log.log("global control");
+                              return Transition{start_staff(ControlRegion::whole(points()))};
+                          },
+                          [](const command::ChooseLocal&) { return Transition{RegionPick{}}; },
+                          [&](const command::OpenWaypoints&) { return Transition{open_waypoints()}; },
+                          [&](const command::Undo&) { return undo(); },
+                          // Check_GorL_Control waits for 8, 2 or W.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
+}
+
+PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Command& command)
+{
+    const std::size_t last_index = points().size() - 1;
+    const auto pick_last = [&](std::size_t first, std::size_t last) {
+        if (last < first) {
+            m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
+            return Transition{};
+        }
+        // Enter twice on one control point picks it alone: KB's per-key control.
+        m_problem.clear();
+        m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
+                                : "local control: control points " + std::to_string(first + 1) + " to " +
+                                      std::to_string(last + 1));
+        return Transition{start_staff({first, last})};
+    };
+    return std::visit(
+        Overloaded{
+            [&](const command::ArrowMove& move) {
+                // The arrow's first move, whichever way, brings it from the corner to the first point.
+                const auto target = pick.arrow ? static_cast<long long>(*pick.arrow) + move.points : 0LL;
+                pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
+                return Transition{};
+            },
+            [&](const command::Back&) {
+                m_problem.clear();
+                return pick.first ? Transition{RegionPick{pick.arrow, std::nullopt}} : Transition{ControlChoice{}};
+            },
+            [&](const command::Accept&) {
+                if (!pick.arrow) // Enter before the arrow has moved points at nothing.
+                    return Transition{};
+                if (pick.first)
+                    return pick_last(*pick.first, *pick.arrow);
+                m_problem.clear();
+                return Transition{RegionPick{pick.arrow, pick.arrow}};
+            },
+            [&](const command::Undo&) { return undo(); },
+            // The arrow waits for a move, Enter or Esc.
+            [](const auto&) { return Transition{}; },
+        },
+        command);
+}
+
+PathEditor::Staff PathEditor::start_staff(ControlRegion region)
+{
+    assert(region.first <= region.last && region.last < points().size());
+    m_picture->drop_ghost(); // a new region starts without one
+    Staff staff{region, points()[region.first].staff, StaffLine::tension, 0.0, std::nullopt};
+    staff.line_start_value = staff.staff[staff.line];
+    m_tangent_point = region.is_whole(points()) ? 1 : region.first;
+    return staff;
+}
+
+// Every value that changes a point is one change for undo; a key that changes nothing (a step
+// past the end of the line) is not.
+void PathEditor::set_staff_value(Staff& staff, double value)
+{
+    StaffEdit change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
+    staff.staff[staff.line] = snapped(value);
+    PathDocument::StaffSet set = m_document->set_staff(staff.region, staff.staff);
+    change.points_before = std::move(set.runs_before);
+    if (staff.staff == change.staff && !set.changed)
+        return;
+    const PathChange::What what =
+        runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
+    PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
+    std::vector<SegmentBeforeKey> before;
+    if (what == PathChange::What::staff)
+        before = segments_before_key(points(), m_setup.settings.slopes, staff.region, change.points_before);
+    m_document->record(std::move(change));
+    reevaluate_region(staff.region, what, std::move(back));
+    // An acceleration moves no segment.
+    if (what == PathChange::What::accelerations) {
+        m_moved = "only the in-betweens moved";
+        return;
+    }
+    m_move_unmeasured = std::move(before);
+    measure_move_when_refined();
+}
+
+// A key changes the staff values of a region: only the segments their tangents shape are sampled
+// again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
+// interactive).
+void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back)
+{
+    const std::size_t count = region.last - region.first + 1;
+    m_picture->refresh(PathChange{region.first, count, count, what}, std::move(back));
+}
+
+// Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
+PathEditor::Transition PathEditor::scan_parameters(Staff& staff, const Command& command)
+{
+    if (staff.field)
+        return update_value_field(staff, command);
+    return std::visit(Overloaded{
+                          [&](const command::StaffStep& step) {
+                              set_staff_value(staff, staff.staff[staff.line] + step.steps * m_setup.staff_step);
+                              return Transition{};
+                          },
+                          [&](const command::OpenValueField&) {
+                              staff.field.emplace();
+                              return Transition{};
+                          },
+                          [&](const command::Keep&) { return accept_staff_line(staff, LineEnding::kept); },
+                          [&](const command::Accept&) { return accept_staff_line(staff, LineEnding::accepted); },
+                          [&](const command::Undo&) { return undo(); },
+                          // The staff waits for a step, =, Enter or Esc.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
+}
+
+PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding ending)
+{
+    const bool kept = ending == LineEnding::kept;
+    if (kept) {
+        set_staff_value(staff, staff.line_start_value);
+        m_moved.clear(); // the next line is named, not how far going back moved the curve
+        m_move_unmeasured.reset();
+    }
+    m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
+              (kept ? " (kept)" : ""));
+    m_picture->drop_ghost(); // the ghost lasts until the next line
+    // A single control point starts no span of its own: its acceleration line is skipped.
+    const bool single_point = staff.region.first == staff.region.last;
+    if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
+        return Transition{AskAgain{staff.region, staff.staff}};
+    staff.line = next_staff_line(staff.line);
+    staff.line_start_value = staff.staff[staff.line];
+    return Transition{};
+}
+
+// "=": the typed value sets the line like keys would; the line stays active.
+PathEditor::Transition PathEditor::update_value_field(Staff& staff, const Command& command)
+{
+    const ValueField::Outcome outcome = staff.field->update(command);
+    if (outcome == ValueField::Outcome::editing)
+        return Transition{};
+    if (outcome == ValueField::Outcome::set) {
+        set_staff_value(staff, staff.field->value());
+        const std::string line(staff_line_name(staff.line));
+        m_log.log(line + " typed " + format_staff_value(staff.staff[staff.line]));
+        if (staff.field->clamped())
+            m_notice = line + " set to " + format_staff_value(staff.staff[staff.line]) + ": the staff runs from -1 to 1";
+    }
+    staff.field.reset();
+    return Transition{};
+}
+
+PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
+{
+    return std::visit(Overloaded{
+                          [&](const command::Yes&) {
+                              m_picture->drop_ghost();
+                              return Transition{ControlChoice{}};
+                          },
+                          [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
+                          [&](const command::Undo&) { return undo(); },
+                          // Ask_Adjusting waits for Y or N.
+                          [](const auto&) { return Transition{}; },
+                      },
+                      command);
+}
+
+PathEditor::Transition PathEditor::undo()
+{
+    if (m_document->edit_count() == 0) {
+        m_notice = "Nothing to undo: the path is as it was opened";
+        return Transition{};
+    }
+    const PathEdit change = m_document->last_edit();
+    m_document->drop_last_edit();
+    m_problem.clear();
+    Transition transition = std::visit([this](const auto& last) { return undo_change(last); }, change);
+    m_notice += "; " + changes_text(m_document->edit_count()) + " left to undo";
+    m_log.log(m_notice);
+    return transition;
+}
+
+// Back to the staff line the change was made on, with the staff as it was.
+PathEditor::Transition PathEditor::undo_change(const StaffEdit& change)
+{
+    const PathChange::What what = runs_change_shape(change.points_before, points()[change.region.first].staff)
+                                      ? PathChange::What::staff
+                                      : PathChange::What::accelerations;
+    PathPicture::PointsBack back = staff_runs_back(change.region, staff_runs(points(), change.region));
+    m_document->restore_staff(change.region, change.points_before);
+    reevaluate_region(change.region, what, std::move(back));
+    m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
+               format_staff_value(change.staff[change.line]);
+    return Transition{Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt}};
+}
+
+// A waypoint edit is undone at the choice of control, where the editor was opened.
+PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
+{
+    // The ghost: the path with the edit, as it was before U.
+    const PathChange changed = m_document->revert(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
+    const std::string point = "control point " + std::to_string(change.index + 1);
+    switch (change.kind) {
+    case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;
+    case WaypointChange::Kind::remove: m_notice = "Undone: the deletion of " + point; break;
+    case WaypointChange::Kind::move: m_notice = "Undone: the move of " + point; break;
+    }
+    m_tangent_point = std::min(m_tangent_point, points().size() - 1);
+    fit_view();
+    return Transition{ControlChoice{}};
+}
+
+PathEditor::Waypoints PathEditor::open_waypoints()
+{
+    m_log.log("waypoint editor");
+    const double step = waypoint_step(shown_scene(m_setup, points(), evaluated(), KeyFrames::shown).bounds());
+    return Waypoints{WaypointEditor(*m_document, *m_picture, {m_picture->view(), step})};
+}
+
+PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const Command& command)
+{
+    WaypointEditor& editor = waypoints.editor;
+    const std::size_t changes = editor.change_count();
+    const WaypointEditor::Outcome outcome = editor.update(command);
+    if (outcome == WaypointEditor::Outcome::editing)
+        return Transition{};
+    // Esc has taken the editor's changes back: the path is as it was when the editor opened.
+    if (outcome == WaypointEditor::Outcome::kept) {
+        m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(points().size()) +
+                   " control points";
+    } else {
+        m_notice = "Waypoints: " + changes_text(changes) + " undone";
+    }
+    m_log.log(m_notice);
+    m_tangent_point = std::min(m_tangent_point, points().size() - 1);
+    return Transition{ControlChoice{}};
+}
+
+std::optional<StaffValues> PathEditor::region_staff() const
+{
+    if (const auto* staff = std::get_if<Staff>(&m_mode))
+        return staff->staff;
+    if (const auto* asked = std::get_if<AskAgain>(&m_mode))
+        return asked->staff;
+    return std::nullopt;
+}
+
+} // namespace apcs

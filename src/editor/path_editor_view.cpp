@@ -1,0 +1,177 @@
+// What the path editor shows: the path screen of its step and the message line.
+#include "apcs/editor/path_editor.h"
+
+#include "apcs/base/overloaded.h"
+#include "apcs/screens/path_overlays.h"
+#include "apcs/screens/session_text.h"
+
+namespace apcs {
+
+namespace text = session_text;
+
+namespace {
+
+// The message line's text fits 79 columns (the 80th holds no text).
+constexpr std::size_t max_message_width = 79;
+
+} // namespace
+
+std::string PathEditor::message() const
+{
+    if (!m_problem.empty())
+        return m_problem;
+    if (const auto* staff = std::get_if<Staff>(&m_mode); staff != nullptr && staff->field)
+        return staff->field->message(staff_line_name(staff->line));
+    if (!m_notice.empty())
+        return m_notice;
+    return std::visit(
+        Overloaded{
+            [](const ControlChoice&) { return std::string(text::choose_control); },
+            [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
+            [&](const Staff& staff) {
+                const std::string shown = m_show_tangents ? tangent_numbers(evaluated().curve.segments, m_tangent_point)
+                                                          : staff_message(staff);
+                return with_move(shown, staff);
+            },
+            [](const Waypoints& waypoints) { return waypoints.editor.message(); },
+            [](const AskAgain&) { return std::string(text::ask_again); },
+        },
+        m_mode);
+}
+
+// After a staff key, how far it moved the curve (SPEC §7.2.1) follows what the line shows; when both
+// do not fit, the line's name and the move, unless frames freeze: that warning matters more.
+std::string PathEditor::with_move(const std::string& shown, const Staff& staff) const
+{
+    if (m_moved.empty())
+        return shown;
+    if (shown.size() + 2 + m_moved.size() <= max_message_width)
+        return shown + "  " + m_moved;
+    if (evaluated().frames_freeze())
+        return shown;
+    return m_setup.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
+}
+
+std::string PathEditor::staff_message(const Staff& staff) const
+{
+    const std::string line(staff_line_name(staff.line));
+    // A path of two control points has no interior one, where t, c and b act: say so, or the
+    // animator sees nothing move and cannot tell why.
+    if (points().size() == 2 && staff.line != StaffLine::acceleration)
+        return line + std::string(text::no_interior_points);
+    std::string message = m_setup.path_name + ": " + line;
+    // The frames that freeze matter more than the region, whose marks the picture shows: the two
+    // do not fit one 79-column line together.
+    if (evaluated().frames_freeze())
+        return message + "  " + std::string(text::frames_freeze) + " at " + describe_frozen_frames(evaluated(), 1);
+    const std::string of = " of " + std::to_string(points().size());
+    const ControlRegion& region = staff.region;
+    if (region.first == region.last)
+        message += "  control point " + std::to_string(region.first + 1) + of + " (no span, no ACCELERATION)";
+    else
+        message += "  control points " + std::to_string(region.first + 1) + " to " + std::to_string(region.last + 1) + of;
+    return message;
+}
+
+PathEditor::Look PathEditor::look() const
+{
+    const PathScreenContent content = screen_content();
+    return Look{m_document->revision(),
+                m_picture->revision(),
+                phase(),
+                key_context(),
+                content.message,
+                region_staff(),
+                content.active_line,
+                content.arrow_at,
+                law_point(),
+                m_tangent_point,
+                m_zoom_level,
+                {m_show_key_frames, m_show_ghost, m_show_tangents, m_show_law}};
+}
+
+// The span whose law G shows: the region's, the arrow's while picking, the chosen waypoint's.
+std::size_t PathEditor::law_point() const
+{
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) -> std::size_t { return 0; },
+                          [](const RegionPick& pick) { return pick.arrow.value_or(0); },
+                          [](const Staff& staff) { return staff.region.first; },
+                          [](const Waypoints& waypoints) { return waypoints.editor.chosen(); },
+                          [](const AskAgain& ask) { return ask.region.first; },
+                      },
+                      m_mode);
+}
+
+// The region boxed: the one adjusted, or its first point while the last is picked.
+std::optional<ControlRegion> PathEditor::picked_region() const
+{
+    return std::visit(Overloaded{
+                          [](const ControlChoice&) -> std::optional<ControlRegion> { return std::nullopt; },
+                          [](const RegionPick& pick) -> std::optional<ControlRegion> {
+                              if (!pick.first)
+                                  return std::nullopt;
+                              return ControlRegion{*pick.first, *pick.first};
+                          },
+                          [](const Staff& staff) -> std::optional<ControlRegion> {
+                              return staff.region;
+                          },
+                          [](const Waypoints&) -> std::optional<ControlRegion> { return std::nullopt; },
+                          [](const AskAgain& ask) -> std::optional<ControlRegion> {
+                              return ask.region;
+                          },
+                      },
+                      m_mode);
+}
+
+PathScreenContent PathEditor::screen_content() const
+{
+    if (const auto* waypoints = std::get_if<Waypoints>(&m_mode)) {
+        const WaypointEditor& editor = waypoints->editor;
+        PathScreenContent content = path_screen_content(points(), evaluated());
+        content.record_strokes = false;
+        content.region = ControlRegion{editor.chosen(), editor.chosen()};
+        content.arrow_at = editor.chosen();
+        content.message = editor.message();
+        return content;
+    }
+    PathScreenContent content = path_screen_content(points(), evaluated());
+    content.record_strokes = false;
+    content.region = picked_region();
+    std::visit(Overloaded{
+                   [](const ControlChoice&) {},
+                   [&](const RegionPick& pick) {
+                       content.arrow_at = pick.arrow;
+                       content.arrow_home = !pick.arrow.has_value();
+                   },
+                   [&](const Staff& staff) {
+                       content.staff = staff.staff;
+                       content.active_line = staff.line;
+                   },
+                   [](const Waypoints&) {},
+                   [&](const AskAgain& ask) { content.staff = ask.staff; },
+               },
+               m_mode);
+    content.message = message();
+    return content;
+}
+
+GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
+{
+    PathScreenContent content = screen_content();
+    content.goal_point = goal_point;
+    // A first picture says it is one (its in-betweens are not drawn); a problem matters more.
+    if (m_problem.empty() && m_picture->refining())
+        content.message = m_picture->refining_message();
+    if (m_show_key_frames)
+        content.key_frame_polylines = m_setup.key_frame_polylines;
+    content.ghost = m_show_ghost;
+    if (m_show_tangents)
+        content.tangent_scale = m_tangent_scale;
+    if (m_show_law)
+        content.law_span = span_of_point(*content.path, law_point());
+    content.key_help = key_help(key_context());
+    return m_picture->draw(content);
+}
+
+} // namespace apcs

@@ -1,0 +1,165 @@
+#include "apcs/editor/path_picture.h"
+
+#include "apcs/raster/screen_layout.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace apcs {
+
+PathPicture::PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement)
+    : m_document(&document)
+    , m_document_revision(document.revision())
+    , m_settings(settings)
+    , m_refinement(refinement)
+{
+    evaluate_path(points(), settings, m_evaluated, refinement.when);
+    refine_if_quick();
+}
+
+void PathPicture::refresh(const PathChange& change, PointsBack back)
+{
+    if (m_curve.drawn()) {
+        m_ghost = m_curve.pixels();
+        m_ghost_back = std::move(back);
+    } else if (m_ghost && m_ghost_back) {
+        // While the curve is drawn in steps the ghost kept before stays (the last curve drawn
+        // whole): its path is now two changes back.
+        m_ghost_back = [this_change = std::move(back), earlier = std::move(m_ghost_back)](ControlPoints& ghost_points) {
+            this_change(ghost_points);
+            earlier(ghost_points);
+        };
+    }
+    remake(change);
+}
+
+void PathPicture::refresh(const PathChange& change)
+{
+    drop_ghost();
+    remake(change);
+}
+
+void PathPicture::remake(const PathChange& change)
+{
+    m_document_revision = m_document->revision();
+    ++m_revision;
+    // A change of a step's segments or fewer (a local key, an acceleration, a waypoint edit) on a
+    // refined path is evaluated at once: its first picture is its final one.
+    const std::size_t segments =
+        change.what == PathChange::What::accelerations ? 0 : std::max(change.removed, change.inserted) + 3;
+    const bool quick = segments <= m_refinement.segments_a_step && m_evaluated.inbetweens_current;
+    const Refinement when = quick ? Refinement::at_once : m_refinement.when;
+    m_curve.splice(reevaluate_path(points(), m_settings, m_evaluated, change, when));
+    refine_if_quick();
+    if (!m_view)
+        return;
+    draw_curve();
+    if (change.what != PathChange::What::positions)
+        return;
+    update_control_point_runs(m_point_runs, points(), *m_view, change);
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+// Arc lengths left of no more than a step's segments (a path that short, or a local change over
+// one that was) are measured at once; a global change's all wait for the steps.
+void PathPicture::refine_if_quick()
+{
+    if (m_evaluated.segments_unmade.empty() && m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
+        refine_path(points(), m_settings, m_evaluated, m_refinement.segments_a_step);
+}
+
+bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }
+
+// The segments first, and the blocks they complete drawn; then the rest of the curve (the
+// picture); then the arc lengths.
+void PathPicture::refine_step()
+{
+    ++m_revision;
+    if (!m_evaluated.segments_unmade.empty()) {
+        refine_path(points(), m_settings, m_evaluated, m_refinement.segments_made_a_step);
+        if (m_view)
+            draw_curve();
+    } else if (m_view && !m_curve.drawn()) {
+        draw_curve();
+    } else {
+        refine_path(points(), m_settings, m_evaluated, m_refinement.segments_a_step);
+    }
+}
+
+void PathPicture::refine()
+{
+    if (refining())
+        ++m_revision;
+    while (!refine_path(points(), m_settings, m_evaluated, std::numeric_limits<std::size_t>::max()))
+        ;
+    if (m_view && !m_curve.drawn())
+        m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
+}
+
+std::string PathPicture::refining_message() const
+{
+    if (m_view && !m_curve.drawn())
+        return "drawing the curve: " + std::to_string(m_curve.blocks_drawn()) + " of " +
+               std::to_string(m_curve.block_count()) + " blocks (keys are taken meanwhile)";
+    if (!m_evaluated.inbetweens_current)
+        return "measuring arc lengths for exact spacing: in-betweens shown when done";
+    return {};
+}
+
+void PathPicture::set_view(const ViewTransform& view)
+{
+    ++m_revision;
+    m_view = view;
+    m_point_runs = control_point_runs(points(), *m_view);
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+    draw_curve();
+    draw_ghost();
+}
+
+// The ghost's pixels in this view, from its path: the points now taken back over the last change.
+void PathPicture::draw_ghost()
+{
+    if (!m_ghost || !m_ghost_back)
+        return;
+    ControlPoints before = points();
+    m_ghost_back(before);
+    // Only the curve is drawn: no in-betweens, so no arc lengths (seconds on 10^6 points).
+    PathSettings curve_only = m_settings;
+    curve_only.inbetween_count = 0;
+    curve_only.spacing = Spacing::nearest;
+    CurveRaster ghost;
+    ghost.update(evaluate_path(before, curve_only).curve, *m_view, layout::inside_boundary);
+    m_ghost = ghost.pixels();
+}
+
+void PathPicture::drop_ghost()
+{
+    if (m_ghost)
+        ++m_revision;
+    m_ghost.reset();
+    m_ghost_back = nullptr;
+}
+
+void PathPicture::box_region(std::optional<ControlRegion> region)
+{
+    if (region == m_region)
+        return;
+    ++m_revision;
+    m_region = region;
+    m_point_marks = control_point_marks(m_point_runs, m_region);
+}
+
+void PathPicture::draw_curve()
+{
+    m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary,
+                   m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step,
+                   m_evaluated.segments_unmade);
+}
+
+GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
+{
+    const Bitmap* ghost = content.ghost && m_ghost ? &*m_ghost : nullptr;
+    return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks, ghost});
+}
+
+} // namespace apcs

@@ -1,0 +1,179 @@
+#include "apcs/editor/waypoint_editor.h"
+
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/base/overloaded.h"
+#include "apcs/raster/screen_layout.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace apcs {
+
+WaypointEditor::WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup)
+    : m_document(&document)
+    , m_picture(&picture)
+    , m_setup(setup)
+    , m_first_edit(document.edit_count())
+{
+    assert(points().size() >= 2);
+    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
+}
+
+WaypointEditor::Outcome WaypointEditor::update(const Command& command)
+{
+    const Outcome outcome = take_command(command);
+    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
+    return outcome;
+}
+
+WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
+{
+    m_problem.clear();
+    m_notice.clear();
+    const auto editing = [](auto&& edit) {
+        edit();
+        return Outcome::editing;
+    };
+    return std::visit(
+        Overloaded{
+            [&](const command::ChoosePoint& choose) {
+                return editing([&] { m_chosen = wrapped_point(m_chosen, choose.by, points().size()); });
+            },
+            [&](const command::MovePoint& move) { return editing([&] { move_point(move); }); },
+            [&](const command::InsertPoint&) { return editing([&] { insert_point(); }); },
+            [&](const command::DeletePoint&) { return editing([&] { delete_point(); }); },
+            [&](const command::Undo&) { return editing([&] { undo(); }); },
+            [&](const command::Zoom&) { return editing([&] { zoom(); }); },
+            [](const command::Accept&) { return Outcome::kept; },
+            [&](const command::Back&) { return discard(); },
+            // The editor waits for Tab, a move, I, D, U, Z, Enter or Esc.
+            [](const auto&) { return Outcome::editing; },
+        },
+        command);
+}
+
+WaypointEditor::Outcome WaypointEditor::discard()
+{
+    while (change_count() > 0)
+        revert_last();
+    return Outcome::discarded;
+}
+
+void WaypointEditor::apply(const WaypointChange& change)
+{
+    // SPEC §7.2.1: the curve before the edit stays, dotted.
+    const PathChange changed = m_document->apply(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { revert_change(points, change); });
+    m_document->record(change);
+}
+
+void WaypointEditor::revert_last()
+{
+    const WaypointChange change = std::get<WaypointChange>(m_document->last_edit());
+    m_document->drop_last_edit();
+    const PathChange changed = m_document->revert(change);
+    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
+    m_chosen = std::min(change.index, points().size() - 1);
+}
+
+bool WaypointEditor::is_key_frame_point(std::size_t index)
+{
+    const bool first = index == 0;
+    if (!first && index + 1 != points().size())
+        return false;
+    m_problem = "Control point " + std::to_string(index + 1) + " is " + (first ? "KEY1" : "KEY2") +
+                "'s point: it is never moved or deleted";
+    return true;
+}
+
+// Halfway to the neighbour after the chosen point, or before it when the last is chosen.
+void WaypointEditor::insert_point()
+{
+    const bool last = m_chosen + 1 == points().size();
+    const std::size_t from = last ? m_chosen - 1 : m_chosen;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::insert;
+    change.index = from + 1;
+    // The segment from the points, as the curve makes it (the curve's own may wait for a refinement).
+    const HermiteSegment segment = kb_segment(points(), m_picture->settings().slopes, from);
+    change.point = {halfway_along(std::span(&segment, 1), 0), points()[m_chosen].staff};
+    apply(change);
+    m_chosen = change.index;
+}
+
+void WaypointEditor::delete_point()
+{
+    if (is_key_frame_point(m_chosen))
+        return;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::remove;
+    change.index = m_chosen;
+    change.point = points()[m_chosen];
+    change.origin = origins()[m_chosen];
+    apply(change);
+    m_chosen = std::min(m_chosen, points().size() - 2);
+}
+
+void WaypointEditor::move_point(const command::MovePoint& move)
+{
+    if (is_key_frame_point(m_chosen))
+        return;
+    const ViewTransform& view = m_setup.view;
+    WaypointChange change;
+    change.kind = WaypointChange::Kind::move;
+    change.index = m_chosen;
+    change.offset = m_setup.step * (move.right * view.screen_right() + move.up * view.screen_up() +
+                                    move.toward * view.toward_viewer());
+    apply(change);
+}
+
+void WaypointEditor::undo()
+{
+    if (change_count() == 0) {
+        m_problem = "Nothing to undo in the waypoint editor";
+        return;
+    }
+    revert_last();
+}
+
+void WaypointEditor::zoom()
+{
+    m_zoom_level = next_zoom_level(m_zoom_level);
+    const int factor = 1 << m_zoom_level;
+    const Vec3 about = points()[m_chosen].position;
+    m_picture->set_view(m_zoom_level == 0 ? m_setup.view : m_setup.view.zoomed(factor, about, layout::view_area));
+    m_notice = m_zoom_level == 0 ? "zoom off: the view the editor opened with"
+                                 : "zoom ×" + std::to_string(factor) + " about control point " +
+                                       std::to_string(m_chosen + 1) + " (Z: more)";
+}
+
+std::string WaypointEditor::message() const
+{
+    if (!m_problem.empty())
+        return m_problem;
+    if (!m_notice.empty())
+        return m_notice;
+    const Vec3 from_centre = points()[m_chosen].position - m_setup.view.centre();
+    const double depth = dot(from_centre, m_setup.view.toward_viewer());
+    return "control point " + std::to_string(m_chosen + 1) + " of " + std::to_string(points().size()) +
+           "  depth " + format_staff_value(depth);
+}
+
+double waypoint_step(const BoundingBox& shown)
+{
+    const double diagonal = shown.empty() ? 0.0 : length(shown.high() - shown.low());
+    // A scene that is one point still needs a step that moves something.
+    return diagonal > 0.0 ? diagonal / 100.0 : 0.01;
+}
+
+Vec3 halfway_along(std::span<const HermiteSegment> segments, std::size_t from)
+{
+    assert(from < segments.size());
+    const ArcLengthTable table(segments.subspan(from, 1));
+    return table.point_at(table.parameter_at(table.total_length() / 2.0));
+}
+
+} // namespace apcs

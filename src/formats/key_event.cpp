@@ -1,0 +1,251 @@
+#include "apcs/formats/key_event.h"
+
+#include "apcs/base/utf8.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
+#include "apcs/formats/text_lines.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace apcs {
+
+namespace {
+
+// What a script line's token may be, for its error text: "a single printable character or ENTER,
+// ESC, …" in the order of the physical keys.
+std::string expected_token()
+{
+    std::string expected = "expected a single printable character or ";
+    for (const PhysicalKey& row : physical_keys)
+        expected += std::string(row.script_name) + (&row == &physical_keys.back() ? "" : ", ");
+    return expected;
+}
+
+// The key a token names: a physical key's script name or a single printable character.
+std::optional<KeyEvent> key_of_token(std::string_view token)
+{
+    for (const PhysicalKey& row : physical_keys)
+        if (token == row.script_name)
+            return KeyEvent::of(row.key);
+    const std::u32string characters = decode_utf8(token);
+    if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD)
+        return std::nullopt;
+    return KeyEvent::typed(characters[0]);
+}
+
+// The caption of a line's comment, if it starts with ";;": its text without the marks and the
+// blanks around it.
+std::optional<std::string> caption_of(std::string_view comment)
+{
+    if (!comment.starts_with(";;"))
+        return std::nullopt;
+    comment.remove_prefix(2);
+    const std::size_t first = comment.find_first_not_of(" \t");
+    if (first == std::string_view::npos)
+        return std::string();
+    const std::size_t last = comment.find_last_not_of(" \t");
+    return std::string(comment.substr(first, last - first + 1));
+}
+
+// How many terminal columns `text` takes on the caption row (put_text leaves control characters out).
+int caption_columns(std::string_view text)
+{
+    int columns = 0;
+    for (const char32_t character : decode_utf8(text))
+        columns += std::max(cell_width(character), 0);
+    return columns;
+}
+
+// The caption of a comment, checked against the caption row's width.
+Expected<std::optional<std::string>> checked_caption(std::string_view comment, const std::string& file_name,
+                                                     int line_number)
+{
+    std::optional<std::string> caption = caption_of(comment);
+    if (caption && caption_columns(*caption) > max_caption_columns)
+        return Diagnostic{file_name, line_number,
+                          "expected a caption of at most " + std::to_string(max_caption_columns) +
+                              " columns (the key-hint row of the 80x24 screen); found " +
+                              std::to_string(caption_columns(*caption))};
+    return caption;
+}
+
+// A TEXT line's keys: its characters, a space as the Space key.
+void type_line(std::string_view typed, std::vector<KeyEvent>& events, std::vector<TypedLine>* typed_lines)
+{
+    const std::size_t first = events.size();
+    for (const char32_t character : decode_utf8(typed))
+        events.push_back(character == U' ' ? KeyEvent::of(Key::space) : KeyEvent::typed(character));
+    if (typed_lines != nullptr && events.size() > first)
+        typed_lines->push_back({first, events.size() - first});
+}
+
+// The goals whose answers are still open end before event `end`: a caption, a GOAL line or the
+// script's end closes them.
+// `open` is the first goal not yet closed; afterwards, none is open.
+void end_answers(KeyScript& script, std::size_t& open, std::size_t end)
+{
+    for (; open < script.goals.size(); ++open)
+        script.goals[open].answer_end = end;
+}
+
+// The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
+Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
+{
+    // Every event takes at least one byte of the script: one allocation, never a doubling.
+    std::vector<KeyEvent> events;
+    events.reserve(text.size());
+    if (Expected<void> ended = cut_at_end_of_file(text, file_name); !ended)
+        return ended.error();
+    std::optional<Diagnostic> problem;
+    int line_number = 0;
+    std::size_t open_goal = 0; // the first goal whose answer has not ended
+    while (!text.empty()) {
+        ++line_number;
+        std::string_view line = take_line(text);
+        if (line.starts_with("TEXT ")) {
+            type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
+            continue;
+        }
+        if (line.starts_with("GOAL ")) {
+            Expected<ScriptGoal> goal = parse_goal_line(line.substr(5), file_name, line_number);
+            if (!goal)
+                return goal.error();
+            if (kept != nullptr) {
+                end_answers(*kept, open_goal, events.size());
+                goal->before_event = goal->answer_end = events.size();
+                kept->goals.push_back(*goal);
+            }
+            continue;
+        }
+        const std::size_t comment = line.find(';');
+        const Expected<std::optional<std::string>> caption =
+            comment == std::string_view::npos ? Expected<std::optional<std::string>>(std::nullopt)
+                                              : checked_caption(line.substr(comment), file_name, line_number);
+        if (!caption)
+            return caption.error();
+        line = line.substr(0, comment);
+        for_each_field(line, [&](std::string_view token) {
+            if (problem)
+                return;
+            if (const std::optional<KeyEvent> event = key_of_token(token))
+                events.push_back(*event);
+            else
+                problem = Diagnostic{file_name, line_number, expected_token() + "; found " + quote_field(token)};
+        });
+        if (problem)
+            return *problem;
+        if (*caption && kept != nullptr) {
+            end_answers(*kept, open_goal, events.size());
+            kept->captions.push_back({events.size(), **caption});
+        }
+    }
+    if (kept != nullptr)
+        end_answers(*kept, open_goal, events.size());
+    // Keys named by words (ENTER) take many bytes each: give back what they left unused.
+    if (events.size() < events.capacity() / 2)
+        events.shrink_to_fit();
+    return events;
+}
+
+// The typed text `pending_text` as a script's TEXT line, emptying it. A TEXT line may not end in a
+// space that an editor could strip, so its trailing spaces follow as SPACE tokens.
+std::string take_text_line(std::string& pending_text)
+{
+    std::string trailing_spaces;
+    while (pending_text.ends_with(' ')) {
+        pending_text.pop_back();
+        trailing_spaces += "SPACE\n";
+    }
+    std::string lines = pending_text.empty() ? std::string() : "TEXT " + pending_text + "\n";
+    pending_text.clear();
+    return lines + trailing_spaces;
+}
+
+// The TEXT line whose keys start at event `first`, if one does.
+const TypedLine* typed_line_at(const KeyScript& script, std::size_t first)
+{
+    const auto typed = std::lower_bound(
+        script.typed_lines.begin(), script.typed_lines.end(), first,
+        [](const TypedLine& line, std::size_t event) { return line.first_event < event; });
+    return typed != script.typed_lines.end() && typed->first_event == first ? &*typed : nullptr;
+}
+
+} // namespace
+
+Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
+{
+    return parse_script(text, file_name, nullptr);
+}
+
+Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name)
+{
+    KeyScript script;
+    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script);
+    if (!events)
+        return events.error();
+    script.events = std::move(*events);
+    return script;
+}
+
+const ScriptCaption* caption_at(const KeyScript& script, std::size_t played)
+{
+    const ScriptCaption* shown = nullptr;
+    for (const ScriptCaption& caption : script.captions)
+        if (caption.before_event <= played)
+            shown = &caption;
+    return shown;
+}
+
+std::size_t step_length(const KeyScript& script, std::size_t first)
+{
+    if (first >= script.events.size())
+        return 0;
+    const TypedLine* typed = typed_line_at(script, first);
+    return typed == nullptr ? 1 : typed->event_count;
+}
+
+std::string step_label(const KeyScript& script, std::size_t first)
+{
+    if (first >= script.events.size())
+        return {};
+    if (const TypedLine* typed = typed_line_at(script, first)) {
+        std::string label = "TEXT ";
+        for (std::size_t event = first; event < first + typed->event_count; ++event)
+            append_utf8(label, script.events[event].key == Key::space ? U' ' : script.events[event].character);
+        return label;
+    }
+    const KeyEvent& event = script.events[first];
+    if (event.key == Key::character) {
+        std::string label;
+        append_utf8(label, event.character);
+        return label;
+    }
+    const PhysicalKey* row = find_physical_key(event.key);
+    return row == nullptr ? std::string() : std::string(row->script_name);
+}
+
+std::string format_key_script(const std::vector<KeyEvent>& events)
+{
+    std::string script;
+    std::string pending_text;
+    for (const KeyEvent& event : events) {
+        // Text keeps its spaces inside a TEXT line.
+        if (event.key == Key::character && event.character != U';') {
+            append_utf8(pending_text, event.character);
+            continue;
+        }
+        if (event.key == Key::space && !pending_text.empty()) {
+            pending_text += ' ';
+            continue;
+        }
+        script += take_text_line(pending_text);
+        if (event.key == Key::character)
+            script += "TEXT ;\n";
+        else if (const PhysicalKey* row = find_physical_key(event.key))
+            script += std::string(row->script_name) + "\n";
+    }
+    return script + take_text_line(pending_text);
+}
+
+} // namespace apcs

@@ -1,0 +1,153 @@
+#include "apcs/formats/script_goal.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+std::vector<std::string_view> words_of(std::string_view text)
+{
+    std::vector<std::string_view> words;
+    while (true) {
+        const std::size_t first = text.find_first_not_of(" \t");
+        if (first == std::string_view::npos)
+            return words;
+        text.remove_prefix(first);
+        const std::size_t end = std::min(text.find_first_of(" \t"), text.size());
+        words.push_back(text.substr(0, end));
+        text.remove_prefix(end);
+    }
+}
+
+std::optional<double> number_of(std::string_view word)
+{
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+    if (error != std::errc() || end != word.data() + word.size() || !std::isfinite(value))
+        return std::nullopt;
+    return value;
+}
+
+std::string upper(std::string_view word)
+{
+    std::string text(word);
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::toupper(c); });
+    return text;
+}
+
+std::string lower(std::string_view word)
+{
+    std::string text(word);
+    std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+    return text;
+}
+
+std::optional<StaffLine> staff_line_of(std::string_view word)
+{
+    for (const StaffLine line : staff_lines)
+        if (upper(word) == staff_line_name(line))
+            return line;
+    return std::nullopt;
+}
+
+// The numbers of `words` from `first` on, or nullopt when one is not a number.
+std::optional<std::vector<double>> numbers_of(const std::vector<std::string_view>& words, std::size_t first)
+{
+    std::vector<double> numbers;
+    for (std::size_t index = first; index < words.size(); ++index) {
+        const std::optional<double> number = number_of(words[index]);
+        if (!number)
+            return std::nullopt;
+        numbers.push_back(*number);
+    }
+    return numbers;
+}
+
+// The goal the words name, or why not.
+Expected<ScriptGoal> goal_of(const std::vector<std::string_view>& words)
+{
+    const std::string kind = words.empty() ? std::string() : upper(words[0]);
+    ScriptGoal goal;
+    if (kind == "VALUE") {
+        const std::optional<StaffLine> line = words.size() > 1 ? staff_line_of(words[1]) : std::nullopt;
+        const std::optional<std::vector<double>> range = numbers_of(words, 2);
+        if (words.size() != 4 || !line || !range || (*range)[0] > (*range)[1])
+            return Diagnostic{"", 0, "a staff line's name and LO <= HI after VALUE"};
+        goal.line = *line;
+        goal.low = (*range)[0];
+        goal.high = (*range)[1];
+        return goal;
+    }
+    const std::size_t point_at = kind == "INBETWEEN" ? 2 : 1;
+    const std::optional<std::vector<double>> numbers = numbers_of(words, point_at);
+    if ((kind != "NEAR" && kind != "INBETWEEN") || words.size() != point_at + 4 || !numbers || (*numbers)[3] <= 0)
+        return Diagnostic{"", 0, "a point X Y Z and a distance D > 0"};
+    goal.kind = kind == "NEAR" ? ScriptGoal::Kind::near : ScriptGoal::Kind::inbetween;
+    goal.point = {(*numbers)[0], (*numbers)[1], (*numbers)[2]};
+    goal.within = (*numbers)[3];
+    if (goal.kind == ScriptGoal::Kind::inbetween) {
+        const std::optional<double> number = number_of(words[1]);
+        if (!number || *number < 1 || *number != std::floor(*number) || *number > 1e6)
+            return Diagnostic{"", 0, "an in-between's number K from 1 after INBETWEEN"};
+        goal.inbetween = static_cast<std::size_t>(*number);
+    }
+    return goal;
+}
+
+std::string signed_value(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%+.2f", value);
+    return text;
+}
+
+std::string point_text(const Vec3& point)
+{
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", point.x, point.y, point.z);
+    return text;
+}
+
+} // namespace
+
+Expected<ScriptGoal> parse_goal_line(std::string_view words, const std::string& file_name, int line_number)
+{
+    Expected<ScriptGoal> goal = goal_of(words_of(words.substr(0, words.find(';'))));
+    if (!goal)
+        return Diagnostic{file_name, line_number,
+                          "expected GOAL VALUE NAME LO HI, GOAL NEAR X Y Z D or GOAL INBETWEEN K X Y Z D (" +
+                              goal.error().message + "); found 'GOAL " + std::string(words) + "'"};
+    goal->line_number = line_number;
+    return goal;
+}
+
+std::string goal_text(const ScriptGoal& goal)
+{
+    char within[32];
+    std::snprintf(within, sizeof within, "%.2f", goal.within);
+    switch (goal.kind) {
+    case ScriptGoal::Kind::value:
+        return lower(staff_line_name(goal.line)) + " within " + signed_value(goal.low) + " to " +
+               signed_value(goal.high);
+    case ScriptGoal::Kind::near: return "the curve within " + std::string(within) + " of " + point_text(goal.point);
+    case ScriptGoal::Kind::inbetween:
+        return "in-between " + std::to_string(goal.inbetween) + " within " + within + " of " + point_text(goal.point);
+    }
+    return {};
+}
+
+std::optional<Vec3> goal_point(const ScriptGoal& goal)
+{
+    if (goal.kind == ScriptGoal::Kind::value)
+        return std::nullopt;
+    return goal.point;
+}
+
+} // namespace apcs

@@ -1,0 +1,54 @@
+#include "apcs/input/overlays.h"
+
+#include "apcs/base/overloaded.h"
+#include "apcs/screens/session_text.h"
+
+namespace apcs {
+
+KeyContext Overlays::key_context(KeyContext step) const
+{
+    if (!m_open)
+        return step;
+    return std::holds_alternative<overlay::QuitQuestion>(*m_open) ? KeyContext::quit_question : KeyContext::help_screen;
+}
+
+const overlay::HelpScreen* Overlays::help() const
+{
+    return m_open ? std::get_if<overlay::HelpScreen>(&*m_open) : nullptr;
+}
+
+const overlay::QuitQuestion* Overlays::quit_question() const
+{
+    return m_open ? std::get_if<overlay::QuitQuestion>(&*m_open) : nullptr;
+}
+
+OverlayAnswer Overlays::handle(KeyContext context, const Command& command, const OverlayStep& step)
+{
+    if (m_open)
+        return answer_open(command);
+    return std::visit(Overloaded{[&](const command::ShowHelp&) {
+                                     open_help(context, step.empty_answer);
+                                     return OverlayAnswer::handled;
+                                 },
+                                 [](const command::SavePicture&) { return OverlayAnswer::save_picture; },
+                                 [&](const command::Quit&) {
+                                     if (step.quit == QuitAsks::at_once)
+                                         return OverlayAnswer::quit;
+                                     ask_quit(session_text::quit_question);
+                                     return OverlayAnswer::handled;
+                                 },
+                                 // Every other command is the step's: the overlays take only these three.
+                                 [](const auto&) { return OverlayAnswer::step_command; }},
+                      command);
+}
+
+// Any key closes the help screen; the quit question quits on Y alone (the key map lets only Y, N,
+// Enter and Esc through to it).
+OverlayAnswer Overlays::answer_open(const Command& command)
+{
+    const bool quitting = asking_quit() && std::holds_alternative<command::Yes>(command);
+    m_open.reset();
+    return quitting ? OverlayAnswer::quit : OverlayAnswer::handled;
+}
+
+} // namespace apcs

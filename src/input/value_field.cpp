@@ -1,0 +1,73 @@
+#include "apcs/input/value_field.h"
+
+#include "apcs/animation/input_limits.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/raster/cell_grid.h"
+#include "apcs/base/overloaded.h"
+
+#include <cmath>
+
+namespace apcs {
+
+namespace {
+
+// Backspace takes the last character, not its last byte.
+void erase_last_character(std::string& text)
+{
+    while (!text.empty() && (static_cast<unsigned char>(text.back()) & 0xC0) == 0x80)
+        text.pop_back();
+    if (!text.empty())
+        text.pop_back();
+}
+
+// Wider than any number worth typing; the message line stays one line.
+constexpr std::size_t longest_text = 24;
+
+} // namespace
+
+ValueField::Outcome ValueField::update(const Command& command)
+{
+    return std::visit(Overloaded{
+                          [&](const command::TypeCharacter& typed) {
+                              m_problem.clear();
+                              if (m_text.size() < longest_text)
+                                  append_utf8(m_text, typed.character);
+                              return Outcome::editing;
+                          },
+                          [&](const command::EraseCharacter&) {
+                              m_problem.clear();
+                              erase_last_character(m_text);
+                              return Outcome::editing;
+                          },
+                          [](const command::ClearLine&) { return Outcome::closed; },
+                          [&](const command::SubmitLine&) { return submit(); },
+                          // The field takes text keys only.
+                          [](const auto&) { return Outcome::editing; },
+                      },
+                      command);
+}
+
+ValueField::Outcome ValueField::submit()
+{
+    if (m_text.empty()) {
+        m_problem = "Type a value from -1 to 1 first, then Enter (Esc closes the field)";
+        return Outcome::editing;
+    }
+    const std::optional<double> number = parse_number(m_text);
+    if (!number || !std::isfinite(*number)) {
+        m_problem = "'" + m_text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
+        return Outcome::editing;
+    }
+    m_value = limits::staff_value.clamp(*number);
+    m_clamped = m_value != *number;
+    return Outcome::set;
+}
+
+std::string ValueField::message(std::string_view line_name) const
+{
+    if (!m_problem.empty())
+        return m_problem;
+    return std::string(line_name) + " = " + m_text + "_  a value from -1 to 1, Enter sets it";
+}
+
+} // namespace apcs

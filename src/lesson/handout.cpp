@@ -1,0 +1,79 @@
+#include "apcs/lesson/handout.h"
+
+#include <cstdio>
+
+namespace apcs {
+
+namespace {
+
+// A letter or digit of ASCII, lowercased; '\0' for anything else.
+char name_character(char character)
+{
+    if (character >= 'A' && character <= 'Z')
+        return static_cast<char>(character - 'A' + 'a');
+    const bool kept = (character >= 'a' && character <= 'z') || (character >= '0' && character <= '9');
+    return kept ? character : '\0';
+}
+
+} // namespace
+
+std::string handout_step_name(std::string_view caption)
+{
+    std::string name;
+    bool separated = false;
+    for (const char character : caption) {
+        const char kept = name_character(character);
+        if (kept == '\0') {
+            separated = !name.empty();
+            continue;
+        }
+        if (separated)
+            name += '-';
+        name += kept;
+        separated = false;
+    }
+    if (name.empty())
+        return "caption";
+    if (name.size() <= max_step_name_length)
+        return name;
+    // The last whole word that fits: the '-' at or before the limit (a '-' right at it ends a word).
+    const std::size_t cut = name.rfind('-', max_step_name_length);
+    return name.substr(0, cut == std::string::npos || cut == 0 ? max_step_name_length : cut);
+}
+
+std::string handout_file_stem(int number, std::string_view caption)
+{
+    char digits[16];
+    std::snprintf(digits, sizeof digits, "%02d-", number);
+    return digits + handout_step_name(caption);
+}
+
+std::string screen_text(const SessionScreen& screen, GlyphSet glyphs)
+{
+    const CellGrid grid = screen.graphics
+                              ? render_cells(screen.picture, {text_screen_columns, text_screen_rows}, glyphs)
+                              : screen.text;
+    std::string text;
+    for (int row = 0; row < grid.rows(); ++row) {
+        std::string line = grid.row_text(row);
+        line.erase(line.find_last_not_of(' ') + 1);
+        text += line + '\n';
+    }
+    return text;
+}
+
+GraphicsScreen screen_picture(const SessionScreen& screen)
+{
+    if (screen.graphics)
+        return screen.picture;
+    GraphicsScreen picture;
+    for (int row = 0; row < screen.text.rows(); ++row) {
+        std::string line = screen.text.row_text(row);
+        line.erase(line.find_last_not_of(' ') + 1);
+        if (!line.empty())
+            picture.text.push_back({0, row, line, screen.text.style_at(0, row)});
+    }
+    return picture;
+}
+
+} // namespace apcs

@@ -1,0 +1,249 @@
+#include "apcs/lesson/replay_driver.h"
+
+#include "apcs/lesson/goal_check.h"
+#include "apcs/raster/replay_caption.h"
+
+#include <utility>
+
+namespace apcs {
+
+ReplayDriver::ReplayDriver(Session& session, const KeyScript& script, std::string script_name, ReplayPace pace,
+                           ReplayHooks hooks, ReplayAudience audience)
+    : m_session(session)
+    , m_script(script)
+    , m_script_name(std::move(script_name))
+    , m_pace(pace)
+    , m_hooks(std::move(hooks))
+    , m_audience(audience)
+{
+    // Headless, the captions and goals before the first key are reached with it (play_next).
+    if (m_audience == ReplayAudience::terminal)
+        settle();
+}
+
+bool ReplayDriver::plays_unasked() const
+{
+    return m_pace.kind == ReplayPace::Kind::at_once || mid_step() || m_step_held;
+}
+
+bool ReplayDriver::animating() const
+{
+    return m_session.animating() || (script_ready() && paced_every() && !plays_unasked());
+}
+
+bool ReplayDriver::busy() const
+{
+    return m_session.busy() || (script_ready() && plays_unasked()) || !m_typed_meanwhile.empty();
+}
+
+int ReplayDriver::delay_ms() const { return m_session.animating() ? m_session.delay_ms() : m_pace.milliseconds; }
+
+template <typename Change>
+void ReplayDriver::watching(Change change)
+{
+    const Shown before = shown();
+    change();
+    if (shown() != before)
+        ++m_revision;
+}
+
+void ReplayDriver::handle(const KeyEvent& key)
+{
+    watching([&] { take(key); });
+}
+
+void ReplayDriver::take_tick()
+{
+    watching([&] { take_tick(); });
+}
+
+void ReplayDriver::take_work()
+{
+    watching([&] { take_work(); });
+}
+
+void ReplayDriver::take(const KeyEvent& key)
+{
+    if (script_ready() && plays_unasked()) {
+        // Read once the keys that play unasked have played, as if typed then.
+        m_typed_meanwhile.push_back(key);
+        return;
+    }
+    if (script_ready()) {
+        if (key.key == Key::escape)
+            stop();
+        else if (m_pace.kind == ReplayPace::Kind::on_space && key.key == Key::space)
+            play_scripted();
+        after_change();
+        return;
+    }
+    // Paced a step per Space, a Space typed while the animation plays is the replay's next step,
+    // held until the animation ends (not the animation's pause key, which would stop the lesson).
+    if (!m_at_goal && key.key == Key::space && m_pace.kind == ReplayPace::Kind::on_space && playing() &&
+        m_session.animating()) {
+        m_step_held = true;
+        return;
+    }
+    if (!m_at_goal)
+        m_typed_after = !playing();
+    to_session(key);
+    after_change();
+}
+
+void ReplayDriver::tick()
+{
+    if (m_session.animating())
+        m_session.tick();
+    else if (script_ready() && paced_every())
+        play_scripted();
+    after_change();
+}
+
+void ReplayDriver::work()
+{
+    if (m_session.busy()) {
+        m_session.work();
+    } else if (script_ready() && plays_unasked()) {
+        // A held Space is taken by the step it plays.
+        if (m_pace.kind != ReplayPace::Kind::at_once && !mid_step())
+            m_step_held = false;
+        play_scripted();
+    } else if (!m_typed_meanwhile.empty()) {
+        const KeyEvent key = m_typed_meanwhile.front();
+        m_typed_meanwhile.pop_front();
+        take(key);
+        return;
+    }
+    after_change();
+}
+
+SessionScreen ReplayDriver::screen() const
+{
+    SessionScreen screen = m_session.screen();
+    Shown over = shown();
+    screen.caption = std::move(over.caption);
+    screen.badge = std::move(over.badge);
+    return screen;
+}
+
+ReplayDriver::Shown ReplayDriver::shown() const
+{
+    if (m_typed_after)
+        return {};
+    if (!m_goal_said.empty())
+        return {m_goal_said, {}};
+    Shown over;
+    if (const ScriptCaption* caption = caption_at(m_script, m_played))
+        over.caption = caption->text;
+    if (m_pace.kind != ReplayPace::Kind::at_once)
+        over.badge = m_step_label;
+    return over;
+}
+
+void ReplayDriver::play_next()
+{
+    settle();
+    play_scripted();
+}
+
+void ReplayDriver::finish()
+{
+    settle();
+    judge_goals(m_script.events.size());
+}
+
+// On a terminal the replay settles after everything the session does; headless, before each key
+// (the moment the headless transcript has always printed a caption).
+void ReplayDriver::after_change()
+{
+    if (m_audience == ReplayAudience::terminal)
+        settle();
+}
+
+void ReplayDriver::settle()
+{
+    if (m_audience == ReplayAudience::headless) {
+        judge_goals(m_played);
+        tell_captions();
+        return;
+    }
+    if (!m_stopped && session_idle())
+        tell_captions();
+    wait_at_goal();
+    // A goal is the student's: a Space held before it is not its answer.
+    if (m_at_goal)
+        m_step_held = false;
+}
+
+void ReplayDriver::tell_captions()
+{
+    if (!m_hooks.caption_reached)
+        return;
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    for (; m_captions_told < captions.size() && captions[m_captions_told].before_event <= m_played; ++m_captions_told)
+        m_hooks.caption_reached(m_captions_told, with_caption(m_session.screen(), captions[m_captions_told].text));
+}
+
+// A goal that does not hold yet keeps the replay there, its feedback on the caption row
+// ("GOAL: tension +0.10, want …") and its point marked, while the student's keys go to the
+// session; a goal that holds is passed, its answer's keys skipped.
+void ReplayDriver::wait_at_goal()
+{
+    m_at_goal = false;
+    m_goal_said.clear();
+    if (m_stopped || mid_step() || !session_idle())
+        return;
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    for (; m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played; ++m_next_goal) {
+        if (goals[m_next_goal].before_event < m_played)
+            continue;
+        const GoalProgress progress = check_goal(goals[m_next_goal], m_session);
+        m_session.mark_goal(progress.reached ? std::nullopt : goal_point(goals[m_next_goal]));
+        if (!progress.reached) {
+            m_at_goal = true;
+            m_goal_said = "GOAL: " + progress.said;
+            return;
+        }
+        m_played = m_step_end = goals[m_next_goal].answer_end;
+    }
+}
+
+// Headless: each goal judged once `played` keys have played its answer (the first not reached is
+// the run's failure); the next goal's point marked from its GOAL line until then.
+void ReplayDriver::judge_goals(std::size_t played)
+{
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    for (; m_next_goal < goals.size() && goals[m_next_goal].answer_end <= played; ++m_next_goal) {
+        const ScriptGoal& goal = goals[m_next_goal];
+        const GoalProgress progress = check_goal(goal, m_session);
+        if (!progress.reached && m_goals)
+            m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + progress.said};
+        m_session.mark_goal(std::nullopt);
+    }
+    if (m_next_goal < goals.size() && goals[m_next_goal].before_event <= played)
+        m_session.mark_goal(goal_point(goals[m_next_goal]));
+}
+
+void ReplayDriver::play_scripted()
+{
+    if (!mid_step()) {
+        m_step_end = m_played + step_length(m_script, m_played);
+        m_step_label = step_label(m_script, m_played);
+    }
+    to_session(m_script.events[m_played++]);
+}
+
+void ReplayDriver::to_session(const KeyEvent& key)
+{
+    m_handled.push_back(key);
+    m_session.handle(key);
+}
+
+// Esc during a paced replay: the keyboard takes over.
+void ReplayDriver::stop()
+{
+    m_played = m_step_end = m_script.events.size();
+    m_stopped = true;
+}
+
+} // namespace apcs

@@ -1,0 +1,101 @@
+#include "apcs/screens/frames_overlay.h"
+
+#include "apcs/geometry/hercules.h"
+#include "apcs/raster/painter.h"
+#include "apcs/raster/screen_layout.h"
+#include "apcs/screens/world_drawing.h"
+
+#include <algorithm>
+
+namespace apcs {
+
+namespace {
+
+// The text cell of a lettered point's label: the first row whose top is below the point's x (2
+// pixels under it and more), where a thing moved along its path (drawn above it: a car on its
+// road) is least often; in the point's column; kept inside the boundary's rows 1 … 17 (a fitted
+// view's lowest points are a cell above the boundary) and columns 1 … 78.
+TextLine label_cell(PixelPoint at, const std::string& label)
+{
+    int row = 1;
+    while (row < layout::message_row - 1 && hercules::text_row_top(row) <= at.y + 2)
+        ++row;
+    const int column = std::clamp(at.x / hercules::cell_width, 1, hercules::text_columns - 2);
+    return {column, row, label};
+}
+
+} // namespace
+
+LineStyle overlay_style(std::size_t index, std::size_t count)
+{
+    if (index == 0)
+        return LineStyle::solid;
+    return index + 1 == count ? LineStyle::dashed : LineStyle::dotted;
+}
+
+std::string overlay_legend(const OverlayNames& names, std::size_t count)
+{
+    if (count == 0)
+        return {};
+    std::string legend = "solid: " + names.first;
+    if (count > 1)
+        legend += "  dashed: " + names.last;
+    if (count > 2)
+        legend += "  dotted: " + names.between;
+    return legend;
+}
+
+OverlayNames key_frames_names(const std::string& key1, const std::string& key2, std::size_t frame_count)
+{
+    const std::size_t inbetweens = frame_count > 2 ? frame_count - 2 : 0;
+    return {"KEY1 " + key1, "KEY2 " + key2,
+            std::to_string(inbetweens) + (inbetweens == 1 ? " in-between" : " in-betweens")};
+}
+
+OverlayNames scene_frames_names(std::size_t frame_count)
+{
+    const std::size_t last = frame_count > 0 ? frame_count - 1 : 0;
+    const std::string between = last == 2 ? "frame 1" : "frames 1-" + std::to_string(last > 0 ? last - 1 : 0);
+    return {"frame 0", "frame " + std::to_string(last), between};
+}
+
+ViewTransform frames_view(const FrameSequence& frames, ViewAngles angles)
+{
+    return ViewScene{}.add(frames).fit(angles, layout::view_area);
+}
+
+GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure,
+                                     const ViewTransform& view, const std::string& caption,
+                                     const FramesOverlay& overlay)
+{
+    GraphicsScreen screen;
+    Painter painter(screen.bitmap);
+    painter.record_into(screen.strokes).rectangle(layout::drawing_area);
+    Painter inside(screen.bitmap, layout::inside_boundary);
+    inside.record_into(screen.strokes);
+    const std::size_t count = frames.frame_count();
+    for (std::size_t k = 0; k < count; ++k)
+        draw_world_graphic(inside, structure, frames.frame(k), view, overlay_style(k, count));
+    for (const LetteredPoint& point : overlay.points) {
+        const PixelPoint at = view.to_device(point.position).rounded();
+        if (!layout::inside_boundary.contains(at))
+            continue;
+        screen.marks.push_back({at, MarkKind::control_point});
+        screen.text.push_back(label_cell(at, point.label));
+    }
+    screen.text.push_back({1, layout::message_row, caption});
+    screen.text.push_back({1, overlay_legend_row, overlay_legend(overlay.names, count)});
+    int row = overlay_legend_row + 1;
+    for (const std::string& note : overlay.notes)
+        if (row < hercules::text_rows)
+            screen.text.push_back({1, row++, note});
+    return screen;
+}
+
+GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic& structure, ViewAngles angles,
+                                     const std::string& caption, const FramesOverlay& overlay)
+{
+    return frames_overlay_screen(frames, structure, frames_view(frames, angles), caption, overlay);
+}
+
+} // namespace apcs

@@ -1,0 +1,98 @@
+#include "apcs/editor/path_document.h"
+#include "apcs/editor/path_picture.h"
+
+#include <catch2/catch.hpp>
+
+using namespace apcs;
+
+namespace {
+
+ControlPoints three_points()
+{
+    return {{{0, 0, 0}, {0.5, 0, 0, 0}}, {{0, 3, 4}, {0.5, 0, 0, 0}}, {{0, 0, 10}, {0.5, 0, 0, 0}}};
+}
+
+} // namespace
+
+TEST_CASE("a path document: every change of its points advances its revision, a change of nothing does not",
+          "[editor][document]")
+{
+    PathDocument document(three_points());
+    REQUIRE(document.origins() == std::vector<std::size_t>{0, 1, 2});
+    REQUIRE(document.revision() == 0);
+    const ControlRegion whole{0, 2};
+
+    const PathDocument::StaffSet tighter = document.set_staff(whole, {0.6, 0, 0, 0});
+    REQUIRE(tighter.changed);
+    REQUIRE(document.revision() == 1);
+    REQUIRE(document.points()[1].staff.tension == 0.6);
+    // The same values again (a step past the end of a line) change no point.
+    REQUIRE_FALSE(document.set_staff(whole, {0.6, 0, 0, 0}).changed);
+    REQUIRE(document.revision() == 1);
+
+    document.restore_staff(whole, tighter.runs_before);
+    REQUIRE(document.points()[1].staff.tension == 0.5);
+    REQUIRE(document.revision() == 2);
+}
+
+TEST_CASE("a path document's waypoint edits revert exactly, origins with them, and its history is the edits in order",
+          "[editor][document]")
+{
+    PathDocument document(three_points());
+    WaypointChange insert;
+    insert.kind = WaypointChange::Kind::insert;
+    insert.index = 1;
+    insert.point = {{0, 1, 1}, {}};
+    const PathChange inserted = document.apply(insert);
+    REQUIRE(inserted.inserted == 1);
+    document.record(insert);
+    REQUIRE(document.points().size() == 4);
+    REQUIRE(document.origins() == std::vector<std::size_t>{0, new_point, 1, 2});
+
+    WaypointChange move;
+    move.kind = WaypointChange::Kind::move;
+    move.index = 2;
+    move.offset = {0, 0, 1};
+    document.apply(move);
+    document.record(move);
+    REQUIRE(document.points()[2].position == Vec3{0, 3, 5});
+    REQUIRE(document.edit_count() == 2);
+    REQUIRE(document.revision() == 2);
+
+    // Newest first, as U takes them back.
+    document.revert(std::get<WaypointChange>(document.last_edit()));
+    document.drop_last_edit();
+    document.revert(std::get<WaypointChange>(document.last_edit()));
+    document.drop_last_edit();
+    REQUIRE(document.edit_count() == 0);
+    REQUIRE(document.origins() == std::vector<std::size_t>{0, 1, 2});
+    const ControlPoints original = three_points();
+    for (std::size_t k = 0; k < original.size(); ++k)
+        REQUIRE(document.points()[k].position == original[k].position);
+    REQUIRE(document.revision() == 4);
+}
+
+TEST_CASE("a path picture reads its document: refreshed after a change it is the picture of the changed points, "
+          "and its revision follows the document's",
+          "[editor][document]")
+{
+    PathDocument document(three_points());
+    const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
+    PathPicture picture(document, settings);
+    REQUIRE(picture.revision().document == 0);
+    WaypointChange move;
+    move.kind = WaypointChange::Kind::move;
+    move.index = 1;
+    move.offset = {0, 2, 0};
+    picture.refresh(document.apply(move));
+    REQUIRE(picture.revision().document == document.revision());
+    // What a picture made afresh of the document shows, to the bit.
+    const PathPicture afresh(document, settings);
+    REQUIRE(picture.evaluated().curve.segments.size() == afresh.evaluated().curve.segments.size());
+    for (std::size_t k = 0; k < afresh.evaluated().curve.segments.size(); ++k) {
+        const HermiteSegment& kept = picture.evaluated().curve.segments[k];
+        const HermiteSegment& made = afresh.evaluated().curve.segments[k];
+        REQUIRE((kept.start == made.start && kept.end == made.end && kept.start_tangent == made.start_tangent &&
+                 kept.end_tangent == made.end_tangent));
+    }
+}

@@ -1,0 +1,202 @@
+#include "apcs/animation/arc_length.h"
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/editor/waypoint_editor.h"
+
+#include <catch2/catch.hpp>
+
+#include <initializer_list>
+#include <numeric>
+
+using namespace apcs;
+namespace cmd = apcs::command;
+
+namespace {
+
+BoundingBox box_of(std::initializer_list<Vec3> points)
+{
+    BoundingBox box;
+    for (const Vec3& point : points)
+        box.add(point);
+    return box;
+}
+
+const Vec3 origin{0, 0, 0};
+
+struct PathSetup {
+    ControlPoints points;
+    std::vector<std::size_t> origins;
+    PathSettings settings;
+    ViewTransform view;
+    double step = 1.0;
+};
+
+// The thesis' two-point ani1.dat shape: a straight path up, seen from the front (+y right, +z up).
+PathSetup two_point_path(ViewAngles angles = {0, 90})
+{
+    return {{{origin, {0.2, 0.1, -0.3, 0.4}}, {{0, 0, 10}, {}}},
+            {0, 1},
+            {{1, 1}, 16, 5, Spacing::nearest},
+            ViewTransform::fit(angles, std::vector<Vec3>{origin, {0, 0, 10}}, {0, 0, 720, 259}),
+            0.1};
+}
+
+PathPicture viewed(const PathDocument& document, const PathSetup& setup)
+{
+    PathPicture picture(document, setup.settings);
+    picture.set_view(setup.view);
+    return picture;
+}
+
+// The waypoint editor on a document and its picture, as the path editor opens it.
+struct EditedPath {
+    explicit EditedPath(const PathSetup& setup)
+        : document(setup.points, setup.origins)
+        , picture(viewed(document, setup))
+        , editor(document, picture, {setup.view, setup.step})
+    {
+    }
+    EditedPath(const EditedPath&) = delete;
+    EditedPath& operator=(const EditedPath&) = delete;
+
+    PathDocument document;
+    PathPicture picture;
+    WaypointEditor editor;
+};
+
+void apply(WaypointEditor& editor, std::initializer_list<Command> commands)
+{
+    for (const Command& command : commands)
+        REQUIRE(editor.update(command) == WaypointEditor::Outcome::editing);
+}
+
+} // namespace
+
+TEST_CASE("a waypoint step is 1 % of the diagonal of what the view shows", "[session][waypoints]")
+{
+    REQUIRE(waypoint_step(box_of({origin, {0, 0, 10}})) == Approx(0.1));
+    REQUIRE(waypoint_step(box_of({origin, {3, 4, 12}, {1, 1, 1}})) == Approx(0.13));
+    REQUIRE(waypoint_step(box_of({{5, 5, 5}})) > 0.0);
+}
+
+TEST_CASE("I inserts a control point halfway along the curve by arc length, with the chosen point's values",
+          "[session][waypoints]")
+{
+    SECTION("a straight path: the middle of the chord")
+    {
+        EditedPath path(two_point_path());
+        WaypointEditor& editor = path.editor;
+        apply(editor, {cmd::InsertPoint{}});
+        REQUIRE(editor.points().size() == 3);
+        REQUIRE(editor.chosen() == 1);
+        REQUIRE(editor.points()[1].position.z == Approx(5.0));
+        REQUIRE(editor.points()[1].staff == StaffValues{0.2, 0.1, -0.3, 0.4});
+        REQUIRE(editor.origins() == std::vector<std::size_t>{0, new_point, 1});
+    }
+    SECTION("a bent path: half of the segment's arc length on either side")
+    {
+        PathSetup setup = two_point_path();
+        setup.points.insert(setup.points.begin() + 1, ControlPoint{{0, 6, 3}, {}});
+        setup.origins = {0, 1, 2};
+        const std::vector<HermiteSegment> before = kb_segments(setup.points, setup.settings.slopes);
+        const double first_span = ArcLengthTable(before).length_to_segment_start(1);
+        EditedPath path(setup);
+        WaypointEditor& editor = path.editor;
+        apply(editor, {cmd::InsertPoint{}});
+        const Vec3 inserted = editor.points()[1].position;
+        const ArcLengthTable table(before);
+        const Vec3 expected = table.point_at(table.parameter_at(first_span / 2.0));
+        REQUIRE(distance(inserted, expected) < 1e-9);
+    }
+    SECTION("with the last point chosen: before it")
+    {
+        EditedPath path(two_point_path());
+        WaypointEditor& editor = path.editor;
+        apply(editor, {cmd::ChoosePoint{-1}, cmd::InsertPoint{}});
+        REQUIRE(editor.points().size() == 3);
+        REQUIRE(editor.chosen() == 1);
+        REQUIRE(editor.points()[1].position.z == Approx(5.0));
+        REQUIRE(editor.points()[1].staff == StaffValues{});
+        REQUIRE(editor.points()[2].position.z == 10.0);
+    }
+}
+
+TEST_CASE("the keypad moves the chosen point in the screen's plane, + and - in depth", "[session][waypoints]")
+{
+    EditedPath path(two_point_path());
+    WaypointEditor& editor = path.editor;
+    apply(editor, {cmd::InsertPoint{}});
+    REQUIRE(editor.message() == "control point 2 of 3  depth +0.00");
+    // Front view: up the screen is +z, right is +y, toward the viewer +x.
+    apply(editor, {cmd::MovePoint{0, 1, 0}, cmd::MovePoint{0, 1, 0}, cmd::MovePoint{0, 1, 0}, cmd::MovePoint{0, 1, 0}});
+    const Vec3 moved = editor.points()[1].position;
+    REQUIRE(moved.x == Approx(0.0).margin(1e-12));
+    REQUIRE(moved.y == Approx(0.0).margin(1e-12));
+    REQUIRE(moved.z == Approx(5.4));
+    apply(editor, {cmd::MovePoint{-3, 0, 0}, cmd::MovePoint{0, 0, +1}, cmd::MovePoint{0, 0, +1}});
+    REQUIRE(editor.points()[1].position.y == Approx(-0.3));
+    REQUIRE(editor.points()[1].position.x == Approx(0.2));
+    REQUIRE(editor.message() == "control point 2 of 3  depth +0.20");
+    REQUIRE(editor.change_count() == 8);
+}
+
+TEST_CASE("the key frames' points are never moved or deleted, and the message says so", "[session][waypoints]")
+{
+    EditedPath path(two_point_path());
+    WaypointEditor& editor = path.editor;
+    const ControlPoints before = editor.points();
+    apply(editor, {cmd::MovePoint{0, 1, 0}});
+    REQUIRE(editor.message() == "Control point 1 is KEY1's point: it is never moved or deleted");
+    apply(editor, {cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
+    REQUIRE(editor.message() == "Control point 2 is KEY2's point: it is never moved or deleted");
+    REQUIRE(editor.change_count() == 0);
+    REQUIRE(editor.points()[0].position == before[0].position);
+    REQUIRE(editor.points()[1].position == before[1].position);
+    apply(editor, {cmd::ChoosePoint{+1}});
+    REQUIRE(editor.message() == "control point 1 of 2  depth +0.00");
+}
+
+TEST_CASE("D deletes an interior control point — U and Esc take edits back exactly", "[session][waypoints]")
+{
+    PathSetup setup = two_point_path();
+    setup.points.insert(setup.points.begin() + 1, ControlPoint{{0, 6, 3}, {0.5, 0, 0, 0}});
+    setup.origins = {0, 1, 2};
+    const ControlPoints original = setup.points;
+    EditedPath path(setup);
+    WaypointEditor& editor = path.editor;
+    apply(editor, {cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
+    REQUIRE(editor.points().size() == 2);
+    REQUIRE(editor.origins() == std::vector<std::size_t>{0, 2});
+    REQUIRE(editor.chosen() == 0);
+    apply(editor, {cmd::Undo{}});
+    REQUIRE(editor.points().size() == 3);
+    REQUIRE(editor.origins() == std::vector<std::size_t>{0, 1, 2});
+    REQUIRE(editor.points()[1].staff.tension == 0.5);
+    apply(editor, {cmd::Undo{}});
+    REQUIRE(editor.message() == "Nothing to undo in the waypoint editor");
+    apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{1, 1, 1}, cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
+    REQUIRE(editor.update(cmd::Back{}) == WaypointEditor::Outcome::discarded);
+    REQUIRE(editor.points().size() == original.size());
+    for (std::size_t k = 0; k < original.size(); ++k) {
+        REQUIRE(editor.points()[k].position == original[k].position);
+        REQUIRE(editor.points()[k].staff == original[k].staff);
+    }
+    REQUIRE(editor.origins() == std::vector<std::size_t>{0, 1, 2});
+}
+
+TEST_CASE("Enter keeps the edits, listed as changes that revert to the points opened with", "[session][waypoints]")
+{
+    EditedPath path(two_point_path({30, 40}));
+    WaypointEditor& editor = path.editor;
+    apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{2, -1, 0}, cmd::InsertPoint{}, cmd::MovePoint{0, 0, -1},
+                   cmd::ChoosePoint{-1}, cmd::DeletePoint{}});
+    REQUIRE(editor.update(cmd::Accept{}) == WaypointEditor::Outcome::kept);
+    ControlPoints points = editor.points();
+    std::vector<std::size_t> origins = editor.origins();
+    for (auto change = path.document.edits().rbegin(); change != path.document.edits().rend(); ++change)
+        revert_change(points, origins, std::get<WaypointChange>(*change));
+    const ControlPoints opened = two_point_path().points;
+    REQUIRE(points.size() == 2);
+    REQUIRE(points[0].position == opened[0].position);
+    REQUIRE(points[1].position == opened[1].position);
+    REQUIRE(origins == std::vector<std::size_t>{0, 1});
+}

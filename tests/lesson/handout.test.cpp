@@ -1,0 +1,51 @@
+#include "apcs/lesson/handout.h"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace apcs;
+
+TEST_CASE("a caption's short name keeps its letters and digits, lowercased, words joined by '-'",
+          "[session][handout]")
+{
+    const auto [caption, name] = GENERATE(table<std::string, std::string>({
+        {"W opens the waypoint editor; I inserts a control point halfway along the path",
+         "w-opens-the-waypoint-editor-i"},
+        {"= types an exact value: tension 0.5 shortens both tangents", "types-an-exact-value-tension-0-5"},
+        {"U undoes", "u-undoes"},
+        {"  -- Bias +0.5 --  ", "bias-0-5"},
+        {"Überblick", "berblick"},
+        {"→ … ;", "caption"},
+        {"", "caption"},
+        {std::string(40, 'a'), std::string(32, 'a')},
+        {"abcdefghijklmnopqrstuvwxyzabcdef ghi", "abcdefghijklmnopqrstuvwxyzabcdef"},
+    }));
+    CAPTURE(caption);
+    const std::string shown = handout_step_name(caption);
+    REQUIRE(shown == name);
+    REQUIRE(shown.size() <= max_step_name_length);
+}
+
+TEST_CASE("a handout page's name is the caption's number from 01 and its short name", "[session][handout]")
+{
+    REQUIRE(handout_file_stem(1, "T shows the tangents") == "01-t-shows-the-tangents");
+    REQUIRE(handout_file_stem(12, "U") == "12-u");
+    REQUIRE(handout_file_stem(100, "U") == "100-u");
+}
+
+TEST_CASE("the text console's page is its rows drawn in the font, graphics mode's its picture", "[session][handout]")
+{
+    SessionScreen console;
+    console.text = CellGrid(80, 24);
+    console.text.put_text(0, 0, "Please keyin the KEY1 filename!");
+    console.text.put_text(0, 23, " a caption", CellStyle::reverse);
+    const GraphicsScreen picture = screen_picture(console);
+    REQUIRE(picture.text.size() == 2);
+    REQUIRE(picture.text[0].row == 0);
+    REQUIRE(picture.text[0].text == "Please keyin the KEY1 filename!");
+    REQUIRE(picture.text[1].row == 23);
+    REQUIRE(picture.text[1].text == " a caption");
+    REQUIRE(screen_text(console, GlyphSet::ascii) ==
+            "Please keyin the KEY1 filename!\n" + std::string(22, '\n') + " a caption\n");
+}

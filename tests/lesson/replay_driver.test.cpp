@@ -1,0 +1,294 @@
+// The one replay driver, headless: a paced, captioned lesson and an exercise with its goal played
+// as a terminal would play them (Space for each step, the clock, the student's keys), without one.
+#include "apcs/lesson/replay_driver.h"
+#include "apcs/raster/replay_caption.h"
+#include "apcs/session/session_files.h"
+
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace apcs;
+
+namespace {
+
+const std::filesystem::path data_folder = std::filesystem::path(APCS_SOURCE_DIR) / "data";
+
+// An example's files in memory, as the session reads them from its folder.
+MemoryFiles example_files(const std::string& example)
+{
+    MemoryFiles files;
+    for (const auto& entry : std::filesystem::directory_iterator(data_folder / example))
+        if (entry.path().extension() == ".dat")
+            files.files[entry.path().filename().string()] = test::read_all(entry.path());
+    return files;
+}
+
+KeyScript read_script(const std::filesystem::path& file)
+{
+    Expected<KeyScript> script = parse_captioned_key_script(test::read_all(file), file.string());
+    REQUIRE(script);
+    return std::move(*script);
+}
+
+// The steps of `script` as a paced replay plays them: a TEXT line is one.
+std::size_t step_count(const KeyScript& script)
+{
+    std::size_t steps = 0;
+    for (std::size_t first = 0; first < script.events.size(); first += step_length(script, first))
+        ++steps;
+    return steps;
+}
+
+// What the terminal loop does while it waits for no key: the program's work, then its ticks.
+void run_until_idle(ReplayDriver& replay)
+{
+    while (!replay.finished() && (replay.busy() || replay.animating())) {
+        if (replay.busy())
+            replay.work();
+        else
+            replay.tick();
+    }
+}
+
+const KeyEvent space = KeyEvent::of(Key::space);
+
+std::string rows_of(const CellGrid& grid)
+{
+    std::string rows;
+    for (int row = 0; row < grid.rows(); ++row)
+        rows += grid.row_text(row) + "\n";
+    return rows;
+}
+
+struct CaptionSeen {
+    std::size_t index = 0;
+    std::string caption_row;
+};
+
+} // namespace
+
+TEST_CASE("lesson.keys paced a step per Space: every step once, each caption told over the screen it captions, "
+          "the badge naming the step",
+          "[lesson][replay]")
+{
+    const KeyScript script = read_script(data_folder / "n-to-l" / "lesson.keys");
+    REQUIRE(script.captions.size() > 5);
+    MemoryFiles files = example_files("n-to-l");
+    Session session({}, files);
+    std::vector<std::size_t> told;
+    ReplayHooks hooks;
+    hooks.caption_reached = [&](std::size_t index, const SessionScreen& shown) {
+        told.push_back(index);
+        // The screen handed over is the session's with the caption laid on it.
+        REQUIRE(shown.caption.empty());
+        REQUIRE(with_caption(session.screen(), script.captions[index].text).text == shown.text);
+    };
+    ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::on_space, 0}, hooks,
+                        ReplayAudience::terminal);
+    std::size_t spaces = 0;
+    while (replay.playing() && !replay.finished()) {
+        run_until_idle(replay);
+        if (!replay.playing())
+            break;
+        // A key other than Space is swallowed while the replay waits: nothing is played.
+        const std::size_t handled = replay.handled().size();
+        const std::uint64_t revision = replay.screen_revision();
+        replay.handle(KeyEvent::typed(U'x'));
+        REQUIRE(replay.handled().size() == handled);
+        REQUIRE(replay.screen_revision() == revision);
+        replay.handle(space);
+        ++spaces;
+        run_until_idle(replay);
+        const SessionScreen shown = replay.screen();
+        const ScriptCaption* caption = caption_at(script, replay.handled().size());
+        REQUIRE(shown.caption == (caption == nullptr ? std::string() : caption->text));
+        REQUIRE_FALSE(shown.badge.empty());
+    }
+    // Space by Space, the script's steps, no more and no fewer, and every key of it handled.
+    REQUIRE(spaces == step_count(script));
+    REQUIRE(replay.handled() == script.events);
+    std::vector<std::size_t> every_caption(script.captions.size());
+    for (std::size_t k = 0; k < every_caption.size(); ++k)
+        every_caption[k] = k;
+    REQUIRE(told == every_caption);
+}
+
+TEST_CASE("a paced replay shows the screens the headless replay prints, caption by caption", "[lesson][replay]")
+{
+    const KeyScript script = read_script(data_folder / "n-to-l" / "lesson.keys");
+    const auto caption_screens = [&](ReplayAudience audience) {
+        MemoryFiles files = example_files("n-to-l");
+        Session session({}, files);
+        std::vector<CellGrid> screens;
+        ReplayHooks hooks;
+        hooks.caption_reached = [&](std::size_t, const SessionScreen& shown) {
+            screens.push_back(shown.graphics ? render_cells(shown.picture, {80, 24}, GlyphSet::ascii) : shown.text);
+        };
+        ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::every, 100}, hooks, audience);
+        if (audience == ReplayAudience::headless) {
+            while (replay.playing() && !session.finished()) {
+                replay.play_next();
+                run_until_idle(replay);
+            }
+            replay.finish();
+        } else {
+            // One step every 100 ms: the clock's ticks alone play it.
+            while (replay.playing() && !replay.finished()) {
+                REQUIRE((replay.busy() || replay.animating()));
+                if (!replay.busy() && !session.animating())
+                    REQUIRE(replay.delay_ms() == 100);
+                run_until_idle(replay);
+            }
+        }
+        return screens;
+    };
+    const std::vector<CellGrid> paced = caption_screens(ReplayAudience::terminal);
+    REQUIRE(paced.size() == script.captions.size());
+    const std::vector<CellGrid> headless = caption_screens(ReplayAudience::headless);
+    REQUIRE(headless.size() == paced.size());
+    for (std::size_t k = 0; k < paced.size(); ++k) {
+        INFO("caption " << k + 1 << ": " << script.captions[k].text);
+        REQUIRE(rows_of(paced[k]) == rows_of(headless[k]));
+    }
+}
+
+TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays until a key is typed",
+          "[lesson][replay]")
+{
+    const KeyScript script = read_script(data_folder / "n-to-l" / "lesson.keys");
+    MemoryFiles files = example_files("n-to-l");
+    Session session({}, files);
+    ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
+    for (int step = 0; step < 6; ++step) {
+        replay.handle(space);
+        run_until_idle(replay);
+    }
+    const std::vector<KeyEvent> played = replay.handled();
+    REQUIRE_FALSE(replay.screen().caption.empty());
+    replay.handle(KeyEvent::of(Key::escape));
+    REQUIRE_FALSE(replay.playing());
+    REQUIRE(replay.handled() == played);
+    REQUIRE_FALSE(replay.screen().caption.empty());
+    REQUIRE_FALSE(replay.screen().badge.empty());
+    // The keyboard's now: the key goes to the session, and the caption goes.
+    replay.handle(KeyEvent::typed(U'?'));
+    REQUIRE(replay.handled().size() == played.size() + 1);
+    REQUIRE(replay.screen().caption.empty());
+    REQUIRE(replay.screen().badge.empty());
+}
+
+TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, then goes on; headless its answer "
+          "passes and the exercise alone fails with FILE:LINE",
+          "[lesson][replay][goal]")
+{
+    const std::filesystem::path exercise = data_folder / "exercises" / "exercise-1-tension.keys";
+    const KeyScript script = read_script(exercise);
+    REQUIRE(script.goals.size() == 1);
+    SECTION("paced on a terminal")
+    {
+        MemoryFiles files = example_files("exercises");
+        Session session({}, files);
+        ReplayDriver replay(session, script, exercise.string(), {ReplayPace::Kind::on_space, 0}, {},
+                            ReplayAudience::terminal);
+        for (std::size_t step = 0; step < 20 && !replay.screen().caption.starts_with("GOAL: "); ++step) {
+            replay.handle(space);
+            run_until_idle(replay);
+        }
+        REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+        REQUIRE(replay.handled().size() == script.goals[0].before_event);
+        // At the goal every key is the student's: L (Shift-L) raises the tension, until the goal holds.
+        const double start = session.path_editor()->region_staff()->tension;
+        int raised = 0;
+        for (; raised < 10 && replay.screen().caption.starts_with("GOAL: "); ++raised)
+            replay.handle(KeyEvent::typed(U'L'));
+        REQUIRE_FALSE(replay.screen().caption.starts_with("GOAL: "));
+        REQUIRE(replay.handled().size() == script.goals[0].before_event + static_cast<std::size_t>(raised));
+        const double tension = session.path_editor()->region_staff()->tension;
+        REQUIRE(tension > start);
+        REQUIRE((tension >= 0.40 && tension <= 0.60));
+        // The answer's keys are skipped: the exercise's keys end with them, and its closing
+        // caption shows.
+        REQUIRE(script.goals[0].answer_end == script.events.size());
+        REQUIRE_FALSE(replay.playing());
+        REQUIRE(replay.screen().caption == script.captions.back().text);
+    }
+    SECTION("headless")
+    {
+        const auto judged = [](const std::filesystem::path& file) {
+            const KeyScript keys = read_script(file);
+            MemoryFiles files = example_files("exercises");
+            Session session({}, files);
+            ReplayDriver replay(session, keys, file.string(), {}, {}, ReplayAudience::headless);
+            while (replay.playing() && !session.finished())
+                replay.play_next();
+            replay.finish();
+            return replay.goals();
+        };
+        REQUIRE(judged(data_folder / "exercises" / "exercise-1-tension-answer.keys"));
+        const Expected<void> failed = judged(exercise);
+        REQUIRE_FALSE(failed);
+        REQUIRE(failed.error().to_string().starts_with(exercise.string() + ":" + std::to_string(script.goals[0].line_number) +
+                                               ": goal not reached: "));
+    }
+}
+
+TEST_CASE("keys typed while a replay plays at once are the session's once it has played", "[lesson][replay]")
+{
+    KeyScript script;
+    script.events = {KeyEvent::of(Key::enter), KeyEvent::of(Key::enter)};
+    MemoryFiles files = example_files("n-to-l");
+    Session session({}, files);
+    ReplayDriver replay(session, script, "two.keys", {}, {}, ReplayAudience::terminal);
+    REQUIRE(replay.busy());
+    replay.handle(KeyEvent::typed(U'0'));
+    REQUIRE(replay.handled().empty());
+    run_until_idle(replay);
+    REQUIRE_FALSE(replay.playing());
+    REQUIRE(replay.handled() ==
+            std::vector<KeyEvent>{KeyEvent::of(Key::enter), KeyEvent::of(Key::enter), KeyEvent::typed(U'0')});
+}
+
+TEST_CASE("the terminal paints a screen only when its revision changes: once per staff key that changes the path, "
+          "never for a key that changes nothing",
+          "[lesson][replay][paint]")
+{
+    MemoryFiles files = example_files("n-to-l");
+    Session session({}, files);
+    const KeyScript none;
+    ReplayDriver replay(session, none, "typed", {}, {}, ReplayAudience::terminal);
+    const auto type = [&](std::u32string_view keys) {
+        for (const char32_t key : keys)
+            replay.handle(key == U'\n' ? KeyEvent::of(Key::enter) : key == U' ' ? space : KeyEvent::typed(key));
+        run_until_idle(replay);
+    };
+    type(U"\n\n0 90 100\nway1.dat\n\n8");
+    REQUIRE(session.phase() == SessionPhase::staff);
+    const auto paints_of = [&](char32_t key) {
+        const std::uint64_t before = replay.screen_revision();
+        replay.handle(KeyEvent::typed(key));
+        run_until_idle(replay);
+        return replay.screen_revision() - before;
+    };
+    // Up the TENSION line to +1: every key moves the curve, and is one paint.
+    while (session.path_editor()->region_staff()->tension < 1.0) {
+        const std::uint64_t document = session.path_editor()->document().revision();
+        REQUIRE(paints_of(U'6') == 1);
+        REQUIRE(session.path_editor()->document().revision() == document + 1);
+    }
+    // Past +1 the first key still clears what the last one said ("moved up to ..."); then nothing
+    // changes, and nothing is painted, however many keys follow.
+    const std::uint64_t document = session.path_editor()->document().revision();
+    paints_of(U'6');
+    for (int key = 0; key < 5; ++key)
+        REQUIRE(paints_of(U'6') == 0);
+    REQUIRE(session.path_editor()->document().revision() == document);
+    // A key no mode takes on the staff (Y) changes nothing either.
+    REQUIRE(paints_of(U'Y') == 0);
+    // Back down one step: the path changes, one paint.
+    REQUIRE(paints_of(U'4') == 1);
+}
