@@ -52,12 +52,12 @@ void ReplayDriver::handle(const KeyEvent& key)
     watching([&] { take(key); });
 }
 
-void ReplayDriver::take_tick()
+void ReplayDriver::tick()
 {
     watching([&] { take_tick(); });
 }
 
-void ReplayDriver::take_work()
+void ReplayDriver::work()
 {
     watching([&] { take_work(); });
 }
@@ -90,7 +90,7 @@ void ReplayDriver::take(const KeyEvent& key)
     after_change();
 }
 
-void ReplayDriver::tick()
+void ReplayDriver::take_tick()
 {
     if (m_session.animating())
         m_session.tick();
@@ -99,7 +99,7 @@ void ReplayDriver::tick()
     after_change();
 }
 
-void ReplayDriver::work()
+void ReplayDriver::take_work()
 {
     if (m_session.busy()) {
         m_session.work();

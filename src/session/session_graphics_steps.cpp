@@ -36,14 +36,16 @@ std::string rewritten_path_file(const SessionPath& path, const PathEditor& edito
 // Initial_Graphics: steps 3–5 go on in graphics mode, in the PathEditor.
 Shaping Shaping::after(const SlopesPrompt& slopes, StepContext& context)
 {
-    const SessionModel& model = context.model;
-    const SessionPath& path = model.paths[static_cast<std::size_t>(slopes.path)];
+    SessionModel& model = context.model;
+    // The editor's document holds the path while it is shaped (the model's copy comes back when
+    // it is accepted): one copy of a path of 10^6 points, not two.
+    SessionPath& path = model.paths[static_cast<std::size_t>(slopes.path)];
     std::vector<std::vector<Vec3>> key_frames;
     for (const Graphic* key : {&model.keys.key1, &model.keys.key2})
         for (auto& polyline : key->polylines(key->all_points()))
             key_frames.push_back(std::move(polyline));
     return {slopes.path,
-            PathEditor(PathEditor::Setup{path.name, path.points, context.path_settings(slopes.path), model.view_angles,
+            PathEditor(PathEditor::Setup{path.name, std::move(path.points), context.path_settings(slopes.path), model.view_angles,
                                          std::move(key_frames), context.settings.step,
                                          PictureRefinement{.when = context.settings.refinement}},
                        context.files)};

@@ -104,6 +104,7 @@ TEST_CASE("lesson.keys paced a step per Space: every step once, each caption tol
         replay.handle(space);
         ++spaces;
         run_until_idle(replay);
+        REQUIRE(replay.screen_revision() > revision);
         const SessionScreen shown = replay.screen();
         const ScriptCaption* caption = caption_at(script, replay.handled().size());
         REQUIRE(shown.caption == (caption == nullptr ? std::string() : caption->text));
@@ -182,7 +183,7 @@ TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays unti
     REQUIRE(replay.screen().badge.empty());
 }
 
-TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, then goes on; headless its answer "
+TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, then goes on, and headless its answer "
           "passes and the exercise alone fails with FILE:LINE",
           "[lesson][replay][goal]")
 {
