@@ -1,5 +1,7 @@
 #include "apcs/editor/path_document.h"
 
+#include "apcs/animation/input_limits.h"
+
 #include <cassert>
 
 namespace apcs {
@@ -29,10 +31,34 @@ PathChange PathDocument::revert(const WaypointChange& change)
     return revert_change(m_points, m_origins, change);
 }
 
+namespace {
+
+// Whether the region's points held, before, what apply_staff_to_region leaves them with: every
+// run the staff (clamped to the staff's range), but for the region's last point its own
+// acceleration, which stays (no span starts there) unless the region is the whole path. Read from
+// the runs alone: a key on 10^6 points does not read them again.
+bool held_already(const std::vector<StaffRun>& before, const StaffValues& staff, bool whole)
+{
+    StaffValues clamped;
+    for (const StaffLine line : staff_lines)
+        clamped[line] = limits::staff_value.clamp(staff[line]);
+    for (std::size_t run = 0; run < before.size(); ++run) {
+        StaffValues after = clamped;
+        if (run + 1 == before.size() && before[run].count == 1 && !whole)
+            after.acceleration = before[run].staff.acceleration;
+        if (before[run].staff != after)
+            return false;
+    }
+    return true;
+}
+
+} // namespace
+
 PathDocument::StaffSet PathDocument::set_staff(ControlRegion region, const StaffValues& staff)
 {
+    const bool whole = region.is_whole(m_points);
     StaffSet set{apply_staff_to_region(m_points, region, staff), false};
-    set.changed = staff_runs(m_points, region) != set.runs_before;
+    set.changed = !held_already(set.runs_before, staff, whole);
     if (set.changed)
         ++m_revision;
     return set;

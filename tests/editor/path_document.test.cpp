@@ -35,6 +35,30 @@ TEST_CASE("a path document: every change of its points advances its revision, a 
     REQUIRE(document.revision() == 2);
 }
 
+TEST_CASE("a staff key's change is told from the region's runs as apply_staff_to_region leaves the points",
+          "[editor][document]")
+{
+    // Point by point, what staff_runs reads after the key, against what the document says.
+    const auto changes_as_the_points_do = [](ControlRegion region, const StaffValues& staff) {
+        PathDocument document(three_points());
+        const std::vector<StaffRun> before = staff_runs(document.points(), region);
+        const bool changed = document.set_staff(region, staff).changed;
+        REQUIRE(changed == (staff_runs(document.points(), region) != before));
+        return changed;
+    };
+    // A lone interior point keeps its own acceleration (no span starts there): a new one changes nothing.
+    REQUIRE_FALSE(changes_as_the_points_do({1, 1}, {0.5, 0, 0, 0.3}));
+    REQUIRE(changes_as_the_points_do({1, 1}, {0.4, 0, 0, 0}));
+    // Points 1 and 2: the first takes the acceleration, the last keeps its own.
+    REQUIRE(changes_as_the_points_do({0, 1}, {0.5, 0, 0, 0.3}));
+    REQUIRE_FALSE(changes_as_the_points_do({0, 1}, {0.5, 0, 0, 0}));
+    // The whole path: every point, the last included, takes it.
+    REQUIRE(changes_as_the_points_do({0, 2}, {0.5, 0, 0, 0.3}));
+    REQUIRE_FALSE(changes_as_the_points_do({0, 2}, {0.5, 0, 0, 0}));
+    // Values beyond the staff are clamped to it first.
+    REQUIRE_FALSE(changes_as_the_points_do({0, 2}, {0.5, 0, 0, -0.0}));
+}
+
 TEST_CASE("a path document's waypoint edits revert exactly, origins with them, and its history is the edits in order",
           "[editor][document]")
 {
