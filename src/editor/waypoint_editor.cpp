@@ -59,6 +59,8 @@ WaypointEditor::Outcome WaypointEditor::discard()
 {
     while (change_count() > 0)
         revert_last();
+    // Nothing was kept: no curve before a change is left to show.
+    m_picture->drop_ghost();
     return Outcome::discarded;
 }
 

@@ -174,7 +174,9 @@ TEST_CASE("D deletes an interior control point — U and Esc take edits back exa
     apply(editor, {cmd::Undo{}});
     REQUIRE(editor.message() == "Nothing to undo in the waypoint editor");
     apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{1, 1, 1}, cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
+    REQUIRE(path.picture.has_ghost());
     REQUIRE(editor.update(cmd::Back{}) == WaypointEditor::Outcome::discarded);
+    REQUIRE_FALSE(path.picture.has_ghost());
     REQUIRE(editor.points().size() == original.size());
     for (std::size_t k = 0; k < original.size(); ++k) {
         REQUIRE(editor.points()[k].position == original[k].position);
