@@ -86,12 +86,15 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
     const std::unique_ptr<Terminal> terminal = std::move(*opened);
     TerminalPixels pixels(*terminal, terminal->detect_pixels(pixel_choice));
     AsciiGlyphCache cache;
-    // The screen painted last: none after the terminal changed (a resize, Ctrl-L, the notice gone).
-    std::optional<std::uint64_t> painted;
+    // The revision of the screen painted last, and whether the terminal changed since (nothing
+    // painted yet, a resize, Ctrl-L, the notice gone).
+    std::uint64_t painted = 0;
+    bool terminal_changed = true;
     while (!program.finished()) {
-        if (painted != program.screen_revision()) {
+        if (terminal_changed || painted != program.screen_revision()) {
             show_screen(*terminal, pixels, program, glyphs, cache);
             painted = program.screen_revision();
+            terminal_changed = false;
         }
         KeyEvent key;
         const int wait_ms = program.busy() ? 0 : program.animating() ? program.delay_ms() : -1;
@@ -100,7 +103,7 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
             return ExitStatus::stopped;
         case TerminalInput::resize:
             terminal->invalidate();
-            painted.reset();
+            terminal_changed = true;
             break;
         case TerminalInput::timeout:
             if (program.busy())
@@ -112,14 +115,14 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
             // Ctrl-L repaints the whole terminal; the program sees the key too.
             if (key.key == Key::redraw) {
                 terminal->redraw();
-                painted.reset();
+                terminal_changed = true;
             }
             // Keys typed at the too-small screen would act on a program nobody can see.
             if (!fit_cell_area(terminal->size().columns, terminal->size().rows))
                 break;
             if (!pixels.notice().empty()) {
                 pixels.clear_notice();
-                painted.reset();
+                terminal_changed = true;
             }
             program.handle(key);
             break;
