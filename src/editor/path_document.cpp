@@ -31,6 +31,14 @@ PathChange PathDocument::revert(const WaypointChange& change)
     return revert_change(m_points, m_origins, change);
 }
 
+PathEdit PathDocument::take_last_edit()
+{
+    assert(!m_edits.empty());
+    PathEdit last = std::move(m_edits.back());
+    m_edits.pop_back();
+    return last;
+}
+
 namespace {
 
 // Whether the region's points held, before, what apply_staff_to_region leaves them with: every

@@ -516,8 +516,7 @@ PathEditor::Transition PathEditor::undo()
         m_notice = "Nothing to undo: the path is as it was opened";
         return Transition{};
     }
-    const PathEdit change = m_document->last_edit();
-    m_document->drop_last_edit();
+    const PathEdit change = m_document->take_last_edit();
     m_problem.clear();
     Transition transition = std::visit([this](const auto& last) { return undo_change(last); }, change);
     m_notice += "; " + changes_text(m_document->edit_count()) + " left to undo";
@@ -543,8 +542,7 @@ PathEditor::Transition PathEditor::undo_change(const StaffEdit& change)
 PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
 {
     // The ghost: the path with the edit, as it was before U.
-    const PathChange changed = m_document->revert(change);
-    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
+    take_back_waypoint_edit(*m_document, *m_picture, change);
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;

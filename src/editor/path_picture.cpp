@@ -162,4 +162,14 @@ GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
     return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks, ghost});
 }
 
+void make_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change)
+{
+    picture.refresh(document.apply(change), [change](ControlPoints& points) { revert_change(points, change); });
+}
+
+void take_back_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change)
+{
+    picture.refresh(document.revert(change), [change](ControlPoints& points) { apply_change(points, change); });
+}
+
 } // namespace apcs

@@ -67,17 +67,15 @@ WaypointEditor::Outcome WaypointEditor::discard()
 void WaypointEditor::apply(const WaypointChange& change)
 {
     // SPEC §7.2.1: the curve before the edit stays, dotted.
-    const PathChange changed = m_document->apply(change);
-    m_picture->refresh(changed, [change](ControlPoints& points) { revert_change(points, change); });
+    make_waypoint_edit(*m_document, *m_picture, change);
     m_document->record(change);
 }
 
 void WaypointEditor::revert_last()
 {
-    const WaypointChange change = std::get<WaypointChange>(m_document->last_edit());
-    m_document->drop_last_edit();
-    const PathChange changed = m_document->revert(change);
-    m_picture->refresh(changed, [change](ControlPoints& points) { apply_change(points, change); });
+    // Only waypoint edits are made while the editor is open.
+    const WaypointChange change = std::get<WaypointChange>(m_document->take_last_edit());
+    take_back_waypoint_edit(*m_document, *m_picture, change);
     m_chosen = std::min(change.index, points().size() - 1);
 }
 

@@ -79,12 +79,12 @@ void ReplayDriver::take(const KeyEvent& key)
     }
     // Paced a step per Space, a Space typed while the animation plays is the replay's next step,
     // held until the animation ends (not the animation's pause key, which would stop the lesson).
-    if (!m_at_goal && key.key == Key::space && m_pace.kind == ReplayPace::Kind::on_space && playing() &&
+    if (!at_goal() && key.key == Key::space && m_pace.kind == ReplayPace::Kind::on_space && playing() &&
         m_session.animating()) {
         m_step_held = true;
         return;
     }
-    if (!m_at_goal)
+    if (!at_goal())
         m_typed_after = !playing();
     to_session(key);
     after_change();
@@ -171,7 +171,7 @@ void ReplayDriver::settle()
         tell_captions();
     wait_at_goal();
     // A goal is the student's: a Space held before it is not its answer.
-    if (m_at_goal)
+    if (at_goal())
         m_step_held = false;
 }
 
@@ -189,7 +189,6 @@ void ReplayDriver::tell_captions()
 // session; a goal that holds is passed, its answer's keys skipped.
 void ReplayDriver::wait_at_goal()
 {
-    m_at_goal = false;
     m_goal_said.clear();
     if (m_stopped || mid_step() || !session_idle())
         return;
@@ -200,7 +199,6 @@ void ReplayDriver::wait_at_goal()
         const GoalProgress progress = check_goal(goals[m_next_goal], m_session);
         m_session.mark_goal(progress.reached ? std::nullopt : goal_point(goals[m_next_goal]));
         if (!progress.reached) {
-            m_at_goal = true;
             m_goal_said = "GOAL: " + progress.said;
             return;
         }

@@ -84,10 +84,8 @@ TEST_CASE("a path document's waypoint edits revert exactly, origins with them, a
     REQUIRE(document.revision() == 2);
 
     // Newest first, as U takes them back.
-    document.revert(std::get<WaypointChange>(document.last_edit()));
-    document.drop_last_edit();
-    document.revert(std::get<WaypointChange>(document.last_edit()));
-    document.drop_last_edit();
+    document.revert(std::get<WaypointChange>(document.take_last_edit()));
+    document.revert(std::get<WaypointChange>(document.take_last_edit()));
     REQUIRE(document.edit_count() == 0);
     REQUIRE(document.origins() == std::vector<std::size_t>{0, 1, 2});
     const ControlPoints original = three_points();

@@ -56,9 +56,9 @@ public:
     // The undo history: edits are recorded once made, and taken back newest first.
     void record(PathEdit edit) { m_edits.push_back(std::move(edit)); }
     std::size_t edit_count() const { return m_edits.size(); }
-    const PathEdit& last_edit() const { return m_edits.back(); }
     const std::vector<PathEdit>& edits() const { return m_edits; }
-    void drop_last_edit() { m_edits.pop_back(); }
+    // The newest edit, out of the history (there is one).
+    PathEdit take_last_edit();
 
 private:
     ControlPoints m_points;

@@ -117,4 +117,9 @@ private:
     PointsBack m_ghost_back;
 };
 
+// A waypoint edit made in `document`, or taken back, and `picture` (of the document) refreshed; the
+// ghost is the path on the other side of the edit (SPEC §7.2.1).
+void make_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change);
+void take_back_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change);
+
 } // namespace apcs

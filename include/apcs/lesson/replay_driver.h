@@ -27,9 +27,9 @@ enum class ReplayAudience { terminal, headless };
 // Every key the session handles passes through it, scripted or typed, and is kept (--record).
 class ReplayDriver final : public InteractiveProgram {
 public:
-    // `session` and `script` outlive the driver. The captions and goals at the script's start are
-    // reached at once (hooks told).
-    // `script_name` names the script in a goal's FILE:LINE.
+    // `session` and `script` outlive the driver; `script_name` names the script in a goal's
+    // FILE:LINE. On a terminal the captions and goals at the script's start are reached at once
+    // (hooks told); headless, with the first play_next.
     ReplayDriver(Session& session, const KeyScript& script, std::string script_name, ReplayPace pace,
                  ReplayHooks hooks, ReplayAudience audience);
 
@@ -88,8 +88,10 @@ private:
     // works. Headless, only play_next plays a key.
     bool script_ready() const
     {
-        return m_audience == ReplayAudience::terminal && !m_at_goal && playing() && session_idle();
+        return m_audience == ReplayAudience::terminal && !at_goal() && playing() && session_idle();
     }
+    // A terminal replay waits at a goal that does not hold yet, its feedback on the caption row.
+    bool at_goal() const { return !m_goal_said.empty(); }
     // It plays without waiting for a key or the clock: at once, the rest of a TEXT line, or a
     // Space held through the animation.
     bool plays_unasked() const;
@@ -110,7 +112,6 @@ private:
     std::string m_step_label;
     std::size_t m_captions_told = 0;
     std::size_t m_next_goal = 0;
-    bool m_at_goal = false;
     std::string m_goal_said;
     bool m_step_held = false;
     bool m_stopped = false;
