@@ -81,16 +81,27 @@ void write_all(std::string_view bytes)
     }
 }
 
+// The most bytes one question reads: a terminal answering garbage is not read for ever.
+constexpr std::size_t most_reply_bytes = 4096;
+// The most bytes typed during the questions that go back to curses as keys: its input queue
+// (ungetch) holds 137 and overran with more, repeating keys for ever. More is a paste or garbage
+// that came before the reply, dropped with it.
+constexpr std::size_t most_typed_ahead = 64;
+
+// Whether `byte` can end a reply: a CSI's final byte (c, S, t) or an APC string's ESC \.
+bool may_end_reply(char byte) { return byte == 'c' || byte == 'S' || byte == 't' || byte == '\\'; }
+
 // Asks `query` and reads what comes back until `answered` holds for the replies read or
 // pixel_reply_limit_ms have passed since the question: a terminal that does not answer costs that
-// long, never more.
+// long, never more. One byte a read, so that what follows the reply (keys typed after it, however
+// many) stays in the terminal's queue for curses to read.
 template <typename Answered>
 TerminalReplies ask_terminal(std::string_view query, Answered answered)
 {
     write_all(query);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(pixel_reply_limit_ms);
     std::string bytes;
-    while (true) {
+    while (bytes.size() < most_reply_bytes) {
         const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
         if (left <= 0)
             break;
@@ -100,12 +111,11 @@ TerminalReplies ask_terminal(std::string_view query, Answered answered)
             continue;
         if (ready <= 0 || (input.revents & POLLIN) == 0)
             break;
-        char chunk[256];
-        const ssize_t got = ::read(STDIN_FILENO, chunk, sizeof chunk);
-        if (got <= 0)
+        char byte = 0;
+        if (::read(STDIN_FILENO, &byte, 1) != 1)
             break;
-        bytes.append(chunk, static_cast<std::size_t>(got));
-        if (answered(read_terminal_replies(bytes)))
+        bytes += byte;
+        if (may_end_reply(byte) && answered(read_terminal_replies(bytes)))
             break;
     }
     return read_terminal_replies(bytes);
@@ -322,8 +332,9 @@ PixelDecision Terminal::detect_pixels(PixelChoice choice)
             decision = PixelDecision{std::nullopt, std::string(no_cell_size_line)};
     }
     // Keys typed during the questions are read next, in the order typed (ungetch pushes in front).
-    for (auto key = typed.rbegin(); key != typed.rend(); ++key)
-        ungetch(static_cast<unsigned char>(*key));
+    if (typed.size() <= most_typed_ahead)
+        for (auto key = typed.rbegin(); key != typed.rend(); ++key)
+            ungetch(static_cast<unsigned char>(*key));
     // A terminal that knows no APC string (the Linux console) may have printed the kitty query's
     // text: the first screen clears the terminal.
     redraw();

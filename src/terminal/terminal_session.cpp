@@ -90,15 +90,25 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
     // painted yet, a resize, Ctrl-L, the notice gone).
     std::uint64_t painted = 0;
     bool terminal_changed = true;
+    // Keys that came together (a paste, a held key, a terminal's flood) are all taken before the
+    // screen is painted again, but the screen is never older than a tenth of a second.
+    bool keys_waiting = false;
+    auto painted_at = std::chrono::steady_clock::now();
+    constexpr auto longest_unpainted = std::chrono::milliseconds(100);
     while (!program.finished()) {
-        if (terminal_changed || painted != program.screen_revision()) {
+        const auto now = std::chrono::steady_clock::now();
+        if ((terminal_changed || painted != program.screen_revision()) &&
+            (!keys_waiting || now - painted_at >= longest_unpainted)) {
             show_screen(*terminal, pixels, program, glyphs, cache);
             painted = program.screen_revision();
             terminal_changed = false;
+            painted_at = now;
         }
         KeyEvent key;
-        const int wait_ms = program.busy() ? 0 : program.animating() ? program.delay_ms() : -1;
-        switch (terminal->read_key(wait_ms, key)) {
+        const int wait_ms = keys_waiting || program.busy() ? 0 : program.animating() ? program.delay_ms() : -1;
+        const TerminalInput input = terminal->read_key(wait_ms, key);
+        const bool looked_for_more = std::exchange(keys_waiting, input == TerminalInput::key);
+        switch (input) {
         case TerminalInput::stop:
             return ExitStatus::stopped;
         case TerminalInput::resize:
@@ -106,6 +116,8 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
             terminal_changed = true;
             break;
         case TerminalInput::timeout:
+            if (looked_for_more)
+                break; // no more keys: paint first
             if (program.busy())
                 work_a_while(program);
             else

@@ -6,11 +6,12 @@
 # leak check, caught by that hang-up, was seen spinning for good after CI runs (its tracer waiting
 # on a thread that never stopped), two of them a core each: leaks are the unit tests' business.
 export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+source "$(dirname "${BASH_SOURCE[0]}")/ended_lib.sh"
 
 tmux_test_folder() {
   work=$(mktemp -d)
   socket="apcs-$1-$$"
-  trap 'tmux -L "$socket" kill-server 2>/dev/null || true; rm -rf "$work"' EXIT
+  trap 'tmux -L "$socket" kill-server 2>/dev/null || true; all_ended_in "$work"; rm -rf "$work"' EXIT
 }
 
 # The text on the screen of tmux session $1.

@@ -1,5 +1,10 @@
 # Helpers for the tests that run a real terminal on a virtual X server; source it.
 
+# As in tmux_lib.sh: the terminal's end hangs up the programs in it, and an ASan build's leak check
+# caught by that hang-up can spin for good; leaks are the unit tests' business.
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
+source "$(dirname "${BASH_SOURCE[0]}")/ended_lib.sh"
+
 # Skips the test (exit 77) unless every tool named is installed; $1 is the terminal's name, for the
 # message.
 xvfb_needs() {
@@ -15,7 +20,7 @@ xvfb_test_folder() {
   work=$(mktemp -d)
   server=""
   terminal=""
-  trap '[ -n "$terminal" ] && kill "$terminal" 2> /dev/null; [ -n "$server" ] && kill "$server" 2> /dev/null; rm -rf "$work"' EXIT
+  trap '[ -n "$terminal" ] && kill "$terminal" 2> /dev/null; [ -n "$server" ] && kill "$server" 2> /dev/null; all_ended_in "$work"; rm -rf "$work"' EXIT
 }
 
 # Starts Xvfb at 1024x768 (or WIDTHxHEIGHT, $1) on a display of its choosing and exports DISPLAY;
