@@ -23,6 +23,21 @@ extern "C" void end_on_signal(int)
     ::_exit(apcs::to_int(apcs::ExitStatus::stopped));
 }
 
+// SIGPIPE from a write of our own into a pipe whose reader has gone (apcs path ... --print | head)
+// ends the program quietly with the signal's own status, 141, as GNU tools do; one sent by another
+// process (kill -PIPE) is a stop like SIGTERM. Temporary files go either way.
+extern "C" void end_on_pipe(int signal, siginfo_t* info, void*)
+{
+    if (info->si_pid != ::getpid())
+        end_on_signal(signal);
+    apcs::remove_unfinished_files();
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    sigemptyset(&default_action.sa_mask);
+    sigaction(SIGPIPE, &default_action, nullptr);
+    ::raise(SIGPIPE); // delivered as the handler returns
+}
+
 void remove_unfinished_files_on_signals()
 {
     struct sigaction action {};
@@ -30,6 +45,15 @@ void remove_unfinished_files_on_signals()
     sigemptyset(&action.sa_mask);
     for (const int signal : apcs::stopping_signals)
         sigaction(signal, &action, nullptr);
+    // A SIGPIPE ignored by whoever started APCS stays ignored: writes then fail with EPIPE.
+    struct sigaction pipe_action {};
+    sigaction(SIGPIPE, nullptr, &pipe_action);
+    if (pipe_action.sa_handler == SIG_IGN)
+        return;
+    pipe_action.sa_sigaction = end_on_pipe;
+    pipe_action.sa_flags = SA_SIGINFO;
+    sigemptyset(&pipe_action.sa_mask);
+    sigaction(SIGPIPE, &pipe_action, nullptr);
 }
 
 } // namespace

@@ -1,5 +1,6 @@
 #include "stop_signals.h"
 
+#include <array>
 #include <cstddef>
 
 namespace apcs {
@@ -7,6 +8,16 @@ namespace apcs {
 namespace {
 
 volatile std::sig_atomic_t stop_requested = 0;
+
+// With a terminal, SIGPIPE stops the program too, whoever sent it: the screen goes to a terminal,
+// never a pipe, and the terminal must be given back (batch commands end quietly on it instead).
+constexpr std::array<int, stopping_signals.size() + 1> terminal_stopping_signals = [] {
+    std::array<int, stopping_signals.size() + 1> signals{};
+    for (std::size_t i = 0; i < stopping_signals.size(); ++i)
+        signals[i] = stopping_signals[i];
+    signals.back() = SIGPIPE;
+    return signals;
+}();
 
 // One stop is enough: from the first signal on the others are ignored (sigaction is
 // async-signal-safe), so that a hang-up's second SIGHUP cannot cut short the writing of files.
@@ -16,7 +27,7 @@ extern "C" void request_stop(int)
     struct sigaction ignore {};
     ignore.sa_handler = SIG_IGN;
     sigemptyset(&ignore.sa_mask);
-    for (const int signal : stopping_signals)
+    for (const int signal : terminal_stopping_signals)
         sigaction(signal, &ignore, nullptr);
 }
 
@@ -30,8 +41,8 @@ StopSignals::StopSignals()
     sigemptyset(&action.sa_mask);
     // Ctrl-\ (SIGQUIT) would otherwise end the program with a core, SIGUSR1 at once: the terminal
     // left raw either way.
-    for (std::size_t i = 0; i < stopping_signals.size(); ++i)
-        sigaction(stopping_signals[i], &action, &m_old_actions[i]);
+    for (std::size_t i = 0; i < terminal_stopping_signals.size(); ++i)
+        sigaction(terminal_stopping_signals[i], &action, &m_old_actions[i]);
 }
 
 StopSignals::~StopSignals()
@@ -41,14 +52,13 @@ StopSignals::~StopSignals()
         // when the terminal's session leader goes) must not cut that short.
         sigset_t finishing;
         sigemptyset(&finishing);
-        for (const int signal : stopping_signals)
+        for (const int signal : terminal_stopping_signals)
             sigaddset(&finishing, signal);
-        sigaddset(&finishing, SIGPIPE);
         sigprocmask(SIG_BLOCK, &finishing, nullptr);
         return;
     }
-    for (std::size_t i = 0; i < stopping_signals.size(); ++i)
-        sigaction(stopping_signals[i], &m_old_actions[i], nullptr);
+    for (std::size_t i = 0; i < terminal_stopping_signals.size(); ++i)
+        sigaction(terminal_stopping_signals[i], &m_old_actions[i], nullptr);
 }
 
 bool StopSignals::requested() const { return stop_requested != 0; }

@@ -7,8 +7,8 @@
 
 namespace apcs {
 
-// While it lives, the stopping signals (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1 …) ask the
-// program to stop instead of ending it: the terminal is given back and every file finished. One stop is enough: from the
+// While it lives, the stopping signals (SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGUSR1 …) and SIGPIPE
+// ask the program to stop instead of ending it: the terminal is given back and every file finished. One stop is enough: from the
 // first signal on the others are ignored. Construction clears any earlier request and installs the
 // handler; destruction gives the old handlers back, or, after a stop, blocks these signals (and
 // SIGPIPE) for the rest of the program, which only finishes its files.
@@ -25,7 +25,7 @@ public:
     void request();
 
 private:
-    std::array<struct sigaction, stopping_signals.size()> m_old_actions{};
+    std::array<struct sigaction, stopping_signals.size() + 1> m_old_actions{};
 };
 
 } // namespace apcs

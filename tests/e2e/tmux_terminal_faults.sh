@@ -24,7 +24,8 @@ expect_restored() {
 }
 
 passed=0
-for signal in INT TERM HUP QUIT USR1 USR2 ALRM; do
+# PIPE: sent by another process to the interactive session, a stop like the others (issue 45).
+for signal in INT TERM HUP QUIT USR1 USR2 ALRM PIPE; do
   name="sig$signal"
   tmux -L "$socket" new-session -d -s "$name" -x 80 -y 25 -c "$work" \
     "'$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
