@@ -64,4 +64,18 @@ void append_utf8(std::string& text, char32_t code_point)
     }
 }
 
+std::optional<std::string> first_control_character(std::string_view utf8)
+{
+    constexpr std::string_view digits = "0123456789ABCDEF";
+    for (const char32_t character : decode_utf8(utf8)) {
+        if (character == U'\t' || (character >= 0x20 && character < 0x7F) || character > 0x9F)
+            continue;
+        const auto byte = static_cast<unsigned>(character);
+        if (character < 0x80)
+            return std::string("\\x") + digits[byte >> 4] + digits[byte & 0xF];
+        return std::string("U+00") + digits[byte >> 4] + digits[byte & 0xF];
+    }
+    return std::nullopt;
+}
+
 } // namespace apcs

@@ -103,6 +103,8 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     while (!text.empty()) {
         ++line_number;
         std::string_view line = take_line(text);
+        if (Expected<void> printable = printable_line(line, file_name, line_number); !printable)
+            return printable.error();
         if (line.starts_with("TEXT ")) {
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
             continue;

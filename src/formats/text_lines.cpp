@@ -1,6 +1,7 @@
 #include "apcs/formats/text_lines.h"
 
 #include "apcs/formats/text_fields.h"
+#include "apcs/base/utf8.h"
 
 #include <algorithm>
 
@@ -153,6 +154,15 @@ Expected<void> cut_at_end_of_file(std::string_view& text, const std::string& fil
         return Diagnostic{file_name, line, more_after_end_of_file};
     }
     text = text.substr(0, end_of_file);
+    return ok;
+}
+
+Expected<void> printable_line(std::string_view line, const std::string& file_name, int line_number)
+{
+    if (const std::optional<std::string> control = first_control_character(line))
+        return Diagnostic{file_name, line_number,
+                          "expected printable text; found the control character " + *control +
+                              " (a terminal would obey it)"};
     return ok;
 }
 

@@ -127,6 +127,8 @@ Expected<Scene> SceneParser::parse(std::string_view text)
 {
     const Expected<void> lines = for_each_data_line(text, m_file_name, [this](int line, std::string_view content) {
         m_line = line;
+        if (Expected<void> printable = printable_line(content, m_file_name, line); !printable)
+            return printable;
         const Fields fields = split(content);
         return fields.empty() ? Expected<void>(ok) : parse_line(fields);
     });

@@ -147,3 +147,22 @@ TEST_CASE("the key just played is shown at the top right, clear of the message l
     REQUIRE(with_played_key(CellGrid(80, 24), "") == CellGrid(80, 24));
     REQUIRE(with_played_key(CellGrid(8, 24), "ENTER") == CellGrid(8, 24));
 }
+
+TEST_CASE("a key script line that a terminal would obey is refused with its file and line", "[session][captions]")
+{
+    // Issue 45: a shared lesson's caption retitled the window and cleared the screen when echoed.
+    const auto refusal = [](const std::string& text) {
+        const Expected<KeyScript> script = parse_captioned_key_script(text, "class.keys");
+        return script ? std::string("accepted") : script.error().to_string();
+    };
+    REQUIRE(refusal("ENTER\n;; hello \x1b]0;PWNED\x07\n") ==
+            "class.keys:2: expected printable text; found the control character \\x1B (a terminal would obey it)");
+    REQUIRE(refusal("TEXT way\x07" "1.dat\n") ==
+            "class.keys:1: expected printable text; found the control character \\x07 (a terminal would obey it)");
+    REQUIRE(refusal(";; \xc2\x9b" "2J\n") ==
+            "class.keys:1: expected printable text; found the control character U+009B (a terminal would obey it)");
+    REQUIRE(refusal("GOAL VALUE TENSION 0.4 1\x7f\n") ==
+            "class.keys:1: expected printable text; found the control character \\x7F (a terminal would obey it)");
+    // A tab, line ends of either kind and text beyond ASCII stay.
+    REQUIRE(refusal("ENTER\t6\r\n;; caf\xc3\xa9\r\n") == "accepted");
+}

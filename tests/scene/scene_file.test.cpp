@@ -93,6 +93,15 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {"FRAMES 0\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
         {"FRAMES 100001\n", "t.scn:1: expected 'FRAMES N' with N a whole number from 1 to 100000"},
         {"FRAMES 5\n", "t.scn: expected at least one OBJECT line; the file has none"},
+        // Issue 45: names and file names that would reach a terminal raw (--tree, --print, frames).
+        {"FRAMES 10\nOBJECT a\x1b]0;title\x07\n",
+         "t.scn:2: expected printable text; found the control character \\x1B (a terminal would obey it)"},
+        {head + "OBJECT b\x1b[?1049h\n",
+         "t.scn:4: expected printable text; found the control character \\x1B (a terminal would obey it)"},
+        {"FRAMES 10\nOBJECT a\nSHAPE sq\xc2\x9b" "2J.dat\n",
+         "t.scn:3: expected printable text; found the control character U+009B (a terminal would obey it)"},
+        {"FRAMES 10\nOBJECT a\x7f\n",
+         "t.scn:2: expected printable text; found the control character \\x7F (a terminal would obey it)"},
         // Issue 33: the last TOLERANCE of a joint silently won.
         {head + "JOINT j 1 TOLERANCE 0.5\nOBJECT b PARENT a\nSHAPE square.dat\nJOINT j 1 TOLERANCE 0.25\n",
          "t.scn:7: joint 'j' has TOLERANCE 0.25 here and 0.5 on line 4; expected one value (or the same on both lines)"},

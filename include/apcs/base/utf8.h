@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -15,5 +16,10 @@ void append_utf8(std::string& text, char32_t code_point);
 // same on every machine: Unicode's widths as the C.UTF-8 locale knows them, whatever the user's
 // locale (a wide character counts 1 only where that locale is missing).
 int cell_width(char32_t code_point);
+
+// The first character of `utf8` that a terminal would obey rather than show: a C0 control but tab,
+// DEL, or a C1 control (U+0080-U+009F), named for a message ("\x1B", "U+009B"); nullopt when
+// there is none. Text from shared files (captions, scene names) is refused with it, never echoed.
+std::optional<std::string> first_control_character(std::string_view utf8);
 
 } // namespace apcs

@@ -31,6 +31,11 @@ std::string_view take_line(std::string_view& text);
 // line ends and blanks follow the Ctrl-Z.
 Expected<void> cut_at_end_of_file(std::string_view& text, const std::string& file_name);
 
+// FILE:LINE when `line` of a shared file (a key script, a scene) holds a character a terminal
+// would obey (first_control_character): such text is refused at read, never echoed to a screen,
+// a file name or a message (issue 45).
+Expected<void> printable_line(std::string_view line, const std::string& file_name, int line_number);
+
 // for_each_data_line for text that comes in pieces (a file read a block at a time): each line
 // goes to the handler as soon as it is whole, so only an unfinished line is ever held. feed()
 // and finish() return the first problem (and every later call returns it again).
