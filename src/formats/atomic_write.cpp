@@ -345,6 +345,59 @@ Expected<void> check_writable(const fs::path& requested, ReadOnlyTarget read_onl
     return ok;
 }
 
+namespace {
+
+// Whether the file at `path`, `size` bytes long, holds exactly what write_content makes; read in
+// pieces beside the chunks, never whole.
+bool file_holds(const fs::path& path, std::uintmax_t size, const ContentWriter& write_content)
+{
+    FileDescriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (file.get() < 0)
+        return false;
+    std::uintmax_t compared = 0;
+    bool same = true;
+    write_content([&](std::string_view chunk) {
+        compared += chunk.size();
+        if (compared > size)
+            same = false;
+        char buffer[1 << 16];
+        while (same && !chunk.empty()) {
+            const ssize_t got = ::read(file.get(), buffer, std::min(sizeof buffer, chunk.size()));
+            if (got < 0 && errno == EINTR)
+                continue;
+            same = got > 0 && std::memcmp(buffer, chunk.data(), static_cast<std::size_t>(got)) == 0;
+            chunk.remove_prefix(same ? static_cast<std::size_t>(got) : chunk.size());
+        }
+        return same;
+    });
+    return same && compared == size;
+}
+
+} // namespace
+
+Expected<void> check_replaceable(const fs::path& requested, const ContentWriter& write_content,
+                                 const KeyFileGuard* inputs)
+{
+    if (Expected<void> writable = check_writable(requested, ReadOnlyTarget::left_to_the_write); !writable)
+        return writable;
+    const std::string shown = requested.string();
+    const Expected<ReplaceableTarget> target = replaceable_target(requested, shown);
+    if (!target || !target->exists)
+        return ok;
+    const fs::path backup = backup_path_for(target->path, inputs);
+    Expected<void> problem = ok;
+    if (is_read_only(target->path, target->status))
+        problem = Diagnostic{shown, 0, "is read-only (mode " + octal_mode(target->status.st_mode) + "); not replaced"};
+    else if (backup.empty())
+        problem = Diagnostic{shown, 0, "cannot keep the old file: its .bak and .b01 … .b99 are all key files"};
+    else
+        problem = check_backup_replaceable(backup, shown);
+    // Only a file whose content changes is replaced, and only then do these matter.
+    if (problem || file_holds(target->path, static_cast<std::uintmax_t>(target->status.st_size), write_content))
+        return ok;
+    return problem;
+}
+
 Expected<void> flush_file_system(const fs::path& folder)
 {
     FileDescriptor opened(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));

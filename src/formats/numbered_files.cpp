@@ -35,25 +35,57 @@ Expected<void> check_room(const std::filesystem::path& folder, std::size_t count
     if (count == 0 || ::statvfs(folder.c_str(), &space) != 0)
         return ok;
     const std::uintmax_t free_bytes = static_cast<std::uintmax_t>(space.f_bavail) * space.f_frsize;
-    return room_for_files(estimated_files_bytes(count, writer_of), free_bytes, count, folder, purpose);
+    return room_for_files(estimated_files_bytes(count, writer_of, space.f_frsize), free_bytes, count, folder, purpose);
+}
+
+// A write that failed after the checks (a disk filled by someone else meanwhile): the problem,
+// then how many of the run were written and which were not (those are as they were: an earlier
+// run's, or none).
+Diagnostic with_run_told(Diagnostic problem, const std::vector<std::filesystem::path>& targets,
+                         const std::vector<Expected<void>>& outcomes)
+{
+    std::vector<std::string> left;
+    for (std::size_t index = 0; index < targets.size(); ++index)
+        if (!outcomes[index])
+            left.push_back(targets[index].filename().string());
+    const std::size_t written = targets.size() - left.size();
+    problem.message += "; " + std::to_string(written) + " of " + std::to_string(targets.size()) +
+                       " files were written, not " + left.front();
+    if (left.size() > 1)
+        problem.message += (left.size() == 2 ? " and " : " ... ") + left.back() + " (" + std::to_string(left.size()) + ")";
+    problem.message += ", which are as they were";
+    return problem;
 }
 
 } // namespace
 
 std::uintmax_t estimated_files_bytes(std::size_t count,
-                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of)
+                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of,
+                                     std::uintmax_t block_bytes)
 {
     if (count == 0)
         return 0;
+    // A file takes whole blocks of its file system: 500 bytes take 4 KiB on most.
+    const std::uintmax_t block = std::max<std::uintmax_t>(block_bytes, 1);
+    const auto on_disk = [block](std::uintmax_t bytes) { return (bytes + block - 1) / block * block; };
     const std::size_t last = count - 1;
     std::vector<std::size_t> samples{0, last / 4, last / 2, last - last / 4, last};
     samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
     long double sampled = 0;
     for (const std::size_t index : samples)
-        sampled += static_cast<long double>(content_bytes(index, writer_of));
+        sampled += static_cast<long double>(on_disk(content_bytes(index, writer_of)));
     const long double average = sampled / static_cast<long double>(samples.size());
     const long double total = average * static_cast<long double>(count);
     constexpr long double most = static_cast<long double>(UINTMAX_MAX);
+    // A run that is small on the whole is measured file by file (a path that bulges between the
+    // samples takes more than they say); a large one keeps the samples, made once each.
+    constexpr long double measured_whole_below = 8.0L * 1024 * 1024;
+    if (total < measured_whole_below && count > samples.size()) {
+        std::uintmax_t measured = 0;
+        for (std::size_t index = 0; index < count; ++index)
+            measured += on_disk(content_bytes(index, writer_of));
+        return measured;
+    }
     return total >= most ? UINTMAX_MAX : static_cast<std::uintmax_t>(total);
 }
 
@@ -100,8 +132,9 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
         targets.push_back(folder / name_of(index));
         if (Expected<void> writable = guard.may_write(targets.back()); !writable)
             return writable.error();
-        if (Expected<void> writable = check_writable(targets.back(), ReadOnlyTarget::left_to_the_write); !writable)
-            return writable.error();
+        const auto content = [&writer_of, index](const ContentSink& sink) { writer_of(index, sink); };
+        if (Expected<void> replaceable = check_replaceable(targets.back(), content, &guard); !replaceable)
+            return replaceable.error();
     }
     if (Expected<void> room = check_room(folder, count, writer_of, purpose); !room)
         return room.error();
@@ -127,7 +160,7 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
         flushed = flush_file_system(folder);
     for (const Expected<void>& outcome : outcomes)
         if (!outcome)
-            return outcome.error();
+            return with_run_told(outcome.error(), targets, outcomes);
     if (!flushed)
         return flushed.error();
     return targets;

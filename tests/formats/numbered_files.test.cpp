@@ -14,21 +14,34 @@ using namespace apcs;
 using test::run_apcs;
 using test::TempFolder;
 
-TEST_CASE("the bytes of numbered files are estimated from five spread over the run", "[formats][files]")
+TEST_CASE("the bytes of numbered files are measured file by file when small, else estimated from five spread over the run",
+          "[formats][files]")
 {
     const auto sizes = [](std::size_t index, const ContentSink& sink) {
         sink(std::string(index == 0 ? 10 : 20, 'x'));
         sink(std::string(index == 4 ? 10 : 0, 'y'));
     };
-    CHECK(estimated_files_bytes(5, sizes) == 5 * (10 + 30) / 2);
+    CHECK(estimated_files_bytes(5, sizes) == 10 + 20 + 20 + 20 + 30);
     CHECK(estimated_files_bytes(0, sizes) == 0);
-    // Ends of 10 bytes, 99 middle files of 100 (a move's middle frames have more digits): the
-    // files 0, 25, 50, 75, 100 give a mean of 64, so 6464 of the 9920 bytes (the ends alone: 1010).
+    // Issue 45: ends of 10 bytes, 99 middle files of 100 (a move's middle frames have more
+    // digits): the files 0, 25, 50, 75, 100 alone would say 6464 of the 9920 bytes; a run this
+    // small is measured whole.
     const auto middles = [](std::size_t index, const ContentSink& sink) {
         sink(std::string(index == 0 || index == 100 ? 10 : 100, 'x'));
     };
-    CHECK(estimated_files_bytes(101, middles) == 6464);
+    CHECK(estimated_files_bytes(101, middles) == 9920);
     CHECK(estimated_files_bytes(1, middles) == 10);
+    // Five samples saying 8 MiB or more stand for the run: 10 + 3 x 204800 + 10 over 5, 101 times.
+    const auto large_middles = [](std::size_t index, const ContentSink& sink) {
+        sink(std::string(index == 0 || index == 100 ? 10 : 204800, 'x'));
+    };
+    CHECK(estimated_files_bytes(101, large_middles) == 12411284);
+    // Each file takes whole blocks: the session's 12 small files took 48 KiB, not 2.1 KiB.
+    const auto small = [](std::size_t, const ContentSink& sink) { sink(std::string(180, 'x')); };
+    CHECK(estimated_files_bytes(12, small) == 12 * 180);
+    CHECK(estimated_files_bytes(12, small, 4096) == 12 * 4096);
+    CHECK(estimated_files_bytes(2, [](std::size_t, const ContentSink& sink) { sink(std::string(4097, 'x')); }, 4096) ==
+          2 * 8192);
 }
 
 TEST_CASE("files that do not fit the folder's free space are refused in one line: needed, free", "[formats][files]")
@@ -54,6 +67,46 @@ TEST_CASE("every target of numbered files is checked before the first is written
     CHECK(written.error().message == "is a directory; cannot write a file there");
     CHECK_FALSE(std::filesystem::exists(folder / "inb001.dat"));
     CHECK_FALSE(std::filesystem::exists(folder / "inb003.dat"));
+}
+
+TEST_CASE("a read-only target or a backup that cannot be kept stops numbered files before the first is written",
+          "[formats][files]")
+{
+    // Issue 45: a read-only frm010.dat, or inb003.bak a folder, had let the files before it be
+    // replaced: a folder of two runs.
+    const TempFolder folder;
+    const auto name_of = [](std::size_t index) { return "inb00" + std::to_string(index + 1) + ".dat"; };
+    for (std::size_t index = 0; index < 3; ++index)
+        REQUIRE(write_file_atomically(folder / name_of(index), "old\n"));
+    const auto new_content = [](std::size_t) { return std::string("new\n"); };
+    const auto old_everywhere = [&] {
+        for (std::size_t index = 0; index < 3; ++index)
+            if (test::read_all(folder / name_of(index)) != "old\n")
+                return false;
+        return true;
+    };
+    SECTION("a read-only file whose content would change")
+    {
+        std::filesystem::permissions(folder / "inb003.dat", std::filesystem::perms::owner_read);
+        const auto written = write_numbered_files(folder.path(), 3, name_of, new_content, KeyFileGuard{}, "the in-between files");
+        REQUIRE_FALSE(written);
+        CHECK(written.error().message == "is read-only (mode 0400); not replaced");
+        CHECK(old_everywhere());
+        // The same content over it is no change, and the run goes on.
+        const auto same = write_numbered_files(folder.path(), 3, name_of, [](std::size_t) { return std::string("old\n"); },
+                                               KeyFileGuard{}, "the in-between files");
+        CHECK(same);
+    }
+    SECTION("a backup that is a folder")
+    {
+        std::filesystem::create_directory(folder / "inb002.bak");
+        const auto written = write_numbered_files(folder.path(), 3, name_of, new_content, KeyFileGuard{}, "the in-between files");
+        REQUIRE_FALSE(written);
+        CHECK(written.error().message ==
+              "cannot keep the old file as " + (folder / "inb002.bak").string() +
+                  ": it is a directory; a backup replaces only a regular file");
+        CHECK(old_everywhere());
+    }
 }
 
 TEST_CASE("numbered files the folder cannot hold are refused before the first is written, whatever the disk",

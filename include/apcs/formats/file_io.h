@@ -99,6 +99,14 @@ Expected<WriteResult> write_file_atomically(const std::filesystem::path& target,
                                             const KeyFileGuard* inputs = nullptr,
                                             Durability durability = Durability::each_file);
 
+// What write_file_atomically(requested, write_content, inputs) would refuse, found before anything
+// of a run is written (a run of files must not stop halfway, issue 45): check_writable's problems
+// and, for an existing file, its being read-only or a backup that cannot be kept (NAME.bak a
+// folder, a link, read-only) — those only when the content changes, so the content is made (and
+// compared, never held whole) only for such a file.
+Expected<void> check_replaceable(const std::filesystem::path& requested, const ContentWriter& write_content,
+                                 const KeyFileGuard* inputs);
+
 // The barrier of Durability::at_barrier: every file written on the file system of `folder` is
 // flushed to the disk (syncfs), the folders' entries with them. The problem, if any.
 Expected<void> flush_file_system(const std::filesystem::path& folder);

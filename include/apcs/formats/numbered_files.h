@@ -28,9 +28,11 @@ using WriteProgress = std::function<void(std::size_t written, std::size_t count)
 // it is written. Every target is checked against `guard` before any file is written (a guarded
 // one stops the whole writing); each file is written atomically, the files spread over the cores,
 // and one barrier (flush_file_system) puts them all on the disk before this returns, not one
-// flush per file. Before any is written, every target must be writable (check_writable: a folder
-// named inb002.dat stops the run before inb001.dat is written) and the folder's free space must
-// hold the files (estimated_files_bytes, room_for_files). Returns the files written, or the first
+// flush per file. Before any is written, every target must be replaceable (check_replaceable: a
+// folder named inb002.dat, a read-only inb010.dat or an inb003.bak that cannot be replaced stops
+// the run before inb001.dat is written) and the folder's free space, in its blocks, must hold the
+// files (estimated_files_bytes, room_for_files). A write that fails after that says how many of
+// the run were written and which were not. Returns the files written, or the first
 // problem: a `folder` that is not a folder and cannot be made (make_output_folder), a guarded
 // or unwritable target, too little space, or a file that could not be written. `progress`, when
 // given, is told of each file written.
@@ -40,11 +42,14 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<void(std::size_t, const ContentSink&)>& writer_of, const KeyFileGuard& guard,
                      std::string_view purpose, const WriteProgress& progress = {});
 
-// The bytes `count` files made by writer_of take, estimated from five spread over the run (the
-// first, at a quarter, half and three quarters, the last), each made once and counted, nothing
-// kept: their mean for every file. The middle frames of a move carry more digits than its ends.
+// The bytes `count` files made by writer_of take on a file system of `block_bytes` blocks (each
+// file rounded up to whole blocks), estimated from five spread over the run (the first, at a
+// quarter, half and three quarters, the last), each made once and counted, nothing kept: their
+// mean for every file. The middle frames of a move carry more digits than its ends, so when the
+// five say less than 8 MiB in all every file is measured instead.
 std::uintmax_t estimated_files_bytes(std::size_t count,
-                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of);
+                                     const std::function<void(std::size_t, const ContentSink&)>& writer_of,
+                                     std::uintmax_t block_bytes = 1);
 
 // ok when `needed` bytes fit in `free_bytes`; else "FOLDER: PURPOSE need about 52 GiB (100000
 // files); the folder has 3.1 GiB free".
