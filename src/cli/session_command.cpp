@@ -164,6 +164,9 @@ std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScrip
     Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
     if (!parsed)
         return report_bad_input(parsed.error(), err);
+    const auto inbetweens = static_cast<std::size_t>(std::max(options.path.inbetween_count, 0));
+    if (Expected<void> reachable = goals_within_inbetweens(parsed->goals, inbetweens, options.keys->string()); !reachable)
+        return report_bad_input(reachable.error(), err);
     script = std::move(*parsed);
     script_text = *text;
     return std::nullopt;

@@ -1,5 +1,7 @@
 #include "apcs/formats/script_goal.h"
 
+#include "apcs/animation/input_limits.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -11,6 +13,11 @@
 namespace apcs {
 
 namespace {
+
+// A goal's point and distance, in world units: beyond 1e9 nothing is drawn (the .dat reader's
+// limit), and below 0.01 the feedback, in two decimals, could not show it.
+constexpr double most_goal_coordinate = 1e9;
+constexpr double least_goal_distance = 0.01;
 
 std::vector<std::string_view> words_of(std::string_view text)
 {
@@ -80,6 +87,8 @@ Expected<ScriptGoal> goal_of(const std::vector<std::string_view>& words)
         const std::optional<std::vector<double>> range = numbers_of(words, 2);
         if (words.size() != 4 || !line || !range || (*range)[0] > (*range)[1])
             return Diagnostic{"", 0, "a staff line's name and LO <= HI after VALUE"};
+        if (!limits::staff_value.contains((*range)[0]) || !limits::staff_value.contains((*range)[1]))
+            return Diagnostic{"", 0, "LO and HI within the staff's -1 to +1"};
         goal.line = *line;
         goal.low = (*range)[0];
         goal.high = (*range)[1];
@@ -89,13 +98,18 @@ Expected<ScriptGoal> goal_of(const std::vector<std::string_view>& words)
     const std::optional<std::vector<double>> numbers = numbers_of(words, point_at);
     if ((kind != "NEAR" && kind != "INBETWEEN") || words.size() != point_at + 4 || !numbers || (*numbers)[3] <= 0)
         return Diagnostic{"", 0, "a point X Y Z and a distance D > 0"};
+    const auto beyond = [](double value) { return std::abs(value) > most_goal_coordinate; };
+    if (std::any_of(numbers->begin(), numbers->end(), beyond))
+        return Diagnostic{"", 0, "X, Y, Z and D of at most 1e9 in size"};
+    if ((*numbers)[3] < least_goal_distance)
+        return Diagnostic{"", 0, "a distance D of at least 0.01 (the feedback's precision)"};
     goal.kind = kind == "NEAR" ? ScriptGoal::Kind::near : ScriptGoal::Kind::inbetween;
     goal.point = {(*numbers)[0], (*numbers)[1], (*numbers)[2]};
     goal.within = (*numbers)[3];
     if (goal.kind == ScriptGoal::Kind::inbetween) {
         const std::optional<double> number = number_of(words[1]);
-        if (!number || *number < 1 || *number != std::floor(*number) || *number > 1e6)
-            return Diagnostic{"", 0, "an in-between's number K from 1 after INBETWEEN"};
+        if (!number || *number < 1 || *number != std::floor(*number) || *number > limits::inbetween_count.max)
+            return Diagnostic{"", 0, "an in-between's number K from 1 to 100000 after INBETWEEN"};
         goal.inbetween = static_cast<std::size_t>(*number);
     }
     return goal;
@@ -126,6 +140,20 @@ Expected<ScriptGoal> parse_goal_line(std::string_view words, const std::string& 
                               goal.error().message + "); found 'GOAL " + std::string(words) + "'"};
     goal->line_number = line_number;
     return goal;
+}
+
+Expected<void> goals_within_inbetweens(const std::vector<ScriptGoal>& goals, std::size_t inbetween_count,
+                                       const std::string& file_name)
+{
+    for (const ScriptGoal& goal : goals) {
+        if (goal.kind != ScriptGoal::Kind::inbetween || goal.inbetween <= inbetween_count)
+            continue;
+        const std::string count = std::to_string(inbetween_count);
+        return Diagnostic{file_name, goal.line_number,
+                          "GOAL INBETWEEN " + std::to_string(goal.inbetween) + " names an in-between beyond the " +
+                              count + " the session makes (--inbetweens " + count + "); expected K from 1 to " + count};
+    }
+    return ok;
 }
 
 std::string goal_text(const ScriptGoal& goal)

@@ -84,10 +84,32 @@ void ReplayDriver::take(const KeyEvent& key)
         m_step_held = true;
         return;
     }
+    if (m_leave_asked) {
+        m_leave_asked = false;
+        if (key == KeyEvent::typed(U'y') || key == KeyEvent::typed(U'Y'))
+            leave_exercise();
+        after_change();
+        return;
+    }
+    // At a goal the keys are the student's, but q asks whether to leave it (a goal the student
+    // cannot reach must not trap the class).
+    if (at_goal() && (key == KeyEvent::typed(U'q') || key == KeyEvent::typed(U'Q'))) {
+        m_leave_asked = true;
+        return;
+    }
     if (!at_goal())
         m_typed_after = !playing();
     to_session(key);
     after_change();
+}
+
+// Y to "Leave the exercise ?": the replay ends there, its goal not reached, and the keyboard is
+// the student's in the session as it stands.
+void ReplayDriver::leave_exercise()
+{
+    stop();
+    m_typed_after = true;
+    m_session.mark_goal(std::nullopt);
 }
 
 void ReplayDriver::take_tick()
@@ -128,6 +150,8 @@ SessionScreen ReplayDriver::screen() const
 
 ReplayDriver::Shown ReplayDriver::shown() const
 {
+    if (m_leave_asked)
+        return {std::string(leave_exercise_question), {}};
     if (m_typed_after)
         return {};
     if (!m_goal_said.empty())

@@ -123,12 +123,31 @@ TEST_CASE("a GOAL line that names no goal is refused with its FILE:LINE", "[sess
         {"GOAL VALUE TENSION 0.6 0.4", "a staff line's name and LO <= HI after VALUE"},
         {"GOAL NEAR 1 2 3 0", "a point X Y Z and a distance D > 0"},
         {"GOAL NEAR 1 2 3", "a point X Y Z and a distance D > 0"},
-        {"GOAL INBETWEEN 0 1 2 3 1", "an in-between's number K from 1 after INBETWEEN"},
+        {"GOAL INBETWEEN 0 1 2 3 1", "an in-between's number K from 1 to 100000 after INBETWEEN"},
         {"GOAL FAR 1 2 3 1", "a point X Y Z and a distance D > 0"},
+        // Issue 45: goals nobody can reach had trapped a paced class.
+        {"GOAL VALUE TENSION 2 3", "LO and HI within the staff's -1 to +1"},
+        {"GOAL VALUE bias -1.5 0", "LO and HI within the staff's -1 to +1"},
+        {"GOAL NEAR 1e200 2 3 1", "X, Y, Z and D of at most 1e9 in size"},
+        {"GOAL NEAR 1 2 3 2e9", "X, Y, Z and D of at most 1e9 in size"},
+        {"GOAL NEAR 1 2 3 1e-300", "a distance D of at least 0.01 (the feedback's precision)"},
+        {"GOAL INBETWEEN 100001 1 2 3 1", "an in-between's number K from 1 to 100000 after INBETWEEN"},
     }));
     const Expected<KeyScript> script = parse_captioned_key_script("ENTER\n" + line + "\n", "g.keys");
     REQUIRE_FALSE(script);
     REQUIRE(script.error().to_string() ==
             "g.keys:2: expected GOAL VALUE NAME LO HI, GOAL NEAR X Y Z D or GOAL INBETWEEN K X Y Z D (" + reason +
                 "); found '" + line + "'");
+}
+
+TEST_CASE("a GOAL INBETWEEN beyond the session's in-betweens is refused with its FILE:LINE", "[session][exercises]")
+{
+    const Expected<KeyScript> script =
+        parse_captioned_key_script("ENTER\nGOAL INBETWEEN 12 1 2 3 1\nGOAL INBETWEEN 13 1 2 3 1\n", "g.keys");
+    REQUIRE(script);
+    REQUIRE(goals_within_inbetweens(script->goals, 13, "g.keys"));
+    const Expected<void> beyond = goals_within_inbetweens(script->goals, 12, "g.keys");
+    REQUIRE_FALSE(beyond);
+    REQUIRE(beyond.error().to_string() == "g.keys:3: GOAL INBETWEEN 13 names an in-between beyond the 12 the session "
+                                          "makes (--inbetweens 12); expected K from 1 to 12");
 }

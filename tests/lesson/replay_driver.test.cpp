@@ -245,6 +245,40 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
     }
 }
 
+TEST_CASE("q at a goal asks to leave the exercise: N goes back to the goal, Y ends the replay and hands the keyboard over",
+          "[lesson][replay][goal]")
+{
+    // Issue 45: at a goal every key was the student's, q included, so a goal the student could not
+    // reach trapped the class (only Ctrl-C left).
+    const std::filesystem::path exercise = data_folder / "exercises" / "exercise-1-tension.keys";
+    const KeyScript script = read_script(exercise);
+    MemoryFiles files = example_files("exercises");
+    Session session({}, files);
+    ReplayDriver replay(session, script, exercise.string(), {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
+    for (std::size_t step = 0; step < 20 && !replay.screen().caption.starts_with("GOAL: "); ++step) {
+        replay.handle(space);
+        run_until_idle(replay);
+    }
+    const std::string goal_row = replay.screen().caption;
+    REQUIRE(goal_row.starts_with("GOAL: "));
+    const std::size_t handled = replay.handled().size();
+    const std::uint64_t revision = replay.screen_revision();
+    replay.handle(KeyEvent::typed(U'q'));
+    REQUIRE(replay.screen().caption == leave_exercise_question);
+    REQUIRE(replay.screen_revision() != revision);
+    replay.handle(KeyEvent::typed(U'n'));
+    REQUIRE(replay.screen().caption == goal_row);
+    REQUIRE(replay.handled().size() == handled); // neither q nor n reached the session
+    replay.handle(KeyEvent::typed(U'Q'));
+    replay.handle(KeyEvent::typed(U'Y'));
+    REQUIRE_FALSE(replay.playing());
+    REQUIRE(replay.screen().caption.empty());
+    REQUIRE(replay.handled().size() == handled);
+    // The keyboard is the student's: the next key reaches the session.
+    replay.handle(KeyEvent::typed(U'L'));
+    REQUIRE(replay.handled().size() == handled + 1);
+}
+
 TEST_CASE("keys typed while a replay plays at once are the session's once it has played", "[lesson][replay]")
 {
     KeyScript script;

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace apcs {
 
@@ -39,6 +40,12 @@ struct ScriptGoal {
 // K X Y Z D; found …" and a reason. before_event and answer_end are left to the caller.
 [[nodiscard]] Expected<ScriptGoal> parse_goal_line(std::string_view words, const std::string& file_name,
                                                    int line_number);
+
+// ok when every INBETWEEN goal's K is at most `inbetween_count`, the in-betweens the session makes
+// (--inbetweens); else "FILE:LINE: GOAL INBETWEEN 13 names an in-between beyond the 12 the
+// session makes (--inbetweens 12); expected K from 1 to 12": a goal nobody can reach.
+[[nodiscard]] Expected<void> goals_within_inbetweens(const std::vector<ScriptGoal>& goals, std::size_t inbetween_count,
+                                                     const std::string& file_name);
 
 // The point a NEAR or INBETWEEN goal names, to be marked on screen; none for VALUE.
 std::optional<Vec3> goal_point(const ScriptGoal& goal);

@@ -10,9 +10,14 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace apcs {
+
+// On the caption row after q at a goal (SPEC §3.1): Y leaves the exercise (the replay ends, the
+// keyboard is the student's), any other key goes back to the goal.
+inline constexpr std::string_view leave_exercise_question = "Leave the exercise ? (Y/N)";
 
 // Who watches a replay. On a terminal a person does: the script plays at its pace (ReplayPace),
 // Esc hands the keyboard over, a goal waits for the student's keys until it holds (a goal that
@@ -100,6 +105,7 @@ private:
     void play_scripted();
     void to_session(const KeyEvent& key);
     void stop();
+    void leave_exercise();
 
     Session& m_session;
     const KeyScript& m_script;
@@ -116,6 +122,7 @@ private:
     bool m_step_held = false;
     bool m_stopped = false;
     bool m_typed_after = false;
+    bool m_leave_asked = false; // q at a goal: the next key answers leave_exercise_question
     Expected<void> m_goals = ok;
     std::vector<KeyEvent> m_handled;
     // Keys typed while the replay played unasked, the session's or the replay's once it stops.
