@@ -1,5 +1,7 @@
 #include "apcs/animation/surface_fit.h"
 
+#include "apcs/base/parallel_work.h"
+
 #include "apcs/animation/hermite.h"
 
 #include <algorithm>
@@ -74,8 +76,14 @@ SurfaceFitter::SurfaceFitter(std::span<const Vec3> key1, std::span<const Vec3> k
                              EdgePath first_edge, EdgePath last_edge, const FergusonCorners& corners)
     : SurfaceFitter(key1, key2, closure, std::move(first_edge), std::move(last_edge))
 {
-    for (const HermiteSegment& path : ferguson_point_paths(m_key1, m_key2, closure, corners))
-        m_ferguson_paths.emplace_back(path);
+    const std::vector<HermiteSegment> paths = ferguson_point_paths(m_key1, m_key2, closure, corners);
+    // Measuring a path costs about as much as placing its point in five frames: both cores share it.
+    m_ferguson_paths.resize(paths.size());
+    constexpr std::size_t paths_worth_a_thread = 2048;
+    split_across_cores(paths.size(), paths_worth_a_thread, [&](std::size_t first, std::size_t end) {
+        for (std::size_t i = first; i < end; ++i)
+            m_ferguson_paths[i] = MeasuredSegment(paths[i]);
+    });
 }
 
 void SurfaceFitter::fit(std::size_t k, std::size_t first, std::span<Vec3> out) const
@@ -118,8 +126,14 @@ namespace {
 FrameSequence all_frames(const SurfaceFitter& fitter)
 {
     FrameSequence frames(fitter.frame_count(), fitter.point_count());
-    for (std::size_t k = 0; k < frames.frame_count(); ++k)
-        fitter.fit(k, 0, frames.frame(k));
+    // Each frame's points on both cores: a Ferguson point costs an arc-length search.
+    constexpr std::size_t points_worth_a_thread = 4096;
+    for (std::size_t k = 0; k < frames.frame_count(); ++k) {
+        const std::span<Vec3> frame = frames.frame(k);
+        split_across_cores(frame.size(), points_worth_a_thread, [&](std::size_t first, std::size_t end) {
+            fitter.fit(k, first, frame.subspan(first, end - first));
+        });
+    }
     return frames;
 }
 

@@ -390,3 +390,40 @@ TEST_CASE("the point at an arc fraction of a straight segment is that share of i
     const HermiteSegment still{{1, 1, 1}, {1, 1, 1}, {}, {}};
     REQUIRE(point_at_arc_fraction(still, 0.5) == Vec3{1, 1, 1});
 }
+
+TEST_CASE("a measured segment places arc fractions as the adaptive Simpson measuring does, near-cusps included",
+          "[animation][fit][ferguson]")
+{
+    // Issue 45: each Ferguson point was placed by Newton's steps on an adaptive Simpson sum (about
+    // 25 us a point and frame); the knot table and Gauss-Legendre must land where that did, to
+    // 1e-10 of the length, on gentle segments, loops and near-cusps (a tangent against the chord).
+    const HermiteSegment segments[] = {
+        {{0, 0, 0}, {5, 3, 1}, {2, 3, 4}, {3, -2, 9}},
+        {{0, 0, 0}, {1, 0, 0}, {10, 10, 0}, {10, -10, 0}},      // a loop
+        {{0, 0, 0}, {1, 0, 0}, {-3, 0.001, 0}, {-3, 0.001, 0}}, // doubles back: near-cusps
+        {{0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}},           // still at both ends
+    };
+    for (const HermiteSegment& segment : segments) {
+        CurveArcLengths adaptive;
+        adaptive.measure(std::span(&segment, 1));
+        const double total = adaptive.total_length();
+        const MeasuredSegment measured(segment);
+        for (int step = 0; step <= 40; ++step) {
+            const double fraction = step / 40.0;
+            const Vec3 expected = segment.point_at(adaptive.parameter_at(std::span(&segment, 1), fraction * total).u);
+            INFO("segment from " << segment.start.x << " fraction " << fraction);
+            REQUIRE(distance(measured.at_arc_fraction(fraction), expected) <= 1e-10 * total);
+        }
+    }
+    // Out and back along x: P(u) = (2 + u(1 - u), 2, 2), its speed |1 - 2u| zero at the turn.
+    // The arc length is known exactly (0.5 in all): the point at fraction f is 2 + 0.5f out, or
+    // back from 2.25. (The adaptive Simpson search missed it by 2e-5 just past the turn.)
+    const HermiteSegment out_and_back{{2, 2, 2}, {2, 2, 2}, {1, 0, 0}, {-1, 0, 0}};
+    const MeasuredSegment measured(out_and_back);
+    for (int step = 0; step <= 40; ++step) {
+        const double travelled = 0.5 * step / 40.0;
+        const double x = 2.0 + (travelled <= 0.25 ? travelled : 0.5 - travelled);
+        INFO("travelled " << travelled);
+        REQUIRE(distance(measured.at_arc_fraction(step / 40.0), Vec3{x, 2, 2}) <= 1e-10);
+    }
+}
