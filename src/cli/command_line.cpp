@@ -173,6 +173,20 @@ std::optional<std::string> foreign_option(const CLI::App& app, std::span<const c
     return std::nullopt;
 }
 
+// CLI11 says "--slopes: At least 2 required but received 1" of an option given too few or too
+// many values: say what it takes instead.
+std::optional<std::string> wrong_value_count(const CLI::App& command, const CLI::ParseError& error)
+{
+    const std::string what = error.what();
+    if (dynamic_cast<const CLI::ArgumentMismatch*>(&error) == nullptr || !what.starts_with("-"))
+        return std::nullopt;
+    const CLI::Option* option = command.get_option_no_throw(what.substr(0, what.find(':')));
+    if (option == nullptr)
+        return std::nullopt;
+    return option->get_name() + " takes " + std::to_string(option->get_expected_max()) + " values (" +
+           option->get_type_name() + "); " + std::to_string(option->results().size()) + " given";
+}
+
 // CLI11 says "FILES: At least 4 required but received 2": say what the command takes instead.
 std::optional<std::string> wrong_operand_count(const CLI::App& command, const CLI::ParseError& error,
                                                const char* operands)
@@ -194,6 +208,8 @@ std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::
                              const CLI::ParseError& error, const char* operands)
 {
     if (auto line = foreign_option(app, arguments))
+        return *std::move(line);
+    if (auto line = wrong_value_count(command, error))
         return *std::move(line);
     if (operands != nullptr) {
         if (auto line = wrong_operand_count(command, error, operands))

@@ -14,12 +14,12 @@ Expected<HandoutWriter> HandoutWriter::open(const std::filesystem::path& folder)
     return HandoutWriter(folder);
 }
 
-void HandoutWriter::write(int number, std::string_view caption, const SessionScreen& shown, GlyphSet glyphs,
-                          const KeyFileGuard& inputs)
+void HandoutWriter::write(int number, std::size_t count, std::string_view caption, const SessionScreen& shown,
+                          GlyphSet glyphs, const KeyFileGuard& inputs)
 {
     if (!m_outcome)
         return;
-    const std::filesystem::path stem = m_folder / handout_file_stem(number, caption);
+    const std::filesystem::path stem = m_folder / handout_file_stem(number, count, caption);
     const std::optional<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor);
     if (!png) {
         m_outcome = Diagnostic{stem.string() + ".png", 0, "cannot encode the PNG image"};

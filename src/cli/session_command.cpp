@@ -396,8 +396,8 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
     if (handout)
         hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
                                                                                        const SessionScreen& shown) {
-            handout->write(static_cast<int>(index) + 1, script.captions[index].text, shown, glyphs,
-                           files_read(options, session, folder));
+            handout->write(static_cast<int>(index) + 1, script.captions.size(), script.captions[index].text, shown,
+                           glyphs, files_read(options, session, folder));
         };
     return hooks;
 }

@@ -1,6 +1,8 @@
 #include "apcs/lesson/handout.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <string>
 
 namespace apcs {
 
@@ -41,10 +43,11 @@ std::string handout_step_name(std::string_view caption)
     return name.substr(0, cut == std::string::npos || cut == 0 ? max_step_name_length : cut);
 }
 
-std::string handout_file_stem(int number, std::string_view caption)
+std::string handout_file_stem(int number, std::size_t count, std::string_view caption)
 {
-    char digits[16];
-    std::snprintf(digits, sizeof digits, "%02d-", number);
+    const int width = std::max(2, static_cast<int>(std::to_string(count).size()));
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%0*d-", width, number);
     return digits + handout_step_name(caption);
 }
 

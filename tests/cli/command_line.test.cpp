@@ -91,6 +91,10 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"fit", "a.dat", "b.dat"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 2 given"},
         {{"fit", "a", "b", "c", "d", "e", "--print"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 5 given"},
         {{"fit", "--print"}, "apcs: fit takes four files KEY1 KEY2 PATH_FIRST PATH_LAST; 0 given"},
+        // Issue 45: a wrong count of --slopes values had been told as the files' count.
+        {{"fit", "a", "b", "c", "d", "--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
+        {{"path", "a.dat", "--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
+        {{"--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
         {{"inbetween", "a.dat"}, "apcs: inbetween takes two key files KEY1 KEY2; 1 given"},
         {{"path", "a.dat", "b.dat"}, "apcs: path takes one path file FILE.dat; 2 given"},
         {{"play"}, "apcs: play takes one scene file SCENE.scn; 0 given"},

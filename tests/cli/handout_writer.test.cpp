@@ -92,7 +92,7 @@ TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-S
     REQUIRE(screens.size() == script->captions.size());
     std::vector<std::string> expected;
     for (std::size_t index = 0; index < screens.size(); ++index) {
-        const std::string stem = handout_file_stem(static_cast<int>(index) + 1, script->captions[index].text);
+        const std::string stem = handout_file_stem(static_cast<int>(index) + 1, script->captions.size(), script->captions[index].text);
         CAPTURE(stem);
         expected.push_back(stem + ".png");
         expected.push_back(stem + ".txt");

@@ -29,9 +29,13 @@ TEST_CASE("a caption's short name keeps its letters and digits, lowercased, word
 
 TEST_CASE("a handout page's name is the caption's number from 01 and its short name", "[session][handout]")
 {
-    REQUIRE(handout_file_stem(1, "T shows the tangents") == "01-t-shows-the-tangents");
-    REQUIRE(handout_file_stem(12, "U") == "12-u");
-    REQUIRE(handout_file_stem(100, "U") == "100-u");
+    REQUIRE(handout_file_stem(1, 12, "T shows the tangents") == "01-t-shows-the-tangents");
+    REQUIRE(handout_file_stem(12, 12, "U") == "12-u");
+    REQUIRE(handout_file_stem(100, 100, "U") == "100-u");
+    // Issue 45: with 100 captions or more every page takes the same width, so names sort in order.
+    REQUIRE(handout_file_stem(1, 100, "U") == "001-u");
+    REQUIRE(handout_file_stem(99, 1000, "U") == "0099-u");
+    REQUIRE(handout_file_stem(7, 9, "U") == "07-u");
 }
 
 TEST_CASE("the text console's page is its rows drawn in the font, graphics mode's its picture", "[session][handout]")

@@ -22,13 +22,13 @@ public:
     // before the session starts.
     [[nodiscard]] static Expected<HandoutWriter> open(const std::filesystem::path& folder);
 
-    // Caption number `number` (1, 2, …) over `shown` (the caption already laid on it), the text in
+    // Caption number `number` (1, 2, …) of `count` over `shown` (the caption already laid on it), the text in
     // `glyphs`. Each file is written atomically as every picture of APCS is: an existing one is
     // replaced (kept as NN-STEP.bak; identical content leaves it untouched), never one of `inputs`.
     // When the PNG's old content took NN-STEP.bak this time, the text's goes to NN-STEP.b01 …, so
     // that one backup never replaces the other. The first problem is kept (outcome()); after it
     // nothing more is written.
-    void write(int number, std::string_view caption, const SessionScreen& shown, GlyphSet glyphs,
+    void write(int number, std::size_t count, std::string_view caption, const SessionScreen& shown, GlyphSet glyphs,
                const KeyFileGuard& inputs);
 
     // ok, or the first write that failed.

@@ -23,8 +23,10 @@ inline constexpr std::size_t max_step_name_length = 32;
 // is "w-opens-the-waypoint-editor-i".
 std::string handout_step_name(std::string_view caption);
 
-// "NN-STEP" for caption `number` (1, 2, …): the handout's file names less .png and .txt.
-std::string handout_file_stem(int number, std::string_view caption);
+// "NN-STEP" for caption `number` (1, 2, …) of `count`: the handout's file names less .png and
+// .txt. The number has two digits, or as many as `count` has, so that the pages of one handout
+// sort in their order by name (099 before 100).
+std::string handout_file_stem(int number, std::size_t count, std::string_view caption);
 
 // The 80x24 screen as text, one line a row, trailing blanks removed, each line ending in a newline:
 // graphics mode mapped to characters in `glyphs`, the console as it is. What headless replays print
