@@ -55,6 +55,26 @@ void work_a_while(InteractiveProgram& program)
     while (program.busy() && std::chrono::steady_clock::now() - start < slice);
 }
 
+// A key read: to the program, unless the terminal is too small to show it. True when the whole
+// terminal must be painted again (Ctrl-L, which the program sees too; the pixel notice gone).
+bool take_key(const KeyEvent& key, Terminal& terminal, TerminalPixels& pixels, InteractiveProgram& program)
+{
+    bool changed = false;
+    if (key.key == Key::redraw) {
+        terminal.redraw();
+        changed = true;
+    }
+    // Keys typed at the too-small screen would act on a program nobody can see.
+    if (!fit_cell_area(terminal.size().columns, terminal.size().rows))
+        return changed;
+    if (!pixels.notice().empty()) {
+        pixels.clear_notice();
+        changed = true;
+    }
+    program.handle(key);
+    return changed;
+}
+
 } // namespace
 
 CellGrid too_small_grid(TerminalSize size)
@@ -124,19 +144,7 @@ Expected<ExitStatus> run_terminal_program(InteractiveProgram& program, GlyphSet 
                 program.tick();
             break;
         case TerminalInput::key:
-            // Ctrl-L repaints the whole terminal; the program sees the key too.
-            if (key.key == Key::redraw) {
-                terminal->redraw();
-                terminal_changed = true;
-            }
-            // Keys typed at the too-small screen would act on a program nobody can see.
-            if (!fit_cell_area(terminal->size().columns, terminal->size().rows))
-                break;
-            if (!pixels.notice().empty()) {
-                pixels.clear_notice();
-                terminal_changed = true;
-            }
-            program.handle(key);
+            terminal_changed = take_key(key, *terminal, pixels, program) || terminal_changed;
             break;
         }
     }
