@@ -64,16 +64,44 @@ void append_utf8(std::string& text, char32_t code_point)
     }
 }
 
+namespace {
+
+// The bytes of the UTF-8 sequence that starts at `at`, or 0 when none does (a stray byte).
+std::size_t sequence_length(std::string_view utf8, std::size_t at)
+{
+    const auto lead = static_cast<unsigned char>(utf8[at]);
+    const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+    if (length == 0 || at + length > utf8.size())
+        return 0;
+    for (std::size_t i = at + 1; i < at + length; ++i)
+        if ((static_cast<unsigned char>(utf8[i]) & 0xC0) != 0x80)
+            return 0;
+    return length;
+}
+
+} // namespace
+
 std::optional<std::string> first_control_character(std::string_view utf8)
 {
     constexpr std::string_view digits = "0123456789ABCDEF";
-    for (const char32_t character : decode_utf8(utf8)) {
+    const auto hex = [&](unsigned value) { return std::string(1, digits[value >> 4]) + digits[value & 0xF]; };
+    for (std::size_t at = 0; at < utf8.size();) {
+        const std::size_t length = sequence_length(utf8, at);
+        const auto byte = static_cast<unsigned char>(utf8[at]);
+        // A stray byte 0x80-0x9F is a C1 control to a terminal in an 8-bit mode (0x9B: CSI).
+        if (length == 0) {
+            if (byte >= 0x80 && byte <= 0x9F)
+                return "\\x" + hex(byte);
+            ++at;
+            continue;
+        }
+        const std::u32string decoded = decode_utf8(utf8.substr(at, length));
+        const char32_t character = decoded.empty() ? U'\uFFFD' : decoded.front();
+        at += length;
         if (character == U'\t' || (character >= 0x20 && character < 0x7F) || character > 0x9F)
             continue;
-        const auto byte = static_cast<unsigned>(character);
-        if (character < 0x80)
-            return std::string("\\x") + digits[byte >> 4] + digits[byte & 0xF];
-        return std::string("U+00") + digits[byte >> 4] + digits[byte & 0xF];
+        const auto code = static_cast<unsigned>(character);
+        return (character < 0x80 ? "\\x" : "U+00") + hex(code);
     }
     return std::nullopt;
 }

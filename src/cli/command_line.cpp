@@ -183,7 +183,8 @@ std::optional<std::string> wrong_value_count(const CLI::App& command, const CLI:
     const CLI::Option* option = command.get_option_no_throw(what.substr(0, what.find(':')));
     if (option == nullptr)
         return std::nullopt;
-    return option->get_name() + " takes " + std::to_string(option->get_expected_max()) + " values (" +
+    const int values = option->get_expected_max();
+    return option->get_name() + " takes " + std::to_string(values) + (values == 1 ? " value (" : " values (") +
            option->get_type_name() + "); " + std::to_string(option->results().size()) + " given";
 }
 

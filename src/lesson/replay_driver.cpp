@@ -92,8 +92,9 @@ void ReplayDriver::take(const KeyEvent& key)
         return;
     }
     // At a goal the keys are the student's, but q asks whether to leave it (a goal the student
-    // cannot reach must not trap the class).
-    if (at_goal() && (key == KeyEvent::typed(U'q') || key == KeyEvent::typed(U'Q'))) {
+    // cannot reach must not trap the class); where text is typed (a prompt, a staff value) q is a
+    // letter of it.
+    if (at_goal() && (key == KeyEvent::typed(U'q') || key == KeyEvent::typed(U'Q')) && !m_session.takes_typed_text()) {
         m_leave_asked = true;
         return;
     }

@@ -96,6 +96,12 @@ KeyContext Session::step_key_context() const
     return std::visit([](const auto& step) { return step.key_context(); }, m_step);
 }
 
+bool Session::takes_typed_text() const
+{
+    const KeyContext context = step_key_context();
+    return context == KeyContext::text_line || context == KeyContext::value_field;
+}
+
 void Session::handle(const KeyEvent& event)
 {
     const std::optional<ShapingLook> before = shaping_look();

@@ -95,6 +95,7 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"fit", "a", "b", "c", "d", "--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
         {{"path", "a.dat", "--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
         {{"--slopes", "0.5"}, "apcs: --slopes takes 2 values (S0 S1); 1 given"},
+        {{"path", "a.dat", "--tension"}, "apcs: --tension takes 1 value (T); 0 given"},
         {{"inbetween", "a.dat"}, "apcs: inbetween takes two key files KEY1 KEY2; 1 given"},
         {{"path", "a.dat", "b.dat"}, "apcs: path takes one path file FILE.dat; 2 given"},
         {{"play"}, "apcs: play takes one scene file SCENE.scn; 0 given"},

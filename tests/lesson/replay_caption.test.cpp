@@ -161,6 +161,11 @@ TEST_CASE("a key script line that a terminal would obey is refused with its file
             "class.keys:1: expected printable text; found the control character \\x07 (a terminal would obey it)");
     REQUIRE(refusal(";; \xc2\x9b" "2J\n") ==
             "class.keys:1: expected printable text; found the control character U+009B (a terminal would obey it)");
+    // The review: a stray 0x9B, no UTF-8 at all, is CSI to a terminal in an 8-bit mode.
+    REQUIRE(refusal(";; hi \x9b?1049h\n") ==
+            "class.keys:1: expected printable text; found the control character \\x9B (a terminal would obey it)");
+    // A continuation byte in 0x80-0x9F inside a valid sequence is no control: U+4E00 is E4 B8 80.
+    REQUIRE(refusal(";; \xe4\xb8\x80\n") == "accepted");
     REQUIRE(refusal("GOAL VALUE TENSION 0.4 1\x7f\n") ==
             "class.keys:1: expected printable text; found the control character \\x7F (a terminal would obey it)");
     // A tab, line ends of either kind and text beyond ASCII stay.

@@ -279,6 +279,23 @@ TEST_CASE("q at a goal asks to leave the exercise: N goes back to the goal, Y en
     REQUIRE(replay.handled().size() == handled + 1);
 }
 
+TEST_CASE("q at a goal is a typed letter where the session takes text: the prompt's line, not the leave question",
+          "[lesson][replay][goal]")
+{
+    // The review of issue 45's change: "quad.dat" typed at a prompt during a goal lost its q and u.
+    const Expected<KeyScript> script = parse_captioned_key_script("GOAL VALUE TENSION 0.4 0.6\nENTER\n", "g.keys");
+    REQUIRE(script);
+    MemoryFiles files = example_files("exercises");
+    Session session({}, files);
+    ReplayDriver replay(session, *script, "g.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
+    REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+    REQUIRE(session.takes_typed_text());
+    replay.handle(KeyEvent::typed(U'q'));
+    replay.handle(KeyEvent::typed(U'u'));
+    REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+    REQUIRE(replay.handled() == std::vector<KeyEvent>{KeyEvent::typed(U'q'), KeyEvent::typed(U'u')});
+}
+
 TEST_CASE("keys typed while a replay plays at once are the session's once it has played", "[lesson][replay]")
 {
     KeyScript script;

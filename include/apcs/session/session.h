@@ -46,6 +46,8 @@ public:
     std::uint64_t screen_revision() const override { return m_revision; }
 
     SessionPhase phase() const;
+    // Whether the step now takes typed text: a prompt's line, or a staff value after '='.
+    bool takes_typed_text() const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
     // The KEY1 and KEY2 files as typed (empty until read), relative to the session's folder.
     const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
