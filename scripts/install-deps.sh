@@ -8,16 +8,16 @@
 set -euo pipefail
 
 # libchafa-dev's pkg-config file asks for glib's (libglib2.0-dev), which Debian 12 does not bring with it.
-build_and_run=(g++ cmake make pkgconf libcli11-dev libeigen3-dev libpng-dev libgif-dev libchafa-dev libglib2.0-dev
+build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev libpng-dev libgif-dev libchafa-dev libglib2.0-dev
                libncurses-dev console-setup-linux)
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
 # `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
 # librsvg2-bin and imagemagick (svg_renders.sh renders the SVG pictures as viewers do; terminal_pictures.sh
 # decodes the sixel files), xvfb, xterm, kitty, x11-apps and xfonts-base (terminal_shows_picture.sh shows
 # the sixel file in xterm -ti vt340 -fn 9x15 and the kitty file in kitty on a virtual X server, and takes
-# a screenshot with xwd).
+# a screenshot with xwd), and locales (localedef and its sources: locale_numbers.sh makes a German locale).
 testing=(catch2 tmux procps groff-base python3 bsdutils mount librsvg2-bin imagemagick xvfb xterm kitty x11-apps
-         xfonts-base)
+         xfonts-base locales)
 case "${1:-}" in
   --run) testing=(); shift ;;
   --packaging) testing+=(debhelper dpkg-dev fakeroot bash-completion lintian man-db); shift ;;

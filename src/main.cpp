@@ -65,9 +65,12 @@ int main(int argc, char** argv)
     // Terminal is owned inside run_terminal_program). Exit status 1, as for bad input or a failed
     // write (SPEC §1 has no status of its own for it): the command did not do what it was asked.
     try {
-        // The locale decides the default glyphs and refuses those it cannot show (the session
-        // command's terminal_glyphs); curses needs it for wide characters.
-        std::setlocale(LC_ALL, "");
+        // The locale's character set decides the default glyphs and refuses those it cannot show
+        // (the session command's terminal_glyphs); curses needs it for wide characters. Only the
+        // character set: numbers are written and read with '.' in every locale (SPEC section 1),
+        // as the .dat files are, so LC_NUMERIC stays "C" (a German locale's 0,5 would reach the
+        // staff, apcs.log and CLI11's reading of --tension 0.5).
+        std::setlocale(LC_CTYPE, "");
         // Large buffers (key files, frames, file texts) come and go in a batch run; a fixed mmap
         // threshold hands each back to the system when freed instead of letting glibc keep it in
         // the heap, so peak memory is what is in use at once.

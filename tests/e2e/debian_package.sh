@@ -1,18 +1,25 @@
 #!/usr/bin/env bash
-# The Debian package, as a user meets it: built from a clean clone (scripts/package.sh, without the
-# tests, which CI has run already), lintian reports no error, `dpkg -i` installs it, and from `/`
-# the installed program draws the figures into a new folder, replays an installed example's keys
-# in a scratch copy, and `man apcs` shows the page; `apt-get remove apcs` takes it all away.
-# Needs root (it installs a package). Usage: tests/e2e/debian_package.sh [SOURCE_FOLDER]
+# The Debian package, as a user meets it: built from a clean clone (scripts/package.sh; with
+# --with-tests its whole test suite runs in the build, as on a Debian build daemon: CI's release
+# build), lintian reports no error, `dpkg -i` installs it, and from `/` the installed program draws
+# the figures into a new folder, replays an installed example's keys in a scratch copy, and
+# `man apcs` shows the page; `apt-get remove apcs` takes it all away.
+# Needs root (it installs a package). Usage: tests/e2e/debian_package.sh [--with-tests] [SOURCE_FOLDER]
 set -uo pipefail
+package_options=()
+if [ "${1:-}" = --with-tests ]; then
+  package_options=(--with-tests)
+  shift
+fi
 source_tree=$(realpath "${1:-$(dirname "$0")/../..}")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 fail() { echo "FAILED: $*"; exit 1; }
 [ "$(id -u)" -eq 0 ] || fail "needs root: it installs and removes the package"
 
-bash "$source_tree/scripts/package.sh" "$work/deb" > "$work/build.log" 2>&1 ||
-  fail "building the package: $(tail -30 "$work/build.log")"
+bash "$source_tree/scripts/package.sh" "${package_options[@]}" "$work/deb" > "$work/build.log" 2>&1 ||
+  fail "building the package: $(grep -E -A12 '(Failed|\*\*\*Exception|\*\*\*Timeout)' "$work/build.log" | tail -80; tail -30 "$work/build.log")"
+grep -E "tests passed|tests failed" "$work/build.log"
 grep -q -- "-D_FORTIFY_SOURCE=2 .*-c .*src/main.cpp" "$work/build.log" ||
   fail "CPPFLAGS (_FORTIFY_SOURCE) did not reach the compiler"
 package=$(ls "$work"/deb/apcs_*.deb)
