@@ -52,6 +52,47 @@ def tangent_length_at_point_2(apcs, path_file, *options):
     return math.hypot(*[(a + b) / 2 for a, b in zip(arriving, leaving)])
 
 
+def crosses_itself(points):
+    """Whether the polyline crosses itself in the plane of its first, middle and last point (way1.dat's
+    control points lie in one plane, and so does its curve)."""
+    origin, middle, last = points[0], points[len(points) // 2], points[-1]
+    u = minus(middle, origin)
+    u = tuple(x / math.hypot(*u) for x in u)
+    w = minus(last, origin)
+    w = minus(w, tuple(x * sum(a * b for a, b in zip(w, u)) for x in u))
+    w = tuple(x / math.hypot(*w) for x in w)
+    flat = [(sum(a * b for a, b in zip(minus(p, origin), u)), sum(a * b for a, b in zip(minus(p, origin), w)))
+            for p in points]
+    side = lambda a, b, c: (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    def cross(p, q, r, s):
+        return side(p, q, r) * side(p, q, s) < 0 and side(r, s, p) * side(r, s, q) < 0
+    segments = list(zip(flat, flat[1:]))
+    return any(cross(*segments[i], *segments[j]) for i in range(len(segments)) for j in range(i + 2, len(segments)))
+
+
+def distance_off_chord(points):
+    start, end = points[0], points[-1]
+    chord = minus(end, start)
+    def off(point):
+        v = minus(point, start)
+        cross = (v[1] * chord[2] - v[2] * chord[1], v[2] * chord[0] - v[0] * chord[2], v[0] * chord[1] - v[1] * chord[0])
+        return math.hypot(*cross) / math.hypot(*chord)
+    return max(off(point) for point in points)
+
+
+def end_slope_claim(apcs, way1):
+    """The first span's turn from its first sample step to its last, and its bulge, at end slopes 0 and 1."""
+    def first_span(slope):
+        curve, _ = path_print(apcs, way1, "--samples", str(SAMPLES), "--slopes", slope, "1")
+        return curve[:SAMPLES + 1]
+    rest, chord = first_span("0"), first_span("1")
+    turn = lambda span: angle(minus(span[1], span[0]), minus(span[-1], span[-2]))
+    bulge = {f"{distance_off_chord(span):.3f}" for span in (rest, chord)}
+    off = " or ".join(sorted(bulge))  # one number when the slope changes nothing, as the manual says
+    return (f"with end slope 0 the first span turns {turn(rest):.1f} degrees from its start to its end, "
+            f"{turn(chord):.1f} with slope 1, and lies at most {off} off its chord with either slope")
+
+
 def claims(apcs, data):
     way1 = f"{data}/n-to-l/way1.dat"
     with open(way1) as source:
@@ -67,10 +108,17 @@ def claims(apcs, data):
     yield (f"continuity -1 breaks the curve at control point 2 into a corner of {corner:.0f} degrees "
            f"(at 0 it turns {smooth:.0f} degrees there)")
 
+    spike = angle(*derivatives_at_point_2(apcs, way1, "--continuity", "1"))
+    curve, _ = path_print(apcs, way1, "--samples", "200", "--continuity", "1")
+    shape = "a loop" if crosses_itself(curve) else "not a loop"
+    yield f"continuity +1 swaps the two tangents and makes a spike of {spike:.0f} degrees at control point 2, {shape}"
+
     for bias in (1, -1):
         _, leaving = derivatives_at_point_2(apcs, way1, "--bias", str(bias))
         yield (f"with bias {bias:+d} the curve leaves control point 2 {angle(leaving, incoming):.0f} degrees off "
                f"the incoming chord and {angle(leaving, outgoing):.0f} off the outgoing")
+
+    yield end_slope_claim(apcs, way1)
 
     curve, inbetweens = path_print(apcs, way1, "--tension", "0.15", "--accel", "0.15")
     along = [0.0]
