@@ -6,6 +6,7 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_joints.h"
 
 #include <cmath>
 #include <map>
@@ -24,6 +25,7 @@ inline SceneOutcome read_and_play_scene(std::string_view text)
         {"c.dat", "0 0 2\n0 1 2\n0 2 2\n"},
         {"p.dat", "0 0 0\n0 5 1\n0 10 0\n"},
         {"q.dat", "0 0 0 0.5 0 0 1\n0 3 0 0 0 0 -1\n"},
+        {"t.dat", "0 0 0\n0 1e-300 0\n"}, // a path too short for ALIGN's direction
     };
     const SceneFileReader read = [](const std::string& name) -> Expected<DatFile> {
         const auto found = dat_files.find(name);
@@ -42,6 +44,9 @@ inline SceneOutcome read_and_play_scene(std::string_view text)
     // frame that passed that check must read back: finite and within the .dat files' 1e9.
     if (animation.first_out_of_reach(max_dat_magnitude))
         return SceneOutcome::refused;
+    // So is a joint closing a cycle of joints that a KEYS drawing pulls open in some frame.
+    if (const Expected<void> closed = check_closing_joints(*scene, animation, "fuzz.scn"); !closed)
+        return closed.error().message.empty() ? SceneOutcome::broken : SceneOutcome::refused;
     const auto readable = [](double value) { return std::isfinite(value) && std::abs(value) <= max_dat_magnitude; };
     for (int f = 0; f <= animation.last_frame(); ++f)
         for (const Vec3& point : animation.frame(f))

@@ -14,6 +14,8 @@
 #include "apcs/formats/print_format.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_joints.h"
+#include "apcs/scene/scene_numbers.h"
 #include "apcs/scene/scene_tree.h"
 #include "apcs/screens/frames_overlay.h"
 #include "apcs/base/session_log.h"
@@ -96,6 +98,12 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
     return ok;
 }
 
+// The scene's name in messages, as read_scene_file writes it.
+std::string scene_file_name(const std::filesystem::path& scene_file)
+{
+    return scene_file == "-" ? "standard input" : scene_file.string();
+}
+
 // A scene whose frames a frame file could not hold (values past 1e9, or not numbers) is refused
 // before anything is printed or written, at the line of the object that goes out of reach.
 Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scene& scene,
@@ -105,20 +113,27 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
     if (!beyond)
         return ok;
     const SceneObject& object = scene.objects[beyond->object];
-    std::ostringstream reach;
-    if (std::isnan(beyond->magnitude))
-        reach << "values that are not numbers";
-    else
-        reach << "|value| " << std::setprecision(3) << beyond->magnitude;
+    // scene_number, not a stream: the number is the same in every locale.
+    const std::string reach =
+        std::isnan(beyond->magnitude) ? "values that are not numbers" : "|value| " + scene_number(beyond->magnitude, 3);
     const std::string how = beyond->at_anchor && object.anchor
                                 ? "put on its joint '" + object.joints[object.anchor->joint].name + "' with '" +
                                       scene.objects[object.anchor->partner].name + "'" +
                                       (object.rigid() ? ", turned about it" : "")
                                 : "its MOVE, ROTATE and SCALE composed with its parents'";
     return Diagnostic{scene_file.string(), object.line,
-                      "object " + object.name + " reaches " + reach.str() + " at frame " +
+                      "object " + object.name + " reaches " + reach + " at frame " +
                           std::to_string(beyond->frame) + " (" + how + "); a frame holds |value| <= 1e9, "
                           "as a .dat file does"};
+}
+
+// What only the computed frames show, before anything is printed or written: every value within
+// what a frame file holds, and every joint that closes a cycle of joints still closed.
+Expected<void> check_frames(const SceneAnimation& animation, const Scene& scene, const std::filesystem::path& scene_file)
+{
+    if (Expected<void> reachable = check_frames_in_reach(animation, scene, scene_file); !reachable)
+        return reachable;
+    return check_closing_joints(scene, animation, scene_file_name(scene_file));
 }
 
 ViewAngles view_of(const Scene& scene, const CommonOptions& options)
@@ -258,8 +273,8 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
                                                 options, "use fewer FRAMES or drawings of fewer points", err))
         return *refused;
     const SceneAnimation animation(*scene, settings, options.surface);
-    if (Expected<void> reachable = check_frames_in_reach(animation, *scene, request.scene); !reachable)
-        return report_bad_input(reachable.error(), err);
+    if (Expected<void> playable = check_frames(animation, *scene, request.scene); !playable)
+        return report_bad_input(playable.error(), err);
     if (options.print)
         print_frames(animation, *scene, out);
     const CommonOptions shown = scene_shown_options(*scene, options, inputs);

@@ -75,7 +75,8 @@ std::optional<Vec3> direction_at(std::span<const Vec3> line, const Vec3& point, 
     const PlaceOnPolyline place = nearest_place(line, point);
     if (ahead) {
         const std::optional<Vec3> front = point_ahead(line, place, point, *ahead);
-        if (!front)
+        // A chord lost in round-off has no direction: the last one is kept (SPEC §8.1), never NaN.
+        if (!front || !(length(*front - point) > 0.0))
             return std::nullopt;
         return *front - point;
     }

@@ -8,6 +8,7 @@
 #include "apcs/scene/move_align.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_numbers.h"
 #include "apcs/scene/timed_distance.h"
 
 #include <algorithm>
@@ -261,8 +262,13 @@ Vec3 SceneAnimation::place_drawing(std::size_t index, int f, const Affine& world
     const AnchorLink& anchor = *m_anchors[index];
     const ObjectPoints partner = m_object_points[anchor.partner];
     const Vec3 target = joint_place(points.subspan(partner.first, partner.count), anchor.partner_point, anchor.partner_last);
-    const Vec3 separation = target - joint_place(own, anchor.point, anchor.last);
-    if (length(separation) <= anchor.tolerance)
+    const Vec3 at = joint_place(own, anchor.point, anchor.last);
+    const Vec3 separation = target - at;
+    // Round-off of the coordinates never decides: a part drawn exactly TOLERANCE from its partner
+    // stays where it is drawn (frame 0 as given), as the frame-0 check let it.
+    const double largest = std::max({std::abs(at.x), std::abs(at.y), std::abs(at.z), std::abs(target.x),
+                                     std::abs(target.y), std::abs(target.z)});
+    if (at_most_within_round_off(length(separation), anchor.tolerance, largest))
         return shift;
     for (Vec3& point : own)
         point += separation;

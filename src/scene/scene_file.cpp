@@ -1,6 +1,7 @@
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene_joints.h"
+#include "apcs/scene/scene_numbers.h"
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/number_text.h"
@@ -24,6 +25,13 @@ using Fields = std::vector<std::string_view>;
 
 // The scene's largest scale: a SCALE whose power over its frames leaves 1e-6 … 1e6 is refused.
 constexpr double most_scale_growth = 1e6;
+
+// ALIGN's directions are differences of points on the path, squared for their length: a path (or
+// an AHEAD distance) of 1e-150 or less has steps whose squares vanish below the smallest double,
+// and one of 1e-12 of its coordinates or less has steps made of round-off (issue 45: AHEAD 1e-300
+// gave NaN turns; a path 1e-300 long silently did not turn).
+constexpr double shortest_align_span = 1e-150;
+constexpr double least_align_fraction = 1e-12;
 
 Fields split(std::string_view content)
 {
@@ -107,6 +115,9 @@ private:
                                 FrameSpan& frames, Axis* axis) const;
     Expected<void> check_span(const FrameSpan& span, std::string_view keyword) const;
     Expected<void> align_clause(Clauses& clauses, SceneMove& move) const;
+    Expected<void> times_clause(Clauses& clauses, const PendingPath& path, SceneMove& move) const;
+    Expected<void> check_move_frames(SceneMove& move, const PendingPath& path, bool span_given) const;
+    Expected<void> check_align_path(const SceneMove& move, const PendingPath& pending) const;
     Expected<void> once(bool already, std::string_view what) const;
     SceneObject& object() { return m_scene.objects.back(); }
     Diagnostic error(std::string message, int line = 0) const
@@ -363,38 +374,65 @@ Expected<void> SceneParser::parse_move(const Fields& fields)
                 return outcome.error();
         } else if (equals_ignoring_case(clause, "TIMES")) {
             clauses.take();
-            if (clauses.seen("TIMES"))
-                return error("TIMES is given twice; expected it once");
-            // The frames run to the first field that is not a whole number (LOOP, FROM, ...).
-            while (!clauses.done() && parse_count_value(clauses.peek())) {
-                const Expected<int> time = frame(clauses.take(), "TIMES");
-                if (!time)
-                    return time.error();
-                if (!move.times.empty() && *time <= move.times.back())
-                    return error("TIMES " + std::to_string(*time) + " after " + std::to_string(move.times.back()) +
-                                 ": expected increasing frames, one per control point");
-                move.times.push_back(*time);
-            }
+            if (auto outcome = times_clause(clauses, path, move); !outcome)
+                return outcome.error();
         } else {
             span_given = true;
             if (auto outcome = span_clause(clauses, "MOVE", move.frames); !outcome)
                 return outcome.error();
         }
     }
+    if (auto outcome = check_move_frames(move, path, span_given); !outcome)
+        return outcome.error();
+    object().move = std::move(move);
+    m_pending.move_path = std::move(path);
+    return ok;
+}
+
+// TIMES F0 F1 … Fn, after the TIMES taken: increasing frames, at least one.
+Expected<void> SceneParser::times_clause(Clauses& clauses, const PendingPath& path, SceneMove& move) const
+{
+    if (clauses.seen("TIMES"))
+        return error("TIMES is given twice; expected it once");
+    // The frames run to the first field that is not a whole number (LOOP, FROM, ...).
+    while (!clauses.done() && parse_count_value(clauses.peek())) {
+        const Expected<int> time = frame(clauses.take(), "TIMES");
+        if (!time)
+            return time.error();
+        if (!move.times.empty() && *time <= move.times.back())
+            return error("TIMES " + std::to_string(*time) + " after " + std::to_string(move.times.back()) +
+                         ": expected increasing frames, one per control point");
+        move.times.push_back(*time);
+    }
+    // Without frames the MOVE would be read as one without TIMES, the user's keys silently gone.
+    if (move.times.empty())
+        return error("TIMES without frames; expected one frame per control point of " + quote_field(path.name) + " (" +
+                     std::to_string(path.file.point_count()) + ")");
+    return ok;
+}
+
+// The MOVE's frames once its clauses are read: TIMES (one per control point) or FROM/TO, and at
+// least one frame to move over.
+Expected<void> SceneParser::check_move_frames(SceneMove& move, const PendingPath& path, bool span_given) const
+{
     if (!move.times.empty() && span_given)
         return error("MOVE with both TIMES and FROM/TO; expected one of them (TIMES gives every control point's frame)");
     if (!move.times.empty()) {
         if (move.times.size() != path.file.point_count())
-            return error("TIMES gives " + std::to_string(move.times.size()) + " frames but " + quote_field(fields[1]) +
+            return error("TIMES gives " + std::to_string(move.times.size()) + " frames but " + quote_field(path.name) +
                          " has " + std::to_string(path.file.point_count()) +
                          " control points; expected one frame per control point");
         move.frames = {move.times.front(), move.times.back()};
     }
     if (auto outcome = check_span(move.frames, "MOVE"); !outcome)
-        return outcome.error();
-    object().move = std::move(move);
-    m_pending.move_path = std::move(path);
-    return ok;
+        return outcome;
+    // FROM F TO F would put the object at the path's end at frame F with nothing between: a jump,
+    // not a move, and at frame 0 against "frame 0 shows every drawing as given" (SPEC §8.2).
+    if (move.frames.from < move.frames.to)
+        return ok;
+    const std::string at = std::to_string(move.frames.from);
+    return error("MOVE FROM " + at + " TO " + at + " covers no frame: the object would jump to the path's end at frame " +
+                 at + "; expected FROM before TO");
 }
 
 // ALIGN [AHEAD D], after the ALIGN taken: D a distance above 0.
@@ -538,12 +576,19 @@ Expected<void> SceneParser::finish_rigid()
                      current.rigid_line);
     const EqualisedKeys& keys = current.keys->keys;
     const RigidTurn turn = fit_rigid_turn(keys.key1.all_points(), keys.key2.all_points());
+    // A part of no size (every point at one place) is allowed 0: the round-off of its coordinates,
+    // not the drawing, decided (4.6e-16 off refused it).
     const double allowed = rigid_congruence * turn.size;
-    if (turn.worst_deviation <= allowed)
+    double largest = 0.0;
+    for (const Graphic* key : {&keys.key1, &keys.key2})
+        for (const GraphicPart& part : key->parts)
+            for (const Vec3& point : part.points)
+                largest = std::max({largest, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+    if (at_most_within_round_off(turn.worst_deviation, allowed, largest))
         return ok;
     return error("RIGID part '" + current.name + "': its KEY2 drawing is not its KEY1 drawing turned and moved: point " +
-                     std::to_string(turn.worst_point + 1) + " is " + shortest_number(turn.worst_deviation) +
-                     " off; expected within 1e-4 of its size (" + shortest_number(turn.size) + ")",
+                     std::to_string(turn.worst_point + 1) + " is " + scene_number(turn.worst_deviation) +
+                     " off; expected within 1e-4 of its size (" + scene_number(turn.size) + ")",
                  current.rigid_line);
 }
 
@@ -634,6 +679,36 @@ Expected<void> SceneParser::check_span(const FrameSpan& span, std::string_view k
                  ": expected FROM <= TO");
 }
 
+// ALIGN turns by the path's direction: the path must have one the numbers can hold (a path of zero
+// length has none, nor has one 1e-300 long), and AHEAD's chord must be longer than the round-off of
+// the path's points (AHEAD 1e-300's chord was 0: NaN turns, refused as values that are not numbers
+// "composed with its parents'", at the OBJECT line). Told here, at the MOVE line, in the scene's terms.
+Expected<void> SceneParser::check_align_path(const SceneMove& move, const PendingPath& pending) const
+{
+    double span = 0.0;    // the farthest control point from the first
+    double largest = 0.0; // the largest |coordinate|
+    for (const ControlPoint& point : move.path) {
+        const Vec3 step = point.position - move.path.front().position;
+        span = std::max(span, std::hypot(step.x, step.y, step.z)); // hypot: 1e-300 does not square to 0
+        largest = std::max({largest, std::abs(point.position.x), std::abs(point.position.y), std::abs(point.position.z)});
+    }
+    const std::string name = quote_field(pending.name);
+    if (span == 0.0)
+        return error("ALIGN on " + name + ", a path of zero length: it has no direction to turn the object by", pending.line);
+    const double least = std::max(shortest_align_span, least_align_fraction * largest);
+    if (span <= least)
+        return error("ALIGN on " + name + ": its control points are all within " + scene_number(span) +
+                         " of its first, too close for a direction; expected a path that spans more than 1e-150 and "
+                         "more than 1e-12 of its largest coordinate",
+                     pending.line);
+    if (move.ahead && *move.ahead <= least)
+        return error("ALIGN AHEAD " + scene_number(*move.ahead) + " on " + name +
+                         ": a chord that short is round-off, not a direction; expected D above 1e-150 and above 1e-12 "
+                         "of the path's largest coordinate (" + scene_number(largest) + ")",
+                     pending.line);
+    return ok;
+}
+
 // What needs the whole object: the paths of KEYS and MOVE take its staff values; every joint's
 // point lies in its drawing.
 Expected<void> SceneParser::finish_object()
@@ -668,13 +743,9 @@ Expected<void> SceneParser::finish_object()
     }
     if (m_pending.move_path) {
         current.move->path = control_points_from(m_pending.move_path->file, current.staff);
-        const ControlPoints& path = current.move->path;
-        const bool still = std::all_of(path.begin(), path.end(),
-                                       [&path](const ControlPoint& point) { return point.position == path.front().position; });
-        if (current.move->align && still)
-            return error("ALIGN on " + quote_field(m_pending.move_path->name) +
-                             ", a path of zero length: it has no direction to turn the object by",
-                         m_pending.move_path->line);
+        if (current.move->align)
+            if (Expected<void> align = check_align_path(*current.move, *m_pending.move_path); !align)
+                return align;
     }
     const Graphic* drawing = current.first_drawing();
     const std::size_t points = drawing == nullptr ? 0 : drawing->point_count();

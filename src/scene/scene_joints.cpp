@@ -3,9 +3,16 @@
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/text_fields.h"
+#include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
+#include "apcs/scene/scene_numbers.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
+#include <optional>
+#include <span>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -35,6 +42,48 @@ std::map<std::string, std::vector<JointUse>> joint_uses(const Scene& scene)
     return uses;
 }
 
+double joint_tolerance(const Scene& scene, const JointUse& a, const JointUse& b, double default_tolerance)
+{
+    return joint_of(scene, b).tolerance.value_or(joint_of(scene, a).tolerance.value_or(default_tolerance));
+}
+
+double largest_coordinate(const Vec3& a, const Vec3& b)
+{
+    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
+}
+
+// A joint's two places at one frame, and how far apart they may be.
+struct JointGap {
+    JointUse earlier;
+    JointUse later;
+    Vec3 at_earlier;
+    Vec3 at_later;
+    int frame = 0;
+    double tolerance = 0.0;
+
+    // Within the tolerance, the coordinates' round-off forgiven: a joint drawn exactly TOLERANCE
+    // apart (0.4 - 0.1 is 0.30000000000000004) is closed.
+    bool closed() const
+    {
+        return at_most_within_round_off(distance(at_earlier, at_later), tolerance,
+                                        largest_coordinate(at_earlier, at_later));
+    }
+};
+
+// "joint 'j': point 1 of 'a' (line 4) (0, 0, 0) and point 2 of 'b' (0, 1, 0) are 1 apart in frame 0;
+// expected at most 0.001" and `why`.
+std::string gap_message(const Scene& scene, const std::string& name, const JointGap& gap, const std::string& why)
+{
+    const SceneJoint& first = joint_of(scene, gap.earlier);
+    const SceneJoint& second = joint_of(scene, gap.later);
+    const auto [apart, allowed] = scene_numbers(distance(gap.at_earlier, gap.at_later), gap.tolerance);
+    return "joint " + quote_field(name) + ": " + joint_points_text(first.point, first.last_point) + " of '" +
+           scene.objects[gap.earlier.object].name + "' (line " + std::to_string(first.line) + ") " +
+           scene_point(gap.at_earlier) + " and " + joint_points_text(second.point, second.last_point) + " of '" +
+           scene.objects[gap.later.object].name + "' " + scene_point(gap.at_later) + " are " + apart +
+           " apart in frame " + std::to_string(gap.frame) + "; expected at most " + allowed + why;
+}
+
 // A joint's two uses: two parts of one object, one TOLERANCE, their points met in frame 0.
 Expected<void> check_joint(const Scene& scene, const std::string& file_name, const std::string& name,
                            const std::vector<JointUse>& list, double default_tolerance)
@@ -56,22 +105,17 @@ Expected<void> check_joint(const Scene& scene, const std::string& file_name, con
                          scene.objects[root_b].name + "'; expected two parts of one object",
                      second.line);
     // Two different values would leave one silently unused.
-    if (first.tolerance && second.tolerance && *first.tolerance != *second.tolerance)
-        return error("joint " + quote_field(name) + " has TOLERANCE " + shortest_number(*second.tolerance) +
-                         " here and " + shortest_number(*first.tolerance) + " on line " + std::to_string(first.line) +
-                         "; expected one value (or the same on both lines)",
+    if (first.tolerance && second.tolerance && *first.tolerance != *second.tolerance) {
+        const auto [here, there] = scene_numbers(*second.tolerance, *first.tolerance);
+        return error("joint " + quote_field(name) + " has TOLERANCE " + here + " here and " + there + " on line " +
+                         std::to_string(first.line) + "; expected one value (or the same on both lines)",
                      second.line);
-    const Vec3 pa = place_in_frame_0(scene, list[0]);
-    const Vec3 pb = place_in_frame_0(scene, list[1]);
-    const double tolerance = second.tolerance.value_or(first.tolerance.value_or(default_tolerance));
-    if (distance(pa, pb) <= tolerance)
+    }
+    const JointGap gap{list[0], list[1], place_in_frame_0(scene, list[0]), place_in_frame_0(scene, list[1]), 0,
+                       joint_tolerance(scene, list[0], list[1], default_tolerance)};
+    if (gap.closed())
         return ok;
-    return error("joint " + quote_field(name) + ": " + joint_points_text(first.point, first.last_point) + " of '" + a.name +
-                     "' (line " + std::to_string(first.line) + ") " + describe_point(pa) + " and " +
-                     joint_points_text(second.point, second.last_point) + " of '" + b.name + "' " + describe_point(pb) +
-                     " are " + shortest_number(distance(pa, pb)) + " apart in frame 0; expected at most " +
-                     shortest_number(tolerance),
-                 second.line);
+    return error(gap_message(scene, name, gap, ""), second.line);
 }
 
 // Each part's anchor: its first joint, in its own lines' order, shared with a part declared before it.
@@ -128,6 +172,42 @@ Expected<void> connect_joints(Scene& scene, const std::string& file_name)
                               "RIGID part '" + part.name +
                                   "' has no anchor: none of its joints is shared with a part declared before it; "
                                   "expected a JOINT with an earlier part (the joint it turns about)"};
+    return ok;
+}
+
+Expected<void> check_closing_joints(const Scene& scene, const SceneAnimation& animation, const std::string& file_name)
+{
+    // A joint no part is anchored at closes a cycle of joints (A to B, B to C, C back to A): frame
+    // 0 was checked with the drawings, but nothing moves a part to keep it in the other frames.
+    const double default_tolerance = default_joint_tolerance(scene);
+    std::vector<std::pair<std::string, JointGap>> closing;
+    for (const auto& [name, list] : joint_uses(scene)) {
+        const std::optional<SceneAnchor>& anchor = scene.objects[list.back().object].anchor;
+        if (list.size() != 2 || (anchor && anchor->joint == list[1].joint))
+            continue;
+        closing.push_back({name, JointGap{list[0], list[1], {}, {}, 0,
+                                          joint_tolerance(scene, list[0], list[1], default_tolerance)}});
+    }
+    if (closing.empty())
+        return ok;
+    std::vector<Vec3> points(animation.points_per_frame());
+    const auto place = [&](const JointUse& use) {
+        const ObjectPoints at = animation.object_points()[use.object];
+        const SceneJoint& joint = joint_of(scene, use);
+        return joint_place(std::span<const Vec3>(points).subspan(at.first, at.count), joint.point, joint.last_point);
+    };
+    for (int f = 0; f <= animation.last_frame(); ++f) {
+        animation.frame(f, points);
+        for (auto& [name, gap] : closing) {
+            gap.at_earlier = place(gap.earlier);
+            gap.at_later = place(gap.later);
+            gap.frame = f;
+            if (!gap.closed())
+                return Diagnostic{file_name, joint_of(scene, gap.later).line,
+                                  gap_message(scene, name, gap,
+                                              " (the joint closes a cycle of joints: no part is moved to keep it)")};
+        }
+    }
     return ok;
 }
 

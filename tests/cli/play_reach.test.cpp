@@ -106,3 +106,48 @@ TEST_CASE("play - reads the scene from standard input", "[cli][play][scene]")
     CHECK(run.status == 0);
     CHECK(run.out.starts_with("# frame 0\n"));
 }
+
+TEST_CASE("a joint that closes a cycle of joints is checked in every frame and refused naming the frame",
+          "[cli][play][scene]")
+{
+    // Issue 45: A joined to B, B to C, C back to A. C is anchored at bc and its KEYS drawing pulls
+    // its end of ca away; only frame 0 was checked, and frames 1-2 printed the joint 5.7 and 11.3 open.
+    const TempFolder folder;
+    folder.write("a.dat", "0 0 0\n0 10 0\n");
+    folder.write("b.dat", "0 10 0\n0 10 10\n");
+    folder.write("c1.dat", "0 10 10\n0 0 0\n");
+    folder.write("c2.dat", "0 10 10\n0 8 -8\n");
+    folder.write("c3.dat", "0 10 10\n0 0 0.5\n");
+    const std::string scene = "FRAMES 2\nOBJECT arm\nOBJECT A PARENT arm\nSHAPE a.dat\nJOINT ab 2\n"
+                              "JOINT ca 1 TOLERANCE 4\nOBJECT B PARENT arm\nSHAPE b.dat\nJOINT ab 1\nJOINT bc 2\n"
+                              "OBJECT C PARENT arm\nJOINT bc 1\nJOINT ca 2 TOLERANCE 4\n";
+    folder.write("far.scn", scene + "KEYS c1.dat c2.dat\n");
+    check_refused(folder, ":13: joint 'ca': point 1 of 'A' (line 6) (0, 0, 0) and point 2 of 'C' (0, 4, -4) are "
+                          "5.65685 apart in frame 1; expected at most 4 (the joint closes a cycle of joints: no part "
+                          "is moved to keep it)\n");
+    // Within its tolerance in every frame, the cycle plays.
+    folder.write("near.scn", scene + "KEYS c1.dat c3.dat\n");
+    const auto run = run_apcs({"play", (folder / "near.scn").string(), "--print"});
+    CAPTURE(run.err);
+    CHECK(run.status == 0);
+    CHECK(run.out.find("# frame 2\n") != std::string::npos);
+}
+
+TEST_CASE("ALIGN on a path 1e-300 long or AHEAD 1e-300 is refused at its MOVE line, not blamed on the transforms",
+          "[cli][play][scene]")
+{
+    // Issue 45: AHEAD 1e-300's chord vanished in round-off, its direction was NaN, and play said
+    // "object car reaches values that are not numbers at frame 0 (its MOVE, ROTATE and SCALE composed
+    // with its parents')" at the OBJECT line; on a path 1e-300 long ALIGN silently did nothing.
+    const TempFolder folder;
+    folder.write("tiny.dat", "0 0 0\n0 1e-300 0\n");
+    folder.write("path.dat", "0 0 0\n0 5 0\n0 10 0\n");
+    folder.write("car.dat", "0 0 0\n0 1 0\n");
+    folder.write("far.scn", "FRAMES 4\nOBJECT car\nSHAPE car.dat\nMOVE path.dat ALIGN AHEAD 1e-300\n");
+    check_refused(folder, ":4: ALIGN AHEAD 1e-300 on 'path.dat': a chord that short is round-off, not a direction; "
+                          "expected D above 1e-150 and above 1e-12 of the path's largest coordinate (10)\n");
+    folder.write("far.scn", "FRAMES 4\nOBJECT car\nSHAPE car.dat\nMOVE tiny.dat ALIGN AHEAD 1e-300\n");
+    check_refused(folder, ":4: ALIGN on 'tiny.dat': its control points are all within 1e-300 of its first, too close "
+                          "for a direction; expected a path that spans more than 1e-150 and more than 1e-12 of its "
+                          "largest coordinate\n");
+}

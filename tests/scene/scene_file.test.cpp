@@ -20,6 +20,9 @@ DatFiles example_files()
     files.texts["k1.dat"] = "0 0 0\n0 1 0\n";
     files.texts["k2.dat"] = "0 0 2\n0 1 2\n0 2 2\n";
     files.texts["turned.dat"] = "0 0 0\n0 0 1\n"; // k1.dat turned a quarter about x
+    files.texts["near.dat"] = "0 0.3 0\n0 1 0\n";
+    files.texts["far.dat"] = "0 11.6 0\n0 12 0\n"; // 11.6 - 0.3 is 11.299999999999999 in doubles
+    files.texts["tiny.dat"] = "0 0 0\n0 1e-300 0\n";
     return files;
 }
 
@@ -122,7 +125,15 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "JOINT j 1\n", "t.scn:4: joint 'j' is used 1 time(s); expected exactly twice, in two parts of one object"},
         {joints + "JOINT j 2\n",
          "t.scn:7: joint 'j': point 1 of 'a' (line 4) (0, 0, 0) and point 2 of 'b' (0, 1, 0) are 1 apart in frame 0; "
-         "expected at most 0.0014142135623730952"},
+         "expected at most 0.00141421"},
+        // Issue 45: messages printed 17-digit doubles (11.299999999999999); six digits, more only
+        // where six would show two different values alike.
+        {"FRAMES 10\nOBJECT a\nSHAPE near.dat\nJOINT j 1 TOLERANCE 4\nOBJECT b PARENT a\nSHAPE far.dat\nJOINT j 1\n",
+         "t.scn:7: joint 'j': point 1 of 'a' (line 4) (0, 0.3, 0) and point 1 of 'b' (0, 11.6, 0) are 11.3 apart in "
+         "frame 0; expected at most 4"},
+        {head + "JOINT j 1 TOLERANCE 0.1234567\nOBJECT b PARENT a\nSHAPE square.dat\nJOINT j 1 TOLERANCE 0.1234568\n",
+         "t.scn:7: joint 'j' has TOLERANCE 0.1234568 here and 0.1234567 on line 4; expected one value (or the same on "
+         "both lines)"},
         {joined + "OBJECT c\nSHAPE square.dat\nJOINT k 1\nOBJECT d PARENT a\nSHAPE square.dat\nJOINT k 1\n",
          "t.scn:13: joint 'k' joins 'c' (line 10) of object 'c' and 'd' of object 'a'; expected two parts of one object"},
         {head + "RIGID\n", "t.scn:4: RIGID part 'a' has no KEYS; expected KEYS KEY1.dat KEY2.dat, the two poses it turns between"},
@@ -141,6 +152,30 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "MOVE path.dat TIMES 0 5 9 FROM 1\n",
          "t.scn:4: MOVE with both TIMES and FROM/TO; expected one of them (TIMES gives every control point's frame)"},
         {head + "MOVE path.dat FROM 6 TO 3\n", "t.scn:4: MOVE FROM 6 TO 3: expected FROM <= TO"},
+        // Issue 45: TIMES without frames was a MOVE without TIMES; FROM 0 TO 0 moved frame 0.
+        {head + "MOVE path.dat TIMES\n",
+         "t.scn:4: TIMES without frames; expected one frame per control point of 'path.dat' (3)"},
+        {head + "MOVE path.dat TIMES LOOP\n",
+         "t.scn:4: TIMES without frames; expected one frame per control point of 'path.dat' (3)"},
+        {head + "MOVE path.dat FROM 0 TO 0\n",
+         "t.scn:4: MOVE FROM 0 TO 0 covers no frame: the object would jump to the path's end at frame 0; expected "
+         "FROM before TO"},
+        {head + "MOVE path.dat TO 0\n",
+         "t.scn:4: MOVE FROM 0 TO 0 covers no frame: the object would jump to the path's end at frame 0; expected "
+         "FROM before TO"},
+        {head + "MOVE path.dat FROM 5 TO 5 LOOP\n",
+         "t.scn:4: MOVE FROM 5 TO 5 covers no frame: the object would jump to the path's end at frame 5; expected "
+         "FROM before TO"},
+        // Issue 45: a path whose steps vanish in round-off gave NaN turns, blamed on the transforms.
+        {head + "MOVE tiny.dat ALIGN AHEAD 1e-300\n",
+         "t.scn:4: ALIGN on 'tiny.dat': its control points are all within 1e-300 of its first, too close for a "
+         "direction; expected a path that spans more than 1e-150 and more than 1e-12 of its largest coordinate"},
+        {head + "MOVE path.dat ALIGN AHEAD 1e-300\n",
+         "t.scn:4: ALIGN AHEAD 1e-300 on 'path.dat': a chord that short is round-off, not a direction; expected D above "
+         "1e-150 and above 1e-12 of the path's largest coordinate (10)"},
+        {head + "MOVE tiny.dat ALIGN\n",
+         "t.scn:4: ALIGN on 'tiny.dat': its control points are all within 1e-300 of its first, too close for a "
+         "direction; expected a path that spans more than 1e-150 and more than 1e-12 of its largest coordinate"},
         {head + "ROTATE 5 FROM 11\n", "t.scn:4: expected a frame from 0 to 10 after FROM, found '11'"},
         {head + "ROTATE 5 AXIS w\n", "t.scn:4: unknown AXIS 'w'; expected x, y or z"},
         {head + "SCALE 0\n", "t.scn:4: SCALE FACTOR '0' is not above 0; expected a factor > 0"},

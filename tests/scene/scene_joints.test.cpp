@@ -1,5 +1,6 @@
 #include "scene_test_support.h"
 
+#include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_joints.h"
 
 #include <catch2/catch.hpp>
@@ -73,4 +74,31 @@ TEST_CASE("the robot's key points A and B are the thesis' neck and wrist", "[sce
     CHECK(wrist->earlier.first == 1);
     CHECK(robot->objects[wrist->later.object].name == "palm-r");
     CHECK(wrist->later.first == 0);
+}
+
+TEST_CASE("a joint drawn exactly TOLERANCE apart is accepted, round-off not deciding", "[scene][joints]")
+{
+    // Issue 45: 0.4 - 0.1 is 0.30000000000000004 in doubles, and TOLERANCE 0.3 refused it.
+    test::DatFiles files;
+    files.texts["a.dat"] = "0 0 0\n0 0.1 0\n";
+    files.texts["b.dat"] = "0 0.4 0\n0 1 0\n";
+    files.texts["c.dat"] = "0 0.40001 0\n0 1 0\n";
+    files.texts["far-a.dat"] = "0 0 0\n0 100000000.1 0\n";
+    files.texts["far-b.dat"] = "0 100000000.4 0\n0 100000001 0\n";
+    const auto joined = [&files](const std::string& first, const std::string& second) {
+        return parse_scene("FRAMES 2\nOBJECT a\nSHAPE " + first + "\nJOINT j 2 TOLERANCE 0.3\nOBJECT b PARENT a\nSHAPE " +
+                               second + "\nJOINT j 1\n",
+                           "t.scn", files.reader(), {});
+    };
+    const Expected<Scene> exact = joined("a.dat", "b.dat");
+    REQUIRE(exact.has_value());
+    // Nor does round-off move the part onto its partner: frame 0 shows it as drawn.
+    const SceneAnimation animation(*exact, {});
+    CHECK(animation.frame(0)[2] == Vec3{0, 0.4, 0});
+    // Far from the origin the round-off is larger, and so is what is forgiven.
+    CHECK(joined("far-a.dat", "far-b.dat").has_value());
+    const Expected<Scene> apart = joined("a.dat", "c.dat");
+    REQUIRE_FALSE(apart.has_value());
+    CHECK(apart.error().to_string() == "t.scn:7: joint 'j': point 2 of 'a' (line 4) (0, 0.1, 0) and point 1 of 'b' "
+                                       "(0, 0.40001, 0) are 0.30001 apart in frame 0; expected at most 0.3");
 }

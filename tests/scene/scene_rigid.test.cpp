@@ -165,3 +165,32 @@ TEST_CASE("a RIGID part whose turn takes it past 1e9 between its keys is out of 
     CHECK(beyond->frame == 2); // frame 1, a quarter of the way: |y| 7.6e8, z 6.9e8
     CHECK(beyond->magnitude == Approx(1.8e9 * std::sin(std::numbers::pi / 4)));
 }
+
+TEST_CASE("a RIGID part of no size is not refused over round-off, and a part that is not congruent still is",
+          "[scene][rigid]")
+{
+    // Issue 45: every point of each key at one place, KEY2 elsewhere: congruent (a dot moved), but
+    // the centroid's round-off (1e-16) was above 1e-4 of its size, 0, and the part was refused.
+    DatFiles files;
+    files.texts["base.dat"] = "0 0 0\n0.1 0.2 0.3\n";
+    files.texts["dot1.dat"] = "0.1 0.2 0.3\n0.1 0.2 0.3\n0.1 0.2 0.3\n";
+    files.texts["dot2.dat"] = "0.7 1.3 2.9\n0.7 1.3 2.9\n0.7 1.3 2.9\n";
+    files.texts["spread.dat"] = "0.7 1.3 2.9\n0.7 1.3 2.9\n0.7 1.3 3\n";
+    const std::string head = "FRAMES 2\nOBJECT base\nSHAPE base.dat\nJOINT j 2\nOBJECT dot PARENT base\n";
+    const Expected<Scene> dot =
+        parse_scene(head + "KEYS dot1.dat dot2.dat\nRIGID\nJOINT j 1\n", "t.scn", files.reader(), {});
+    INFO((dot ? std::string() : dot.error().to_string()));
+    REQUIRE(dot.has_value());
+    const SceneAnimation animation(*dot, {});
+    for (int f = 0; f <= 2; ++f) {
+        const std::vector<Vec3> points = animation.frame(f); // base 0-1, the dot 2-4 on the joint
+        for (std::size_t p = 2; p < 5; ++p)
+            CHECK(near(points[p], Vec3{0.1, 0.2, 0.3}));
+    }
+    const Expected<Scene> spread =
+        parse_scene(head + "KEYS dot1.dat spread.dat\nRIGID\nJOINT j 1\n", "t.scn", files.reader(), {});
+    REQUIRE_FALSE(spread.has_value());
+    CHECK(spread.error().to_string().starts_with(
+        "t.scn:7: RIGID part 'dot': its KEY2 drawing is not its KEY1 drawing turned and moved: point 3 is 0.0666667 "
+        "off"));
+}

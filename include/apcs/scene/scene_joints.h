@@ -10,6 +10,8 @@
 
 namespace apcs {
 
+class SceneAnimation;
+
 // One end of a joint: points first … last (0-based; a contact region when they differ) of a part.
 struct JointEnd {
     std::size_t object = 0; // index in Scene::objects
@@ -38,5 +40,11 @@ std::size_t root_object(const Scene& scene, std::size_t index);
 // used by exactly two parts of one object, with one TOLERANCE at most, its two points within it in
 // frame 0; every RIGID part has an anchor. `file_name` names the scene in the diagnostic.
 Expected<void> connect_joints(Scene& scene, const std::string& file_name);
+
+// The joints that are no part's anchor, each closing a cycle of joints (A to B, B to C, C back to
+// A), checked in every frame of `animation`: nothing moves a part to keep them, so a KEYS drawing
+// may pull one open. The first frame, in it the first joint by name, more than its tolerance open
+// is "FILE:LINE: joint ... apart in frame F ...", LINE its later JOINT line.
+Expected<void> check_closing_joints(const Scene& scene, const SceneAnimation& animation, const std::string& file_name);
 
 } // namespace apcs

@@ -1,0 +1,51 @@
+#include "apcs/scene/scene_numbers.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace apcs {
+
+namespace {
+
+// Units in the last place forgiven: a distance is a few operations (differences, a centroid, a
+// square root) from its coordinates, each off by half a unit; 64 leaves room for a centroid of
+// many points and for Kabsch's fit, and is still far below any tolerance a drawing is given.
+constexpr double round_off_units = 64.0;
+
+} // namespace
+
+bool at_most_within_round_off(double value, double limit, double magnitude)
+{
+    const double scale = std::max({std::abs(value), std::abs(limit), std::abs(magnitude)});
+    return value <= limit + round_off_units * std::numeric_limits<double>::epsilon() * scale;
+}
+
+std::string scene_number(double value, int digits)
+{
+    if (value == 0.0)
+        return "0";
+    // to_chars ignores the locale: a message never says 11,3.
+    std::array<char, 48> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general,
+                                      std::clamp(digits, 1, 17));
+    return std::string(buffer.data(), result.ptr);
+}
+
+std::pair<std::string, std::string> scene_numbers(double a, double b)
+{
+    for (int digits = 6;; ++digits) {
+        std::pair<std::string, std::string> texts{scene_number(a, digits), scene_number(b, digits)};
+        if (texts.first != texts.second || a == b || digits == 17)
+            return texts;
+    }
+}
+
+std::string scene_point(const Vec3& point)
+{
+    return "(" + scene_number(point.x) + ", " + scene_number(point.y) + ", " + scene_number(point.z) + ")";
+}
+
+} // namespace apcs
