@@ -19,6 +19,7 @@
 #include <array>
 #include <atomic>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -32,6 +33,7 @@ inline const std::string key1_text = "0 0 0\n0 0 10\n0 6 0\n0 6 10\n";
 inline const std::string key2_text = "0 0 10\n0 0 0\n0 5 0\n";
 inline const std::string other_key_text = "1 1 1\n1 1 11\n1 7 1\n1 7 11\n";
 inline const std::string path_text = "0 0 0\n3 -4 5\n0 0 10\n";
+inline constexpr int inbetweens = 3; // few, so that a run reaches its in-between files quickly
 
 // Names a user could type; 200 bytes is the longest answer a prompt takes.
 inline const std::string long_name = std::string(196, 'l') + ".dat";
@@ -72,9 +74,28 @@ inline void populate(const fs::path& work, const fs::path& outside)
     put_read_only(work / "readonly.dat", path_text);
 }
 
+// The four highest choices leave an earlier run's in-between files where the session writes its
+// set, so that a set mixed of two runs would show: inb002.dat of an earlier run (252), its backup
+// place taken by a folder (253), inb001.dat of an earlier run (254), and both at once (255).
+inline bool place_earlier_run(const fs::path& work, std::uint8_t choice)
+{
+    if (choice < 252)
+        return false;
+    std::error_code error;
+    if (choice != 253 && !fs::exists(fs::symlink_status(work / "inb002.dat", error)))
+        write_text(work / "inb002.dat", path_text);
+    if (choice == 253)
+        fs::create_directory(work / "inb002.bak", error);
+    if (choice >= 254 && !fs::exists(fs::symlink_status(work / "inb001.dat", error)))
+        write_text(work / "inb001.dat", path_text);
+    return true;
+}
+
 // One hostile entry at a name the session writes, chosen by one byte of the input.
 inline void place_hostile_entry(const fs::path& work, std::uint8_t choice)
 {
+    if (place_earlier_run(work, choice))
+        return;
     static const std::array<const char*, 9> targets = {"ani1.dat",   "ani2.dat",   "ani4.dat",
                                                        "inb001.dat", "inb002.dat", "inb003.dat",
                                                        "apcs001.png", "way1.bak",  "ani1.bak"};
@@ -170,6 +191,20 @@ inline std::optional<std::string> check_invariants(const fs::path& root, const F
     return std::nullopt;
 }
 
+// The in-between files a run wrote are a whole set or none (manual section 11): a set that stopped
+// half way would leave a folder of frames from two runs.
+inline std::optional<std::string> check_whole_set(const std::vector<std::string>& written, int set_size)
+{
+    std::set<std::string> inbetween_names;
+    for (const std::string& name : written)
+        if (name.starts_with("inb") && name.ends_with(".dat"))
+            inbetween_names.insert(name);
+    if (!inbetween_names.empty() && inbetween_names.size() != static_cast<std::size_t>(set_size))
+        return "a partial set of in-between files: " + std::to_string(inbetween_names.size()) + " of " +
+               std::to_string(set_size) + " written";
+    return std::nullopt;
+}
+
 // A fresh folder for one run under `base`, removed with everything in it at the end.
 class RunFolder {
 public:
@@ -227,7 +262,7 @@ inline FolderRun play_in_hostile_folder(std::span<const std::uint8_t> bytes,
         FolderFiles files(work);
         SessionSettings settings;
         settings.samples_per_segment = 4;
-        settings.inbetween_count = 3;
+        settings.inbetween_count = hostile::inbetweens;
         Session session(settings, files);
         for (std::size_t i = 2; i < bytes.size() && !session.finished(); ++i) {
             if (bytes[i] >= 0xC0) {
@@ -252,6 +287,8 @@ inline FolderRun play_in_hostile_folder(std::span<const std::uint8_t> bytes,
             keys.push_back(*found->second);
     }
     run.violation = hostile::check_invariants(folder.root(), work_before, outside_before, keys);
+    if (!run.violation)
+        run.violation = hostile::check_whole_set(run.written, hostile::inbetweens);
     return run;
 }
 
