@@ -104,9 +104,7 @@ Expected<GraphicsScreen> draw_robot_figure(const std::filesystem::path& data_fol
     const Expected<Scene> scene = read_scene_file(file, options.staff);
     if (!scene)
         return scene.error();
-    PathSettings settings = options.path;
-    settings.spacing = Spacing::exact;
-    const SceneAnimation animation(*scene, settings);
+    const SceneAnimation animation(*scene, scene_path_settings(*scene, options.path, options.given.spacing));
     const std::vector<Vec3> points = animation.frame(0);
     std::vector<FigureMark> marks;
     for (const auto& [label, joint] : {std::pair{"A", "neck"}, std::pair{"B", "wrist-r"}}) {
