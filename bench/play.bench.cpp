@@ -43,7 +43,9 @@ Scene read_example(std::int64_t which)
 PathSettings scene_settings()
 {
     PathSettings settings;
-    settings.spacing = Spacing::exact; // apcs play's default for scenes
+    // Exact spacing, the dearer of the two: the numbers of docs/PERFORMANCE.md were measured with
+    // it, apcs play's default for scenes until issue 44 (now nearest, or the scene's SPACING).
+    settings.spacing = Spacing::exact;
     return settings;
 }
 

@@ -39,7 +39,8 @@ inline SceneOutcome read_and_play_scene(std::string_view text)
     // Long scenes are read, not played: the frames' cost is the benchmark's business.
     if (scene->last_frame > 500)
         return SceneOutcome::read_not_played;
-    const SceneAnimation animation(*scene, {});
+    // Played as apcs play plays it without options: its SPACING line's spacing, else nearest.
+    const SceneAnimation animation(*scene, scene_path_settings(*scene, {}, false));
     // What apcs play refuses (composed transforms past what a frame file holds) is a refusal; a
     // frame that passed that check must read back: finite and within the .dat files' 1e9.
     if (animation.first_out_of_reach(max_dat_magnitude))

@@ -400,7 +400,6 @@ constexpr std::array<Subcommand, 6> subcommands{{
          add_play_command_options(command, line.options, line.slopes, line.play.tree);
      },
      [](ParsedLine& line, const RunPlace& place) {
-         line.play.spacing_given = given_count(place.app, "--spacing") > 0;
          return to_int(run_play_command(line.play, line.options, place.terminal, place.out, place.err));
      }},
     {"figures", "redraw the thesis' figures and examples as PNG", "no files (--out names the folder)",
@@ -482,7 +481,7 @@ void complete_options(const CLI::App& app, ParsedLine& line)
         line.options.path.slopes = {line.slopes[0], line.slopes[1]};
     const bool view_given = given_count(app, "--view") > 0;
     line.options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
-                          given_count(app, "--delay") > 0, line.slopes.size() == 2};
+                          given_count(app, "--delay") > 0, line.slopes.size() == 2, given_count(app, "--spacing") > 0};
     line.options.read_files = line.inputs();
 }
 

@@ -98,15 +98,17 @@ std::string joint_legend(const Scene& scene, const std::string& name, const Join
 }
 
 // Fig. 3.3.3: the robot of data/robot standing at frame 0, its neck joint A and wrist joint B marked.
+// The scene is read and checked as apcs play reads and checks it, every frame's closing joints
+// too: a robot that play refuses is not drawn as if it were whole.
 Expected<GraphicsScreen> draw_robot_figure(const std::filesystem::path& data_folder, const CommonOptions& options)
 {
     const std::filesystem::path file = data_folder / "robot" / "robot.scn";
     const Expected<Scene> scene = read_scene_file(file, options.staff);
     if (!scene)
         return scene.error();
-    PathSettings settings = options.path;
-    settings.spacing = Spacing::exact;
-    const SceneAnimation animation(*scene, settings);
+    const SceneAnimation animation(*scene, scene_path_settings(*scene, options.path, options.given.spacing));
+    if (Expected<void> closed = check_closing_joints(*scene, animation, file.string()); !closed)
+        return closed.error();
     const std::vector<Vec3> points = animation.frame(0);
     std::vector<FigureMark> marks;
     for (const auto& [label, joint] : {std::pair{"A", "neck"}, std::pair{"B", "wrist-r"}}) {

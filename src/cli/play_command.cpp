@@ -264,9 +264,7 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
         out << format_scene_tree(*scene, scene_name);
         return ExitStatus::success;
     }
-    PathSettings settings = options.path;
-    if (!request.spacing_given)
-        settings.spacing = Spacing::exact;
+    const PathSettings settings = scene_path_settings(*scene, options.path, options.given.spacing);
     const bool played = !options.print && !options.out && !pictures_asked(options);
     const bool all_frames = played || pictures_asked(options);
     if (const auto refused = refuse_over_budget("the frames of " + scene_name, scene_bytes(*scene, settings, all_frames),

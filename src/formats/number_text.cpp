@@ -94,6 +94,17 @@ std::string shortest_number(double value)
     return std::string(buffer.data(), result.ptr);
 }
 
+std::string significant_number(double value, int digits)
+{
+    if (value == 0.0)
+        return "0";
+    // to_chars ignores the locale: a message never says 11,3.
+    std::array<char, 48> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general,
+                                      std::clamp(digits, 1, 17));
+    return std::string(buffer.data(), result.ptr);
+}
+
 void append_shortest(std::string& text, double value)
 {
     if (value == 0.0) {

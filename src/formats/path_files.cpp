@@ -70,9 +70,19 @@ NamedText inbetween_file(const FrameSequence& frames, const Graphic& structure, 
                 format_graphic(structure, frames.frame(number), inbetween_decimals(frames))};
 }
 
-std::string describe_point(const Vec3& point)
+std::string describe_point(const Vec3& point, int digits)
 {
-    return "(" + shortest_number(point.x) + ", " + shortest_number(point.y) + ", " + shortest_number(point.z) + ")";
+    return "(" + significant_number(point.x, digits) + ", " + significant_number(point.y, digits) + ", " +
+           significant_number(point.z, digits) + ")";
+}
+
+std::pair<std::string, std::string> describe_points(const Vec3& a, const Vec3& b)
+{
+    for (int digits = 6;; ++digits) {
+        std::pair<std::string, std::string> texts{describe_point(a, digits), describe_point(b, digits)};
+        if (texts.first != texts.second || a == b || digits == 17)
+            return texts;
+    }
 }
 
 namespace {
@@ -92,14 +102,18 @@ Expected<void> check_path_ends(const DatFile& path, const std::string& file_name
         return Diagnostic{file_name, 0, "has no control points"};
     const DatPoint& start = path.parts.front().points.front();
     const DatPoint& end = path.parts.back().points.back();
-    if (!same_place(start.position, key1_position))
+    if (!same_place(start.position, key1_position)) {
+        const auto [path_text, key_text] = describe_points(start.position, key1_position);
         return Diagnostic{file_name, start.line,
-                          "the path starts at " + describe_point(start.position) + "; expected the " + which +
-                              " graphic point's KEY1 position " + describe_point(key1_position)};
-    if (!same_place(end.position, key2_position))
+                          "the path starts at " + path_text + "; expected the " + which +
+                              " graphic point's KEY1 position " + key_text};
+    }
+    if (!same_place(end.position, key2_position)) {
+        const auto [path_text, key_text] = describe_points(end.position, key2_position);
         return Diagnostic{file_name, end.line,
-                          "the path ends at " + describe_point(end.position) + "; expected the " + which +
-                              " graphic point's KEY2 position " + describe_point(key2_position)};
+                          "the path ends at " + path_text + "; expected the " + which +
+                              " graphic point's KEY2 position " + key_text};
+    }
     return ok;
 }
 

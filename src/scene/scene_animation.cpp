@@ -90,6 +90,14 @@ std::vector<Vec3> move_offsets(const SceneMove& move, const PathSettings& settin
     return offsets;
 }
 
+PathSettings scene_path_settings(const Scene& scene, const PathSettings& command, bool spacing_given)
+{
+    PathSettings settings = command;
+    if (!spacing_given)
+        settings.spacing = scene.spacing.value_or(Spacing::nearest);
+    return settings;
+}
+
 SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings, SurfaceConstruction construction)
     : m_scene(scene)
     , m_centres(scene.objects.size())

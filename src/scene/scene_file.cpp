@@ -93,6 +93,7 @@ private:
     Expected<void> parse_line(const Fields& fields);
     Expected<void> parse_frames(const Fields& fields);
     Expected<void> parse_view(const Fields& fields);
+    Expected<void> parse_spacing(const Fields& fields);
     Expected<void> parse_object(const Fields& fields);
     Expected<void> parse_shape(const Fields& fields);
     Expected<void> parse_keys(const Fields& fields);
@@ -175,12 +176,15 @@ Expected<void> SceneParser::parse_line(const Fields& fields)
         return parse_object(fields);
     if (keyword == "view")
         return parse_view(fields);
+    if (keyword == "spacing")
+        return parse_spacing(fields);
     if (keyword == "frames")
         return error("a second FRAMES line; the scene's frames are given once, on the first data line");
     const auto found = object_keywords.find(keyword);
     if (found == object_keywords.end())
         return error("unknown keyword " + quote_field(fields[0]) +
-                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID or VIEW");
+                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID, VIEW or "
+                     "SPACING");
     if (m_scene.objects.empty())
         return error(std::string(fields[0]) + " before the first OBJECT line; expected 'OBJECT NAME' first");
     return (this->*found->second)(fields);
@@ -211,6 +215,26 @@ Expected<void> SceneParser::parse_view(const Fields& fields)
     if (!phi)
         return phi.error();
     m_scene.view = ViewAngles{.theta_degrees = *theta, .phi_degrees = *phi};
+    return ok;
+}
+
+// SPACING applies to every path of the scene, so it comes before the first OBJECT, as VIEW does:
+// a line among the objects would look as if it were one object's.
+Expected<void> SceneParser::parse_spacing(const Fields& fields)
+{
+    if (!m_scene.objects.empty())
+        return error("SPACING after an OBJECT line; expected it before the first OBJECT");
+    if (m_scene.spacing)
+        return error("a second SPACING line; expected one at most");
+    const std::string expected = "expected 'SPACING nearest' or 'SPACING exact'";
+    if (fields.size() == 1)
+        return error(expected + "; found nothing after SPACING");
+    if (fields.size() > 2)
+        return error(expected + ", found " + quote_field(fields[2]) + " after " + quote_field(fields[1]));
+    const std::string word = ascii_lower_case(fields[1]);
+    if (word != "nearest" && word != "exact")
+        return error(expected + ", found " + quote_field(fields[1]));
+    m_scene.spacing = word == "exact" ? Spacing::exact : Spacing::nearest;
     return ok;
 }
 

@@ -1,8 +1,8 @@
 #include "apcs/scene/scene_numbers.h"
 
+#include "apcs/formats/number_text.h"
+
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -23,16 +23,7 @@ bool at_most_within_round_off(double value, double limit, double magnitude)
     return value <= limit + round_off_units * std::numeric_limits<double>::epsilon() * scale;
 }
 
-std::string scene_number(double value, int digits)
-{
-    if (value == 0.0)
-        return "0";
-    // to_chars ignores the locale: a message never says 11,3.
-    std::array<char, 48> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value, std::chars_format::general,
-                                      std::clamp(digits, 1, 17));
-    return std::string(buffer.data(), result.ptr);
-}
+std::string scene_number(double value, int digits) { return significant_number(value, digits); }
 
 std::pair<std::string, std::string> scene_numbers(double a, double b)
 {

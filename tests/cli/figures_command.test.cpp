@@ -96,3 +96,32 @@ TEST_CASE("apcs figures without the robot's scene names it and writes no picture
     CHECK(result.out.empty());
     CHECK_FALSE(std::filesystem::exists(folder / "fig-3-1-1.png"));
 }
+
+TEST_CASE("apcs figures refuses a robot whose joint closing a cycle opens in some frame, as apcs play does",
+          "[cli][figures][scene]")
+{
+    // Issue 44: fig. 3.3.3 read the robot's scene but not the per-frame check of the joints that
+    // close a cycle, which apcs play runs: a robot that play refuses was drawn as if whole.
+    const test::TempFolder folder;
+    const std::filesystem::path data = folder / "data";
+    std::filesystem::copy(std::filesystem::path(APCS_SOURCE_DIR) / "data", data, std::filesystem::copy_options::recursive);
+    const std::filesystem::path robot = data / "robot";
+    folder.write("data/robot/cycle-a.dat", "0 0 0\n0 10 0\n");
+    folder.write("data/robot/cycle-b.dat", "0 10 0\n0 10 10\n");
+    folder.write("data/robot/cycle-c1.dat", "0 10 10\n0 0 0\n");
+    folder.write("data/robot/cycle-c2.dat", "0 10 10\n0 8 -8\n");
+    // A joined to B, B to C, C back to A: C's KEYS drawing pulls the joint ca open.
+    std::ofstream(robot / "robot.scn", std::ios::app)
+        << "OBJECT cycle\nOBJECT A PARENT cycle\nSHAPE cycle-a.dat\nJOINT ab 2\nJOINT ca 1 TOLERANCE 4\n"
+           "OBJECT B PARENT cycle\nSHAPE cycle-b.dat\nJOINT ab 1\nJOINT bc 2\n"
+           "OBJECT C PARENT cycle\nJOINT bc 1\nJOINT ca 2 TOLERANCE 4\nKEYS cycle-c1.dat cycle-c2.dat\n";
+    const auto played = test::run_apcs({"play", (robot / "robot.scn").string(), "--print"});
+    REQUIRE(played.status == 1);
+    const auto result = test::run_apcs({"figures", "--workdir", data.string(), "--out", folder.path().string()});
+    CHECK(result.status == 1);
+    CHECK(result.err == played.err);
+    CHECK(result.err.find("joint 'ca'") != std::string::npos);
+    CHECK(result.err.find("(the joint closes a cycle of joints") != std::string::npos);
+    CHECK(result.out.empty());
+    CHECK_FALSE(std::filesystem::exists(folder / "fig-3-1-1.png"));
+}

@@ -49,6 +49,30 @@ TEST_CASE("a path is checked against the ends of its own graphic point", "[forma
             "way4.dat:2: the path ends at (0, 5, 1); expected the last graphic point's KEY2 position (0, 5, 0)");
 }
 
+TEST_CASE("a path's end in a message has six significant digits, more only where six would show two points alike",
+          "[formats][path-files]")
+{
+    // Issue 44: the path-end messages (the session's, apcs fit's, a scene's PATHS) printed up to
+    // 17 digits, as 0.30000000000000004.
+    REQUIRE(describe_point({0.1 + 0.2, 1.0 / 3.0, -0.0}) == "(0.3, 0.333333, 0)");
+    REQUIRE(describe_point({1234567.0, -2e-7, 12.5}) == "(1.23457e+06, -2e-07, 12.5)");
+    const Expected<ControlPoints> rounded =
+        point_path_from(path_file("0 0.30000000000000004 0\n0 0 10\n"), "way1.dat", PathEnd::first, two_point_keys(), {});
+    REQUIRE_FALSE(rounded.has_value());
+    REQUIRE(rounded.error().to_string() ==
+            "way1.dat:1: the path starts at (0, 0.3, 0); expected the first graphic point's KEY1 position (0, 0, 0)");
+    // 100.0002 is refused (1e-6 of 100 is 1e-4) but is 100 in six digits: seven say it.
+    Graphic key1;
+    key1.parts.push_back({"", Closure::open, {{0, 100, 0}, {0, 6, 0}}});
+    Graphic key2;
+    key2.parts.push_back({"", Closure::open, {{0, 0, 10}, {0, 5, 0}}});
+    const Expected<ControlPoints> near =
+        point_path_from(path_file("0 100.0002 0\n0 0 10\n"), "way1.dat", PathEnd::first, {key1, key2}, {});
+    REQUIRE_FALSE(near.has_value());
+    REQUIRE(near.error().to_string() ==
+            "way1.dat:1: the path starts at (0, 100.0002, 0); expected the first graphic point's KEY1 position (0, 100, 0)");
+}
+
 namespace {
 
 ControlPoints points_of(const DatFile& file)

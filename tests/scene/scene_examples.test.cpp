@@ -2,6 +2,7 @@
 #include "support/temp_folder.h"
 
 #include "apcs/cli/play_command.h"
+#include "apcs/formats/file_io.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_joints.h"
@@ -10,28 +11,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 using namespace apcs;
 using apcs::test::run_apcs;
+using apcs::test::TempFolder;
 
 namespace {
 
 const std::filesystem::path data_folder = std::filesystem::path(APCS_SOURCE_DIR) / "data";
 
-// An example scene read from data/ and its animation with exact spacing.
+// An example scene read from data/ and its animation as apcs play plays it without options (its
+// SPACING line's spacing, else nearest).
 struct Example {
     explicit Example(const char* name)
         : scene(read(name))
-        , animation(scene, exact_spacing())
+        , animation(scene, scene_path_settings(scene, {}, false))
     {
     }
     Example(const Example&) = delete; // the animation refers to this scene
@@ -57,12 +62,6 @@ private:
         REQUIRE(read_scene.has_value());
         return std::move(*read_scene);
     }
-    static PathSettings exact_spacing()
-    {
-        PathSettings settings;
-        settings.spacing = Spacing::exact;
-        return settings;
-    }
 };
 
 // Object `index`'s points in frame f.
@@ -76,6 +75,49 @@ std::vector<Vec3> points_of(const SceneAnimation& animation, std::size_t index, 
 }
 
 bool near(const Vec3& a, const Vec3& b) { return distance(a, b) <= 1e-9; }
+
+// Object `name`'s points in each frame of apcs play --print's output ("# frame f", "# object
+// NAME", its points, "# object ...").
+std::vector<std::vector<Vec3>> printed_frames(const std::string& printed, const std::string& name)
+{
+    std::vector<std::vector<Vec3>> frames;
+    std::istringstream lines(printed);
+    bool in_object = false;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.starts_with("# frame"))
+            frames.emplace_back();
+        else if (line.starts_with("# object"))
+            in_object = line == "# object " + name;
+        else if (in_object) {
+            std::istringstream numbers(line);
+            Vec3 point;
+            numbers >> point.x >> point.y >> point.z;
+            frames.back().push_back(point);
+        }
+    }
+    return frames;
+}
+
+// The largest distance between the snake's in-betweens (frames 1 ... 12) in apcs play --print's
+// output and the approved in-between files of the snake session (tests/golden/examples).
+double snake_off_the_session(const std::string& printed)
+{
+    const std::vector<std::vector<Vec3>> snake = printed_frames(printed, "snake");
+    REQUIRE(snake.size() == 14);
+    double worst = 0.0;
+    for (std::size_t k = 1; k <= 12; ++k) {
+        char name[16];
+        std::snprintf(name, sizeof name, "inb%03zu.dat", k);
+        const Expected<Graphic> inbetween =
+            read_key_frame(std::filesystem::path(APCS_SOURCE_DIR) / "tests/golden/examples/snake-apple" / name);
+        REQUIRE(inbetween);
+        const std::vector<Vec3> points = inbetween->all_points();
+        REQUIRE(points.size() == snake[k].size());
+        for (std::size_t i = 0; i < points.size(); ++i)
+            worst = std::max(worst, distance(points[i], snake[k][i]));
+    }
+    return worst;
+}
 
 } // namespace
 
@@ -170,7 +212,9 @@ TEST_CASE("the robot's standing foot stays put while the torso walks a step, and
         REQUIRE(lowest >= ground - 1e-9);
         highest_lift = std::max(highest_lift, lowest - ground);
     }
-    CHECK(largest_slide <= 0.01 * travel); // measured 0.0017 (exact spacing of the walk's arc)
+    // Measured 0.0017 with the scene's nearest spacing (0.001689; exact: 0.001687): 12 frames are
+    // every 16th of the walk's 192 samples.
+    CHECK(largest_slide <= 0.01 * travel);
     CHECK(highest_lift > 0.1); // the foot does leave the ground between the keys
 }
 
@@ -315,6 +359,51 @@ TEST_CASE("the snake-apple example keeps the apple still while the snake goes fr
         ++checked;
     }
     REQUIRE(checked == 13u);
+}
+
+TEST_CASE("the snake scene played without options is the snake session's in-between files: nearest spacing",
+          "[scene][examples][spacing]")
+{
+    // Issue 44: apcs play defaulted to exact spacing, 0.072 off the session's inb files unless
+    // --spacing nearest was typed; every command's default is nearest (SPEC §1).
+    const std::string scene = (data_folder / "snake-apple/snake-apple.scn").string();
+    const auto played = run_apcs({"play", scene, "--print"});
+    REQUIRE(played.status == 0);
+    // The inb files hold eight decimals, --print six: equal to the rounding of both.
+    CHECK(snake_off_the_session(played.out) <= 1e-6);
+    const auto nearest = run_apcs({"play", scene, "--print", "--spacing", "nearest"});
+    CHECK(nearest.out == played.out);
+    // --spacing exact still gives exact spacing's frames, 0.0721 off the session's.
+    const auto exact = run_apcs({"play", scene, "--print", "--spacing", "exact"});
+    REQUIRE(exact.status == 0);
+    CHECK(snake_off_the_session(exact.out) == Approx(0.0721).margin(1e-4));
+}
+
+TEST_CASE("a scene's SPACING line chooses its spacing and --spacing overrides it", "[scene][cli][spacing]")
+{
+    const TempFolder folder;
+    folder.write("path.dat", "0 0 0\n0 1 3\n0 10 0\n0 12 5\n");
+    folder.write("dot.dat", "0 0 0\n0 0 1\n");
+    const std::string body = "OBJECT dot\nSHAPE dot.dat\nMOVE path.dat\n";
+    folder.write("plain.scn", "FRAMES 7\n" + body);
+    folder.write("exact.scn", "FRAMES 7\nspacing EXACT ; the words in any case\n" + body);
+    folder.write("nearest.scn", "FRAMES 7\nSPACING nearest\n" + body);
+    const auto play = [&folder](const char* scene, std::vector<std::string> options) {
+        options.insert(options.begin(), {"play", (folder / scene).string(), "--samples", "4", "--print"});
+        const auto run = run_apcs(options);
+        CAPTURE(scene, run.err);
+        REQUIRE(run.status == 0);
+        return run.out;
+    };
+    const std::string nearest = play("plain.scn", {});
+    const std::string exact = play("exact.scn", {});
+    // 4 samples a segment: the nearest sample is far from the exact point.
+    REQUIRE(nearest != exact);
+    CHECK(play("nearest.scn", {}) == nearest);
+    CHECK(play("plain.scn", {"--spacing", "exact"}) == exact);
+    CHECK(play("exact.scn", {"--spacing", "nearest"}) == nearest);
+    CHECK(play("exact.scn", {"--spacing", "exact"}) == exact);
+    CHECK(play("nearest.scn", {"--spacing", "exact"}) == exact);
 }
 
 TEST_CASE("apcs play prints, writes and draws a scene — without a terminal it says what to give", "[scene][cli]")

@@ -1,5 +1,6 @@
 #include "scene/scene_test_support.h"
 
+#include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_tree.h"
 
 #include <catch2/catch.hpp>
@@ -58,6 +59,30 @@ TEST_CASE("a scene file gives its objects, parents, drawings and behaviours", "[
     REQUIRE(arm.scale->frames.to == 3);
 }
 
+TEST_CASE("a scene's SPACING line, in any case, gives its spacing — without one it plays nearest, as every command",
+          "[scene][spacing]")
+{
+    const DatFiles files = example_files();
+    const std::string objects = "OBJECT a\nSHAPE square.dat\nMOVE path.dat\n";
+    const Scene plain = scene_from("FRAMES 10\n" + objects, files);
+    REQUIRE_FALSE(plain.spacing.has_value());
+    const Scene exact = scene_from("FRAMES 10\nVIEW 0 90\nSpacing Exact\n" + objects, files);
+    REQUIRE(exact.spacing == Spacing::exact);
+    const Scene nearest = scene_from("FRAMES 10\nSPACING nearest ; the thesis' samples\n" + objects, files);
+    REQUIRE(nearest.spacing == Spacing::nearest);
+    // The settings the scene plays with: its line's spacing, unless --spacing was given.
+    PathSettings command;
+    command.samples_per_segment = 8;
+    command.spacing = Spacing::exact;
+    REQUIRE(scene_path_settings(plain, command, false).spacing == Spacing::nearest);
+    REQUIRE(scene_path_settings(plain, command, false).samples_per_segment == 8);
+    REQUIRE(scene_path_settings(exact, {}, false).spacing == Spacing::exact);
+    REQUIRE(scene_path_settings(nearest, command, false).spacing == Spacing::nearest);
+    REQUIRE(scene_path_settings(nearest, command, true).spacing == Spacing::exact);
+    command.spacing = Spacing::nearest;
+    REQUIRE(scene_path_settings(exact, command, true).spacing == Spacing::nearest);
+}
+
 TEST_CASE("a part's own STAFF replaces its parent's — seven-column paths keep their own values", "[scene]")
 {
     const Scene scene = scene_from("FRAMES 10\nOBJECT a\nSTAFF 0.5 0.5 0.5 0.5\nOBJECT b PARENT a\n"
@@ -110,8 +135,8 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
          "t.scn:7: joint 'j' has TOLERANCE 0.25 here and 0.5 on line 4; expected one value (or the same on both lines)"},
         {"FRAMES 5\nSHAPE square.dat\n", "t.scn:2: SHAPE before the first OBJECT line; expected 'OBJECT NAME' first"},
         {head + "WIGGLE 3\n",
-         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID or "
-         "VIEW"},
+         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID, "
+         "VIEW or SPACING"},
         {head + "OBJECT a\n", "t.scn:4: object 'a' is declared again; its first OBJECT line is line 2 (names are unique)"},
         {head + "OBJECT b PARENT c\nOBJECT c\n",
          "t.scn:4: parent 'c' is not an object declared above; a parent is declared before its parts"},
@@ -207,6 +232,17 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {"FRAMES 10\nOBJECT a\nKEYS k1.dat k2.dat FROM 4 TO 4\n",
          "t.scn:3: KEYS FROM 4 TO 4: expected FROM before TO (KEY1 at FROM, KEY2 at TO)"},
         {"FRAMES 10\nVIEW 1 2\nVIEW 1 2\n", "t.scn:3: a second VIEW line; expected one at most"},
+        // Issue 44: SPACING, the scene's spacing, once and before the objects whose paths it spaces.
+        {"FRAMES 10\nSPACING exact\nVIEW 1 2\nSPACING nearest\nOBJECT a\n",
+         "t.scn:4: a second SPACING line; expected one at most"},
+        {"FRAMES 10\nSPACING exact\nspacing EXACT\n", "t.scn:3: a second SPACING line; expected one at most"},
+        {head + "SPACING exact\n", "t.scn:4: SPACING after an OBJECT line; expected it before the first OBJECT"},
+        {"FRAMES 10\nSPACING even\n", "t.scn:2: expected 'SPACING nearest' or 'SPACING exact', found 'even'"},
+        {"FRAMES 10\nSPACING 1\n", "t.scn:2: expected 'SPACING nearest' or 'SPACING exact', found '1'"},
+        {"FRAMES 10\nSPACING\n", "t.scn:2: expected 'SPACING nearest' or 'SPACING exact'; found nothing after SPACING"},
+        {"FRAMES 10\nSPACING exact nearest\n",
+         "t.scn:2: expected 'SPACING nearest' or 'SPACING exact', found 'nearest' after 'exact'"},
+        {"SPACING exact\nFRAMES 10\n", "t.scn:1: expected 'FRAMES N' as the first data line, found 'SPACING'"},
         {std::string("FRAMES 10\nOBJECT a\x00\n", 20), "t.scn:2: NUL byte; expected a text file"},
     };
     const DatFiles files = example_files();

@@ -17,12 +17,14 @@
 namespace apcs {
 
 // Which of the session's answers the command line gave: an empty answer at the session's prompt
-// takes these where given, else the thesis' example (SPEC §3).
+// takes these where given, else the thesis' example (SPEC §3). A scene's VIEW and SPACING lines
+// give way to them too (SPEC §8.1).
 struct GivenOptions {
-    bool theta = false;  // --theta
-    bool phi = false;    // --phi
-    bool delay = false;  // --delay
-    bool slopes = false; // --slopes
+    bool theta = false;   // --theta
+    bool phi = false;     // --phi
+    bool delay = false;   // --delay
+    bool slopes = false;  // --slopes
+    bool spacing = false; // --spacing
 };
 
 // The options every command shares (SPEC §1), validated by the command line parser.

@@ -19,8 +19,7 @@ std::string save_screen_picture(const GraphicsScreen& screen);
 
 struct PlayRequest {
     std::filesystem::path scene;
-    bool tree = false;          // --tree: print the data-structure tree (fig. 3.3.2) only
-    bool spacing_given = false; // --spacing given; else a scene's paths use exact spacing
+    bool tree = false; // --tree: print the data-structure tree (fig. 3.3.2) only
 };
 
 // `apcs play SCENE` (SPEC §8.3): reads the scene (exit 1 with FILE:LINE on a problem) and prints its

@@ -20,6 +20,10 @@ std::optional<std::size_t> parse_count_value(std::string_view field);
 // The shortest decimal text that reads back as exactly `value`; −0 is written as 0.
 std::string shortest_number(double value);
 
+// `value` with `digits` significant digits (1 to 17, 6 unless said) for a message: '.' as the
+// decimal point whatever the locale, −0 as 0, no trailing zeros: "11.3", not 11.300000000000001.
+std::string significant_number(double value, int digits = 6);
+
 // Appends shortest_number(value) to `text` without a temporary string.
 void append_shortest(std::string& text, double value);
 

@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -86,7 +87,12 @@ DatFile dat_from(const ControlPoints& points);
 std::string format_path_file(std::string_view original_text, const DatFile& original, const ControlPoints& points,
                              std::span<const std::size_t> origins, std::optional<EndSlopes> slopes = std::nullopt);
 
-// "(x, y, z)" with the shortest exact numbers, for messages.
-std::string describe_point(const Vec3& point);
+// "(x, y, z)" for messages, each number with `digits` significant digits (significant_number):
+// "(0, 0.3, 0)", not (0, 0.30000000000000004, 0).
+std::string describe_point(const Vec3& point, int digits = 6);
+
+// Two points a message compares (a path's end and the key point it should be at): describe_point's
+// six digits, more when six would show two different points alike.
+std::pair<std::string, std::string> describe_points(const Vec3& a, const Vec3& b);
 
 } // namespace apcs

@@ -3,6 +3,7 @@
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/geometry/affine.h"
 #include "apcs/geometry/vec3.h"
@@ -123,6 +124,9 @@ struct SceneObject {
 struct Scene {
     int last_frame = 0;
     std::optional<ViewAngles> view; // VIEW THETA PHI
+    // SPACING nearest|exact (SPEC §8.1): where the in-betweens of its MOVE and KEYS paths fall;
+    // unset, nearest, as every command. --spacing overrides it (scene_path_settings).
+    std::optional<Spacing> spacing;
     std::vector<SceneObject> objects;
 };
 

@@ -34,6 +34,11 @@ struct OutOfReach {
     bool at_anchor = false;
 };
 
+// The path settings a scene plays with (SPEC §8.1): the command's (`command`), but the spacing is
+// the scene's SPACING line's (nearest without one, as every command) unless the command line gave
+// --spacing (`spacing_given`), which overrides the file.
+PathSettings scene_path_settings(const Scene& scene, const PathSettings& command, bool spacing_given);
+
 // A scene's frames, one at a time (SPEC §8.2): each object's transform
 // W_f = W_f(parent) ∘ translation(MOVE) ∘ ROTATE about its centre ∘ SCALE about its centre, applied
 // to its frame-f drawing (SHAPE, or the KEYS frame); then a part whose anchor is more than its
