@@ -9,7 +9,9 @@
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/number_text.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/scene/scene_animation.h"
@@ -119,6 +121,31 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
                       "object " + object.name + " reaches " + reach.str() + " at frame " +
                           std::to_string(beyond->frame) + " (" + how + "); a frame holds |value| <= 1e9, "
                           "as a .dat file does"};
+}
+
+// --out: every frame file must read back, so a PART line longer than a .dat line may be (an
+// object's name and its part's name, each up to a scene or .dat line long, joined as
+// "OBJECT/PART") is refused before any frame is written, at the object's line.
+Expected<void> check_part_lines_fit(const SceneAnimation& animation, const Scene& scene,
+                                    const std::filesystem::path& scene_file)
+{
+    const std::vector<GraphicPart>& parts = animation.structure().parts;
+    std::size_t index = 0;
+    for (const SceneObject& object : scene.objects) {
+        const Graphic* drawing = object.first_drawing();
+        for (std::size_t p = 0; drawing != nullptr && p < drawing->parts.size() && index < parts.size(); ++p, ++index) {
+            const std::string line = part_line(parts[index].name, parts[index].closure, index);
+            if (line.size() <= max_dat_line_bytes)
+                continue;
+            return Diagnostic{scene_file.string(), object.line,
+                              "object " + quote_field(object.name) + ": its part " + std::to_string(p + 1) +
+                                  " would be written to the frame files as the line " + quote_field(line) + " of " +
+                                  std::to_string(line.size()) + " bytes; expected at most " +
+                                  std::to_string(max_dat_line_bytes) +
+                                  ", as a .dat file is read (give the object or the part a shorter name)"};
+        }
+    }
+    return ok;
 }
 
 ViewAngles view_of(const Scene& scene, const CommonOptions& options)
@@ -260,6 +287,9 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     const SceneAnimation animation(*scene, settings, options.surface);
     if (Expected<void> reachable = check_frames_in_reach(animation, *scene, request.scene); !reachable)
         return report_bad_input(reachable.error(), err);
+    if (options.out)
+        if (Expected<void> fits = check_part_lines_fit(animation, *scene, request.scene); !fits)
+            return report_bad_input(fits.error(), err);
     if (options.print)
         print_frames(animation, *scene, out);
     const CommonOptions shown = scene_shown_options(*scene, options, inputs);

@@ -1,0 +1,63 @@
+#include "support/run_apcs.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace apcs;
+using test::run_apcs;
+using test::TempFolder;
+
+namespace {
+
+// A scene of one object `object` whose drawing is one part named `part`, over frames 0 ... last.
+void write_named_scene(const TempFolder& folder, const std::string& object, const std::string& part, int last)
+{
+    folder.write("s.dat", "PART " + part + "\n0 0 0\n1 1 1\n");
+    folder.write("a.scn", "FRAMES " + std::to_string(last) + "\nOBJECT " + object + "\nSHAPE s.dat\n");
+}
+
+// apcs play a.scn --out out in `folder`.
+test::CommandRun play_out(const TempFolder& folder)
+{
+    return run_apcs({"play", (folder / "a.scn").string(), "--out", (folder / "out").string()});
+}
+
+} // namespace
+
+TEST_CASE("play --out refuses a PART line longer than a .dat line before any frame is written",
+          "[cli][play][numbered]")
+{
+    // Issue 45 item 7: OBJECT of 3000 bytes and PART of 1200, each within its own file's line,
+    // made "PART OBJECT/PART OPEN" of 4211 bytes: frames that apcs draw could not read back.
+    const TempFolder folder;
+    write_named_scene(folder, std::string(3000, 'o'), std::string(1200, 'p'), 2);
+
+    const auto run = play_out(folder);
+
+    CAPTURE(run.err);
+    CHECK(run.status == 1);
+    CHECK(run.err.starts_with((folder / "a.scn").string() + ":2: object 'oooooooooooooooooooooooo...': its part 1 "
+                                                             "would be written to the frame files as the line "
+                                                             "'PART ooooooooooooooooooo...' of 4211 bytes; "
+                                                             "expected at most 4096"));
+    CHECK_FALSE(std::filesystem::exists(folder / "out" / "frm000.dat"));
+}
+
+TEST_CASE("play --out writes a PART line of exactly 4096 bytes, and it reads back", "[cli][play][numbered]")
+{
+    // "PART " + 3000 + "/" + 1085 + " OPEN" = 4096 bytes.
+    const TempFolder folder;
+    write_named_scene(folder, std::string(3000, 'o'), std::string(1085, 'p'), 2);
+
+    const auto run = play_out(folder);
+
+    CAPTURE(run.err);
+    REQUIRE(run.status == 0);
+    const auto drawn = run_apcs({"draw", (folder / "out" / "frm002.dat").string(), "--svg", (folder / "f.svg").string()});
+    CAPTURE(drawn.err);
+    CHECK(drawn.status == 0);
+}
