@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -95,6 +96,17 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
         guard, "the frame files", progress.report());
     if (!written)
         return written.error();
+    // A folder of an earlier play --out keeps the frames this run did not rewrite (more frames, or
+    // numbers of another width): they are the user's to delete, and are named so that none is
+    // taken for this scene's.
+    std::vector<std::string> names;
+    for (const std::filesystem::path& path : *written)
+        names.push_back(path.filename().string());
+    std::vector<std::string> earlier = earlier_numbered_files(folder, "frm", ".dat", names);
+    for (std::string& name : earlier)
+        name = (folder / name).string();
+    if (const std::optional<std::string> note = earlier_inbetweens_note(earlier))
+        err << "apcs: " << *note << '\n';
     return ok;
 }
 

@@ -61,3 +61,51 @@ TEST_CASE("play --out writes a PART line of exactly 4096 bytes, and it reads bac
     CAPTURE(drawn.err);
     CHECK(drawn.status == 0);
 }
+
+TEST_CASE("play --out names the frames an earlier, longer run left in its folder", "[cli][play][numbered]")
+{
+    // Issue 45 item 7: frm011.dat ... frm030.dat of a 31-frame run stayed beside a 11-frame run's
+    // without a word.
+    const TempFolder folder;
+    write_named_scene(folder, "a", "p", 30);
+    REQUIRE(play_out(folder).status == 0);
+    write_named_scene(folder, "a", "p", 10);
+
+    const auto run = play_out(folder);
+
+    CHECK(run.status == 0);
+    CHECK(run.err == "apcs: " + (folder / "out" / "frm011.dat").string() + " to " +
+                         (folder / "out" / "frm030.dat").string() + " (20 files) are from an earlier run (not rewritten)\n");
+    CHECK(std::filesystem::exists(folder / "out" / "frm030.dat")); // the user's to delete: never deleted
+    // A run that rewrites the whole set says nothing.
+    write_named_scene(folder, "a", "p", 30);
+    CHECK(play_out(folder).err.empty());
+}
+
+TEST_CASE("play --out names the frames of an earlier run numbered at another width", "[cli][play][numbered]")
+{
+    // Issue 45 item 7: frm000.dat ... of a short run beside frm0000.dat ... of a long one (and the
+    // other way round) made one folder of two sets of frames, said nowhere.
+    const TempFolder folder;
+    write_named_scene(folder, "a", "p", 1000);
+    REQUIRE(play_out(folder).status == 0);
+    write_named_scene(folder, "a", "p", 10);
+
+    const auto shorter = play_out(folder);
+
+    CHECK(shorter.status == 0);
+    CHECK(shorter.err == "apcs: " + (folder / "out" / "frm0000.dat").string() + " to " +
+                             (folder / "out" / "frm1000.dat").string() +
+                             " (1001 files) are from an earlier run (not rewritten)\n");
+    for (const auto& entry : std::filesystem::directory_iterator(folder / "out"))
+        if (entry.path().filename().string().size() == std::string("frm0000.dat").size())
+            std::filesystem::remove(entry.path());
+    write_named_scene(folder, "a", "p", 1000);
+
+    const auto longer = play_out(folder);
+
+    CHECK(longer.status == 0);
+    CHECK(longer.err == "apcs: " + (folder / "out" / "frm000.dat").string() + " to " +
+                            (folder / "out" / "frm010.dat").string() +
+                            " (11 files) are from an earlier run (not rewritten)\n");
+}
