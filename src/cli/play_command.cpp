@@ -110,6 +110,21 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
     return ok;
 }
 
+// |value| as a message shows it: three significant digits ("1.27e+09") unless they would round it
+// to the limit or below it, then as many as show it is over (1000000001 is not "1e+09").
+std::string magnitude_beyond(double magnitude, double limit)
+{
+    std::string text;
+    for (int digits = 3; digits <= 17; ++digits) {
+        std::ostringstream shown;
+        shown << std::setprecision(digits) << magnitude;
+        text = shown.str();
+        if (std::stod(text) > limit)
+            break;
+    }
+    return text;
+}
+
 // A scene whose frames a frame file could not hold (values past 1e9, or not numbers) is refused
 // before anything is printed or written, at the line of the object that goes out of reach.
 Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scene& scene,
@@ -123,7 +138,7 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
     if (std::isnan(beyond->magnitude))
         reach << "values that are not numbers";
     else
-        reach << "|value| " << std::setprecision(3) << beyond->magnitude;
+        reach << "|value| " << magnitude_beyond(beyond->magnitude, max_dat_magnitude);
     const std::string how = beyond->at_anchor && object.anchor
                                 ? "put on its joint '" + object.joints[object.anchor->joint].name + "' with '" +
                                       scene.objects[object.anchor->partner].name + "'" +
