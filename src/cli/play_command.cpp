@@ -9,7 +9,9 @@
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/number_text.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/print_format.h"
 #include "apcs/scene/scene_animation.h"
@@ -24,8 +26,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <iomanip>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -95,6 +98,17 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
         guard, "the frame files", progress.report());
     if (!written)
         return written.error();
+    // A folder of an earlier play --out keeps the frames this run did not rewrite (more frames, or
+    // numbers of another width): they are the user's to delete, and are named so that none is
+    // taken for this scene's.
+    std::vector<std::string> names;
+    for (const std::filesystem::path& path : *written)
+        names.push_back(path.filename().string());
+    std::vector<std::string> earlier = earlier_numbered_files(folder, "frm", ".dat", names);
+    for (std::string& name : earlier)
+        name = (folder / name).string();
+    if (const std::optional<std::string> note = earlier_inbetweens_note(earlier))
+        err << "apcs: " << *note << '\n';
     return ok;
 }
 
@@ -102,6 +116,22 @@ Expected<void> write_frame_files(const SceneAnimation& animation, const std::fil
 std::string scene_file_name(const std::filesystem::path& scene_file)
 {
     return scene_file == "-" ? "standard input" : scene_file.string();
+}
+
+// |value| as a message shows it: three significant digits ("1.27e+09") unless they would round it
+// to the limit or below it, then as many as show it is over (1000000001 is not "1e+09"); never
+// with the locale's decimal comma.
+std::string magnitude_beyond(double magnitude, double limit)
+{
+    std::string text;
+    for (int digits = 3; digits <= 17; ++digits) {
+        text = scene_number(magnitude, digits);
+        double shown = 0;
+        std::from_chars(text.data(), text.data() + text.size(), shown);
+        if (shown > limit)
+            break;
+    }
+    return text;
 }
 
 // A scene whose frames a frame file could not hold (values past 1e9, or not numbers) is refused
@@ -113,9 +143,9 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
     if (!beyond)
         return ok;
     const SceneObject& object = scene.objects[beyond->object];
-    // scene_number, not a stream: the number is the same in every locale.
-    const std::string reach =
-        std::isnan(beyond->magnitude) ? "values that are not numbers" : "|value| " + scene_number(beyond->magnitude, 3);
+    const std::string reach = std::isnan(beyond->magnitude)
+                                  ? "values that are not numbers"
+                                  : "|value| " + magnitude_beyond(beyond->magnitude, max_dat_magnitude);
     const std::string how = beyond->at_anchor && object.anchor
                                 ? "put on its joint '" + object.joints[object.anchor->joint].name + "' with '" +
                                       scene.objects[object.anchor->partner].name + "'" +
@@ -134,6 +164,31 @@ Expected<void> check_frames(const SceneAnimation& animation, const Scene& scene,
     if (Expected<void> reachable = check_frames_in_reach(animation, scene, scene_file); !reachable)
         return reachable;
     return check_closing_joints(scene, animation, scene_file_name(scene_file));
+}
+
+// --out: every frame file must read back, so a PART line longer than a .dat line may be (an
+// object's name and its part's name, each up to a scene or .dat line long, joined as
+// "OBJECT/PART") is refused before any frame is written, at the object's line.
+Expected<void> check_part_lines_fit(const SceneAnimation& animation, const Scene& scene,
+                                    const std::filesystem::path& scene_file)
+{
+    const std::vector<GraphicPart>& parts = animation.structure().parts;
+    std::size_t index = 0;
+    for (const SceneObject& object : scene.objects) {
+        const Graphic* drawing = object.first_drawing();
+        for (std::size_t p = 0; drawing != nullptr && p < drawing->parts.size() && index < parts.size(); ++p, ++index) {
+            const std::string line = part_line(parts[index].name, parts[index].closure, index);
+            if (line.size() <= max_dat_line_bytes)
+                continue;
+            return Diagnostic{scene_file.string(), object.line,
+                              "object " + quote_field(object.name) + ": its part " + std::to_string(p + 1) +
+                                  " would be written to the frame files as the line " + quote_field(line) + " of " +
+                                  std::to_string(line.size()) + " bytes; expected at most " +
+                                  std::to_string(max_dat_line_bytes) +
+                                  ", as a .dat file is read (give the object or the part a shorter name)"};
+        }
+    }
+    return ok;
 }
 
 ViewAngles view_of(const Scene& scene, const CommonOptions& options)
@@ -273,6 +328,9 @@ ExitStatus run_play_command(const PlayRequest& request, const CommonOptions& opt
     const SceneAnimation animation(*scene, settings, options.surface);
     if (Expected<void> playable = check_frames(animation, *scene, request.scene); !playable)
         return report_bad_input(playable.error(), err);
+    if (options.out)
+        if (Expected<void> fits = check_part_lines_fit(animation, *scene, request.scene); !fits)
+            return report_bad_input(fits.error(), err);
     if (options.print)
         print_frames(animation, *scene, out);
     const CommonOptions shown = scene_shown_options(*scene, options, inputs);

@@ -135,7 +135,7 @@ public:
     {
         if (!m_temporary.empty()) {
             m_file.close();
-            ::unlink(m_temporary.c_str());
+            ::unlinkat(m_folder.get(), m_temporary.c_str(), 0);
         }
     }
 
@@ -166,11 +166,12 @@ public:
         if ((m_temporary.empty() && !start_temporary()) || !complete_temporary(durability) ||
             (m_target.exists && !keep_old_file(result.backup)))
             return m_outcome.error();
-        if (::rename(m_temporary.c_str(), m_target.path.c_str()) != 0) {
+        if (::renameat(m_folder.get(), m_temporary.c_str(), m_folder.get(), m_target.path.filename().c_str()) != 0) {
             abandon("cannot replace the file");
             return m_outcome.error();
         }
         m_temporary.clear();
+        m_unfinished.reset();
         return result;
     }
 
@@ -202,9 +203,15 @@ private:
                 return false;
         }
         const fs::path folder = m_target.path.has_parent_path() ? m_target.path.parent_path() : fs::path(".");
-        std::string temporary = (folder / temporary_name_for(folder, m_target.path.filename().string())).string();
+        // The temporary file is made, renamed and removed in the folder open here, not by its
+        // path: a folder renamed or moved while the file is written still has it renamed or
+        // removed, never left behind as .NAME.XXXXXX.
+        m_folder.reset(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+        if (m_folder.get() < 0)
+            return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
+        std::string temporary = temporary_name_for(folder, m_target.path.filename().string());
         // Known from its making until it is renamed or removed: a signal meanwhile removes it.
-        const int descriptor = create_unfinished_file(temporary, m_unfinished);
+        const int descriptor = create_unfinished_file(m_folder.get(), temporary, m_unfinished);
         if (descriptor < 0)
             return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
         m_file.reset(descriptor);
@@ -262,8 +269,9 @@ private:
         const fs::path backup = backup_path_for(m_target.path, m_inputs);
         if (backup.empty())
             return refuse("cannot keep the old file: its .bak and .b01 … .b99 are all key files");
-        ::unlink(backup.c_str());
-        if (::link(m_target.path.c_str(), backup.c_str()) != 0) {
+        // In the folder the temporary file is in, so that the backup is beside the file replaced.
+        ::unlinkat(m_folder.get(), backup.filename().c_str(), 0);
+        if (::linkat(m_folder.get(), m_target.path.filename().c_str(), m_folder.get(), backup.filename().c_str(), 0) != 0) {
             std::error_code error;
             fs::copy_file(m_target.path, backup, fs::copy_options::overwrite_existing, error);
             if (error) {
@@ -287,8 +295,9 @@ private:
         const int reason = errno;
         m_file.close();
         if (!m_temporary.empty())
-            ::unlink(m_temporary.c_str());
+            ::unlinkat(m_folder.get(), m_temporary.c_str(), 0);
         m_temporary.clear();
+        m_unfinished.reset();
         return refuse(what + ": " + system_reason(reason));
     }
 
@@ -300,7 +309,10 @@ private:
     std::uintmax_t m_size = 0; // bytes of the new content written after them (the file: both)
     bool m_differs;
     FileDescriptor m_file{-1};
-    std::string m_temporary;
+    // The folder of the temporary file, open while m_unfinished may know it (declared before
+    // it, so that the file is forgotten before the folder is closed).
+    FileDescriptor m_folder{-1};
+    std::string m_temporary; // its name in m_folder
     std::optional<UnfinishedFile> m_unfinished;
     Expected<void> m_outcome = ok; // the first problem, once there is one
 };

@@ -331,9 +331,7 @@ Expected<void> DatParser::finish()
 // comment characters in a name become '_' so that it reads back as one field.
 void append_part_line(std::string& text, const std::string& part_name, Closure closure, std::size_t index)
 {
-    std::string name = part_name.empty() ? "P" + std::to_string(index + 1) : part_name;
-    std::replace_if(name.begin(), name.end(), [](char c) { return is_field_blank(c) || c == ';' || c == '#'; }, '_');
-    text += "PART " + name + (closure == Closure::closed ? " CLOSED\n" : " OPEN\n");
+    text += part_line(part_name, closure, index) + '\n';
 }
 
 // A file of one open unnamed part is written without PART lines.
@@ -343,6 +341,13 @@ bool needs_part_lines(std::size_t part_count, const std::string& first_name, Clo
 }
 
 } // namespace
+
+std::string part_line(const std::string& part_name, Closure closure, std::size_t index)
+{
+    std::string name = part_name.empty() ? "P" + std::to_string(index + 1) : part_name;
+    std::replace_if(name.begin(), name.end(), [](char c) { return is_field_blank(c) || c == ';' || c == '#'; }, '_');
+    return "PART " + name + (closure == Closure::closed ? " CLOSED" : " OPEN");
+}
 
 Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points)
 {

@@ -3,10 +3,14 @@
 #include "apcs/animation/memory_budget.h"
 #include "apcs/base/parallel_work.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cstdio>
+#include <optional>
+#include <set>
 #include <sys/statvfs.h>
 #include <thread>
 
@@ -175,6 +179,50 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
     return write_numbered_files(
         folder, count, name_of, [&content_of](std::size_t index, const ContentSink& sink) { sink(content_of(index)); },
         guard, purpose, progress);
+}
+
+namespace {
+
+// The number of `name` in the set PREFIX + digits + SUFFIX ("frm013.dat" -> 13), nullopt for any
+// other name.
+std::optional<std::size_t> number_in_set(std::string_view name, std::string_view prefix, std::string_view suffix)
+{
+    constexpr std::size_t fewest_digits = 3;
+    if (name.size() < prefix.size() + fewest_digits + suffix.size() ||
+        !equals_ignoring_case(name.substr(0, prefix.size()), prefix) ||
+        !equals_ignoring_case(name.substr(name.size() - suffix.size()), suffix))
+        return std::nullopt;
+    const std::string_view digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (digits.find_first_not_of("0123456789") != std::string_view::npos)
+        return std::nullopt;
+    return parse_count_value(digits);
+}
+
+} // namespace
+
+std::vector<std::string> earlier_numbered_files(std::span<const std::string> names, std::string_view prefix,
+                                                std::string_view suffix, std::span<const std::string> written)
+{
+    const std::set<std::string_view> now(written.begin(), written.end());
+    std::vector<std::pair<std::size_t, std::string>> numbered;
+    for (const std::string& name : names)
+        if (const std::optional<std::size_t> number = number_in_set(name, prefix, suffix); number && !now.contains(name))
+            numbered.emplace_back(*number, name);
+    std::sort(numbered.begin(), numbered.end());
+    std::vector<std::string> earlier;
+    for (auto& [number, name] : numbered)
+        earlier.push_back(std::move(name));
+    return earlier;
+}
+
+std::vector<std::string> earlier_numbered_files(const std::filesystem::path& folder, std::string_view prefix,
+                                                std::string_view suffix, std::span<const std::string> written)
+{
+    std::vector<std::string> names;
+    std::error_code error;
+    for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
+        names.push_back(entry->path().filename().string());
+    return earlier_numbered_files(names, prefix, suffix, written);
 }
 
 std::string picture_file_name(int number)

@@ -7,7 +7,10 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <fcntl.h>
 #include <pthread.h>
+#include <string_view>
+#include <sys/random.h>
 #include <unistd.h>
 
 namespace apcs {
@@ -21,7 +24,8 @@ constexpr int slot_count = 64;
 struct Slot {
     std::atomic<bool> claimed{false};
     std::atomic<bool> in_use{false};
-    char path[PATH_MAX] = {};
+    int folder = -1;
+    char name[NAME_MAX + 1] = {};
 };
 
 std::array<Slot, slot_count>& slots()
@@ -37,16 +41,17 @@ std::atomic<int> being_made{0};
 
 } // namespace
 
-UnfinishedFile::UnfinishedFile(const std::string& path) noexcept
+UnfinishedFile::UnfinishedFile(int folder, const std::string& name) noexcept
 {
-    if (path.size() >= PATH_MAX)
+    if (name.size() > NAME_MAX)
         return;
     for (int index = 0; index < slot_count; ++index) {
         Slot& slot = slots()[static_cast<std::size_t>(index)];
         bool expected = false;
         if (!slot.claimed.compare_exchange_strong(expected, true))
             continue;
-        std::memcpy(slot.path, path.c_str(), path.size() + 1);
+        slot.folder = folder;
+        std::memcpy(slot.name, name.c_str(), name.size() + 1);
         slot.in_use.store(true, std::memory_order_release);
         m_slot = index;
         return;
@@ -62,7 +67,34 @@ UnfinishedFile::~UnfinishedFile()
     slot.claimed.store(false, std::memory_order_release);
 }
 
-int create_unfinished_file(std::string& pattern, std::optional<UnfinishedFile>& known) noexcept
+namespace {
+
+// mkstemp in the folder open as `folder`: its XXXXXX replaced by random letters and digits until
+// a name is free (O_EXCL), at most 100 tries.
+int make_temporary_at(int folder, std::string& pattern) noexcept
+{
+    constexpr std::string_view letters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
+    constexpr std::size_t unique = 6;
+    if (pattern.size() < unique || pattern.compare(pattern.size() - unique, unique, "XXXXXX") != 0) {
+        errno = EINVAL;
+        return -1;
+    }
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        unsigned char random[unique] = {};
+        if (::getrandom(random, sizeof random, 0) != static_cast<ssize_t>(sizeof random))
+            return -1;
+        for (std::size_t i = 0; i < unique; ++i)
+            pattern[pattern.size() - unique + i] = letters[static_cast<std::size_t>(random[i]) % letters.size()];
+        const int descriptor = ::openat(folder, pattern.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+        if (descriptor >= 0 || errno != EEXIST)
+            return descriptor;
+    }
+    return -1;
+}
+
+} // namespace
+
+int create_unfinished_file(int folder, std::string& pattern, std::optional<UnfinishedFile>& known) noexcept
 {
     // With every signal blocked here, a stop's handler runs on another thread (or after this),
     // which then waits for being_made to fall to 0: it cannot wait on its own thread.
@@ -75,9 +107,9 @@ int create_unfinished_file(std::string& pattern, std::optional<UnfinishedFile>& 
     if (stopping.load()) {
         errno = EINTR;
     } else {
-        descriptor = ::mkstemp(pattern.data());
+        descriptor = make_temporary_at(folder, pattern);
         if (descriptor >= 0)
-            known.emplace(pattern);
+            known.emplace(folder, pattern);
     }
     being_made.fetch_sub(1);
     const int reason = errno;
@@ -95,7 +127,7 @@ void remove_unfinished_files() noexcept
     }
     for (Slot& slot : slots())
         if (slot.in_use.load(std::memory_order_acquire))
-            ::unlink(slot.path);
+            ::unlinkat(slot.folder, slot.name, 0);
 }
 
 } // namespace apcs

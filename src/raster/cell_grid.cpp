@@ -70,21 +70,48 @@ void CellGrid::set(int column, int row, char32_t glyph)
         return;
     const std::size_t index = *found;
     // Half a wide character is never left behind: its other half becomes a blank.
-    if (m_cells[index] == wide_tail && glyph != wide_tail)
+    if (m_cells[index] == wide_tail && glyph != wide_tail) {
         m_cells[index - 1] = U' ';
+        m_marks.erase(index - 1);
+    }
     if (m_cells[index] != wide_tail && column + 1 < m_columns && m_cells[index + 1] == wide_tail)
         m_cells[index + 1] = U' ';
     m_cells[index] = glyph;
+    m_marks.erase(index);
+}
+
+std::u32string CellGrid::marks_at(int column, int row) const
+{
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
+        return {};
+    const auto found = m_marks.find(*index);
+    return found == m_marks.end() ? std::u32string() : found->second;
+}
+
+void CellGrid::add_mark(int column, int row, char32_t mark)
+{
+    const std::optional<std::size_t> index = index_of(column, row);
+    if (!index)
+        return;
+    std::u32string& marks = m_marks[*index];
+    if (marks.size() < max_marks_per_cell)
+        marks += mark;
 }
 
 void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle style, ColourRole role)
 {
+    // The cell of the last character written, which a combining mark after it joins.
+    std::optional<int> base;
     for (const char32_t code_point : decode_utf8(utf8)) {
         const int width = cell_width(code_point);
+        if (width == 0 && base)
+            add_mark(*base, row, code_point);
         if (width <= 0)
             continue;
         if (width == 2 && column + 1 >= m_columns)
             break;
+        base = column < m_columns ? std::optional<int>(column) : std::nullopt;
         set_style(column, row, style);
         set_role(column, row, role);
         set(column++, row, code_point);
@@ -99,9 +126,13 @@ void CellGrid::put_text(int column, int row, const std::string& utf8, CellStyle 
 std::string CellGrid::row_text(int row) const
 {
     std::string text;
-    for (int column = 0; column < m_columns; ++column)
-        if (at(column, row) != wide_tail)
-            append_utf8(text, at(column, row));
+    for (int column = 0; column < m_columns; ++column) {
+        if (at(column, row) == wide_tail)
+            continue;
+        append_utf8(text, at(column, row));
+        for (const char32_t mark : marks_at(column, row))
+            append_utf8(text, mark);
+    }
     return text;
 }
 

@@ -153,6 +153,11 @@ void Painter::text(PixelPoint top_left, std::string_view utf8, DrawMode mode)
 {
     int left = top_left.x;
     for (const char32_t code_point : decode_utf8(utf8)) {
+        // A combining mark takes no cell on a terminal, so none here either: the font has no
+        // marks to lay over a letter, and a '?' cell for each would push the rest of the line
+        // out of its columns.
+        if (cell_width(code_point) == 0)
+            continue;
         for (int row = 0; row < Font::cell_height; ++row)
             for (int column = 0; column < Font::cell_width; ++column)
                 if (Font::pixel(code_point, column, row))

@@ -27,6 +27,8 @@ CellGrid scrolled_up(const CellGrid& grid)
         for (int column = 0; column < grid.columns(); ++column) {
             scrolled.set(column, row - 1, grid.at(column, row));
             scrolled.set_style(column, row - 1, grid.style_at(column, row));
+            for (const char32_t mark : grid.marks_at(column, row))
+                scrolled.add_mark(column, row - 1, mark);
         }
     return scrolled;
 }
@@ -36,9 +38,12 @@ CellGrid scrolled_up(const CellGrid& grid)
 std::string caption_bar(std::string_view text, int columns)
 {
     std::string bar = " " + std::string(text);
-    const auto width = static_cast<std::size_t>(std::max(columns, 0));
-    if (bar.size() < width)
-        bar.append(width - bar.size(), ' ');
+    // Padded by the columns the text takes, not its bytes: "สวัสดี" is 18 bytes in 4 columns.
+    int taken = 0;
+    for (const char32_t character : decode_utf8(bar))
+        taken += std::max(cell_width(character), 0);
+    if (taken < columns)
+        bar.append(static_cast<std::size_t>(columns - taken), ' ');
     return bar;
 }
 

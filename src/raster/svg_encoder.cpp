@@ -198,7 +198,10 @@ std::string mark_element(const PixelMark& mark)
 
 std::string text_element(const TextLine& line)
 {
-    const std::size_t cells = decode_utf8(line.text).size();
+    // The cells the raster draws: a combining mark takes none (Painter::text).
+    const std::u32string characters = decode_utf8(line.text);
+    const auto cells = static_cast<std::size_t>(
+        std::count_if(characters.begin(), characters.end(), [](char32_t c) { return cell_width(c) != 0; }));
     const int baseline = hercules::text_row_top(line.row) + text_baseline_row;
     return "<text x=\"" + number(svg_x(line.column * hercules::cell_width)) + "\" y=\"" + number(svg_y(baseline)) +
            "\" textLength=\"" + std::to_string(cells * hercules::cell_width) + "\" lengthAdjust=\"spacingAndGlyphs\">" +

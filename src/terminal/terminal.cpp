@@ -374,6 +374,7 @@ bool Terminal::show(const CellGrid& grid)
         erase();
     const auto changed = [&](int column, int row) {
         return full || grid.at(column, row) != state.shown.at(column, row) ||
+               grid.marks_at(column, row) != state.shown.marks_at(column, row) ||
                grid.style_at(column, row) != state.shown.style_at(column, row) ||
                (state.colour && grid.role_at(column, row) != state.shown.role_at(column, row));
     };
@@ -397,9 +398,12 @@ bool Terminal::show(const CellGrid& grid)
                        (changed(next, row) && grid.style_at(next, row) == style &&
                         (!state.colour || static_cast<short>(grid.role_at(next, row)) == pair));
             };
+            // A cell's combining marks follow its character: ncurses puts them in that cell.
             while (column < grid.columns() && (column == start || continues_run(column))) {
                 if (grid.at(column, row) != CellGrid::wide_tail)
                     append_utf8(run, grid.at(column, row));
+                for (const char32_t mark : grid.marks_at(column, row))
+                    append_utf8(run, mark);
                 ++column;
             }
             attr_set(attributes_of(style), pair, nullptr);

@@ -72,6 +72,18 @@ TEST_CASE("a SHAPE at 1e9 moved by 1e9 is refused, since apcs draw could not rea
     check_refused(folder, ":2: object far reaches |value| ");
 }
 
+TEST_CASE("a value just over 1e9 is told with the digits that show it is over, not as 1e+09",
+          "[cli][play][scene]")
+{
+    // Issue 45 item 7: 1,000,000,001 was told as "reaches |value| 1e+09", which reads as the limit.
+    const TempFolder folder;
+    folder.write("far.dat", "1e9 0 0\n1e9 1 0\n");
+    folder.write("m.dat", "0 0 0\n2 0 0\n");
+    folder.write("far.scn", "FRAMES 2\nOBJECT far\nSHAPE far.dat\nMOVE m.dat\n");
+    check_refused(folder, ":2: object far reaches |value| 1000000001 at frame 1 (its MOVE, ROTATE and SCALE "
+                          "composed with its parents'); a frame holds |value| <= 1e9");
+}
+
 TEST_CASE("a RIGID limb whose turn takes it past 1e9 between its keys is refused, naming its joint",
           "[cli][play][scene]")
 {

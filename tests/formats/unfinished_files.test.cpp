@@ -9,6 +9,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 using namespace apcs;
 using test::TempFolder;
@@ -28,6 +29,80 @@ TEST_CASE("once a stop has begun no temporary file is made, so a writer still ru
             write_file_atomically(folder / "frm053.dat", std::string(std::size_t{1} << 21, 'x'));
         const bool left_nothing = std::filesystem::is_empty(folder.path());
         ::_exit(!written && left_nothing ? 0 : 1);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
+
+namespace {
+
+// The hidden files (".NAME.XXXXXX", a temporary file) in `folder`.
+std::vector<std::string> hidden_files(const std::filesystem::path& folder)
+{
+    std::vector<std::string> hidden;
+    for (const auto& entry : std::filesystem::directory_iterator(folder))
+        if (entry.path().filename().string().starts_with('.'))
+            hidden.push_back(entry.path().filename().string());
+    return hidden;
+}
+
+} // namespace
+
+TEST_CASE("a folder renamed while a file is written in it keeps no temporary file: the file is put in place there",
+          "[formats][files][signals]")
+{
+    // Issue 45 item 7: play --out into DIR, `mv DIR DIR2` meanwhile, left two .frmNNN.dat.XXXXXX in
+    // DIR2: the rename and the removal both named DIR/.frmNNN.dat.XXXXXX, which was gone.
+    const TempFolder folder;
+    std::filesystem::create_directory(folder / "out");
+    const Expected<WriteResult> written =
+        write_file_atomically(folder / "out" / "frm001.dat", [&folder](const ContentSink& sink) {
+            sink("0 0 0\n");
+            std::filesystem::rename(folder / "out", folder / "moved");
+            sink("1 1 1\n");
+        });
+
+    CHECK(written.has_value());
+    CHECK(hidden_files(folder / "moved").empty());
+    CHECK(test::read_all(folder / "moved" / "frm001.dat") == "0 0 0\n1 1 1\n");
+}
+
+TEST_CASE("a write that fails after its folder was renamed removes its temporary file there",
+          "[formats][files][signals]")
+{
+    const TempFolder folder;
+    std::filesystem::create_directory(folder / "out");
+    const Expected<WriteResult> written =
+        write_file_atomically(folder / "out" / "frm001.dat", [&folder](const ContentSink& sink) {
+            sink("0 0 0\n");
+            std::filesystem::rename(folder / "out", folder / "moved");
+            // The rename over frm001.dat will fail: a folder has taken its name.
+            std::filesystem::create_directory(folder / "moved" / "frm001.dat");
+            sink("1 1 1\n");
+        });
+
+    REQUIRE_FALSE(written.has_value());
+    CHECK(written.error().message.starts_with("cannot replace the file: "));
+    CHECK(hidden_files(folder / "moved").empty());
+}
+
+TEST_CASE("a stop removes a temporary file whose folder was renamed meanwhile", "[formats][files][signals]")
+{
+    const TempFolder folder;
+    std::filesystem::create_directory(folder / "out");
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        [[maybe_unused]] const Expected<WriteResult> written =
+            write_file_atomically(folder / "out" / "frm001.dat", [&folder](const ContentSink& sink) {
+                sink("0 0 0\n");
+                std::filesystem::rename(folder / "out", folder / "moved");
+                remove_unfinished_files(); // what the signal handler does, before its _exit
+                ::_exit(hidden_files(folder / "moved").empty() ? 0 : 1);
+            });
+        ::_exit(2);
     }
     int status = 0;
     REQUIRE(::waitpid(child, &status, 0) == child);

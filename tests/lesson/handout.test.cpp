@@ -1,4 +1,5 @@
 #include "apcs/lesson/handout.h"
+#include "apcs/raster/painter.h"
 
 #include <catch2/catch.hpp>
 
@@ -52,4 +53,25 @@ TEST_CASE("the text console's page is its rows drawn in the font, graphics mode'
     REQUIRE(picture.text[1].text == " a caption");
     REQUIRE(screen_text(console, GlyphSet::ascii) ==
             "Please keyin the KEY1 filename!\n" + std::string(22, '\n') + " a caption\n");
+}
+
+TEST_CASE("a handout page keeps a Thai caption's combining marks: in its text, and its picture in the caption's columns",
+          "[session][handout]")
+{
+    // Issue 45 item 7: the handout's text had "สวสด" for "สวัสดี". Its picture is drawn in the VGA
+    // font, which has no Thai: each letter is a '?' there (manual section 12), and a mark takes no
+    // cell of its own, so what follows stays in its column.
+    const std::string thai = "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35";
+    SessionScreen console;
+    console.text = CellGrid(80, 24);
+    console.text.put_text(0, 23, " " + thai + " x", CellStyle::reverse);
+    REQUIRE(screen_text(console, GlyphSet::ascii) == std::string(23, '\n') + " " + thai + " x\n");
+    const GraphicsScreen picture = screen_picture(console);
+    REQUIRE(picture.text.size() == 1);
+    REQUIRE(picture.text[0].text == " " + thai + " x");
+    Bitmap drawn(80 * 9, 14);
+    Painter(drawn).text({0, 0}, picture.text[0].text);
+    Bitmap expected(80 * 9, 14);
+    Painter(expected).text({0, 0}, " ???? x");
+    REQUIRE(drawn == expected);
 }

@@ -102,6 +102,28 @@ TEST_CASE("on the text console a caption takes the bottom row, the console scrol
     REQUIRE(captioned.row_text(23).starts_with(" Step 1 "));
 }
 
+TEST_CASE("a Thai caption keeps its combining marks on the caption row, in graphics mode and on the text console",
+          "[session][captions]")
+{
+    // Issue 45 item 7: "สวัสดี" was shown as "สวสด".
+    const std::string thai = "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35";
+    MemoryFiles files;
+    Session session({}, files);
+    const SessionScreen text = with_caption(session.screen(), "Step 1: " + thai);
+    REQUIRE(text.text.row_text(23).starts_with(" Step 1: " + thai + "   "));
+    REQUIRE(text.text.style_at(79, 23) == CellStyle::reverse);
+    // Scrolled up under a later caption's row, it keeps them too.
+    for (int wrong = 0; wrong < 12; ++wrong)
+        test::type(session, "missing.dat");
+    SessionScreen full = session.screen();
+    full.text.put_text(0, 23, thai);
+    REQUIRE(with_caption(full, "x").text.row_text(22).starts_with(thai + " "));
+    MemoryFiles graphics_files;
+    Session graphics({}, graphics_files);
+    open_waypoint_editor(graphics, graphics_files);
+    REQUIRE(shown_row(with_caption(graphics.screen(), thai), 23).starts_with(" " + thai + "   "));
+}
+
 TEST_CASE("a caption wider than the key-hint row is refused with its file and line", "[session][captions]")
 {
     const std::string widest(max_caption_columns, 'w');

@@ -27,11 +27,34 @@ TEST_CASE("a wide character fills two cells and the row reads as the terminal sh
     REQUIRE(grid.row_text(0) == "a\u6F22b    ");
 }
 
-TEST_CASE("zero-width and control characters take no cell", "[raster][cells]")
+TEST_CASE("zero-width and control characters take no cell: a combining mark joins its character's", "[raster][cells]")
 {
     CellGrid grid(4, 1);
     grid.put_text(0, 0, "e\u0301\tx");
-    REQUIRE(grid.row_text(0) == "ex  ");
+    REQUIRE(grid.row_text(0) == "e\u0301x  ");
+    REQUIRE(grid.marks_at(0, 0) == U"\u0301");
+    REQUIRE(grid.at(1, 0) == U'x');
+    // A mark with no character before it in the text has no cell to join, and is left out.
+    grid.put_text(2, 0, "\u0301y");
+    REQUIRE(grid.row_text(0) == "e\u0301xy ");
+    // Writing over a cell clears its marks.
+    grid.put_text(0, 0, "a");
+    REQUIRE(grid.row_text(0) == "axy ");
+}
+
+TEST_CASE("a Thai caption keeps its vowel and tone marks in the cells of its letters", "[raster][cells][captions]")
+{
+    // Issue 45 item 7: "สวัสดี" showed as "สวสด": the zero-width marks were dropped.
+    CellGrid grid(6, 1);
+    grid.put_text(0, 0, "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35");
+    REQUIRE(grid.row_text(0) == "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35  ");
+    REQUIRE(grid.marks_at(1, 0) == U"\u0E31");
+    REQUIRE(grid.marks_at(3, 0) == U"\u0E35");
+    REQUIRE(grid.at(4, 0) == U' ');
+    // More marks than a terminal's cell holds (ncurses: four) are left out.
+    CellGrid heaped(2, 1);
+    heaped.put_text(0, 0, "a\u0301\u0302\u0303\u0304\u0305b");
+    REQUIRE(heaped.row_text(0) == "a\u0301\u0302\u0303\u0304b");
 }
 
 TEST_CASE("a wide character that the right edge would cut in half is left out", "[raster][cells]")

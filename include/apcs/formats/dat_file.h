@@ -54,6 +54,12 @@ Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name,
 // values get all seven columns.
 std::string format_dat(const DatFile& file);
 
+// "PART name OPEN|CLOSED" as format_dat and format_graphic write part `index` (0 for the first),
+// without its line end: an unnamed part is called P1, P2, ...; blanks and comment characters in a
+// name become '_' so that it reads back as one field. A writer checks its size against
+// max_dat_line_bytes, since a longer line would not read back.
+std::string part_line(const std::string& part_name, Closure closure, std::size_t index);
+
 // "SLOPES S0 S1" with the shortest exact numbers, without its line end (SPEC §2.1).
 std::string slopes_line(const EndSlopes& slopes);
 

@@ -46,7 +46,8 @@ namespace apcs {
 [[nodiscard]] std::vector<std::string> inbetweens_beyond(const std::filesystem::path& folder, std::size_t written_count);
 
 // "inb013.dat to inb020.dat (8 files) are from an earlier run (not rewritten)" for `earlier`
-// (from inbetweens_beyond), "inb013.dat is from ..." for one; nullopt for none.
+// (from inbetweens_beyond, or a play --out's frames from earlier_numbered_files), "inb013.dat is
+// from ..." for one; nullopt for none.
 [[nodiscard]] std::optional<std::string> earlier_inbetweens_note(std::span<const std::string> earlier);
 
 } // namespace apcs

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,6 +64,21 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& name_of,
                      const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
                      std::string_view purpose, const WriteProgress& progress = {});
+
+// Of `names` (a folder's file names), the files of the numbered set PREFIX + digits + SUFFIX (at
+// least three digits, any case, as DOS wrote them: frm000.dat, FRM0012.DAT) that are not among
+// `written` (the names a run has just written), in number order, a number's names in name order:
+// what an earlier run left, with more files or with its numbers at another width (frm000.dat beside
+// a run of frm0000.dat ... frm1000.dat). They are never deleted, only pointed out
+// (earlier_inbetweens_note words them).
+[[nodiscard]] std::vector<std::string> earlier_numbered_files(std::span<const std::string> names,
+                                                              std::string_view prefix, std::string_view suffix,
+                                                              std::span<const std::string> written);
+
+// earlier_numbered_files for the files of `folder`.
+[[nodiscard]] std::vector<std::string> earlier_numbered_files(const std::filesystem::path& folder,
+                                                              std::string_view prefix, std::string_view suffix,
+                                                              std::span<const std::string> written);
 
 // P's pictures: "apcs001.png" … "apcs999.png" (number 1 … most_pictures); the first name not yet
 // in the folder is written.

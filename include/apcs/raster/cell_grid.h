@@ -2,6 +2,7 @@
 
 #include "apcs/base/utf8.h"
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <optional>
@@ -41,11 +42,16 @@ int colour_number(ColourRole role);
 std::string_view colour_role_name(ColourRole role);
 
 // What a character terminal shows: columns x rows cells of one code point and one style each. A
-// wide character fills two cells: its own, then one holding wide_tail.
+// wide character fills two cells: its own, then one holding wide_tail. A cell may also hold the
+// combining marks that follow its character (Thai vowel and tone marks, accents): zero-width
+// characters a terminal puts in the same cell, as ncurses does (up to max_marks_per_cell).
 class CellGrid {
 public:
     // The right half of a wide character: painted by the character on its left, never by itself.
     static constexpr char32_t wide_tail = 0x110000;
+    // ncurses keeps a base character and at most four marks in a cell (CCHARW_MAX 5); more would
+    // show on no terminal, so they are left out here too.
+    static constexpr std::size_t max_marks_per_cell = 4;
 
     CellGrid(int columns = 0, int rows = 0);
 
@@ -53,18 +59,25 @@ public:
     int rows() const { return m_rows; }
     char32_t at(int column, int row) const;
     CellStyle style_at(int column, int row) const;
+    // The cell's character; its marks are cleared.
     void set(int column, int row, char32_t glyph);
+    // The combining marks of the cell, in order; empty for most.
+    std::u32string marks_at(int column, int row) const;
+    // Adds `mark` (a zero-width character) to the cell's marks, unless it holds max_marks_per_cell.
+    void add_mark(int column, int row, char32_t mark);
     void set_style(int column, int row, CellStyle style);
     ColourRole role_at(int column, int row) const;
     void set_role(int column, int row, ColourRole role);
     // Writes UTF-8 text from (column, row) on, each character in cell_width columns, clipped at the
-    // right edge (a wide character that would be cut in half is left out); zero-width and control
-    // characters are left out, so the columns stay those of the terminal.
+    // right edge (a wide character that would be cut in half is left out); a zero-width character
+    // is a mark of the character before it (add_mark; left out when none is written before it),
+    // control characters are left out, so the columns stay those of the terminal.
     void put_text(int column, int row, const std::string& utf8, CellStyle style = CellStyle::plain,
                   ColourRole role = ColourRole::monitor);
     bool operator==(const CellGrid&) const = default;
 
-    // Row `row` as UTF-8, trailing spaces kept; a wide character appears once.
+    // Row `row` as UTF-8, trailing spaces kept; a wide character appears once, each character
+    // followed by its marks.
     std::string row_text(int row) const;
     // All rows, each followed by '\n'.
     std::string to_text() const;
@@ -81,6 +94,8 @@ private:
     std::vector<char32_t> m_cells;
     std::vector<CellStyle> m_styles;
     std::vector<ColourRole> m_roles;
+    // The marks of the few cells that have any, by their index in the vectors.
+    std::map<std::size_t, std::u32string> m_marks;
 };
 
 } // namespace apcs
