@@ -504,7 +504,10 @@ TEST_CASE("the segments a change reports made again are the only ones that diffe
     change.kind = WaypointChange::Kind::insert;
     change.index = 20;
     change.point = {{3, 39, 1}, {}};
-    const SegmentSplice touched = reevaluate_path(points, settings, path, apply_change(points, origins, change));
+    // The change first: the span of the points is taken after the insertion, whichever order a
+    // compiler evaluates a call's arguments in (Clang took it before, with the old size).
+    const PathChange applied = apply_change(points, origins, change);
+    const SegmentSplice touched = reevaluate_path(points, settings, path, applied);
     // A segment's shape depends on the points around its ends (s − 1 … s + 2): the new point 20
     // shapes new segments 18 … 21, in place of old 18 … 20, whose end tangents at old points 19
     // and 20 saw the neighbour it now stands between. No more: "everything" would pass the rest.
