@@ -1,5 +1,6 @@
 #include "apcs/base/utf8.h"
 
+#include <algorithm>
 #include <locale.h>
 #include <wchar.h>
 
@@ -28,6 +29,14 @@ std::u32string decode_utf8(std::string_view utf8)
         i += valid ? static_cast<std::size_t>(length) : 1;
     }
     return decoded;
+}
+
+int text_columns(std::string_view utf8)
+{
+    int columns = 0;
+    for (const char32_t character : decode_utf8(utf8))
+        columns += std::max(cell_width(character), 0);
+    return columns;
 }
 
 int cell_width(char32_t code_point)

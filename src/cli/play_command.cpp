@@ -17,7 +17,6 @@
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/scene_joints.h"
-#include "apcs/scene/scene_numbers.h"
 #include "apcs/scene/scene_tree.h"
 #include "apcs/screens/frames_overlay.h"
 #include "apcs/base/session_log.h"
@@ -125,7 +124,7 @@ std::string magnitude_beyond(double magnitude, double limit)
 {
     std::string text;
     for (int digits = 3; digits <= 17; ++digits) {
-        text = scene_number(magnitude, digits);
+        text = significant_number(magnitude, digits);
         double shown = 0;
         std::from_chars(text.data(), text.data() + text.size(), shown);
         if (shown > limit)

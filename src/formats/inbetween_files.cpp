@@ -3,8 +3,6 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"
-#include "apcs/formats/number_text.h"
-#include "apcs/formats/text_fields.h"
 
 #include <algorithm>
 #include <functional>
@@ -59,46 +57,15 @@ Expected<std::vector<std::filesystem::path>> write_inbetween_files(const Surface
                             fit_points, folder, guard, progress);
 }
 
-namespace {
-
-// The number of an in-between file's name ("inb013.dat" → 13), nullopt for any other name.
-std::optional<std::size_t> inbetween_number(std::string_view name)
-{
-    constexpr std::string_view prefix = "inb";
-    constexpr std::string_view suffix = ".dat";
-    constexpr std::size_t fewest_digits = 3;
-    if (name.size() < prefix.size() + fewest_digits + suffix.size() ||
-        !equals_ignoring_case(name.substr(0, prefix.size()), prefix) ||
-        !equals_ignoring_case(name.substr(name.size() - suffix.size()), suffix))
-        return std::nullopt;
-    const std::string_view digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
-    if (digits.find_first_not_of("0123456789") != std::string_view::npos)
-        return std::nullopt;
-    return parse_count_value(digits);
-}
-
-} // namespace
-
 std::vector<std::string> inbetweens_beyond(std::span<const std::string> names, std::size_t written_count)
 {
-    std::vector<std::pair<std::size_t, std::string>> numbered;
-    for (const std::string& name : names)
-        if (const std::optional<std::size_t> number = inbetween_number(name); number && *number > written_count)
-            numbered.emplace_back(*number, name);
-    std::sort(numbered.begin(), numbered.end());
-    std::vector<std::string> earlier;
-    for (auto& [number, name] : numbered)
-        earlier.push_back(std::move(name));
-    return earlier;
+    return numbered_names(names, "inb", ".dat",
+                          [written_count](std::size_t number, const std::string&) { return number > written_count; });
 }
 
 std::vector<std::string> inbetweens_beyond(const std::filesystem::path& folder, std::size_t written_count)
 {
-    std::vector<std::string> names;
-    std::error_code error;
-    for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
-        names.push_back(entry->path().filename().string());
-    return inbetweens_beyond(names, written_count);
+    return inbetweens_beyond(file_names_in(folder), written_count);
 }
 
 std::optional<std::string> earlier_inbetweens_note(std::span<const std::string> earlier)

@@ -48,25 +48,16 @@ std::optional<std::string> caption_of(std::string_view comment)
     return std::string(comment.substr(first, last - first + 1));
 }
 
-// How many terminal columns `text` takes on the caption row (put_text leaves control characters out).
-int caption_columns(std::string_view text)
-{
-    int columns = 0;
-    for (const char32_t character : decode_utf8(text))
-        columns += std::max(cell_width(character), 0);
-    return columns;
-}
-
 // The caption of a comment, checked against the caption row's width.
 Expected<std::optional<std::string>> checked_caption(std::string_view comment, const std::string& file_name,
                                                      int line_number)
 {
     std::optional<std::string> caption = caption_of(comment);
-    if (caption && caption_columns(*caption) > max_caption_columns)
+    if (caption && text_columns(*caption) > max_caption_columns)
         return Diagnostic{file_name, line_number,
                           "expected a caption of at most " + std::to_string(max_caption_columns) +
                               " columns (the key-hint row of the 80x24 screen); found " +
-                              std::to_string(caption_columns(*caption))};
+                              std::to_string(text_columns(*caption))};
     return caption;
 }
 

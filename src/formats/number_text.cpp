@@ -105,6 +105,21 @@ std::string significant_number(double value, int digits)
     return std::string(buffer.data(), result.ptr);
 }
 
+int digits_telling_apart(double a, double b)
+{
+    constexpr int fewest = 6;
+    for (int digits = fewest; digits < 17; ++digits)
+        if (a == b || significant_number(a, digits) != significant_number(b, digits))
+            return digits;
+    return 17;
+}
+
+std::pair<std::string, std::string> significant_numbers(double a, double b)
+{
+    const int digits = digits_telling_apart(a, b);
+    return {significant_number(a, digits), significant_number(b, digits)};
+}
+
 void append_shortest(std::string& text, double value)
 {
     if (value == 0.0) {

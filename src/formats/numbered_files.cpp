@@ -200,29 +200,41 @@ std::optional<std::size_t> number_in_set(std::string_view name, std::string_view
 
 } // namespace
 
-std::vector<std::string> earlier_numbered_files(std::span<const std::string> names, std::string_view prefix,
-                                                std::string_view suffix, std::span<const std::string> written)
+std::vector<std::string> numbered_names(std::span<const std::string> names, std::string_view prefix,
+                                        std::string_view suffix,
+                                        const std::function<bool(std::size_t number, const std::string& name)>& keep)
 {
-    const std::set<std::string_view> now(written.begin(), written.end());
     std::vector<std::pair<std::size_t, std::string>> numbered;
     for (const std::string& name : names)
-        if (const std::optional<std::size_t> number = number_in_set(name, prefix, suffix); number && !now.contains(name))
+        if (const std::optional<std::size_t> number = number_in_set(name, prefix, suffix); number && keep(*number, name))
             numbered.emplace_back(*number, name);
     std::sort(numbered.begin(), numbered.end());
-    std::vector<std::string> earlier;
+    std::vector<std::string> kept;
     for (auto& [number, name] : numbered)
-        earlier.push_back(std::move(name));
-    return earlier;
+        kept.push_back(std::move(name));
+    return kept;
 }
 
-std::vector<std::string> earlier_numbered_files(const std::filesystem::path& folder, std::string_view prefix,
-                                                std::string_view suffix, std::span<const std::string> written)
+std::vector<std::string> file_names_in(const std::filesystem::path& folder)
 {
     std::vector<std::string> names;
     std::error_code error;
     for (std::filesystem::directory_iterator entry(folder, error), end; !error && entry != end; entry.increment(error))
         names.push_back(entry->path().filename().string());
-    return earlier_numbered_files(names, prefix, suffix, written);
+    return names;
+}
+
+std::vector<std::string> earlier_numbered_files(std::span<const std::string> names, std::string_view prefix,
+                                                std::string_view suffix, std::span<const std::string> written)
+{
+    const std::set<std::string_view> now(written.begin(), written.end());
+    return numbered_names(names, prefix, suffix, [&now](std::size_t, const std::string& name) { return !now.contains(name); });
+}
+
+std::vector<std::string> earlier_numbered_files(const std::filesystem::path& folder, std::string_view prefix,
+                                                std::string_view suffix, std::span<const std::string> written)
+{
+    return earlier_numbered_files(file_names_in(folder), prefix, suffix, written);
 }
 
 std::string picture_file_name(int number)

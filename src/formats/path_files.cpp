@@ -78,11 +78,14 @@ std::string describe_point(const Vec3& point, int digits)
 
 std::pair<std::string, std::string> describe_points(const Vec3& a, const Vec3& b)
 {
-    for (int digits = 6;; ++digits) {
-        std::pair<std::string, std::string> texts{describe_point(a, digits), describe_point(b, digits)};
-        if (texts.first != texts.second || a == b || digits == 17)
-            return texts;
-    }
+    // The points read apart once one coordinate does: the fewest digits of those that differ.
+    int digits = 17;
+    for (const auto& [from_a, from_b] : {std::pair{a.x, b.x}, std::pair{a.y, b.y}, std::pair{a.z, b.z}})
+        if (from_a != from_b)
+            digits = std::min(digits, digits_telling_apart(from_a, from_b));
+    if (a == b)
+        digits = 6;
+    return {describe_point(a, digits), describe_point(b, digits)};
 }
 
 namespace {

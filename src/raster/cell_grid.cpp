@@ -80,13 +80,15 @@ void CellGrid::set(int column, int row, char32_t glyph)
     m_marks.erase(index);
 }
 
-std::u32string CellGrid::marks_at(int column, int row) const
+std::u32string_view CellGrid::marks_at(int column, int row) const
 {
+    if (m_marks.empty())
+        return {};
     const std::optional<std::size_t> index = index_of(column, row);
     if (!index)
         return {};
     const auto found = m_marks.find(*index);
-    return found == m_marks.end() ? std::u32string() : found->second;
+    return found == m_marks.end() ? std::u32string_view() : std::u32string_view(found->second);
 }
 
 void CellGrid::add_mark(int column, int row, char32_t mark)

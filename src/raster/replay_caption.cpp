@@ -39,9 +39,7 @@ std::string caption_bar(std::string_view text, int columns)
 {
     std::string bar = " " + std::string(text);
     // Padded by the columns the text takes, not its bytes: "สวัสดี" is 18 bytes in 4 columns.
-    int taken = 0;
-    for (const char32_t character : decode_utf8(bar))
-        taken += std::max(cell_width(character), 0);
+    const int taken = text_columns(bar);
     if (taken < columns)
         bar.append(static_cast<std::size_t>(columns - taken), ' ');
     return bar;
@@ -87,10 +85,7 @@ CellGrid with_played_key(CellGrid grid, std::string_view label)
     if (label.empty() || grid.rows() == 0)
         return grid;
     const std::string badge = played_key_badge(label);
-    int width = 0;
-    for (const char32_t character : decode_utf8(badge))
-        width += std::max(cell_width(character), 0);
-    const int column = grid.columns() - 2 - width;
+    const int column = grid.columns() - 2 - text_columns(badge);
     if (column < 0)
         return grid;
     grid.put_text(column, 0, badge, CellStyle::reverse);

@@ -274,9 +274,8 @@ Vec3 SceneAnimation::place_drawing(std::size_t index, int f, const Affine& world
     const Vec3 separation = target - at;
     // Round-off of the coordinates never decides: a part drawn exactly TOLERANCE from its partner
     // stays where it is drawn (frame 0 as given), as the frame-0 check let it.
-    const double largest = std::max({std::abs(at.x), std::abs(at.y), std::abs(at.z), std::abs(target.x),
-                                     std::abs(target.y), std::abs(target.z)});
-    if (at_most_within_round_off(length(separation), anchor.tolerance, largest))
+    if (at_most_within_round_off(length(separation), anchor.tolerance,
+                                 std::max(largest_coordinate(at), largest_coordinate(target))))
         return shift;
     for (Vec3& point : own)
         point += separation;

@@ -607,12 +607,12 @@ Expected<void> SceneParser::finish_rigid()
     for (const Graphic* key : {&keys.key1, &keys.key2})
         for (const GraphicPart& part : key->parts)
             for (const Vec3& point : part.points)
-                largest = std::max({largest, std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+                largest = std::max(largest, largest_coordinate(point));
     if (at_most_within_round_off(turn.worst_deviation, allowed, largest))
         return ok;
     return error("RIGID part '" + current.name + "': its KEY2 drawing is not its KEY1 drawing turned and moved: point " +
-                     std::to_string(turn.worst_point + 1) + " is " + scene_number(turn.worst_deviation) +
-                     " off; expected within 1e-4 of its size (" + scene_number(turn.size) + ")",
+                     std::to_string(turn.worst_point + 1) + " is " + significant_number(turn.worst_deviation) +
+                     " off; expected within 1e-4 of its size (" + significant_number(turn.size) + ")",
                  current.rigid_line);
 }
 
@@ -714,21 +714,21 @@ Expected<void> SceneParser::check_align_path(const SceneMove& move, const Pendin
     for (const ControlPoint& point : move.path) {
         const Vec3 step = point.position - move.path.front().position;
         span = std::max(span, std::hypot(step.x, step.y, step.z)); // hypot: 1e-300 does not square to 0
-        largest = std::max({largest, std::abs(point.position.x), std::abs(point.position.y), std::abs(point.position.z)});
+        largest = std::max(largest, largest_coordinate(point.position));
     }
     const std::string name = quote_field(pending.name);
     if (span == 0.0)
         return error("ALIGN on " + name + ", a path of zero length: it has no direction to turn the object by", pending.line);
     const double least = std::max(shortest_align_span, least_align_fraction * largest);
     if (span <= least)
-        return error("ALIGN on " + name + ": its control points are all within " + scene_number(span) +
+        return error("ALIGN on " + name + ": its control points are all within " + significant_number(span) +
                          " of its first, too close for a direction; expected a path that spans more than 1e-150 and "
                          "more than 1e-12 of its largest coordinate",
                      pending.line);
     if (move.ahead && *move.ahead <= least)
-        return error("ALIGN AHEAD " + scene_number(*move.ahead) + " on " + name +
+        return error("ALIGN AHEAD " + significant_number(*move.ahead) + " on " + name +
                          ": a chord that short is round-off, not a direction; expected D above 1e-150 and above 1e-12 "
-                         "of the path's largest coordinate (" + scene_number(largest) + ")",
+                         "of the path's largest coordinate (" + significant_number(largest) + ")",
                      pending.line);
     return ok;
 }

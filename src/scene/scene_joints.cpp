@@ -47,11 +47,6 @@ double joint_tolerance(const Scene& scene, const JointUse& a, const JointUse& b,
     return joint_of(scene, b).tolerance.value_or(joint_of(scene, a).tolerance.value_or(default_tolerance));
 }
 
-double largest_coordinate(const Vec3& a, const Vec3& b)
-{
-    return std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(b.x), std::abs(b.y), std::abs(b.z)});
-}
-
 // A joint's two places at one frame, and how far apart they may be.
 struct JointGap {
     JointUse earlier;
@@ -66,7 +61,7 @@ struct JointGap {
     bool closed() const
     {
         return at_most_within_round_off(distance(at_earlier, at_later), tolerance,
-                                        largest_coordinate(at_earlier, at_later));
+                                        std::max(largest_coordinate(at_earlier), largest_coordinate(at_later)));
     }
 };
 
@@ -76,11 +71,11 @@ std::string gap_message(const Scene& scene, const std::string& name, const Joint
 {
     const SceneJoint& first = joint_of(scene, gap.earlier);
     const SceneJoint& second = joint_of(scene, gap.later);
-    const auto [apart, allowed] = scene_numbers(distance(gap.at_earlier, gap.at_later), gap.tolerance);
+    const auto [apart, allowed] = significant_numbers(distance(gap.at_earlier, gap.at_later), gap.tolerance);
     return "joint " + quote_field(name) + ": " + joint_points_text(first.point, first.last_point) + " of '" +
            scene.objects[gap.earlier.object].name + "' (line " + std::to_string(first.line) + ") " +
-           scene_point(gap.at_earlier) + " and " + joint_points_text(second.point, second.last_point) + " of '" +
-           scene.objects[gap.later.object].name + "' " + scene_point(gap.at_later) + " are " + apart +
+           describe_point(gap.at_earlier) + " and " + joint_points_text(second.point, second.last_point) + " of '" +
+           scene.objects[gap.later.object].name + "' " + describe_point(gap.at_later) + " are " + apart +
            " apart in frame " + std::to_string(gap.frame) + "; expected at most " + allowed + why;
 }
 
@@ -106,7 +101,7 @@ Expected<void> check_joint(const Scene& scene, const std::string& file_name, con
                      second.line);
     // Two different values would leave one silently unused.
     if (first.tolerance && second.tolerance && *first.tolerance != *second.tolerance) {
-        const auto [here, there] = scene_numbers(*second.tolerance, *first.tolerance);
+        const auto [here, there] = significant_numbers(*second.tolerance, *first.tolerance);
         return error("joint " + quote_field(name) + " has TOLERANCE " + here + " here and " + there + " on line " +
                          std::to_string(first.line) + "; expected one value (or the same on both lines)",
                      second.line);

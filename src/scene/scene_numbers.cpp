@@ -1,7 +1,5 @@
 #include "apcs/scene/scene_numbers.h"
 
-#include "apcs/formats/number_text.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,22 +19,6 @@ bool at_most_within_round_off(double value, double limit, double magnitude)
 {
     const double scale = std::max({std::abs(value), std::abs(limit), std::abs(magnitude)});
     return value <= limit + round_off_units * std::numeric_limits<double>::epsilon() * scale;
-}
-
-std::string scene_number(double value, int digits) { return significant_number(value, digits); }
-
-std::pair<std::string, std::string> scene_numbers(double a, double b)
-{
-    for (int digits = 6;; ++digits) {
-        std::pair<std::string, std::string> texts{scene_number(a, digits), scene_number(b, digits)};
-        if (texts.first != texts.second || a == b || digits == 17)
-            return texts;
-    }
-}
-
-std::string scene_point(const Vec3& point)
-{
-    return "(" + scene_number(point.x) + ", " + scene_number(point.y) + ", " + scene_number(point.z) + ")";
 }
 
 } // namespace apcs

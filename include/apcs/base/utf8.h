@@ -17,6 +17,9 @@ void append_utf8(std::string& text, char32_t code_point);
 // locale (a wide character counts 1 only where that locale is missing).
 int cell_width(char32_t code_point);
 
+// How many terminal columns `utf8` takes: its characters' cell_width, control characters none.
+int text_columns(std::string_view utf8);
+
 // The first character of `utf8` that a terminal would obey rather than show: a C0 control but tab,
 // DEL, or a C1 control (U+0080-U+009F), named for a message ("\x1B", "U+009B"); nullopt when
 // there is none. Text from shared files (captions, scene names) is refused with it, never echoed.

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <string_view>
 
 namespace apcs {
@@ -23,6 +24,13 @@ std::string shortest_number(double value);
 // `value` with `digits` significant digits (1 to 17, 6 unless said) for a message: '.' as the
 // decimal point whatever the locale, −0 as 0, no trailing zeros: "11.3", not 11.300000000000001.
 std::string significant_number(double value, int digits = 6);
+
+// The fewest significant digits, six or more, at which `a` and `b` read apart (six when they are
+// equal): a message comparing two numbers never shows two different ones alike.
+int digits_telling_apart(double a, double b);
+
+// `a` and `b` in digits_telling_apart's digits: a distance and its limit, two TOLERANCE values.
+std::pair<std::string, std::string> significant_numbers(double a, double b);
 
 // Appends shortest_number(value) to `text` without a temporary string.
 void append_shortest(std::string& text, double value);

@@ -65,6 +65,16 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
                      const std::function<std::string(std::size_t)>& content_of, const KeyFileGuard& guard,
                      std::string_view purpose, const WriteProgress& progress = {});
 
+// Of `names`, those of the numbered set PREFIX + digits + SUFFIX (at least three digits, any case,
+// as DOS wrote them: "frm013.dat", "INB0012.DAT") that `keep` takes (given the number and the
+// name), in number order, a number's names in name order.
+[[nodiscard]] std::vector<std::string>
+numbered_names(std::span<const std::string> names, std::string_view prefix, std::string_view suffix,
+               const std::function<bool(std::size_t number, const std::string& name)>& keep);
+
+// The names of `folder`'s entries, in the order the folder lists them; none when it cannot be read.
+[[nodiscard]] std::vector<std::string> file_names_in(const std::filesystem::path& folder);
+
 // Of `names` (a folder's file names), the files of the numbered set PREFIX + digits + SUFFIX (at
 // least three digits, any case, as DOS wrote them: frm000.dat, FRM0012.DAT) that are not among
 // `written` (the names a run has just written), in number order, a number's names in name order:

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace apcs {
@@ -47,6 +48,12 @@ constexpr double dot(const Vec3& left, const Vec3& right)
 
 inline double length(const Vec3& vector) { return std::sqrt(dot(vector, vector)); }
 inline double distance(const Vec3& from, const Vec3& to) { return length(to - from); }
+
+// The largest |coordinate| of `point`: the scale of the round-off in what is computed from it.
+inline double largest_coordinate(const Vec3& point)
+{
+    return std::max({std::abs(point.x), std::abs(point.y), std::abs(point.z)});
+}
 
 // Linear interpolation: `from` at fraction 0, `to` at fraction 1.
 constexpr Vec3 lerp(const Vec3& from, const Vec3& to, double fraction)

@@ -61,8 +61,9 @@ public:
     CellStyle style_at(int column, int row) const;
     // The cell's character; its marks are cleared.
     void set(int column, int row, char32_t glyph);
-    // The combining marks of the cell, in order; empty for most.
-    std::u32string marks_at(int column, int row) const;
+    // The combining marks of the cell, in order; empty for most. A view, not a copy: the terminal
+    // asks for every cell's at each repaint. Valid until the cell is next written.
+    std::u32string_view marks_at(int column, int row) const;
     // Adds `mark` (a zero-width character) to the cell's marks, unless it holds max_marks_per_cell.
     void add_mark(int column, int row, char32_t mark);
     void set_style(int column, int row, CellStyle style);
