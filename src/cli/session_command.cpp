@@ -7,11 +7,13 @@
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
+#include "apcs/session/rewindable_files.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <langinfo.h>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string_view>
@@ -249,7 +251,7 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
     if (status == ExitStatus::stopped)
         err << "apcs: stopped; every file written so far is whole\n";
     else
-        for (const std::string& name : session.written_files())
+        for (const std::string& name : replay.session().written_files())
             out << name << '\n';
     return status;
 }
@@ -441,7 +443,12 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     std::optional<HandoutWriter> handout;
     if (const std::optional<ExitStatus> refused = open_handout(options, handout, err))
         return *refused;
-    FolderFiles files(folder);
+    FolderFiles folder_files(folder);
+    // PgUp and Home replay from the files as they were at the start: a paced replay on a terminal
+    // keeps each file as first read (headless, nobody goes back: no copy is kept).
+    RewindableFiles rewindable(folder_files);
+    const bool can_go_back = !headless && options.pace.kind != ReplayPace::Kind::at_once;
+    SessionFiles& files = can_go_back ? static_cast<SessionFiles&>(rewindable) : folder_files;
     // An answer typed at a prompt that names the recording is refused there, as a key file is.
     if (options.record && *options.record != "-")
         files.protect_key_file(std::filesystem::absolute(*options.record).string());
@@ -451,12 +458,20 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     // On a terminal a key's first picture comes at once and is refined while no key waits;
     // headless, every key's work is done before the next (the screens printed are final).
     settings.refinement = headless ? Refinement::at_once : Refinement::in_steps;
-    Session session(std::move(settings), files);
+    Session session(settings, files);
     std::vector<KeyEvent> recorded;
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
-    const ReplayHooks hooks = replay_hooks(handout, options, session, script, *glyphs, folder);
+    ReplayHooks hooks = replay_hooks(handout, options, session, script, *glyphs, folder);
+    hooks.log = [&files](const std::string& line) { files.log(line); };
+    if (can_go_back) {
+        hooks.session_as_started = [&rewindable, &settings] {
+            rewindable.rewind();
+            return std::make_unique<Session>(settings, rewindable);
+        };
+        hooks.caught_up = [&rewindable] { rewindable.caught_up(); };
+    }
     const ExitStatus status =
         handout_outcome(handout,
                         headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)

@@ -80,6 +80,42 @@ void end_answers(KeyScript& script, std::size_t& open, std::size_t end)
         script.goals[open].answer_end = end;
 }
 
+// Where a script's START line stands: it ends the preamble, so it comes once, alone on its line,
+// before the first caption and goal (they would be passed over inside the preamble's one step).
+struct StartLine {
+    int line_number = 0; // 0: none yet
+    bool after_caption_or_goal = false;
+};
+
+// A line "START" (a comment may follow): its place checked, the preamble's end kept. Whether the
+// line is one.
+Expected<bool> take_start_line(std::string_view line, StartLine& start, std::size_t events, KeyScript* kept,
+                               const std::string& file_name, int line_number)
+{
+    const std::string_view keys = line.substr(0, line.find(';'));
+    bool named = false;
+    bool alone = true;
+    for_each_field(keys, [&](std::string_view token) {
+        named = named || token == "START";
+        alone = alone && token == "START";
+    });
+    if (!named)
+        return false;
+    const std::string expected = "; expected one START line, alone, before the first caption and GOAL (the keys "
+                                 "before it play as one step)";
+    if (!alone)
+        return Diagnostic{file_name, line_number, "START shares its line with keys" + expected};
+    if (start.line_number != 0)
+        return Diagnostic{file_name, line_number,
+                          "a second START (the first is on line " + std::to_string(start.line_number) + ")" + expected};
+    if (start.after_caption_or_goal)
+        return Diagnostic{file_name, line_number, "START after a caption or GOAL" + expected};
+    start.line_number = line_number;
+    if (kept != nullptr)
+        kept->preamble_end = events;
+    return true;
+}
+
 // The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
 {
@@ -91,6 +127,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     std::optional<Diagnostic> problem;
     int line_number = 0;
     std::size_t open_goal = 0; // the first goal whose answer has not ended
+    StartLine start;
     while (!text.empty()) {
         ++line_number;
         std::string_view line = take_line(text);
@@ -100,7 +137,13 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
             continue;
         }
+        const Expected<bool> is_start = take_start_line(line, start, events.size(), kept, file_name, line_number);
+        if (!is_start)
+            return is_start.error();
+        if (*is_start)
+            continue;
         if (line.starts_with("GOAL ")) {
+            start.after_caption_or_goal = true;
             Expected<ScriptGoal> goal = parse_goal_line(line.substr(5), file_name, line_number);
             if (!goal)
                 return goal.error();
@@ -128,6 +171,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
+        start.after_caption_or_goal = start.after_caption_or_goal || caption->has_value();
         if (*caption && kept != nullptr) {
             end_answers(*kept, open_goal, events.size());
             kept->captions.push_back({events.size(), **caption});
@@ -194,6 +238,8 @@ std::size_t step_length(const KeyScript& script, std::size_t first)
 {
     if (first >= script.events.size())
         return 0;
+    if (first < script.preamble_end)
+        return script.preamble_end - first;
     const TypedLine* typed = typed_line_at(script, first);
     return typed == nullptr ? 1 : typed->event_count;
 }
@@ -202,6 +248,8 @@ std::string step_label(const KeyScript& script, std::size_t first)
 {
     if (first >= script.events.size())
         return {};
+    if (first < script.preamble_end)
+        return "START";
     if (const TypedLine* typed = typed_line_at(script, first)) {
         std::string label = "TEXT ";
         for (std::size_t event = first; event < first + typed->event_count; ++event)

@@ -3,13 +3,14 @@
 #include "apcs/lesson/goal_check.h"
 #include "apcs/raster/replay_caption.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace apcs {
 
 ReplayDriver::ReplayDriver(Session& session, const KeyScript& script, std::string script_name, ReplayPace pace,
                            ReplayHooks hooks, ReplayAudience audience)
-    : m_session(session)
+    : m_session(&session)
     , m_script(script)
     , m_script_name(std::move(script_name))
     , m_pace(pace)
@@ -17,26 +18,30 @@ ReplayDriver::ReplayDriver(Session& session, const KeyScript& script, std::strin
     , m_audience(audience)
 {
     // Headless, the captions and goals before the first key are reached with it (play_next).
-    if (m_audience == ReplayAudience::terminal)
+    if (m_audience == ReplayAudience::terminal) {
+        // The opening answers play as one step when a paced lesson begins: it starts where it teaches.
+        if (paced())
+            m_run_to = m_script.preamble_end;
         settle();
+    }
 }
 
 bool ReplayDriver::plays_unasked() const
 {
-    return m_pace.kind == ReplayPace::Kind::at_once || mid_step() || m_step_held;
+    return m_pace.kind == ReplayPace::Kind::at_once || mid_step() || m_step_held || m_played < m_run_to;
 }
 
 bool ReplayDriver::animating() const
 {
-    return m_session.animating() || (script_ready() && paced_every() && !plays_unasked());
+    return m_session->animating() || (script_ready() && paced_every() && !plays_unasked());
 }
 
 bool ReplayDriver::busy() const
 {
-    return m_session.busy() || (script_ready() && plays_unasked()) || !m_typed_meanwhile.empty();
+    return m_session->busy() || (script_ready() && plays_unasked()) || !m_typed_meanwhile.empty();
 }
 
-int ReplayDriver::delay_ms() const { return m_session.animating() ? m_session.delay_ms() : m_pace.milliseconds; }
+int ReplayDriver::delay_ms() const { return m_session->animating() ? m_session->delay_ms() : m_pace.milliseconds; }
 
 template <typename Change>
 void ReplayDriver::watching(Change change)
@@ -69,6 +74,10 @@ void ReplayDriver::take(const KeyEvent& key)
         m_typed_meanwhile.push_back(key);
         return;
     }
+    if (!m_leave_asked && take_control(key)) {
+        after_change();
+        return;
+    }
     if (script_ready()) {
         if (key.key == Key::escape)
             stop();
@@ -77,10 +86,15 @@ void ReplayDriver::take(const KeyEvent& key)
         after_change();
         return;
     }
+    // Space after the script's last step: the end is told, the keyboard still the presenter's.
+    if (paced() && at_end() && !m_end_told && !m_typed_after && key.key == Key::space) {
+        m_end_told = true;
+        return;
+    }
     // Paced a step per Space, a Space typed while the animation plays is the replay's next step,
     // held until the animation ends (not the animation's pause key, which would stop the lesson).
     if (!at_goal() && key.key == Key::space && m_pace.kind == ReplayPace::Kind::on_space && playing() &&
-        m_session.animating()) {
+        m_session->animating()) {
         m_step_held = true;
         return;
     }
@@ -94,7 +108,7 @@ void ReplayDriver::take(const KeyEvent& key)
     // At a goal the keys are the student's, but q asks whether to leave it (a goal the student
     // cannot reach must not trap the class); where text is typed (a prompt, a staff value) q is a
     // letter of it.
-    if (at_goal() && (key == KeyEvent::typed(U'q') || key == KeyEvent::typed(U'Q')) && !m_session.takes_typed_text()) {
+    if (at_goal() && (key == KeyEvent::typed(U'q') || key == KeyEvent::typed(U'Q')) && !m_session->takes_typed_text()) {
         m_leave_asked = true;
         return;
     }
@@ -110,13 +124,13 @@ void ReplayDriver::leave_exercise()
 {
     stop();
     m_typed_after = true;
-    m_session.mark_goal(std::nullopt);
+    m_session->mark_goal(std::nullopt);
 }
 
 void ReplayDriver::take_tick()
 {
-    if (m_session.animating())
-        m_session.tick();
+    if (m_session->animating())
+        m_session->tick();
     else if (script_ready() && paced_every())
         play_scripted();
     after_change();
@@ -124,8 +138,8 @@ void ReplayDriver::take_tick()
 
 void ReplayDriver::take_work()
 {
-    if (m_session.busy()) {
-        m_session.work();
+    if (m_session->busy()) {
+        m_session->work();
     } else if (script_ready() && plays_unasked()) {
         // A held Space is taken by the step it plays.
         if (m_pace.kind != ReplayPace::Kind::at_once && !mid_step())
@@ -142,26 +156,33 @@ void ReplayDriver::take_work()
 
 SessionScreen ReplayDriver::screen() const
 {
-    SessionScreen screen = m_session.screen();
+    SessionScreen screen = m_session->screen();
     Shown over = shown();
     screen.caption = std::move(over.caption);
     screen.badge = std::move(over.badge);
+    screen.badge_place = std::move(over.place);
     return screen;
 }
 
 ReplayDriver::Shown ReplayDriver::shown() const
 {
     if (m_leave_asked)
-        return {std::string(leave_exercise_question), {}};
+        return {std::string(leave_exercise_question), {}, {}};
     if (m_typed_after)
         return {};
     if (!m_goal_said.empty())
-        return {m_goal_said, {}};
+        return {m_goal_said, {}, {}};
     Shown over;
-    if (const ScriptCaption* caption = caption_at(m_script, m_played))
-        over.caption = caption->text;
-    if (m_pace.kind != ReplayPace::Kind::at_once)
-        over.badge = m_step_label;
+    const std::optional<std::size_t> caption = caption_on_row();
+    if (caption)
+        over.caption = m_script.captions[*caption].text;
+    if (m_end_told && at_end())
+        over.caption = end_of_script_caption;
+    if (!paced())
+        return over;
+    over.badge = m_step_label;
+    if (caption)
+        over.place = "caption " + std::to_string(*caption + 1) + " of " + std::to_string(m_script.captions.size());
     return over;
 }
 
@@ -206,7 +227,7 @@ void ReplayDriver::tell_captions()
         return;
     const std::vector<ScriptCaption>& captions = m_script.captions;
     for (; m_captions_told < captions.size() && captions[m_captions_told].before_event <= m_played; ++m_captions_told)
-        m_hooks.caption_reached(m_captions_told, with_caption(m_session.screen(), captions[m_captions_told].text));
+        m_hooks.caption_reached(m_captions_told, with_caption(m_session->screen(), captions[m_captions_told].text));
 }
 
 // A goal that does not hold yet keeps the replay there, its feedback on the caption row
@@ -221,8 +242,8 @@ void ReplayDriver::wait_at_goal()
     for (; m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played; ++m_next_goal) {
         if (goals[m_next_goal].before_event < m_played)
             continue;
-        const GoalProgress progress = check_goal(goals[m_next_goal], m_session);
-        m_session.mark_goal(progress.reached ? std::nullopt : goal_point(goals[m_next_goal]));
+        const GoalProgress progress = check_goal(goals[m_next_goal], *m_session);
+        m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goals[m_next_goal]));
         if (!progress.reached) {
             m_goal_said = "GOAL: " + progress.said;
             return;
@@ -238,13 +259,13 @@ void ReplayDriver::judge_goals(std::size_t played)
     const std::vector<ScriptGoal>& goals = m_script.goals;
     for (; m_next_goal < goals.size() && goals[m_next_goal].answer_end <= played; ++m_next_goal) {
         const ScriptGoal& goal = goals[m_next_goal];
-        const GoalProgress progress = check_goal(goal, m_session);
+        const GoalProgress progress = check_goal(goal, *m_session);
         if (!progress.reached && m_goals)
             m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + progress.said};
-        m_session.mark_goal(std::nullopt);
+        m_session->mark_goal(std::nullopt);
     }
     if (m_next_goal < goals.size() && goals[m_next_goal].before_event <= played)
-        m_session.mark_goal(goal_point(goals[m_next_goal]));
+        m_session->mark_goal(goal_point(goals[m_next_goal]));
 }
 
 void ReplayDriver::play_scripted()
@@ -252,6 +273,8 @@ void ReplayDriver::play_scripted()
     if (!mid_step()) {
         m_step_end = m_played + step_length(m_script, m_played);
         m_step_label = step_label(m_script, m_played);
+        if (m_played < m_run_to && !m_run_label.empty())
+            m_step_label = m_run_label;
     }
     to_session(m_script.events[m_played++]);
 }
@@ -259,14 +282,123 @@ void ReplayDriver::play_scripted()
 void ReplayDriver::to_session(const KeyEvent& key)
 {
     m_handled.push_back(key);
-    m_session.handle(key);
+    m_session->handle(key);
 }
 
-// Esc during a paced replay: the keyboard takes over.
+// Esc during a paced replay: the keyboard takes over, the caption on the row stays.
 void ReplayDriver::stop()
 {
-    m_played = m_step_end = m_script.events.size();
+    m_step_end = m_run_to = m_played;
     m_stopped = true;
+}
+
+std::optional<std::size_t> ReplayDriver::caption_on_row() const
+{
+    const ScriptCaption* caption = caption_at(m_script, m_played);
+    if (caption == nullptr)
+        return std::nullopt;
+    return static_cast<std::size_t>(caption - m_script.captions.data());
+}
+
+std::optional<ReplayDriver::Control> ReplayDriver::control_of(const KeyEvent& key) const
+{
+    // '[' and ']' are the waypoint editor's where the session has the keyboard: at a goal, at the end.
+    const bool brackets = script_ready();
+    if (key.key == Key::page_down || (brackets && key == KeyEvent::typed(U']')))
+        return Control::next;
+    if (key.key == Key::page_up || (brackets && key == KeyEvent::typed(U'[')))
+        return Control::back;
+    if (key.key == Key::home)
+        return Control::first;
+    return std::nullopt;
+}
+
+// A slide-deck key, if `key` is one and the replay is the presenter's: paced, neither stopped by
+// Esc nor followed by a key the student typed. Whether the key was taken.
+bool ReplayDriver::take_control(const KeyEvent& key)
+{
+    const std::optional<Control> control = control_of(key);
+    if (!control || !paced() || m_stopped || m_typed_after)
+        return false;
+    const std::optional<std::size_t> caption = caption_on_row();
+    switch (*control) {
+    case Control::next:
+        if (at_goal())
+            skip_goal();
+        else if (playing())
+            play_to_next_caption();
+        else
+            m_end_told = true;
+        return true;
+    case Control::back:
+        go_back_to(caption && *caption > 0 ? *caption - 1 : 0, "PGUP");
+        return true;
+    case Control::first:
+        go_back_to(0, "HOME");
+        return true;
+    }
+    return false;
+}
+
+// The rest of the caption's keys play unasked; the next caption stops them (or a goal, or the end).
+void ReplayDriver::play_to_next_caption()
+{
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    const auto next = std::find_if(captions.begin(), captions.end(),
+                                   [&](const ScriptCaption& caption) { return caption.before_event > m_played; });
+    m_run_to = next == captions.end() ? m_script.events.size() : next->before_event;
+    m_run_label = "PGDN";
+    m_step_held = false;
+}
+
+// PgDn at a goal: passed as a goal that holds is, its answer's keys not played; apcs.log says so.
+void ReplayDriver::skip_goal()
+{
+    if (m_hooks.log)
+        m_hooks.log("goal skipped");
+    m_session->mark_goal(std::nullopt);
+    m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
+    m_goal_said.clear();
+    m_step_label = "PGDN";
+}
+
+// PgUp, Home: a new session on the inputs as they were when the replay started, the keys before
+// caption `caption` played into it at once (writing nothing), and the replay on from there.
+void ReplayDriver::go_back_to(std::size_t caption, std::string label)
+{
+    if (!m_hooks.session_as_started)
+        return;
+    const std::size_t events =
+        m_script.captions.empty() ? m_script.preamble_end : m_script.captions[std::min(caption, m_script.captions.size() - 1)].before_event;
+    std::unique_ptr<Session> session = m_hooks.session_as_started();
+    catch_up(*session, events);
+    if (m_hooks.caught_up)
+        m_hooks.caught_up();
+    // The new session counts its screens from 0: the sum the terminal watches must still grow.
+    m_revision += m_session->screen_revision() + 1;
+    m_session_gone_back = std::move(session);
+    m_session = m_session_gone_back.get();
+    m_handled.assign(m_script.events.begin(), m_script.events.begin() + static_cast<std::ptrdiff_t>(events));
+    m_played = m_step_end = m_run_to = events;
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    m_next_goal = static_cast<std::size_t>(std::find_if(goals.begin(), goals.end(), [&](const ScriptGoal& goal) {
+                                               return goal.before_event >= events;
+                                           }) - goals.begin());
+    m_goal_said.clear();
+    m_step_held = m_end_told = m_leave_asked = false;
+    m_typed_meanwhile.clear();
+    m_step_label = std::move(label);
+}
+
+// The first `events` keys of the script into `session`, each played to its end: the split, the
+// picture's refinement and the animation run through, as the headless replay plays them.
+void ReplayDriver::catch_up(Session& session, std::size_t events)
+{
+    for (std::size_t event = 0; event < events && !session.finished(); ++event) {
+        session.handle(m_script.events[event]);
+        while (session.busy() || session.animating())
+            session.busy() ? session.work() : session.tick();
+    }
 }
 
 } // namespace apcs

@@ -80,11 +80,11 @@ SessionScreen with_caption(SessionScreen screen, std::string_view caption)
     return screen;
 }
 
-CellGrid with_played_key(CellGrid grid, std::string_view label)
+CellGrid with_played_key(CellGrid grid, std::string_view label, std::string_view place)
 {
     if (label.empty() || grid.rows() == 0)
         return grid;
-    const std::string badge = played_key_badge(label);
+    const std::string badge = played_key_badge(label) + (place.empty() ? "" : "| " + std::string(place) + " ");
     const int column = grid.columns() - 2 - text_columns(badge);
     if (column < 0)
         return grid;

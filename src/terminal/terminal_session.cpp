@@ -21,7 +21,7 @@ CellGrid grid_for(const SessionScreen& screen, TerminalSize size, GlyphSet glyph
     if (!fit_cell_area(size.columns, size.rows))
         return too_small_grid(size);
     return with_played_key(screen.graphics ? graphics_grid(screen.picture, size, glyphs, cache) : screen.text,
-                           screen.badge);
+                           screen.badge, screen.badge_place);
 }
 
 // The program's screen on the terminal: characters through curses and, where --pixels shows the

@@ -62,7 +62,7 @@ screen stepped | grep -q "THETA ,PHI & delay-time value.*x" && fail "a typed key
 # One Space plays the whole TEXT line, and names it.
 keys stepped Space
 wait_for stepped "0 90 100_"
-screen stepped | head -n 1 | grep -q " key TEXT 0 90 100$" || fail "the TEXT line played is not shown" stepped
+screen stepped | head -n 1 | grep -q " key TEXT 0 90 100 | caption 2 of 5$" || fail "the TEXT line played and the caption count are not shown" stepped
 # Esc ends the replay: the keyboard types, the caption goes at the first key.
 keys stepped Escape
 keys stepped BSpace
@@ -86,4 +86,30 @@ keys surface Space
 wait_for surface "Dotted: 12 in-betweens"
 keys surface C-c
 wait_for surface "EXITED=130"
-echo "passed: paced replay with captions on the key-hint row, the played key shown, a TEXT line per Space, Esc hands over, a Space during the animation held for the next step"
+# The slide-deck keys (SPEC 3.1): the lesson starts after its START line, PgDn goes to the next
+# caption, PgUp back (replayed in memory: lesson.keys rewrites ani1.dat, going back writes nothing
+# more), Home to the first, and the end is told on the caption row.
+cp "$data"/lesson.keys "$work"/
+captions=$(grep -c '^;;' "$work/lesson.keys")
+start deck "$apcs --keys lesson.keys --pace step --glyphs braille"
+first=$(grep -m1 '^;;' "$work/lesson.keys" | sed 's/^;; //')
+wait_for deck "$first"
+screen deck | head -n 1 | grep -q "key START | caption 1 of $captions" || fail "the lesson did not start at its first caption" deck
+for n in $(seq 2 "$captions"); do
+  keys deck NPage
+  wait_for deck "caption $n of $captions"
+done
+test -f "$work/ani1.dat" || fail "lesson.keys did not write ani1.dat" deck
+before=$(ls -l --time-style=+%s.%N "$work" | md5sum)
+keys deck PPage
+wait_for deck "key PGUP | caption $((captions - 1)) of $captions"
+keys deck Home
+wait_for deck "key HOME | caption 1 of $captions"
+screen deck | tail -n 1 | grep -q "^ $first" || fail "Home did not show the first caption" deck
+after=$(ls -l --time-style=+%s.%N "$work" | md5sum)
+[ "$before" = "$after" ] || fail "going back wrote to the folder" deck
+keys deck Escape
+keys deck C-c
+wait_for deck "EXITED=130"
+
+echo "passed: paced replay with captions on the key-hint row, the played key shown, a TEXT line per Space, Esc hands over, a Space during the animation held for the next step, START, PgDn, PgUp and Home"

@@ -272,7 +272,7 @@ TEST_CASE("a script token that names no key is refused with the list of every ke
     REQUIRE_FALSE(parsed);
     REQUIRE(parsed.error().line == 2);
     REQUIRE(parsed.error().message == "expected a single printable character or ENTER, ESC, SPACE, LEFT, RIGHT, UP, "
-                                      "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L; found 'F2'");
+                                      "DOWN, BACKSPACE, TAB, BTAB, F1, CTRL-L, PGDN, PGUP, HOME; found 'F2'");
 }
 
 TEST_CASE("a key script's lines may end with LF, CR LF or CR alone, as a .dat file's", "[session][keys]")

@@ -4,6 +4,7 @@
 #include "apcs/raster/replay_caption.h"
 #include "apcs/session/session_files.h"
 
+#include "support/replay_support.h"
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
@@ -13,20 +14,11 @@
 #include <vector>
 
 using namespace apcs;
+using test::data_folder;
+using test::example_files;
+using test::run_until_idle;
 
 namespace {
-
-const std::filesystem::path data_folder = std::filesystem::path(APCS_SOURCE_DIR) / "data";
-
-// An example's files in memory, as the session reads them from its folder.
-MemoryFiles example_files(const std::string& example)
-{
-    MemoryFiles files;
-    for (const auto& entry : std::filesystem::directory_iterator(data_folder / example))
-        if (entry.path().extension() == ".dat")
-            files.files[entry.path().filename().string()] = test::read_all(entry.path());
-    return files;
-}
 
 KeyScript read_script(const std::filesystem::path& file)
 {
@@ -42,17 +34,6 @@ std::size_t step_count(const KeyScript& script)
     for (std::size_t first = 0; first < script.events.size(); first += step_length(script, first))
         ++steps;
     return steps;
-}
-
-// What the terminal loop does while it waits for no key: the program's work, then its ticks.
-void run_until_idle(ReplayDriver& replay)
-{
-    while (!replay.finished() && (replay.busy() || replay.animating())) {
-        if (replay.busy())
-            replay.work();
-        else
-            replay.tick();
-    }
 }
 
 const KeyEvent space = KeyEvent::of(Key::space);
@@ -117,8 +98,10 @@ TEST_CASE("lesson.keys paced a step per Space: every step once, each caption tol
         REQUIRE(shown.caption == (caption == nullptr ? std::string() : caption->text));
         REQUIRE_FALSE(shown.badge.empty());
     }
-    // Space by Space, the script's steps, no more and no fewer, and every key of it handled.
-    REQUIRE(spaces == step_count(script));
+    // Space by Space, the script's steps, no more and no fewer, and every key of it handled; the
+    // preamble (the keys before START) played as the replay began, with no Space.
+    REQUIRE(script.preamble_end > 0);
+    REQUIRE(spaces == step_count(script) - 1);
     REQUIRE(replay.handled() == script.events);
     std::vector<std::size_t> every_caption(script.captions.size());
     for (std::size_t k = 0; k < every_caption.size(); ++k)

@@ -58,6 +58,9 @@ struct KeyScript {
     std::vector<ScriptCaption> captions;
     std::vector<TypedLine> typed_lines;
     std::vector<ScriptGoal> goals; // GOAL lines (script_goal.h), in order
+    // The keys before the script's START line (SPEC §3.1): the opening prompts' answers, which a
+    // paced replay plays as one step when it begins; 0 without START.
+    std::size_t preamble_end = 0;
 };
 
 // parse_key_script, keeping the captions (each at most max_caption_columns wide, or FILE:LINE:
@@ -67,12 +70,14 @@ struct KeyScript {
 // The caption shown once `played` keys of `script` are played: the last one reached, or none.
 const ScriptCaption* caption_at(const KeyScript& script, std::size_t played);
 
-// How many of `script`'s events the step starting at event `first` plays: a TEXT line's keys
-// together, any other key alone; 0 at the end of the script.
+// How many of `script`'s events the step starting at event `first` plays: the preamble's keys
+// (before START) together, a TEXT line's keys together, any other key alone; 0 at the end of the
+// script.
 std::size_t step_length(const KeyScript& script, std::size_t first);
 
 // What the step starting at event `first` plays, as a screencast names it: the TEXT line
-// ("TEXT 0 90 100") or the key's script token ("ENTER", "4"); empty at the end of the script.
+// ("TEXT 0 90 100"), the key's script token ("ENTER", "4") or "START" for the preamble; empty at
+// the end of the script.
 std::string step_label(const KeyScript& script, std::size_t first);
 
 // How a replay on a terminal plays its script (--pace): at once, one key every `milliseconds`,

@@ -33,7 +33,10 @@
     ROW(tab,        "TAB",       "Tab",       0,      (),               ('\t'),       ())                      \
     ROW(back_tab,   "BTAB",      "Shift-Tab", 0,      (KEY_BTAB),       (),           ("\033[Z"))              \
     ROW(f1,         "F1",        "F1",        0,      (KEY_F(1)),       (),           ("\033OP", "\033[11~", "\033[[A")) \
-    ROW(redraw,     "CTRL-L",    "Ctrl-L",    0,      (),               (12),         ())
+    ROW(redraw,     "CTRL-L",    "Ctrl-L",    0,      (),               (12),         ())                      \
+    ROW(page_down,  "PGDN",      "PgDn",      0,      (KEY_NPAGE),      (),           ("\033[6~"))            \
+    ROW(page_up,    "PGUP",      "PgUp",      0,      (KEY_PPAGE),      (),           ("\033[5~"))            \
+    ROW(home,       "HOME",      "Home",      0,      (KEY_HOME),       (),           ("\033[H", "\033[1~", "\033OH"))
 // clang-format on
 
 namespace apcs {

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -18,6 +19,9 @@ namespace apcs {
 // On the caption row after q at a goal (SPEC §3.1): Y leaves the exercise (the replay ends, the
 // keyboard is the student's), any other key goes back to the goal.
 inline constexpr std::string_view leave_exercise_question = "Leave the exercise ? (Y/N)";
+
+// On the caption row once a paced replay has played its script and the presenter asks for more.
+inline constexpr std::string_view end_of_script_caption = "End of the script: the keyboard is yours (PgUp, Home: back)";
 
 // Who watches a replay. On a terminal a person does: the script plays at its pace (ReplayPace),
 // Esc hands the keyboard over, a goal waits for the student's keys until it holds (a goal that
@@ -41,11 +45,14 @@ public:
     // A key typed on the terminal. While the replay waits for its pace, Space plays the next step
     // (on_space), Esc ends the replay and other keys are dropped; a Space typed while the
     // animation plays is the next step, held until it ends. At a goal, after the replay, or while
-    // the session splits or animates, the key is the session's.
+    // the session splits or animates, the key is the session's. Paced, the slide-deck keys are
+    // the replay's (SPEC §3.1): PgDn (or ']') plays on to the next caption, or skips a goal;
+    // PgUp (or '[') goes back to the previous caption's screen, Home to the first; at a goal and
+    // at the script's end only PgDn, PgUp and Home, since '[' and ']' are the session's there.
     void handle(const KeyEvent& key) override;
     void tick() override;
     void work() override;
-    bool finished() const override { return m_session.finished(); }
+    bool finished() const override { return m_session->finished(); }
     bool animating() const override;
     bool busy() const override;
     int delay_ms() const override;
@@ -54,10 +61,12 @@ public:
     SessionScreen screen() const override;
     // The session's, advanced too when the caption or the badge changes: a key the replay swallows
     // leaves it.
-    std::uint64_t screen_revision() const override { return m_session.screen_revision() + m_revision; }
+    std::uint64_t screen_revision() const override { return m_session->screen_revision() + m_revision; }
 
     // Whether script keys are left to play (Esc has not ended the replay).
-    bool playing() const { return m_played < m_script.events.size(); }
+    bool playing() const { return !m_stopped && m_played < m_script.events.size(); }
+    // The session the replay plays into: the one it was given until PgUp or Home replaced it.
+    const Session& session() const { return *m_session; }
     // Headless: the captions and goals before the next key reached, then that key played.
     void play_next();
     // Headless: the captions left told and the goals left judged (the script's end).
@@ -72,6 +81,7 @@ private:
     struct Shown {
         std::string caption;
         std::string badge;
+        std::string place; // "caption 2 of 7"
         bool operator==(const Shown&) const = default;
     };
     Shown shown() const;
@@ -88,7 +98,7 @@ private:
     void wait_at_goal();
     void judge_goals(std::size_t played);
     // The session neither splits nor animates: a scripted key may play, a caption be reached.
-    bool session_idle() const { return !m_session.busy() && !m_session.animating(); }
+    bool session_idle() const { return !m_session->busy() && !m_session->animating(); }
     // The replay's next key may play now on a terminal: not at a goal, nor while the session
     // works. Headless, only play_next plays a key.
     bool script_ready() const
@@ -106,8 +116,21 @@ private:
     void to_session(const KeyEvent& key);
     void stop();
     void leave_exercise();
+    // The slide-deck keys (SPEC §3.1).
+    enum class Control { next, back, first };
+    std::optional<Control> control_of(const KeyEvent& key) const;
+    bool take_control(const KeyEvent& key);
+    void play_to_next_caption();
+    void skip_goal();
+    void go_back_to(std::size_t caption, std::string label);
+    void catch_up(Session& session, std::size_t events);
+    // The caption on the caption row (its index), none before the first.
+    std::optional<std::size_t> caption_on_row() const;
+    bool paced() const { return m_pace.kind != ReplayPace::Kind::at_once; }
+    bool at_end() const { return !m_stopped && m_played == m_script.events.size(); }
 
-    Session& m_session;
+    Session* m_session;
+    std::unique_ptr<Session> m_session_gone_back; // the session PgUp or Home made, if any
     const KeyScript& m_script;
     std::string m_script_name;
     ReplayPace m_pace;
@@ -115,7 +138,10 @@ private:
     ReplayAudience m_audience;
     std::size_t m_played = 0;
     std::size_t m_step_end = 0;
+    std::size_t m_run_to = 0; // keys before it play unasked: the preamble, PgDn's run
     std::string m_step_label;
+    std::string m_run_label; // the badge's label while a run plays: "PGDN"
+    bool m_end_told = false;
     std::size_t m_captions_told = 0;
     std::size_t m_next_goal = 0;
     std::string m_goal_said;

@@ -4,16 +4,28 @@
 
 #include <cstddef>
 #include <functional>
+#include <memory>
+#include <string>
 
 namespace apcs {
 
-// What a replay of a key script tells the program that runs it, as it plays.
+class Session;
+
+// What a replay of a key script tells the program that runs it, as it plays, and what it asks of
+// it.
 struct ReplayHooks {
     // Caption `index` of the script is reached: `shown` is the screen a paced replay shows it over,
     // the caption laid on (with_caption). Called once per caption, in the script's order, when the
     // session has played the keys before it and is neither splitting nor animating (the moment the
     // headless replay reaches it too). --handout writes its pages here.
     std::function<void(std::size_t index, const SessionScreen& shown)> caption_reached;
+    // A line for apcs.log ("goal skipped").
+    std::function<void(const std::string& line)> log;
+    // PgUp and Home (SPEC §3.1): a new session on the inputs as they were when the replay started,
+    // which writes nothing until caught_up() is called (the keys up to the caption gone back to are
+    // played into it at once). Without it the replay cannot go back.
+    std::function<std::unique_ptr<Session>()> session_as_started;
+    std::function<void()> caught_up;
 };
 
 } // namespace apcs

@@ -16,6 +16,7 @@ struct SessionScreen {
     GraphicsScreen picture; // when graphics
     std::string caption = {};
     std::string badge = {};
+    std::string badge_place = {}; // beside the badge: "caption 2 of 7"
 };
 
 } // namespace apcs

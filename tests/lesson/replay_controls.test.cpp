@@ -1,0 +1,257 @@
+// The slide-deck keys of a paced replay (SPEC §3.1): START, PgDn, PgUp, Home, the caption count,
+// Esc, the end of the script and a skipped goal, driven headless as a terminal would drive them.
+#include "apcs/lesson/replay_driver.h"
+#include "apcs/raster/replay_caption.h"
+#include "apcs/session/rewindable_files.h"
+
+#include "support/replay_support.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace apcs;
+using test::data_folder;
+using test::example_files;
+using test::run_until_idle;
+
+namespace {
+
+KeyScript parsed(const std::string& text)
+{
+    Expected<KeyScript> script = parse_captioned_key_script(text, "deck.keys");
+    REQUIRE(script);
+    return std::move(*script);
+}
+
+void press(ReplayDriver& replay, KeyEvent key)
+{
+    replay.handle(key);
+    run_until_idle(replay);
+}
+
+CellGrid cells_of(const SessionScreen& screen)
+{
+    return screen.graphics ? render_cells(screen.picture, {80, 24}, GlyphSet::ascii) : screen.text;
+}
+
+const KeyEvent space = KeyEvent::of(Key::space);
+const KeyEvent page_down = KeyEvent::of(Key::page_down);
+const KeyEvent page_up = KeyEvent::of(Key::page_up);
+const KeyEvent home = KeyEvent::of(Key::home);
+
+// A paced replay of `script` on the N to L example's files in memory (the "folder"), able to go
+// back as the program's is: through RewindableFiles.
+struct Deck {
+    MemoryFiles folder;
+    RewindableFiles files{folder};
+    Session session{{}, files};
+    std::vector<std::size_t> told;
+    std::unique_ptr<ReplayDriver> replay;
+
+    Deck(const KeyScript& script, const std::string& example)
+        : folder(example_files(example))
+    {
+        ReplayHooks hooks;
+        hooks.caption_reached = [this](std::size_t index, const SessionScreen&) { told.push_back(index); };
+        hooks.log = [this](const std::string& line) { files.log(line); };
+        hooks.session_as_started = [this] {
+            files.rewind();
+            return std::make_unique<Session>(SessionSettings{}, files);
+        };
+        hooks.caught_up = [this] { files.caught_up(); };
+        replay = std::make_unique<ReplayDriver>(session, script, "deck.keys", ReplayPace{ReplayPace::Kind::on_space, 0},
+                                                hooks, ReplayAudience::terminal);
+        run_until_idle(*replay);
+    }
+};
+
+const std::string n_to_l_deck = "ENTER ENTER\n"
+                                "TEXT 0 90 100\n"
+                                "ENTER\n"
+                                "TEXT ani1.dat\n"
+                                "ENTER ENTER\n"
+                                "START\n"
+                                ";; one\n"
+                                "8\n"
+                                ";; two\n"
+                                "6 6 6\n"
+                                ";; three\n"
+                                "4\n";
+
+} // namespace
+
+TEST_CASE("START ends the preamble: its keys are one step, named START, and it stands alone once before the "
+          "first caption and goal",
+          "[lesson][replay][keys]")
+{
+    const KeyScript script = parsed("ENTER ENTER\nTEXT 0 90\nSTART ; the lesson begins\n;; one\n8\n");
+    REQUIRE(script.preamble_end == 6);
+    REQUIRE(step_length(script, 0) == 6);
+    REQUIRE(step_length(script, 2) == 4);
+    REQUIRE(step_label(script, 0) == "START");
+    REQUIRE(step_length(script, 6) == 1);
+    REQUIRE(step_label(script, 6) == "8");
+    REQUIRE(parsed("ENTER\n;; one\n8\n").preamble_end == 0);
+    // The keys-only reader takes it too (a recording that keeps it replays).
+    REQUIRE(parse_key_script("ENTER\nSTART\n8\n", "k.keys")->size() == 2);
+    const auto refused = [](const std::string& text) {
+        const Expected<KeyScript> refusal = parse_captioned_key_script(text, "deck.keys");
+        REQUIRE_FALSE(refusal);
+        return refusal.error().to_string();
+    };
+    REQUIRE(refused("ENTER\nSTART\n8\nSTART\n") ==
+            "deck.keys:4: a second START (the first is on line 2); expected one START line, alone, before the first "
+            "caption and GOAL (the keys before it play as one step)");
+    REQUIRE(refused("ENTER\n;; one\nSTART\n").starts_with("deck.keys:3: START after a caption or GOAL; expected"));
+    REQUIRE(refused("ENTER\nGOAL VALUE TENSION 0.40 0.60\nSTART\n").starts_with("deck.keys:3: START after a caption"));
+    REQUIRE(refused("ENTER START\n").starts_with("deck.keys:1: START shares its line with keys; expected"));
+    // In a TEXT line START is typed text.
+    REQUIRE(parsed("TEXT START\n").events.size() == 5);
+}
+
+TEST_CASE("a paced lesson begins after its preamble, at its first caption, the badge saying START and caption 1 "
+          "of N",
+          "[lesson][replay][deck]")
+{
+    const KeyScript script = parsed(n_to_l_deck);
+    REQUIRE(script.preamble_end == 21);
+    Deck deck(script, "n-to-l");
+    REQUIRE(deck.replay->handled().size() == 21);
+    const SessionScreen shown = deck.replay->screen();
+    REQUIRE(shown.graphics);
+    REQUIRE(shown.caption == "one");
+    REQUIRE(shown.badge == "START");
+    REQUIRE(shown.badge_place == "caption 1 of 3");
+    REQUIRE(cells_of(with_caption(shown, shown.caption)).row_text(23).starts_with(" one"));
+    REQUIRE(with_played_key(CellGrid(80, 24), shown.badge, shown.badge_place).row_text(0).ends_with(
+        " key START | caption 1 of 3   "));
+}
+
+TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next caption, past the last it tells the end",
+          "[lesson][replay][deck]")
+{
+    const KeyScript script = parsed(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->handled().size() == script.captions[1].before_event);
+    REQUIRE(deck.replay->screen().caption == "two");
+    REQUIRE(deck.replay->screen().badge == "PGDN");
+    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+    // ']' is PgDn while the replay waits for the presenter.
+    press(*deck.replay, KeyEvent::typed(U']'));
+    REQUIRE(deck.replay->handled().size() == script.captions[2].before_event);
+    REQUIRE(deck.replay->screen().caption == "three");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->handled() == script.events);
+    REQUIRE(deck.replay->screen().caption == "three");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == end_of_script_caption);
+    // Past the end nothing more is played, and PgDn types nothing into the session.
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->handled() == script.events);
+    REQUIRE(deck.told == std::vector<std::size_t>{0, 1, 2});
+}
+
+TEST_CASE("Space after the script's last step tells the end on the caption row", "[lesson][replay][deck]")
+{
+    const KeyScript script = parsed(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    for (int step = 0; step < 5; ++step)
+        press(*deck.replay, space);
+    REQUIRE(deck.replay->handled() == script.events);
+    REQUIRE(deck.replay->screen().caption == "three");
+    press(*deck.replay, space);
+    REQUIRE(deck.replay->screen().caption == end_of_script_caption);
+    REQUIRE(deck.replay->handled() == script.events);
+}
+
+TEST_CASE("PgUp and Home go back to a caption's screen, replayed in memory from the inputs as they were, writing "
+          "and logging nothing",
+          "[lesson][replay][deck]")
+{
+    // lesson.keys rewrites ani1.dat near its end: going back must still show the path as it was.
+    Expected<KeyScript> lesson = parse_captioned_key_script(test::read_all(data_folder / "n-to-l" / "lesson.keys"), "lesson.keys");
+    REQUIRE(lesson);
+    Deck deck(*lesson, "n-to-l");
+    std::vector<CellGrid> first_seen;
+    for (std::size_t caption = 0; caption < lesson->captions.size(); ++caption) {
+        first_seen.push_back(cells_of(deck.replay->screen()));
+        REQUIRE(deck.replay->screen().caption == lesson->captions[caption].text);
+        press(*deck.replay, page_down);
+    }
+    REQUIRE(deck.replay->handled() == lesson->events);
+    const std::string ani1_rewritten = deck.folder.files.at("ani1.dat");
+    const std::size_t writes = deck.folder.writes.size();
+    const std::size_t log_lines = deck.folder.log_lines.size();
+    REQUIRE(writes > 0);
+    for (std::size_t caption = lesson->captions.size() - 1; caption-- > 0;) {
+        press(*deck.replay, page_up);
+        INFO("back to caption " << caption + 1 << ": " << lesson->captions[caption].text);
+        REQUIRE(deck.replay->screen().caption == lesson->captions[caption].text);
+        REQUIRE(deck.replay->screen().badge == "PGUP");
+        REQUIRE(deck.replay->screen().badge_place ==
+                "caption " + std::to_string(caption + 1) + " of " + std::to_string(lesson->captions.size()));
+        REQUIRE(cells_of(deck.replay->screen()) == first_seen[caption]);
+        REQUIRE(deck.replay->handled().size() == lesson->captions[caption].before_event);
+    }
+    REQUIRE(deck.folder.writes.size() == writes);
+    REQUIRE(deck.folder.log_lines.size() == log_lines);
+    REQUIRE(deck.folder.files.at("ani1.dat") == ani1_rewritten);
+    // PgUp at the first caption stays there; Home from anywhere goes to it.
+    press(*deck.replay, page_up);
+    REQUIRE(cells_of(deck.replay->screen()) == first_seen[0]);
+    press(*deck.replay, page_down);
+    press(*deck.replay, page_down);
+    press(*deck.replay, home);
+    REQUIRE(deck.replay->screen().badge == "HOME");
+    REQUIRE(cells_of(deck.replay->screen()) == first_seen[0]);
+    // Gone back, the replay goes forward for real again: the same captions, each told once.
+    for (std::size_t caption = 0; caption < lesson->captions.size(); ++caption)
+        press(*deck.replay, page_down);
+    REQUIRE(deck.replay->handled() == lesson->events);
+    REQUIRE(deck.folder.writes.size() > writes);
+    REQUIRE(deck.told.size() == lesson->captions.size());
+}
+
+TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the script's last",
+          "[lesson][replay][deck]")
+{
+    const KeyScript script = parsed(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == "two");
+    press(*deck.replay, KeyEvent::of(Key::escape));
+    REQUIRE_FALSE(deck.replay->playing());
+    REQUIRE(deck.replay->screen().caption == "two");
+    // The keyboard is the student's: the slide-deck keys are no longer the replay's.
+    const std::size_t handled = deck.replay->handled().size();
+    press(*deck.replay, home);
+    REQUIRE(deck.replay->handled().size() == handled + 1);
+    REQUIRE(deck.replay->screen().caption.empty());
+}
+
+TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is not played and the closing caption "
+          "shows; at a goal ']' is the session's",
+          "[lesson][replay][deck][goal]")
+{
+    Expected<KeyScript> exercise = parse_captioned_key_script(
+        test::read_all(data_folder / "exercises" / "exercise-1-tension.keys"), "exercise-1-tension.keys");
+    REQUIRE(exercise);
+    Deck deck(*exercise, "exercises");
+    for (int step = 0; step < 40 && !deck.replay->screen().caption.starts_with("GOAL: "); ++step)
+        press(*deck.replay, space);
+    REQUIRE(deck.replay->screen().caption.starts_with("GOAL: "));
+    const std::size_t at_goal = deck.replay->handled().size();
+    press(*deck.replay, KeyEvent::typed(U']'));
+    REQUIRE(deck.replay->handled().size() == at_goal + 1);
+    REQUIRE(deck.replay->screen().caption.starts_with("GOAL: "));
+    press(*deck.replay, page_down);
+    REQUIRE(deck.folder.log_lines.back() == "goal skipped");
+    REQUIRE(deck.replay->handled().size() == at_goal + 1);
+    REQUIRE(deck.replay->screen().caption == exercise->captions.back().text);
+}
