@@ -120,8 +120,10 @@ char32_t quadrant_glyph(unsigned mask)
 
 std::optional<CellArea> fit_cell_area(int columns, int rows)
 {
-    if (columns < text_screen_columns || rows < text_screen_rows)
+    if (columns < text_screen_columns || rows < short_screen_rows)
         return std::nullopt;
+    if (rows == short_screen_rows)
+        return CellArea{text_screen_columns, short_screen_rows};
     const int fitted_columns = std::min(columns, rows * text_screen_columns / text_screen_rows);
     const int fitted_rows = std::min(rows, fitted_columns * text_screen_rows / text_screen_columns);
     return CellArea{fitted_columns, fitted_rows};

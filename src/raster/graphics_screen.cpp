@@ -2,6 +2,7 @@
 
 #include "apcs/raster/font.h"
 #include "apcs/raster/painter.h"
+#include "apcs/raster/short_screen.h"
 
 #include <algorithm>
 #include <map>
@@ -242,6 +243,10 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
 
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
+    // The short screen's layout fills 23 of the 24 text rows: the 24th is left out.
+    if (is_short_area(area))
+        return without_row(render_cells(on_short_screen(screen), {area.columns, text_screen_rows}, glyphs, cache),
+                           text_screen_rows - 1);
     CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
     lay_roles_under_marks(grid, screen, area);
     lay_ticked_lines(grid, screen, area, glyphs);

@@ -3,6 +3,7 @@
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/terminal_picture.h"
 #include "apcs/raster/screen_layout.h"
+#include "apcs/raster/short_screen.h"
 
 #include <algorithm>
 #include <utility>
@@ -38,10 +39,14 @@ std::optional<PictureFrame> TerminalPixels::frame_for(TerminalSize size) const
     const std::optional<CellPixels> cell = m_terminal.cell_pixels();
     if (!cell)
         return std::nullopt;
-    // The cell rows of the drawing area and its boundary (text rows 0-17 at 80x24), and the raster
-    // rows they show.
-    const int rows = cell_rows_above(layout::drawing_area.bottom + 1, hercules::screen_height, *area);
-    const int raster_rows = rows * hercules::screen_height / area->rows;
+    // The cell rows of the drawing area and its boundary (text rows 0-17 at 80x24, shown in 17 on the
+    // short screen), and the raster rows they show: on the short screen the picture keeps the
+    // raster's proportions in its 17 rows, narrower than the characters' squeeze.
+    const bool short_area = is_short_area(*area);
+    const int rows = short_area ? layout::message_row - 1
+                                : cell_rows_above(layout::drawing_area.bottom + 1, hercules::screen_height, *area);
+    const int raster_rows =
+        short_area ? hercules::text_row_top(layout::message_row) : rows * hercules::screen_height / area->rows;
     // xterm shows no sixel picture beyond its limit (1000x1000, and its window): not a smaller one.
     const std::optional<PictureLimit> limit =
         *m_protocol == TerminalPictureProtocol::sixel ? m_terminal.sixel_limit() : std::nullopt;

@@ -1,6 +1,7 @@
 #include "apcs/terminal/terminal_session.h"
 
 #include "apcs/raster/replay_caption.h"
+#include "apcs/raster/short_screen.h"
 #include "apcs/terminal/terminal.h"
 #include "apcs/terminal/terminal_pixels.h"
 
@@ -18,10 +19,14 @@ namespace {
 
 CellGrid grid_for(const SessionScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
-    if (!fit_cell_area(size.columns, size.rows))
+    const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
+    if (!area)
         return too_small_grid(size);
-    return with_played_key(screen.graphics ? graphics_grid(screen.picture, size, glyphs, cache) : screen.text,
-                           screen.badge, screen.badge_place);
+    if (screen.graphics)
+        return with_played_key(graphics_grid(screen.picture, size, glyphs, cache), screen.badge, screen.badge_place);
+    // The badge goes on after a row is left out, so that it stays on the top row.
+    return with_played_key(is_short_area(*area) ? text_on_short_screen(screen.text) : screen.text, screen.badge,
+                           screen.badge_place);
 }
 
 // The program's screen on the terminal: characters through curses and, where --pixels shows the
@@ -80,9 +85,9 @@ bool take_key(const KeyEvent& key, Terminal& terminal, TerminalPixels& pixels, I
 CellGrid too_small_grid(TerminalSize size)
 {
     CellGrid grid(size.columns, size.rows);
-    // The least fit_cell_area accepts: the character screen of graphics mode.
+    // The least fit_cell_area accepts: the short screen.
     const std::string message = "The terminal must be at least " + std::to_string(text_screen_columns) + "x" +
-                                std::to_string(text_screen_rows) + " (it is " + std::to_string(size.columns) + "x" +
+                                std::to_string(short_screen_rows) + " (it is " + std::to_string(size.columns) + "x" +
                                 std::to_string(size.rows) + ")";
     const std::string keys = "Keys are ignored until it is larger; Ctrl-C quits";
     const int column = std::max(0, (size.columns - static_cast<int>(message.size())) / 2);

@@ -149,10 +149,10 @@ TEST_CASE("braille dots and quadrant blocks map sub-blocks to the right bits", "
     REQUIRE(map_to_cells(block, {1, 1}, GlyphSet::blocks).at(0, 0) == U'\u259E');
 }
 
-TEST_CASE("the cell area keeps the 80x24 proportions and needs at least 80x24", "[raster][glyphs]")
+TEST_CASE("the cell area keeps the 80x24 proportions from 80x24 on and needs at least 80x23", "[raster][glyphs]")
 {
     REQUIRE_FALSE(fit_cell_area(79, 24).has_value());
-    REQUIRE_FALSE(fit_cell_area(80, 23).has_value());
+    REQUIRE_FALSE(fit_cell_area(80, 22).has_value());
     REQUIRE(fit_cell_area(80, 24)->columns == 80);
     REQUIRE(fit_cell_area(80, 24)->rows == 24);
     REQUIRE(fit_cell_area(80, 25)->rows == 24);

@@ -22,6 +22,9 @@ enum class GlyphSet {
 // what terminal emulators and SSH clients open with.
 inline constexpr int text_screen_columns = 80;
 inline constexpr int text_screen_rows = 24;
+// The fewest rows the screen is shown on: one less than 80x24 (short_screen.h), what tmux or screen
+// leaves under its status line.
+inline constexpr int short_screen_rows = text_screen_rows - 1;
 
 struct CellArea {
     int columns = 0;
@@ -29,7 +32,8 @@ struct CellArea {
 };
 
 // The largest area within a terminal of `columns` x `rows` that keeps the 80x24 proportions of
-// the screen; nullopt when the terminal is smaller than 80x24.
+// the screen; 80x23 (the short screen) on a terminal of 23 rows and 80 columns or more; nullopt
+// when the terminal is smaller than 80x23.
 std::optional<CellArea> fit_cell_area(int columns, int rows);
 
 // Remembers the ASCII choice for each pooled mask seen, since a screen repeats few shapes and

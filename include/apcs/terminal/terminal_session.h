@@ -20,8 +20,8 @@ CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet
 // screens in `glyphs` (already chosen: not GlyphSet::automatic) with their caption and badge laid
 // on (replay_caption.h), the keys typed handed to it, its ticks every delay_ms() while it
 // animates and its work while it is busy. Ctrl-L (Key::redraw) also repaints the whole terminal.
-// Below the least size (text_screen_columns x text_screen_rows) the screen says how large it must
-// be, and keys wait. Returns success when the program ended, stopped when stopped by a signal or a
+// Below the least size (text_screen_columns x short_screen_rows: 80x23, short_screen.h) the screen
+// says how large it must be, and keys wait. Returns success when the program ended, stopped when stopped by a signal or a
 // lost terminal, or why there is no usable terminal ("apcs: PROBLEM"). The terminal is given back
 // on every way out, exceptions included. `colour` is the resolved --color (Terminal::open).
 // `pixels` (--pixels, SPEC §7.2.1) asks the terminal once at the start (Terminal::detect_pixels):
