@@ -39,7 +39,7 @@ Expected<void> write_overlay_pictures(const FrameSequence& frames, const Graphic
     const std::string key1 = key_files.front().filename().string();
     const std::string key2 = key_files.back().filename().string();
     const std::string caption = std::to_string(frames.frame_count()) + " frames overlaid: " + key1 + " to " + key2;
-    const FramesOverlay overlay{key_frames_names(key1, key2, frames.frame_count()), {}, {}};
+    const FramesOverlay overlay{key_frames_names(key1, key2, frames.frame_count()), {}, {}, false, {}};
     return write_pictures(frames_overlay_screen(frames, structure, options.view, caption, overlay), options, out);
 }
 

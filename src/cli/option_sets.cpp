@@ -342,7 +342,7 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
                                              : ReplayPace{ReplayPace::Kind::every, std::stoi(text)};
            },
            "play the --keys script one step (a key, or a typed line) every MS milliseconds, " +
-               whole_range_text(limits::pace_ms) + ", or one step per Space ('step'), with its ;; captions")
+               whole_range_text(limits::pace_ms) + ", or one step per Space ('step'), with its ;; captions; PgDn (or ]) plays on to the next caption, PgUp (or [) and Home go back")
         ->check(CLI::Validator(
             [](std::string& text) -> std::string {
                 if (text == "step")

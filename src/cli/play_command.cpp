@@ -216,7 +216,7 @@ CommonOptions scene_shown_options(const Scene& scene, const CommonOptions& optio
 // 0, 10, 35, 60"). Waypoints past Z are not lettered.
 FramesOverlay scene_overlay(const Scene& scene, const SceneAnimation& animation)
 {
-    FramesOverlay overlay{scene_frames_names(animation.frame_count()), {}, {}};
+    FramesOverlay overlay{scene_frames_names(animation.frame_count()), {}, {}, false, {}};
     const std::vector<TimedWaypoint> waypoints = timed_waypoints(scene, animation);
     for (std::size_t k = 0; k < waypoints.size() && k < 26;) {
         const std::size_t object = waypoints[k].object;

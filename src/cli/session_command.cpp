@@ -86,6 +86,7 @@ SessionSettings session_settings(const CommonOptions& options)
         settings.phi_degrees = options.view.phi_degrees;
     if (options.given.delay)
         settings.delay_ms = options.delay_ms;
+    settings.delay_overrides_answer = options.given.delay && options.keys.has_value();
     if (options.given.slopes)
         settings.slopes = options.path.slopes;
     settings.staff = options.staff;

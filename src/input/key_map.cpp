@@ -122,6 +122,8 @@ constexpr auto key_map = [] {
         {{animation}, Pattern::of(Key::escape), cmd::StopAnimation{}, "Esc stop",    "stop the animation"},
         {{animation}, Pattern::of(Key::space),  cmd::Pause{},         "Space pause", "pause, or go on"},
         {{animation}, Pattern::letter(U'R'),    cmd::Replay{},        "R replay",    "replay from the first frame (KEY1, or a scene's frame 0)"},
+        {{animation}, Pattern::exactly(U','),   cmd::StepFrame{-1},   ",. frame",    "pause and show the frame before, after"},
+        {{animation}, Pattern::exactly(U'.'),   cmd::StepFrame{+1},   "",            "pause and show the frame before, after"},
 
         // Every step of graphics mode: help and a picture of the screen. A full key line leaves
         // "q quit" to the help screen.

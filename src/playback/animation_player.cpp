@@ -40,7 +40,7 @@ AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::a
     : m_frames(std::move(frames))
     , m_structure(std::move(structure))
     , m_key_names(std::move(key_names))
-    , m_overlay{key_frames_names(m_key_names[0], m_key_names[1], m_frames.frame_count()), {}, {}}
+    , m_overlay{key_frames_names(m_key_names[0], m_key_names[1], m_frames.frame_count()), {}, {}, false, {}}
     , m_view(frames_view(m_frames, angles))
     , m_log(log)
     , m_mode(m_frames.frame_count() == 0 ? Mode(Stopped{}) : Mode(Showing{}))
@@ -91,6 +91,11 @@ AnimationPlayer::Outcome AnimationPlayer::update_showing(Showing& showing, const
                               m_frame = 0;
                               showing.paused = false;
                           },
+                          [&](const command::StepFrame& step) {
+                              showing.paused = true;
+                              m_frame = step.by < 0 ? (m_frame == 0 ? 0 : m_frame - 1)
+                                                    : std::min(m_frame + 1, m_frames.frame_count() - 1);
+                          },
                           // The animation's key map binds no other command (help, pictures and quitting are
                           // the overlays').
                           [](const auto&) {}},
@@ -112,6 +117,25 @@ std::string AnimationPlayer::frame_label() const
            inbetween_file_name(m_frame);
 }
 
+// The overlay's middle frame as its legend names it: "frame 36", "in-between 6 (inb006.dat)".
+std::string AnimationPlayer::middle_frame_name() const
+{
+    const std::size_t middle = m_frames.frame_count() > 0 ? (m_frames.frame_count() - 1) / 2 : 0;
+    if (!m_scene_name.empty())
+        return "frame " + std::to_string(middle);
+    return "in-between " + std::to_string(middle) + " (" + inbetween_file_name(middle) + ")";
+}
+
+GraphicsScreen AnimationPlayer::picture() const
+{
+    return std::holds_alternative<Overlaid>(m_mode) ? overlay_picture() : view();
+}
+
+GraphicsScreen AnimationPlayer::overlay_picture() const
+{
+    return frames_overlay_screen(m_frames, m_structure, m_view, message(), m_overlay);
+}
+
 void AnimationPlayer::tick()
 {
     if (!playing())
@@ -125,8 +149,12 @@ void AnimationPlayer::tick()
 GraphicsScreen AnimationPlayer::view() const
 {
     assert(m_frames.frame_count() == 0 || m_frame < m_frames.frame_count());
-    if (std::holds_alternative<Overlaid>(m_mode))
-        return frames_overlay_screen(m_frames, m_structure, m_view, message(), m_overlay);
+    if (std::holds_alternative<Overlaid>(m_mode)) {
+        FramesOverlay on_terminal = m_overlay;
+        on_terminal.first_middle_last = true;
+        on_terminal.middle_name = middle_frame_name();
+        return frames_overlay_screen(m_frames, m_structure, m_view, message(), on_terminal);
+    }
     GraphicsScreen screen = draw_frame(m_frames, m_structure, m_view, m_frame);
     screen.text.push_back({1, layout::message_row, message()});
     if (std::holds_alternative<Showing>(m_mode))

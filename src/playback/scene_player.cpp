@@ -28,7 +28,7 @@ void ScenePlayer::take(const KeyEvent& event)
         m_finished = m_player.update(*command) == AnimationPlayer::Outcome::finished;
         return;
     case OverlayAnswer::handled: return;
-    case OverlayAnswer::save_picture: return m_player.show_notice(m_save_picture(m_player.view()));
+    case OverlayAnswer::save_picture: return m_player.show_notice(m_save_picture(m_player.picture()));
     case OverlayAnswer::quit: m_finished = true; return;
     }
 }

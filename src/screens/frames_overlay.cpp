@@ -26,6 +26,16 @@ TextLine label_cell(PixelPoint at, const std::string& label)
 
 } // namespace
 
+std::vector<std::size_t> overlaid_frames(std::size_t count, bool first_middle_last)
+{
+    if (first_middle_last && count > 3)
+        return {0, (count - 1) / 2, count - 1};
+    std::vector<std::size_t> all(count);
+    for (std::size_t k = 0; k < count; ++k)
+        all[k] = k;
+    return all;
+}
+
 LineStyle overlay_style(std::size_t index, std::size_t count)
 {
     if (index == 0)
@@ -74,7 +84,8 @@ GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic&
     Painter inside(screen.bitmap, layout::inside_boundary);
     inside.record_into(screen.strokes);
     const std::size_t count = frames.frame_count();
-    for (std::size_t k = 0; k < count; ++k)
+    const std::vector<std::size_t> drawn = overlaid_frames(count, overlay.first_middle_last);
+    for (const std::size_t k : drawn)
         draw_world_graphic(inside, structure, frames.frame(k), view, overlay_style(k, count));
     for (const LetteredPoint& point : overlay.points) {
         const PixelPoint at = view.to_device(point.position).rounded();
@@ -84,8 +95,15 @@ GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic&
         screen.text.push_back(label_cell(at, point.label));
     }
     screen.text.push_back({1, layout::message_row, caption});
-    screen.text.push_back({1, overlay_legend_row, overlay_legend(overlay.names, count)});
+    const bool sampled = drawn.size() < count;
+    OverlayNames names = overlay.names;
+    if (sampled)
+        names.between = overlay.middle_name;
+    screen.text.push_back({1, overlay_legend_row, overlay_legend(names, count)});
     int row = overlay_legend_row + 1;
+    if (sampled)
+        screen.text.push_back({1, row++, "the first, middle and last of " + std::to_string(count) +
+                                             " frames (pictures, --png, draw every frame)"});
     for (const std::string& note : overlay.notes)
         if (row < hercules::text_rows)
             screen.text.push_back({1, row++, note});

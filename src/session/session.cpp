@@ -316,11 +316,14 @@ void Session::save_picture()
     // The picture written is the final one, never a first picture still refined.
     if (auto* shaping = std::get_if<step::Shaping>(&m_step))
         shaping->editor.refine();
-    const SessionScreen shown = screen();
+    SessionScreen shown = screen();
     if (!shown.graphics) {
         m_notice = "P writes a picture in graphics mode only";
         return;
     }
+    // A picture of the overlay draws every frame, not the terminal's first, middle and last.
+    if (const auto* playing = std::get_if<step::Playing>(&m_step))
+        shown.picture = playing->player.picture();
     for (int number = 1; number <= most_pictures; ++number) {
         const std::string name = picture_file_name(number);
         if (!m_files.exists(name)) {

@@ -130,7 +130,7 @@ StepResult Playing::update(StepContext& context, const Command& command)
 void Playing::write_overlay(StepContext& context)
 {
     overlay_written = true;
-    const GraphicsScreen overlay = player.view();
+    const GraphicsScreen overlay = player.overlay_picture();
     const SessionSettings& settings = context.settings;
     for (const auto& [name, shape] :
          {std::pair{settings.overlay_png, PngShape::monitor}, std::pair{settings.overlay_png_raw, PngShape::raw}}) {

@@ -117,9 +117,15 @@ StepResult ViewPrompt::submit(StepContext& context, const std::string& answer)
     SessionModel& model = context.model;
     model.view_angles = {(*numbers)[0], (*numbers)[1]};
     model.delay_ms = static_cast<int>(std::lround((*numbers)[2]));
+    const SessionSettings& settings = context.settings;
+    std::string overridden;
+    if (settings.delay_overrides_answer && settings.delay_ms) {
+        overridden = " (--delay; the answer gave " + std::to_string(model.delay_ms) + ")";
+        model.delay_ms = *settings.delay_ms;
+    }
     context.files.log("view: theta " + shortest_number(model.view_angles.theta_degrees) + ", phi " +
                       shortest_number(model.view_angles.phi_degrees) + ", delay " + std::to_string(model.delay_ms) +
-                      " ms");
+                      " ms" + overridden);
     return {StepOutcome::answered};
 }
 

@@ -91,7 +91,7 @@ TEST_CASE("a wrong answer to an exercise ends with exit 1 and FILE:LINE: goal no
     const auto result = replay(folder, "wrong.keys");
     REQUIRE(result.status == 1);
     REQUIRE(result.err == "apcs: the key script ended at step 4: four-line staff\n" + (folder / "wrong.keys").string() +
-                              ":13: goal not reached: tension +0.15, want +0.40 to +0.60\n");
+                              ":14: goal not reached: tension +0.15, want +0.40 to +0.60\n");
 }
 
 TEST_CASE("a GOAL line's answer is the keys up to the next caption, GOAL line or the end", "[session][exercises]")

@@ -210,6 +210,30 @@ TEST_CASE("the animation player shows one frame per tick, then all frames, then 
     REQUIRE(log.lines == std::vector<std::string>{"animation: 3 frames, 50 ms each", "showed all 3 frames overlaid"});
 }
 
+TEST_CASE("comma and full stop pause the animation and step a frame back and on, within the frames",
+          "[session][animation]")
+{
+    LogLines log;
+    AnimationPlayer player = stick_player(log);
+    REQUIRE(player.update(cmd::StepFrame{+1}) == AnimationPlayer::Outcome::showing);
+    REQUIRE_FALSE(player.playing());
+    REQUIRE(message_of(player.view()) == "In-between 1 of 1: inb001.dat  (paused)");
+    player.tick();
+    REQUIRE(message_of(player.view()) == "In-between 1 of 1: inb001.dat  (paused)");
+    player.update(cmd::StepFrame{+1});
+    player.update(cmd::StepFrame{+1});
+    REQUIRE(message_of(player.view()) == "KEY2: k2.dat  (paused)");
+    REQUIRE(player.phase() == SessionPhase::animating);
+    player.update(cmd::StepFrame{-1});
+    player.update(cmd::StepFrame{-1});
+    player.update(cmd::StepFrame{-1});
+    REQUIRE(message_of(player.view()) == "KEY1: k1.dat  (paused)");
+    player.update(cmd::Pause{});
+    REQUIRE(player.playing());
+    REQUIRE(command_for(KeyContext::animation, KeyEvent::typed(U',')) == Command{cmd::StepFrame{-1}});
+    REQUIRE(command_for(KeyContext::animation, KeyEvent::typed(U'.')) == Command{cmd::StepFrame{+1}});
+}
+
 TEST_CASE("a long path's screen and numbers, kept across waypoint keys and exact spacing, are those drawn and "
           "evaluated afresh",
           "[session][editor][waypoints]")

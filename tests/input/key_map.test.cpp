@@ -137,7 +137,7 @@ TEST_CASE("the key line of graphics mode is made from the key map's rows", "[ses
     REQUIRE(key_help(KeyContext::waypoints) ==
             "Tab point  2468 +- move  I/D ins/del  U undo  Enter keep  Esc drop  ? help");
     REQUIRE(key_help(KeyContext::value_field) == "Enter set  Backspace erase  Esc close");
-    REQUIRE(key_help(KeyContext::animation) == "Esc stop  Space pause  R replay  ? help  q quit");
+    REQUIRE(key_help(KeyContext::animation) == "Esc stop  Space pause  R replay  ,. frame  ? help  q quit");
     // Every key line fits the 80 columns of the screen, after its first.
     for (const KeyContext context : all_contexts)
         REQUIRE(key_help(context).size() <= 78);

@@ -80,7 +80,7 @@ TEST_CASE("without a terminal and without --keys the session refuses with exit 3
 TEST_CASE("a bad key script is exit 1 with FILE:LINE", "[session][headless]")
 {
     const test::TempFolder folder;
-    const auto script = folder.write("bad.keys", "ENTER\nHOME\n");
+    const auto script = folder.write("bad.keys", "ENTER\nF2\n");
     const auto result = test::run_apcs({"--keys", script.string(), "--workdir", folder.path().string()});
     REQUIRE(result.status == 1);
     REQUIRE(result.err.starts_with(script.string() + ":2: expected a single printable character"));

@@ -78,7 +78,7 @@ GraphicsScreen three_levels_overlay()
 {
     const FrameSequence frames = three_levels();
     return frames_overlay_screen(frames, one_line(), face_on, "3 frames overlaid",
-                                 {key_frames_names("key1.dat", "key2.dat", 3), {}, {}});
+                                 {key_frames_names("key1.dat", "key2.dat", 3), {}, {}, false, {}});
 }
 
 // The raster x of each lit run of an SVG stroke's path data ("Mx,y Lx,y" or a dot "Mx,y Vy"),
@@ -207,7 +207,7 @@ TEST_CASE("the session's last screen is the overlay the pictures draw, with the 
 TEST_CASE("lettered points are marked with an x and lettered in the cell under them", "[session][overlay]")
 {
     const FrameSequence frames = three_levels();
-    const FramesOverlay overlay{scene_frames_names(3), {{"A", {0, 0, 0}}, {"B", {0, 20, 10}}}, {"A-B: the ends"}};
+    const FramesOverlay overlay{scene_frames_names(3), {{"A", {0, 0, 0}}, {"B", {0, 20, 10}}}, {"A-B: the ends"}, false, {}};
     const GraphicsScreen screen = frames_overlay_screen(frames, one_line(), face_on, "caption", overlay);
     const ViewTransform view = frames_view(frames, face_on);
     REQUIRE(screen.marks.size() == 2);
@@ -225,4 +225,37 @@ TEST_CASE("lettered points are marked with an x and lettered in the cell under t
     }
     CHECK(screen.text[4].row == overlay_legend_row + 1);
     CHECK(screen.text[4].text == "A-B: the ends");
+}
+
+TEST_CASE("on the terminal the overlay draws the first, middle and last frames and says so, pictures every frame",
+          "[session][overlay]")
+{
+    FrameSequence frames(5, 2);
+    for (std::size_t k = 0; k < 5; ++k) {
+        const double z = 10.0 - 2.5 * static_cast<double>(k);
+        frames.frame(k)[0] = {0, 0, z};
+        frames.frame(k)[1] = {0, 20, z};
+    }
+    REQUIRE(overlaid_frames(5, true) == std::vector<std::size_t>{0, 2, 4});
+    REQUIRE(overlaid_frames(3, true) == std::vector<std::size_t>{0, 1, 2});
+    REQUIRE(overlaid_frames(4, false) == std::vector<std::size_t>{0, 1, 2, 3});
+    UnloggedSteps log;
+    AnimationPlayer player(frames, one_line(), {"key1.dat", "key2.dat"}, face_on, 100, log);
+    while (player.playing())
+        player.tick();
+    player.update(command::Continue{});
+    REQUIRE(player.phase() == SessionPhase::overlay);
+    const GraphicsScreen screen = player.view();
+    const GraphicsScreen picture = player.picture();
+    REQUIRE(picture.bitmap == player.overlay_picture().bitmap);
+    for (std::size_t k = 0; k < 5; ++k) {
+        const Row row = row_of(frames, k);
+        INFO("frame " << k);
+        CHECK(lit_along(picture.bitmap, row).size() > 10);
+        CHECK(lit_along(screen.bitmap, row).empty() == (k == 1 || k == 3));
+    }
+    REQUIRE(screen.text.size() == 3);
+    CHECK(screen.text[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: in-between 2 (inb002.dat)");
+    CHECK(screen.text[2].text == "the first, middle and last of 5 frames (pictures, --png, draw every frame)");
+    CHECK(picture.text[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 3 in-betweens");
 }

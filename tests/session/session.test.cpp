@@ -623,3 +623,28 @@ TEST_CASE("the session's --svg writes the overlay of all frames as vector lines"
           }) == 4 + 14);
     REQUIRE(graphics_message(session) == "wrote all.svg");
 }
+
+TEST_CASE("--delay given with --keys replaces the delay the view prompt's answer gives, and apcs.log says so",
+          "[session]")
+{
+    MemoryFiles files = example_files();
+    SessionSettings settings;
+    settings.delay_ms = 1000;
+    SECTION("overriding")
+    {
+        settings.delay_overrides_answer = true;
+        Session session(settings, files);
+        reach_view_prompt(session);
+        type(session, "0 90 100");
+        REQUIRE(session.delay_ms() == 1000);
+        REQUIRE(files.log_lines.back() == "view: theta 0, phi 90, delay 1000 ms (--delay; the answer gave 100)");
+    }
+    SECTION("only the default of an empty answer")
+    {
+        Session session(settings, files);
+        reach_view_prompt(session);
+        type(session, "0 90 100");
+        REQUIRE(session.delay_ms() == 100);
+        REQUIRE(files.log_lines.back() == "view: theta 0, phi 90, delay 100 ms");
+    }
+}

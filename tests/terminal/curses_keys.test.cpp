@@ -75,7 +75,10 @@ TEST_CASE("Curses key codes and characters become the session's keys", "[termina
         {"a character with Shift-Tab's number", OK, KEY_BTAB, typed(static_cast<char32_t>(KEY_BTAB))},
         {"^A", OK, 1, std::nullopt},
         {"NUL", OK, 0, std::nullopt},
-        {"Home", KEY_CODE_YES, KEY_HOME, std::nullopt},
+        {"Home", KEY_CODE_YES, KEY_HOME, of(Key::home)},
+        {"PgDn", KEY_CODE_YES, KEY_NPAGE, of(Key::page_down)},
+        {"PgUp", KEY_CODE_YES, KEY_PPAGE, of(Key::page_up)},
+        {"End", KEY_CODE_YES, KEY_END, std::nullopt},
         {"a key code with a character's number", KEY_CODE_YES, 'a', std::nullopt},
         {"a key code of ours unbound", KEY_CODE_YES, keypad_key_base, std::nullopt},
         {"nothing read", ERR, 0, std::nullopt},
@@ -88,7 +91,7 @@ TEST_CASE("Curses key codes and characters become the session's keys", "[termina
     }
 }
 
-TEST_CASE("Sequences terminfo may not name are bound: keypad, both arrow modes, Shift-Tab, F1", "[terminal]")
+TEST_CASE("Sequences terminfo may not name are bound: keypad, both arrow modes, Shift-Tab, F1, PgDn, PgUp, Home", "[terminal]")
 {
     struct SequenceRow {
         std::string sequence;
@@ -100,7 +103,9 @@ TEST_CASE("Sequences terminfo may not name are bound: keypad, both arrow modes, 
         {"\033[B", of(Key::down)},     {"\033[C", of(Key::right)},    {"\033[D", of(Key::left)},
         {"\033OA", of(Key::up)},       {"\033OB", of(Key::down)},     {"\033OC", of(Key::right)},
         {"\033OD", of(Key::left)},     {"\033[Z", of(Key::back_tab)}, {"\033OP", of(Key::f1)},
-        {"\033[11~", of(Key::f1)},     {"\033[[A", of(Key::f1)},
+        {"\033[11~", of(Key::f1)},     {"\033[[A", of(Key::f1)},     {"\033[6~", of(Key::page_down)},
+        {"\033[5~", of(Key::page_up)}, {"\033[H", of(Key::home)},    {"\033[1~", of(Key::home)},
+        {"\033OH", of(Key::home)},
     };
     const std::span<const KeySequence> sequences = key_sequences();
     REQUIRE(sequences.size() == std::size(rows));

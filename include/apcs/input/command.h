@@ -87,6 +87,11 @@ struct Quit : Signal<Quit> {};
 struct StopAnimation : Signal<StopAnimation> {};
 struct Pause : Signal<Pause> {};
 struct Replay : Signal<Replay> {};
+// , and .: the frame before or after, the animation paused (SPEC §3.1: a class follows it frame by frame).
+struct StepFrame {
+    int by = 0;
+    friend bool operator==(const StepFrame&, const StepFrame&) = default;
+};
 
 } // namespace apcs::command
 
@@ -100,6 +105,6 @@ using Command = std::variant<command::TypeCharacter, command::EraseCharacter, co
                              command::OpenValueField, command::OpenWaypoints, command::InsertPoint,
                              command::DeletePoint, command::MovePoint, command::Undo, command::Yes,
                              command::No, command::Continue, command::ShowHelp, command::SavePicture, command::Quit,
-                             command::StopAnimation, command::Pause, command::Replay>;
+                             command::StopAnimation, command::Pause, command::Replay, command::StepFrame>;
 
 } // namespace apcs

@@ -35,7 +35,13 @@ public:
 
     Outcome update(const Command& command);
     void tick();
+    // The screen: a frame, or after the last frame the overlay with the first, middle and last
+    // frames (every frame is one blob at 80x24).
     GraphicsScreen view() const;
+    // The overlay of every frame, as pictures (--png, --svg) draw it.
+    GraphicsScreen overlay_picture() const;
+    // What P writes: the screen, with every frame where the screen overlays three.
+    GraphicsScreen picture() const;
 
     SessionPhase phase() const;
     bool playing() const;
@@ -73,6 +79,7 @@ private:
     using Mode = std::variant<Showing, Stopped, Overlaid>;
 
     Outcome update_showing(Showing& showing, const Command& command);
+    std::string middle_frame_name() const;
     std::string message() const;
 
     Mode m_mode;

@@ -47,7 +47,15 @@ struct FramesOverlay {
     OverlayNames names;
     std::vector<LetteredPoint> points;
     std::vector<std::string> notes;
+    // On a terminal of 80x24 cells every frame overlaid is one blob (SPEC §3.1): only the first,
+    // the middle (frame (N-1)/2, named `middle_name`) and the last are drawn, and a note says so.
+    // Pictures draw every frame.
+    bool first_middle_last = false;
+    std::string middle_name; // e.g. "in-between 6 (inb006.dat)", "frame 36"
 };
+
+// The frames an overlay of `count` frames draws: all, or the first, the middle and the last.
+std::vector<std::size_t> overlaid_frames(std::size_t count, bool first_middle_last);
 
 // The text row of an overlay's legend, under the message line; its notes follow on the rows below,
 // down to the last row.

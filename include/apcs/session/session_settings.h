@@ -23,6 +23,9 @@ struct SessionSettings {
     std::optional<double> theta_degrees;
     std::optional<double> phi_degrees;
     std::optional<int> delay_ms;
+    // --delay given with --keys (SPEC §3.1): delay_ms replaces the delay every answer to the view
+    // prompt gives, a script's "0 90 100" too, so a class can slow a lesson's animation down.
+    bool delay_overrides_answer = false;
     std::optional<EndSlopes> slopes;
     // The staff values of path files with three columns (--tension, --continuity, --bias, --accel).
     StaffValues staff;

@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""Manual section 25's 45-minute class, held against the program.
+
+Every line "PRESS SCRIPT [OPTIONS] KEY×N ..." of the section is one lesson or exercise of the plan.
+This script
+  - sums the presses (at most 120: a presenter's remote, not a keyboard),
+  - times the plan at 30 s a caption plus each animation's length (frames × delay, read from the
+    apcs.log of a headless run with the same options): at most 45 minutes,
+  - plays each script in tmux at 80x24 (--pace step, the glyph set given) on a fresh copy of its
+    folder with exactly those presses, and requires that every caption was shown and that the last
+    press leaves "End of the script" on the caption row.
+
+Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS]   (prints each script's presses, captions and time)
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+MOST_PRESSES = 120
+MOST_SECONDS = 45 * 60
+SECONDS_A_CAPTION = 30
+END_OF_SCRIPT = "End of the script: the keyboard is yours"
+TMUX_KEYS = {"PgDn": "NPage", "PgUp": "PPage", "Home": "Home", "Space": "Space"}
+
+
+def plan_lines(manual):
+    text = open(manual, encoding="utf-8").read()
+    start = text.index("25. TEACHING WITH APCS")
+    section = text[start:text.index("\n26. ", start)]
+    return [line.split()[1:] for line in section.split("\n") if line.strip().startswith("PRESS ")]
+
+
+def parse(words):
+    """SCRIPT, its options, and the presses as tmux key names in order."""
+    script, options, presses = words[0], [], []
+    rest = words[1:]
+    while rest and rest[0].startswith("--"):
+        options += rest[:2]
+        rest = rest[2:]
+    for word in rest:
+        key, _, count = word.partition("×")
+        if key not in TMUX_KEYS:
+            sys.exit(f"class_plan: {script}: '{word}' is no key of the plan; expected {', '.join(TMUX_KEYS)}")
+        presses += [TMUX_KEYS[key]] * (int(count) if count else 1)
+    return script, options, presses
+
+
+def script_folder(data, script):
+    for folder in sorted(os.listdir(data)):
+        if os.path.isfile(os.path.join(data, folder, script)):
+            return os.path.join(data, folder)
+    sys.exit(f"class_plan: {script}: not found in {data}/*/")
+
+
+def captions_of(path):
+    """The script's captions; a caption a GOAL line follows is the task, which the caption row gives
+    over to the goal's feedback ("GOAL: ...") while the goal waits: it is seen as that."""
+    lines = [line.strip() for line in open(path, encoding="utf-8") if line.strip() and not line.startswith("; ")]
+    captions = []
+    for k, line in enumerate(lines):
+        if line.startswith(";;"):
+            task = k + 1 < len(lines) and lines[k + 1].startswith("GOAL ")
+            captions.append("GOAL:" if task else line[2:].strip())
+    return captions
+
+
+def animation_seconds(apcs, folder, script, options):
+    """The animations' length as the class sees them: frames × delay, from apcs.log."""
+    with tempfile.TemporaryDirectory() as work:
+        shutil.copytree(folder, work, dirs_exist_ok=True)
+        subprocess.run([apcs, "--keys", script, *options], cwd=work, stdin=subprocess.DEVNULL,
+                       capture_output=True, text=True, timeout=120)
+        log = open(os.path.join(work, "apcs.log"), encoding="utf-8").read()
+    return sum(int(frames) * int(ms) / 1000 for frames, ms in re.findall(r"animation: (\d+) frames, (\d+) ms each", log))
+
+
+def tmux(*args):
+    return subprocess.run(["tmux", *args], capture_output=True, text=True).stdout
+
+
+def settled_screen(session):
+    """The pane once it has not changed for 0.4 s (the replay plays a PgDn's keys at once)."""
+    screen, since = tmux("capture-pane", "-p", "-t", session), time.time()
+    deadline = time.time() + 30
+    while time.time() < deadline:
+        time.sleep(0.1)
+        now = tmux("capture-pane", "-p", "-t", session)
+        if now != screen:
+            screen, since = now, time.time()
+        elif time.time() - since > 0.4:
+            return screen
+    return screen
+
+
+def play(apcs, folder, script, options, presses, glyphs):
+    """The captions the class saw, and the caption row after the last press."""
+    session = f"class-plan-{os.getpid()}"
+    with tempfile.TemporaryDirectory() as work:
+        shutil.copytree(folder, work, dirs_exist_ok=True)
+        command = " ".join([apcs, "--keys", script, "--pace", "step", "--glyphs", glyphs, *options])
+        tmux("kill-session", "-t", session)
+        tmux("new-session", "-d", "-s", session, "-x", "80", "-y", "24", "-c", work,
+             f"LANG=C.UTF-8 {command}; sleep 60")
+        seen = set()
+        try:
+            screen = settled_screen(session)
+            seen.add(screen.rstrip("\n").split("\n")[-1].strip())
+            for key in presses:
+                tmux("send-keys", "-t", session, key)
+                screen = settled_screen(session)
+                seen.add(screen.rstrip("\n").split("\n")[-1].strip())
+        finally:
+            tmux("kill-session", "-t", session)
+    return seen, screen.rstrip("\n").split("\n")[-1].strip()
+
+
+def main():
+    apcs, manual, data = sys.argv[1:4]
+    glyphs = sys.argv[4] if len(sys.argv) > 4 else "ascii"
+    total_presses, total_seconds, failures = 0, 0.0, []
+    lines = plan_lines(manual)
+    if not lines:
+        sys.exit("class_plan: manual section 25 has no PRESS line")
+    for words in lines:
+        script, options, presses = parse(words)
+        folder = script_folder(data, script)
+        captions = captions_of(os.path.join(folder, script))
+        seconds = SECONDS_A_CAPTION * len(captions) + animation_seconds(apcs, folder, script, options)
+        seen, last_row = play(apcs, folder, script, options, presses, glyphs)
+        unseen = [caption for caption in captions
+                  if caption not in seen and not (caption == "GOAL:" and any(row.startswith("GOAL:") for row in seen))]
+        print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "
+              f"last caption row: {last_row}")
+        if unseen:
+            failures.append(f"{script}: captions never shown with those presses: {unseen}")
+        if not last_row.startswith(END_OF_SCRIPT):
+            failures.append(f"{script}: the presses end at '{last_row}', not at the end of the script")
+        total_presses += len(presses)
+        total_seconds += seconds
+    print(f"the plan: {total_presses} presses, {total_seconds / 60:.1f} minutes")
+    if total_presses > MOST_PRESSES:
+        failures.append(f"{total_presses} presses; expected at most {MOST_PRESSES}")
+    if total_seconds > MOST_SECONDS:
+        failures.append(f"{total_seconds / 60:.1f} minutes; expected at most 45")
+    for failure in failures:
+        print("FAILED: " + failure)
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
