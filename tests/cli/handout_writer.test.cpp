@@ -157,7 +157,7 @@ TEST_CASE("a handout has no page of an empty prompt: a title caption before the 
     REQUIRE(html.find("<title>title.keys</title>") != std::string::npos);
 }
 
-TEST_CASE("--paper draws a handout's pictures black on white: every pixel the monitor's inverted", "[cli][handout]")
+TEST_CASE("a handout drawn for paper (--paper) is black on white: every pixel the monitor's inverted", "[cli][handout]")
 {
     const test::TempFolder folder;
     copy_n_to_l(folder);
@@ -191,7 +191,7 @@ TEST_CASE("--paper draws a handout's pictures black on white: every pixel the mo
     REQUIRE(pictures == 10);
 }
 
-TEST_CASE("--paper without --handout is refused: exit 2 and what to give", "[cli][handout]")
+TEST_CASE("a run with --paper and no --handout is refused: exit 2 and what to give", "[cli][handout]")
 {
     const test::TempFolder folder;
     copy_n_to_l(folder);
