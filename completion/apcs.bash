@@ -30,7 +30,7 @@ _apcs_options()
         draw) echo "$view $pictures $terminal_pictures --help" ;;
         play) echo "$staff --slopes --samples --spacing --surface $view --glyphs --pixels $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
         figures) echo "$staff $curve --workdir --out --help" ;;
-        *) echo "$staff $curve --surface $view --delay --glyphs --color --pixels --step $pictures --workdir --keys --pace --record --handout --help --version" ;;
+        *) echo "$staff $curve --surface $view --delay --glyphs --color --pixels --step $pictures --workdir --keys --pace --record --handout --paper --help --version" ;;
     esac
 }
 

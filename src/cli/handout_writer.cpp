@@ -2,44 +2,69 @@
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/numbered_files.h"
-#include "apcs/raster/png_encoder.h"
 #include "apcs/lesson/handout.h"
+#include "apcs/raster/replay_caption.h"
 
 namespace apcs {
 
-Expected<HandoutWriter> HandoutWriter::open(const std::filesystem::path& folder)
+namespace {
+
+constexpr std::string_view index_name = "index.html";
+
+} // namespace
+
+Expected<HandoutWriter> HandoutWriter::open(const std::filesystem::path& folder, PngInk ink)
 {
     if (Expected<void> made = make_output_folder(folder, "the handout (--handout)"); !made)
         return made.error();
-    return HandoutWriter(folder);
+    if (Expected<void> writable = check_writable(folder / index_name, ReadOnlyTarget::left_to_the_write); !writable)
+        return writable.error();
+    return HandoutWriter(folder, ink);
 }
 
-void HandoutWriter::write(int number, std::size_t count, std::string_view caption, const SessionScreen& shown,
+void HandoutWriter::write(int number, std::size_t count, std::string_view caption, const SessionScreen& screen,
                           GlyphSet glyphs, const KeyFileGuard& inputs)
+{
+    if (!m_outcome || is_empty_prompt(screen))
+        return;
+    const SessionScreen shown = with_caption(screen, caption);
+    const std::string stem = handout_file_stem(number, count, caption);
+    const std::filesystem::path picture = m_folder / (stem + ".png");
+    const std::optional<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor, m_ink);
+    if (!png) {
+        m_outcome = Diagnostic{picture.string(), 0, "cannot encode the PNG image"};
+        return;
+    }
+    m_last_backup.clear();
+    write_file(picture, *png, inputs);
+    write_file(m_folder / (stem + ".txt"), screen_text(shown, glyphs), inputs);
+    if (m_outcome)
+        m_pages[number] = HandoutPage{number, stem + ".png", std::string(caption)};
+}
+
+void HandoutWriter::finish(std::string_view title, const KeyFileGuard& inputs)
+{
+    std::vector<HandoutPage> pages;
+    for (const auto& [number, page] : m_pages)
+        pages.push_back(page);
+    m_last_backup.clear();
+    write_file(m_folder / index_name, handout_index_html(title, pages), inputs);
+}
+
+void HandoutWriter::write_file(const std::filesystem::path& target, std::string_view content, const KeyFileGuard& inputs)
 {
     if (!m_outcome)
         return;
-    const std::filesystem::path stem = m_folder / handout_file_stem(number, count, caption);
-    const std::optional<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor);
-    if (!png) {
-        m_outcome = Diagnostic{stem.string() + ".png", 0, "cannot encode the PNG image"};
+    KeyFileGuard kept = inputs;
+    if (!m_last_backup.empty())
+        kept.protect(m_last_backup);
+    const Expected<WriteResult> written = write_file_atomically(target, content, &kept);
+    if (!written) {
+        m_outcome = written.error();
         return;
     }
-    const Expected<WriteResult> picture = write_file_atomically(stem.string() + ".png", *png, &inputs);
-    if (!picture) {
-        m_outcome = picture.error();
-        return;
-    }
-    m_written.push_back(stem.string() + ".png");
-    KeyFileGuard text_inputs = inputs;
-    if (!picture->backup.empty())
-        text_inputs.protect(picture->backup);
-    const Expected<WriteResult> text = write_file_atomically(stem.string() + ".txt", screen_text(shown, glyphs), &text_inputs);
-    if (!text) {
-        m_outcome = text.error();
-        return;
-    }
-    m_written.push_back(stem.string() + ".txt");
+    m_written.push_back(target);
+    m_last_backup = written->backup;
 }
 
 } // namespace apcs

@@ -333,8 +333,10 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     app.add_option("--keys", options.keys, "replay the keystrokes of FILE")->type_name("FILE");
     app.add_option("--record", options.record, "record the keystrokes to FILE")->type_name("FILE");
     app.add_option("--handout", options.handout,
-                   "write each ;; caption's screen of the --keys replay to DIR as NN-STEP.png and NN-STEP.txt")
+                   "write each ;; caption's screen of the --keys replay, once its keys have played, to DIR as "
+                   "NN-STEP.png and NN-STEP.txt, and DIR/index.html to print them from a browser")
         ->type_name("DIR");
+    app.add_flag("--paper", options.paper, "draw the --handout pictures black on white, for printing");
     app.add_option_function<std::string>(
            "--pace",
            [&options](const std::string& text) {

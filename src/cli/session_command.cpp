@@ -188,6 +188,10 @@ std::optional<ExitStatus> refuse_replay_without_its_needs(const CommonOptions& o
         err << "apcs: --handout writes the captions of a --keys replay; give --keys FILE\n";
         return ExitStatus::bad_usage;
     }
+    if (options.paper && !options.handout) {
+        err << "apcs: --paper draws the pages of a handout black on white; give --handout DIR\n";
+        return ExitStatus::bad_usage;
+    }
     if (headless && !options.keys) {
         err << "apcs: standard input is not a terminal; give --keys FILE to replay a session without one\n";
         return ExitStatus::terminal_problem;
@@ -384,31 +388,38 @@ std::optional<ExitStatus> open_handout(const CommonOptions& options, std::option
 {
     if (!options.handout)
         return std::nullopt;
-    Expected<HandoutWriter> opened = HandoutWriter::open(*options.handout);
+    Expected<HandoutWriter> opened = HandoutWriter::open(*options.handout, options.paper ? PngInk::paper : PngInk::monitor);
     if (!opened)
         return report_bad_input(opened.error(), err);
     handout.emplace(std::move(*opened));
     return std::nullopt;
 }
 
-// The hooks of the replay: each caption's page of the handout, none without one.
+// The hooks of the replay: each caption's page of the handout, the screen at the end of its keys;
+// none without a handout.
 ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options, Session& session,
                          const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
 {
     ReplayHooks hooks;
     if (handout)
-        hooks.caption_reached = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
-                                                                                       const SessionScreen& shown) {
-            handout->write(static_cast<int>(index) + 1, script.captions.size(), script.captions[index].text, shown,
+        hooks.caption_ended = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
+                                                                                     const SessionScreen& screen) {
+            handout->write(static_cast<int>(index) + 1, script.captions.size(), script.captions[index].text, screen,
                            glyphs, files_read(options, session, folder));
         };
     return hooks;
 }
 
-// A handout that could not be written is the run's failure, unless a signal stopped it.
-ExitStatus handout_outcome(const std::optional<HandoutWriter>& handout, ExitStatus status, std::ostream& err)
+// The handout's index.html written after its pages; a handout that could not be written is the
+// run's failure, unless a signal stopped it.
+ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOptions& options, const Session& session,
+                           const std::filesystem::path& folder, ExitStatus status, std::ostream& err)
 {
-    if (!handout || handout->outcome() || status == ExitStatus::stopped)
+    if (!handout)
+        return status;
+    const std::string title = *options.keys == "-" ? std::string("standard input") : options.keys->filename().string();
+    handout->finish(title, files_read(options, session, folder));
+    if (handout->outcome() || status == ExitStatus::stopped)
         return status;
     err << "apcs: --handout: " << handout->outcome().error().to_string() << '\n';
     return ExitStatus::bad_input;
@@ -473,11 +484,11 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
         };
         hooks.caught_up = [&rewindable] { rewindable.caught_up(); };
     }
-    const ExitStatus status =
-        handout_outcome(handout,
-                        headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)
-                                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, recorded, out, err),
-                        err);
+    const ExitStatus status = handout_outcome(
+        handout, options, session, folder,
+        headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)
+                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, recorded, out, err),
+        err);
     if (status == ExitStatus::terminal_problem)
         return status;
     // A recording that fails is reported; a session stopped by a signal still ends as stopped.

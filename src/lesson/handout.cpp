@@ -65,6 +65,20 @@ std::string screen_text(const SessionScreen& screen, GlyphSet glyphs)
     return text;
 }
 
+bool is_empty_prompt(const SessionScreen& screen)
+{
+    if (screen.graphics)
+        return false;
+    int rows_written = 0;
+    for (int row = 0; row < screen.text.rows(); ++row) {
+        std::string line = screen.text.row_text(row);
+        line.erase(line.find_last_not_of(' ') + 1);
+        if (!line.empty() && line != "_")
+            ++rows_written;
+    }
+    return rows_written <= 1;
+}
+
 GraphicsScreen screen_picture(const SessionScreen& screen)
 {
     if (screen.graphics)

@@ -196,6 +196,7 @@ void ReplayDriver::finish()
 {
     settle();
     judge_goals(m_script.events.size());
+    end_caption();
 }
 
 // On a terminal the replay settles after everything the session does; headless, before each key
@@ -216,6 +217,8 @@ void ReplayDriver::settle()
     if (!m_stopped && session_idle())
         tell_captions();
     wait_at_goal();
+    if (!playing() && session_idle() && !at_goal())
+        end_caption();
     // A goal is the student's: a Space held before it is not its answer.
     if (at_goal())
         m_step_held = false;
@@ -223,11 +226,22 @@ void ReplayDriver::settle()
 
 void ReplayDriver::tell_captions()
 {
-    if (!m_hooks.caption_reached)
-        return;
     const std::vector<ScriptCaption>& captions = m_script.captions;
-    for (; m_captions_told < captions.size() && captions[m_captions_told].before_event <= m_played; ++m_captions_told)
-        m_hooks.caption_reached(m_captions_told, with_caption(m_session->screen(), captions[m_captions_told].text));
+    for (; m_captions_told < captions.size() && captions[m_captions_told].before_event <= m_played; ++m_captions_told) {
+        end_caption();
+        if (m_hooks.caption_reached)
+            m_hooks.caption_reached(m_captions_told, with_caption(m_session->screen(), captions[m_captions_told].text));
+    }
+}
+
+// The caption told last has played its keys: the screen now is the one it is about.
+void ReplayDriver::end_caption()
+{
+    if (m_captions_ended == m_captions_told)
+        return;
+    m_captions_ended = m_captions_told;
+    if (m_hooks.caption_ended)
+        m_hooks.caption_ended(m_captions_ended - 1, m_session->screen());
 }
 
 // A goal that does not hold yet keeps the replay there, its feedback on the caption row

@@ -26,7 +26,7 @@ int png_rows(int raster_rows, PngShape shape)
     return shape == PngShape::monitor ? (raster_rows * 3 + 1) / 2 : raster_rows;
 }
 
-std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape)
+std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape, PngInk ink)
 {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     if (png == nullptr)
@@ -38,6 +38,8 @@ std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape)
     }
     std::string output;
     std::vector<png_byte> row(static_cast<std::size_t>(bitmap.width()));
+    const png_byte lit = ink == PngInk::paper ? 0 : 255;
+    const png_byte unlit = static_cast<png_byte>(255 - lit);
     // libpng reports errors by longjmp; nothing with a destructor is created after this point.
     if (setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
@@ -53,7 +55,7 @@ std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape)
     for (int y = 0; y < rows; ++y) {
         const int source = raster_row_of(y, shape);
         for (int x = 0; x < bitmap.width(); ++x)
-            row[static_cast<std::size_t>(x)] = bitmap.get(x, source) ? 255 : 0;
+            row[static_cast<std::size_t>(x)] = bitmap.get(x, source) ? lit : unlit;
         png_write_row(png, row.data());
     }
     png_write_end(png, info);

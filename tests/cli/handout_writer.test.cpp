@@ -1,10 +1,14 @@
 #include "apcs/lesson/handout.h"
+#include "apcs/lesson/handout_index.h"
 #include "apcs/formats/key_event.h"
 
+#include "support/png_pixels.h"
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
+
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -78,8 +82,8 @@ test::CommandRun lesson_handout(const test::TempFolder& folder, const std::files
 
 } // namespace
 
-TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-STEP.png (720x522) and its approved screen "
-          "as NN-STEP.txt",
+TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-STEP.png (720x522) and the approved screen "
+          "once its keys have played as NN-STEP.txt",
           "[cli][handout][teaching]")
 {
     const test::TempFolder folder;
@@ -88,20 +92,141 @@ TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-S
     REQUIRE(result.status == 0);
     const Expected<KeyScript> script = parse_captioned_key_script(read_all(source("data/n-to-l/lesson.keys")), "lesson");
     REQUIRE(script);
+    // The approved screens are where each caption is reached; a caption's keys end where the next
+    // is reached (the last has no keys), there with this caption on its row, the screen's last.
     const std::vector<std::string> screens = golden_caption_screens("n-to-l/lesson-captions-ascii.txt");
     REQUIRE(screens.size() == script->captions.size());
-    std::vector<std::string> expected;
+    std::vector<std::string> expected = {"index.html"};
     for (std::size_t index = 0; index < screens.size(); ++index) {
-        const std::string stem = handout_file_stem(static_cast<int>(index) + 1, script->captions.size(), script->captions[index].text);
+        const std::string& caption = script->captions[index].text;
+        const std::string stem = handout_file_stem(static_cast<int>(index) + 1, script->captions.size(), caption);
         CAPTURE(stem);
         expected.push_back(stem + ".png");
         expected.push_back(stem + ".txt");
-        REQUIRE(read_all(folder / ("handout/" + stem + ".txt")) == screens[index]);
+        std::string page = screens[std::min(index + 1, screens.size() - 1)];
+        page.erase(page.rfind('\n', page.size() - 2) + 1);
+        REQUIRE(read_all(folder / ("handout/" + stem + ".txt")) == page + " " + caption + "\n");
         REQUIRE(png_size(read_all(folder / ("handout/" + stem + ".png"))) == std::pair{720u, 522u});
     }
     std::sort(expected.begin(), expected.end());
     REQUIRE(file_names(folder / "handout") == expected);
     REQUIRE(expected.front() == "01-the-key-frames-the-view-face-on.png");
+    // Issue 42: "T shows the tangents" shows their numbers.
+    REQUIRE(read_all(folder / "handout/04-t-shows-the-tangents-dd-leaves.txt").find(" point 2  DS 0.00 0.00 5.00") !=
+            std::string::npos);
+}
+
+TEST_CASE("a handout's index.html shows every page's picture with its caption in the script's order",
+          "[cli][handout][teaching]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
+    const Expected<KeyScript> script = parse_captioned_key_script(read_all(source("data/n-to-l/lesson.keys")), "lesson");
+    REQUIRE(script);
+    const std::string html = read_all(folder / "handout/index.html");
+    REQUIRE(html.find("<title>lesson.keys</title>") != std::string::npos);
+    std::size_t after = 0;
+    for (std::size_t index = 0; index < script->captions.size(); ++index) {
+        const std::string& caption = script->captions[index].text;
+        const std::string picture = handout_file_stem(static_cast<int>(index) + 1, script->captions.size(), caption) + ".png";
+        CAPTURE(picture);
+        REQUIRE(std::filesystem::is_regular_file(folder / "handout" / picture));
+        const std::size_t at = html.find("<img src=\"" + picture + "\"", after);
+        REQUIRE(at != std::string::npos);
+        const std::size_t said = html.find("<figcaption>" + std::to_string(index + 1) + ". " + html_escaped(caption) + "</figcaption>", at);
+        REQUIRE(said != std::string::npos);
+        after = said;
+    }
+}
+
+TEST_CASE("a handout has no page of an empty prompt: a title caption before the first key gets none",
+          "[cli][handout]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    std::ofstream(folder / "title.keys") << ";; Paths & <tangents>\n;; The key frames\nENTER ENTER\n";
+    const auto result = test::run_apcs({"--keys", (folder / "title.keys").string(), "--workdir", folder.path().string(),
+                                        "--glyphs", "ascii", "--handout", (folder / "handout").string()});
+    REQUIRE(result.status == 0);
+    REQUIRE(file_names(folder / "handout") ==
+            std::vector<std::string>{"02-the-key-frames.png", "02-the-key-frames.txt", "index.html"});
+    const std::string html = read_all(folder / "handout/index.html");
+    REQUIRE(html.find("<figcaption>2. The key frames</figcaption>") != std::string::npos);
+    REQUIRE(html.find("tangents") == std::string::npos);
+    REQUIRE(html.find("<title>title.keys</title>") != std::string::npos);
+}
+
+TEST_CASE("a handout drawn for paper (--paper) is black on white: every pixel the monitor's inverted", "[cli][handout]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    REQUIRE(lesson_handout(folder, folder / "monitor").status == 0);
+    const auto paper = test::run_apcs({"--keys", (folder / "lesson.keys").string(), "--workdir", folder.path().string(),
+                                       "--glyphs", "ascii", "--handout", (folder / "paper").string(), "--paper"});
+    REQUIRE(paper.status == 0);
+    REQUIRE(file_names(folder / "paper") == file_names(folder / "monitor"));
+    int pictures = 0;
+    for (const std::string& name : file_names(folder / "monitor")) {
+        if (!name.ends_with(".png"))
+            continue;
+        CAPTURE(name);
+        ++pictures;
+        const test::GreyPicture monitor = test::grey_picture(read_all(folder / "monitor" / name));
+        const test::GreyPicture printed = test::grey_picture(read_all(folder / "paper" / name));
+        REQUIRE(monitor.width == 720);
+        REQUIRE(printed.width == monitor.width);
+        REQUIRE(printed.height == monitor.height);
+        // The monitor is mostly dark and the paper mostly white; what is lit on one is ink on the other.
+        const auto half = static_cast<std::ptrdiff_t>(monitor.pixels.size() / 2);
+        REQUIRE(std::count(monitor.pixels.begin(), monitor.pixels.end(), 0) > half);
+        REQUIRE(std::count(printed.pixels.begin(), printed.pixels.end(), 255) > half);
+        std::size_t inverted = 0;
+        for (std::size_t at = 0; at < monitor.pixels.size(); ++at)
+            inverted += printed.pixels[at] == 255 - monitor.pixels[at];
+        REQUIRE(inverted == monitor.pixels.size());
+        REQUIRE(read_all(folder / "paper" / (name.substr(0, name.size() - 4) + ".txt")) ==
+                read_all(folder / "monitor" / (name.substr(0, name.size() - 4) + ".txt")));
+    }
+    REQUIRE(pictures == 10);
+}
+
+TEST_CASE("a run with --paper and no --handout is refused: exit 2 and what to give", "[cli][handout]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    const auto result = test::run_apcs({"--keys", (folder / "lesson.keys").string(), "--workdir", folder.path().string(),
+                                        "--paper"});
+    REQUIRE(result.status == 2);
+    REQUIRE(result.err == "apcs: --paper draws the pages of a handout black on white; give --handout DIR\n");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
+    REQUIRE(test::run_apcs({"path", (folder / "way1.dat").string(), "--paper"}).status == 2);
+}
+
+TEST_CASE("a handout folder that is a file or a FIFO, or an index.html that is a folder, is refused before the session",
+          "[cli][handout]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    std::ofstream(folder / "notes.txt") << "mine\n";
+    ::mkfifo((folder / "pipe").c_str(), 0644);
+    std::filesystem::create_directories(folder / "hand/index.html");
+    const auto file = lesson_handout(folder, folder / "notes.txt");
+    REQUIRE(file.status == 1);
+    REQUIRE(file.err == (folder / "notes.txt").string() + ": is not a folder; expected a folder for the handout (--handout)\n");
+    REQUIRE(read_all(folder / "notes.txt") == "mine\n");
+    const auto fifo = lesson_handout(folder, folder / "pipe");
+    REQUIRE(fifo.status == 1);
+    REQUIRE(fifo.err == (folder / "pipe").string() + ": is not a folder; expected a folder for the handout (--handout)\n");
+    REQUIRE(std::filesystem::is_fifo(folder / "pipe"));
+    const auto index = lesson_handout(folder, folder / "hand");
+    REQUIRE(index.status == 1);
+    REQUIRE(index.err.starts_with((folder / "hand/index.html").string() + ": "));
+    REQUIRE(std::filesystem::is_directory(folder / "hand/index.html"));
+    // Nothing ran: no session file, no page.
+    REQUIRE_FALSE(std::filesystem::exists(folder / "ani1.dat"));
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
+    REQUIRE(file_names(folder / "hand") == std::vector<std::string>{"index.html"});
 }
 
 TEST_CASE("a handout's folder (--handout) is made one level deep, before the session starts", "[cli][handout]")
@@ -129,6 +254,6 @@ TEST_CASE("a handout's pages (--handout) are replaced as pictures are: same cont
     REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
     REQUIRE(read_all(page.string() + ".bak") == "old picture\n");
     REQUIRE(read_all(page.string() + ".b01") == "old text\n");
-    REQUIRE(read_all(page.string() + ".txt").starts_with("Please keyin the KEY1 filename!\n"));
+    REQUIRE(read_all(page.string() + ".txt").starts_with("+-----"));
     REQUIRE(std::filesystem::last_write_time(folder / "handout/02-w-opens-the-waypoint-editor-i.png") == first_written);
 }

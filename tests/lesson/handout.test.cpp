@@ -75,3 +75,27 @@ TEST_CASE("a handout page keeps a Thai caption's combining marks: in its text, a
     Painter(expected).text({0, 0}, " ???? x");
     REQUIRE(drawn == expected);
 }
+
+TEST_CASE("an empty prompt is the text console with a question and nothing typed", "[session][handout]")
+{
+    SessionScreen console;
+    console.text = CellGrid(80, 24);
+    REQUIRE(is_empty_prompt(console));
+    console.text.put_text(0, 0, "Please keyin the KEY1 filename!");
+    console.text.put_text(0, 1, "_");
+    REQUIRE(is_empty_prompt(console));
+    // An answer begun, or a second line of text (what the earlier steps printed), is not empty.
+    SessionScreen typed = console;
+    typed.text.put_text(0, 1, "key1.dat_");
+    REQUIRE_FALSE(is_empty_prompt(typed));
+    SessionScreen answered = console;
+    answered.text.put_text(0, 0, "Please keyin the KEY1 filename!");
+    answered.text.put_text(0, 1, "key1.dat");
+    answered.text.put_text(0, 2, "Please keyin the KEY2 filename!");
+    answered.text.put_text(0, 3, "_");
+    REQUIRE_FALSE(is_empty_prompt(answered));
+    // Graphics mode is never an empty prompt, whatever it shows.
+    SessionScreen graphics;
+    graphics.graphics = true;
+    REQUIRE_FALSE(is_empty_prompt(graphics));
+}

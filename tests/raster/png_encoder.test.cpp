@@ -97,3 +97,26 @@ TEST_CASE("a monitor PNG is 720x522: every raster row 1.5 pixels tall, rows repe
     for (std::size_t row = 1; row < shown.size(); ++row)
         REQUIRE(shown[row] - shown[row - 1] <= 1);
 }
+
+TEST_CASE("a PNG in paper ink is black on white: a lit pixel 0, an unlit one 255", "[raster][png]")
+{
+    Bitmap bitmap(16, 4);
+    bitmap.set(3, 1, true);
+    const std::optional<std::string> monitor = encode_png(bitmap, PngShape::raw);
+    const std::optional<std::string> paper = encode_png(bitmap, PngShape::raw, PngInk::paper);
+    REQUIRE(monitor);
+    REQUIRE(paper);
+    const Decoded on_monitor = decode(*monitor);
+    const Decoded on_paper = decode(*paper);
+    REQUIRE(on_paper.width == 16);
+    REQUIRE(on_paper.height == 4);
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 16; ++x) {
+            const std::size_t at = static_cast<std::size_t>(y * 16 + x);
+            const bool lit = x == 3 && y == 1;
+            CAPTURE(x, y);
+            REQUIRE(on_monitor.pixels[at] == (lit ? 255 : 0));
+            REQUIRE(on_paper.pixels[at] == (lit ? 0 : 255));
+        }
+    }
+}

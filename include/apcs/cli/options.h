@@ -43,6 +43,7 @@ struct CommonOptions {
     std::optional<std::filesystem::path> record;
     ReplayPace pace; // --pace: how a --keys replay plays on a terminal
     std::optional<std::filesystem::path> handout; // --handout: each caption's screen, as PNG and text
+    bool paper = false;                           // --paper: the handout's pictures black on white
     std::optional<std::filesystem::path> png;     // as the monitor showed it, 720x522
     std::optional<std::filesystem::path> png_raw; // the bare 720x348 raster
     std::optional<std::filesystem::path> svg;     // the same drawing as vector lines

@@ -33,6 +33,12 @@ std::string handout_file_stem(int number, std::size_t count, std::string_view ca
 // for each step and what the lessons' golden screens hold.
 std::string screen_text(const SessionScreen& screen, GlyphSet glyphs);
 
+// Whether `screen` (the session's, no caption laid on) is an empty prompt: the text console showing
+// a question and nothing else, its answer not begun (a row holding only the cursor '_' counts as
+// empty). A handout has no page of it: it says nothing a caption could be about (issue 42: the
+// opening KEY1 prompt was page 01).
+bool is_empty_prompt(const SessionScreen& screen);
+
 // The screen as the Hercules card showed it: graphics mode's picture, or the text console's rows
 // drawn in the 9x14 font on an empty raster (80 columns fill its 720 pixels, 24 rows its top 336).
 GraphicsScreen screen_picture(const SessionScreen& screen);

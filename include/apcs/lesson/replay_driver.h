@@ -95,6 +95,7 @@ private:
     void settle();
     void after_change();
     void tell_captions();
+    void end_caption();
     void wait_at_goal();
     void judge_goals(std::size_t played);
     // The session neither splits nor animates: a scripted key may play, a caption be reached.
@@ -143,6 +144,7 @@ private:
     std::string m_run_label; // the badge's label while a run plays: "PGDN"
     bool m_end_told = false;
     std::size_t m_captions_told = 0;
+    std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;
     std::string m_goal_said;
     bool m_step_held = false;

@@ -17,8 +17,13 @@ struct ReplayHooks {
     // Caption `index` of the script is reached: `shown` is the screen a paced replay shows it over,
     // the caption laid on (with_caption). Called once per caption, in the script's order, when the
     // session has played the keys before it and is neither splitting nor animating (the moment the
-    // headless replay reaches it too). --handout writes its pages here.
+    // headless replay reaches it too). The headless transcript prints the caption here.
     std::function<void(std::size_t index, const SessionScreen& shown)> caption_reached;
+    // Caption `index` has played its keys: `screen` is the session's screen (no caption laid on)
+    // once they have, when the next caption is reached or the script's keys are all played (Esc
+    // too), the session neither splitting nor animating. Called once per caption reached, in order,
+    // so each caption's screen shows what the caption says. --handout writes its pages here.
+    std::function<void(std::size_t index, const SessionScreen& screen)> caption_ended;
     // A line for apcs.log ("goal skipped").
     std::function<void(const std::string& line)> log;
     // PgUp and Home (SPEC §3.1): a new session on the inputs as they were when the replay started,

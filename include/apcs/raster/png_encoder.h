@@ -18,6 +18,14 @@ enum class PngShape {
     raw,
 };
 
+// Which way round a picture's pixels are lit.
+enum class PngInk {
+    // Lit pixels white on black, as the monitor showed them.
+    monitor,
+    // Lit pixels black on white: ink on paper, for printing (--handout with --paper).
+    paper,
+};
+
 // The rows of a picture of `raster_rows` rows in `shape`.
 int png_rows(int raster_rows, PngShape shape);
 
@@ -25,7 +33,7 @@ int png_rows(int raster_rows, PngShape shape);
 int raster_row_of(int row, PngShape shape);
 
 // The bitmap as a PNG file's bytes (libpng): 8-bit greyscale, lit pixels white on black like the
-// monitor. Empty on a libpng failure.
-std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape);
+// monitor, or black on white for `PngInk::paper`. Empty on a libpng failure.
+std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape, PngInk ink = PngInk::monitor);
 
 } // namespace apcs

@@ -1,0 +1,64 @@
+#include "apcs/lesson/handout_index.h"
+
+namespace apcs {
+
+namespace {
+
+// Print rules: the sheet's printable height less its margins holds two pictures of at most 10.5 cm
+// and their captions on A4 (297 mm) and on US Letter (279 mm) alike.
+constexpr std::string_view index_style = R"(<style>
+body { font-family: sans-serif; margin: 1em; color: black; background: white; }
+h1 { font-size: 14pt; margin: 0 0 0.5em; }
+figure { margin: 0 0 1.5em; break-inside: avoid; page-break-inside: avoid; }
+figure img { display: block; max-width: 100%; max-height: 10.5cm; width: auto; height: auto; }
+figcaption { font-size: 11pt; margin-top: 0.3em; }
+@page { margin: 12mm; }
+@media print {
+  body { margin: 0; }
+  figure:nth-of-type(2n) { break-after: page; page-break-after: always; }
+  figure:last-of-type { break-after: auto; page-break-after: auto; }
+}
+</style>
+)";
+
+std::string figure_html(const HandoutPage& page)
+{
+    const std::string caption = html_escaped(page.caption);
+    return "<figure>\n<img src=\"" + html_escaped(page.picture) + "\" alt=\"" + caption + "\">\n<figcaption>" +
+           std::to_string(page.number) + ". " + caption + "</figcaption>\n</figure>\n";
+}
+
+} // namespace
+
+std::string html_escaped(std::string_view text)
+{
+    std::string escaped;
+    escaped.reserve(text.size());
+    for (const char character : text) {
+        switch (character) {
+        case '&': escaped += "&amp;"; break;
+        case '<': escaped += "&lt;"; break;
+        case '>': escaped += "&gt;"; break;
+        case '"': escaped += "&quot;"; break;
+        case '\'': escaped += "&#39;"; break;
+        default: escaped += character;
+        }
+    }
+    return escaped;
+}
+
+std::string handout_index_html(std::string_view title, const std::vector<HandoutPage>& pages)
+{
+    const std::string heading = html_escaped(title);
+    std::string html = "<!DOCTYPE html>\n<html>\n<head>\n<meta charset=\"utf-8\">\n<title>" + heading + "</title>\n";
+    html += index_style;
+    html += "</head>\n<body>\n<h1>" + heading + "</h1>\n";
+    if (pages.empty())
+        html += "<p>The replay showed no caption, so the handout has no page.</p>\n";
+    for (const HandoutPage& page : pages)
+        html += figure_html(page);
+    html += "</body>\n</html>\n";
+    return html;
+}
+
+} // namespace apcs
