@@ -90,12 +90,13 @@ TEST_CASE("a caption ends once its keys have played: T's page has the tangents' 
     const KeyScript script = script_of(test::read_all(n_to_l / "lesson.keys"));
     const CaptionLog log = headless_captions(script);
     REQUIRE(log.events == each_reached_then_ended(script.captions.size()));
-    // Caption 4, "T shows the tangents", plays T 8: the message line then names DS and DD.
-    REQUIRE(script.captions[3].text.starts_with("T shows the tangents"));
-    REQUIRE(log.reached[3].find("DS 0.00") == std::string::npos);
-    REQUIRE(log.ended[3].find(" point 2  DS 0.00 0.00 5.00  DD 0.00 0.00 5.00\n") != std::string::npos);
-    // Caption 1 plays the opening answers: its page is the path screen, not the empty KEY1 prompt.
-    REQUIRE(log.reached[0].starts_with("Please keyin the KEY1 filename!\n_\n"));
+    // Caption 3, "T shows the tangents", plays T 8: the message line then names DS and DD.
+    REQUIRE(script.captions[2].text.starts_with("T shows the tangents"));
+    REQUIRE(log.reached[2].find("DS 0.00") == std::string::npos);
+    REQUIRE(log.ended[2].find(" point 2  DS 0.00 0.00 5.00  DD 0.00 0.00 5.00\n") != std::string::npos);
+    // The opening answers play before START: caption 1 is reached over the path screen already.
+    REQUIRE(script.preamble_end > 0);
+    REQUIRE(log.reached[0].starts_with("+-----"));
     REQUIRE(log.ended[0].starts_with("+-----"));
     // A caption ends where the next is reached; the last, with no keys, where it was reached.
     for (std::size_t index = 0; index + 1 < script.captions.size(); ++index) {
