@@ -69,16 +69,19 @@ char32_t line_glyph(int direction, LineStyle style, GlyphSet glyphs)
     }
 }
 
-char32_t head_glyph(int direction, GlyphSet glyphs)
+char32_t head_glyph(int direction, LineStyle style, GlyphSet glyphs)
 {
     if (glyphs == GlyphSet::ascii) {
         // ASCII has no slanted arrows: the nearer of right, up, left, down (a slant leans right or left).
         static constexpr char32_t heads[] = {U'>', U'>', U'^', U'<', U'<', U'<', U'v', U'>'};
         return heads[direction];
     }
+    // A dashed arrow's head is double (⇒ ⇗ ⇑ …), so that one too short for a gap still reads apart.
     static constexpr char32_t heads[] = {U'\u2192', U'\u2197', U'\u2191', U'\u2196',
                                          U'\u2190', U'\u2199', U'\u2193', U'\u2198'};
-    return heads[direction];
+    static constexpr char32_t double_heads[] = {U'\u21D2', U'\u21D7', U'\u21D1', U'\u21D6',
+                                                U'\u21D0', U'\u21D9', U'\u21D3', U'\u21D8'};
+    return style == LineStyle::solid ? heads[direction] : double_heads[direction];
 }
 
 // The cells an arrow must leave: those of control points, the local-control arrow and goals.
@@ -120,7 +123,7 @@ void lay_cell_arrows(CellGrid& grid, const GraphicsScreen& screen, CellArea area
         for (std::size_t k = 0; k + 1 < cells.size(); ++k)
             if (arrow.style == LineStyle::solid || (cells.size() - 1 - k) % 2 == 0)
                 lay_cell(grid, cells[k], line_glyph(direction, arrow.style, glyphs), arrow.role);
-        lay_cell(grid, cells.back(), head_glyph(direction, glyphs), arrow.role);
+        lay_cell(grid, cells.back(), head_glyph(direction, arrow.style, glyphs), arrow.role);
     }
 }
 

@@ -44,7 +44,7 @@ TEST_CASE("a solid and a dashed tangent arrow differ in glyph and end in a head 
     for (const GlyphSet glyphs : {GlyphSet::braille, GlyphSet::blocks}) {
         const CellGrid grid = render_cells(screen, {80, 24}, glyphs);
         REQUIRE(cells(grid, 6, 10, 20) == "x─────────→");
-        REQUIRE(cells(grid, 8, 10, 20) == "┄ ┄ ┄ ┄ ┄ →");
+        REQUIRE(cells(grid, 8, 10, 20) == "┄ ┄ ┄ ┄ ┄ ⇒");
     }
 }
 

@@ -12,7 +12,8 @@ namespace apcs {
 // Lays each of the screen's arrows: its line's glyph for its direction from its tail's cell to its
 // tip's (solid in every cell, dashed in every other, skipping cells that hold a control point, the
 // local-control arrow or a goal), and an arrowhead in the last such cell. ASCII: - | / \ and the
-// heads > < ^ v; the other sets: box-drawing lines (dashed ┄ ┆) and the arrows → ↗ ↑ … .
+// heads > < ^ v; the other sets: box-drawing lines (dashed ┄ ┆) and the arrows → ↗ ↑ … (dashed:
+// the double arrows ⇒ ⇗ ⇑ …).
 void lay_cell_arrows(CellGrid& grid, const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
 
 // Lays each of the screen's boxes on the cells its rectangle's edges fall in, in line characters
