@@ -1,5 +1,6 @@
 #include "apcs/raster/graphics_screen.h"
 
+#include "apcs/raster/cell_shapes.h"
 #include "apcs/raster/font.h"
 #include "apcs/raster/painter.h"
 #include "apcs/raster/short_screen.h"
@@ -114,6 +115,9 @@ void lay_marks(CellGrid& grid, const GraphicsScreen& screen, CellArea area, Glyp
         for (const PixelMark& mark : screen.marks) {
             if (mark_layer(mark.kind) != layer || !screen.bitmap.contains(mark.at.x, mark.at.y))
                 continue;
+            // Where arrows are laid as characters their heads stand for the free ends.
+            if (mark.kind == MarkKind::tangent_end && !screen.arrows.empty())
+                continue;
             int column = cell_of_pixel(mark.at.x, screen.bitmap.width(), area.columns);
             const int row = cell_of_pixel(mark.at.y, screen.bitmap.height(), area.rows);
             if (mark.kind == MarkKind::arrow)
@@ -154,6 +158,20 @@ void lay_ticked_lines(CellGrid& grid, const GraphicsScreen& screen, CellArea are
 std::size_t pixel_index(const Bitmap& bitmap, int x, int y)
 {
     return static_cast<std::size_t>(y) * static_cast<std::size_t>(bitmap.width()) + static_cast<std::size_t>(x);
+}
+
+// The raster a terminal maps to cells: without the arrows' pixels where arrows are laid as
+// characters, or their dots would blur the characters' cells' neighbours.
+Bitmap raster_for_cells(const GraphicsScreen& screen)
+{
+    Bitmap raster = screen.bitmap;
+    if (screen.arrows.empty() || screen.pixel_roles.empty())
+        return raster;
+    for (int y = 0; y < raster.height(); ++y)
+        for (int x = 0; x < raster.width(); ++x)
+            if (screen.pixel_roles[pixel_index(raster, x, y)] == ColourRole::tangent)
+                raster.set(x, y, false);
+    return raster;
 }
 
 // Each cell of the raster in the role of its lit pixel of highest priority.
@@ -247,10 +265,13 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
     if (is_short_area(area))
         return without_row(render_cells(on_short_screen(screen), {area.columns, text_screen_rows}, glyphs, cache),
                            text_screen_rows - 1);
-    CellGrid grid = map_to_cells(screen.bitmap, area, glyphs, cache);
+    CellGrid grid = screen.arrows.empty() ? map_to_cells(screen.bitmap, area, glyphs, cache)
+                                          : map_to_cells(raster_for_cells(screen), area, glyphs, cache);
     lay_roles_under_marks(grid, screen, area);
     lay_ticked_lines(grid, screen, area, glyphs);
+    lay_cell_boxes(grid, screen, area, glyphs);
     lay_marks(grid, screen, area, glyphs);
+    lay_cell_arrows(grid, screen, area, glyphs);
     for (const TextLine& line : screen.text) {
         // A text cell goes where the centre of its 9x14 pixels falls, so that text lines up with
         // what the raster draws beside it (a staff line and its label) at any area size.

@@ -99,6 +99,16 @@ GraphicsScreen on_short_screen(const GraphicsScreen& screen)
     moved.marks = screen.marks;
     for (PixelMark& mark : moved.marks)
         mark.at.y = short_screen_y(mark.at.y);
+    moved.arrows = screen.arrows;
+    for (CellArrow& arrow : moved.arrows) {
+        arrow.tail.y = short_screen_y(arrow.tail.y);
+        arrow.tip.y = short_screen_y(arrow.tip.y);
+    }
+    moved.boxes = screen.boxes;
+    for (PixelRect& box : moved.boxes) {
+        box.top = short_screen_y(box.top);
+        box.bottom = short_screen_y(box.bottom);
+    }
     moved.text = screen.text;
     for (TextLine& line : moved.text)
         line.row = short_text_row(line.row);

@@ -2,11 +2,13 @@
 
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/speed_law.h"
+#include "apcs/raster/screen_layout.h"
 #include "apcs/screens/path_screen.h"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <utility>
 
 namespace apcs {
 
@@ -32,13 +34,53 @@ void arrow_head(Painter& painter, DevicePoint tail, DevicePoint tip)
     }
 }
 
-void world_arrow(Painter& painter, const ViewTransform& view, const Vec3& from, const Vec3& to, LineStyle style)
+// The part of a segment inside a rectangle; `inside` false when it misses it.
+struct ClippedSegment {
+    DevicePoint tail;
+    DevicePoint tip;
+    bool inside = false;
+};
+
+// The part of the segment from `tail` to `tip` inside `area` (Liang-Barsky).
+ClippedSegment clipped(DevicePoint tail, DevicePoint tip, const PixelRect& area)
+{
+    const double dx = tip.x - tail.x;
+    const double dy = tip.y - tail.y;
+    double enter = 0.0;
+    double leave = 1.0;
+    const std::pair<double, double> sides[] = {{-dx, tail.x - area.left},
+                                               {dx, area.right - 1 - tail.x},
+                                               {-dy, tail.y - area.top},
+                                               {dy, area.bottom - 1 - tail.y}};
+    for (const auto& [towards, room] : sides) {
+        if (towards == 0.0) {
+            if (room < 0.0)
+                return {};
+            continue;
+        }
+        const double at = room / towards;
+        if (towards < 0.0)
+            enter = std::max(enter, at);
+        else
+            leave = std::min(leave, at);
+    }
+    if (enter > leave)
+        return {};
+    return {{tail.x + enter * dx, tail.y + enter * dy}, {tail.x + leave * dx, tail.y + leave * dy}, true};
+}
+
+void world_arrow(GraphicsScreen& screen, Painter& painter, const ViewTransform& view, const Vec3& from, const Vec3& to,
+                 LineStyle style)
 {
     const DevicePoint tail = view.to_device(from);
     const DevicePoint tip = view.to_device(to);
     int phase = 0;
     painter.styled_line(tail.rounded(), tip.rounded(), style, phase);
     arrow_head(painter, tail, tip);
+    // On a terminal the part inside the view area, so that its characters never land on the boundary.
+    const ClippedSegment shown = clipped(tail, tip, layout::view_area);
+    if (shown.inside)
+        screen.arrows.push_back({shown.tail.rounded(), shown.tip.rounded(), style, ColourRole::tangent});
 }
 
 std::string vector_text(const Vec3& vector)
@@ -56,12 +98,12 @@ void draw_tangent_arrows(GraphicsScreen& screen, Painter& painter, std::span<con
         const PointTangents tangents = tangents_at(segments, point);
         if (tangents.outgoing) {
             const Vec3 tip = at + scale * *tangents.outgoing;
-            world_arrow(painter, view, at, tip, LineStyle::solid);
+            world_arrow(screen, painter, view, at, tip, LineStyle::solid);
             screen.marks.push_back({view.to_device(tip).rounded(), MarkKind::tangent_end, CellStyle::plain, ColourRole::tangent});
         }
         if (tangents.incoming) {
             const Vec3 tail = at - scale * *tangents.incoming;
-            world_arrow(painter, view, tail, at, LineStyle::dashed);
+            world_arrow(screen, painter, view, tail, at, LineStyle::dashed);
             screen.marks.push_back({view.to_device(tail).rounded(), MarkKind::tangent_end, CellStyle::plain, ColourRole::tangent});
         }
     }
@@ -125,8 +167,9 @@ namespace {
 constexpr int inset_columns = 24;
 constexpr int inset_rows = 8;
 
-// The inset whose box starts in text row `row` at text column `column`: its box, the title's
-// cell and the plot (below the title, right of the distance ticks).
+// The inset whose box starts in text row `row` at text column `column`: its box (the title on its
+// top edge, "frame" on its bottom edge), the axis names' cells and the plot (from the row under
+// "distance" to the row above the bottom edge, right of the distance ticks' column).
 struct LawInset {
     PixelRect box;
     int title_row = 0;
@@ -139,10 +182,13 @@ LawInset inset_at(int row, int column)
     const int left = column * hercules::cell_width;
     const PixelRect box{left, hercules::text_row_top(row) + 1, left + inset_columns * hercules::cell_width - 1,
                         hercules::text_row_top(row + inset_rows) - 1};
-    const PixelRect plot{left + 2 * hercules::cell_width, hercules::text_row_top(row + 2) + 2,
-                         box.right - hercules::cell_width, box.bottom - 5};
-    return {box, row + 1, column + 1, plot};
+    const PixelRect plot{left + 2 * hercules::cell_width + hercules::cell_width / 2, hercules::text_row_top(row + 2) + 3,
+                         box.right - hercules::cell_width, hercules::text_row_top(row + inset_rows - 1) - 3};
+    return {box, row, column + 1, plot};
 }
+
+// The text row a raster pixel row lies in.
+int text_row_of(int y) { return y * hercules::text_rows / hercules::screen_height; }
 
 // Top rows 1-8 or 9-16, columns 1-24 or 55-78: inside the boundary, clear of the message line.
 std::vector<LawInset> insets()
@@ -178,6 +224,7 @@ void clear_box(GraphicsScreen& screen, const PixelRect& box)
         for (int x = box.left; x < box.right; ++x)
             screen.bitmap.set(x, y, false);
     std::erase_if(screen.marks, [&](const PixelMark& mark) { return box.contains(mark.at); });
+    std::erase_if(screen.arrows, [&](const CellArrow& arrow) { return box.contains(arrow.tail) || box.contains(arrow.tip); });
 }
 
 std::string inset_title(const SpanTiming& timing, std::size_t span, std::size_t span_count)
@@ -204,15 +251,25 @@ void draw_law(GraphicsScreen& screen, const LawInset& inset, const EvaluatedPath
         painter.line(plot_point(plot, from, acceleration_distance_fraction(from, timing.span.acceleration)),
                      plot_point(plot, to, acceleration_distance_fraction(to, timing.span.acceleration)));
     }
+    // The distances as ticks: a '-' left of the distance axis in each text row one falls in, so
+    // that they read as ticks at any size (drawn as pixels, they merged with the box and the axis).
+    std::vector<int> tick_rows;
     for (const LawTick& tick : law_ticks(path, span)) {
         screen.marks.push_back({plot_point(plot, tick.frame_fraction, tick.distance_fraction), MarkKind::inbetween,
                                 CellStyle::plain, ColourRole::law});
-        const PixelPoint on_axis = plot_point(plot, 0, tick.distance_fraction);
-        painter.line({on_axis.x - 6, on_axis.y}, {on_axis.x - 3, on_axis.y});
+        const int row = text_row_of(plot_point(plot, 0, tick.distance_fraction).y);
+        if (std::find(tick_rows.begin(), tick_rows.end(), row) == tick_rows.end())
+            tick_rows.push_back(row);
     }
     paint_layer(screen, layer, ColourRole::law);
-    screen.text.push_back({inset.title_column, inset.title_row, inset_title(timing, span, path.span_timings.size()),
-                           CellStyle::plain, ColourRole::law});
+    const auto law_text = [&](int column, int row, std::string text) {
+        screen.text.push_back({column, row, std::move(text), CellStyle::plain, ColourRole::law});
+    };
+    for (const int row : tick_rows)
+        law_text(inset.title_column, row, "-");
+    law_text(inset.title_column, inset.title_row, inset_title(timing, span, path.span_timings.size()));
+    law_text(inset.title_column, inset.title_row + 1, "distance");
+    law_text(inset.title_column + inset_columns - 9, inset.title_row + inset_rows - 1, "frame");
 }
 
 } // namespace

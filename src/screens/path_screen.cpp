@@ -200,6 +200,34 @@ void pre_draw(GraphicsScreen& screen, std::span<const PixelMark> marks)
     screen.marks.insert(screen.marks.end(), marks.begin(), marks.end());
 }
 
+// The picked region boxed on a terminal (pictures box each of its x's): a box a text cell outside
+// its marks, on the boundary where it reaches it. Global
+// control picks no region (every point is its own), so nothing is boxed there.
+void box_region(GraphicsScreen& screen, const PathScreenContent& content)
+{
+    const std::optional<ControlRegion>& region = content.region;
+    if (!region || (region->first == 0 && region->last + 1 >= content.control_points.size()))
+        return;
+    constexpr int far = std::numeric_limits<int>::max();
+    PixelRect box{far, far, -far, -far};
+    for (const PixelMark& mark : screen.marks) {
+        if (mark.kind != MarkKind::control_point || mark.style != CellStyle::reverse ||
+            !layout::inside_boundary.contains(mark.at))
+            continue;
+        box = {std::min(box.left, mark.at.x), std::min(box.top, mark.at.y), std::max(box.right, mark.at.x),
+               std::max(box.bottom, mark.at.y)};
+    }
+    if (box.left == far)
+        return;
+    // Up to the boundary: the view area leaves one cell beside it, where a box around a point at
+    // its edge must go rather than through the point.
+    const PixelRect& area = layout::drawing_area;
+    constexpr int across = hercules::cell_width;
+    constexpr int down = hercules::cell_height + 1; // a text row is 14.5 pixels
+    screen.boxes.push_back({std::max(box.left - across, area.left), std::max(box.top - down, area.top),
+                            std::min(box.right + across, area.right - 1), std::min(box.bottom + down, area.bottom - 1)});
+}
+
 // The arrow of Scan_Control_Point: beside its control point, or at the top-left before it moves.
 void draw_arrow(GraphicsScreen& screen, const PathScreenContent& content, const ViewTransform& view)
 {
@@ -286,6 +314,7 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         return (mark.kind == MarkKind::control_point || mark.kind == MarkKind::inbetween) &&
                !layout::inside_boundary.contains(mark.at);
     });
+    box_region(screen, content);
     draw_arrow(screen, content, view);
     if (content.goal_point) {
         const PixelPoint at = view.to_device(*content.goal_point).rounded();

@@ -16,8 +16,9 @@ cp "$data"/key1.dat "$data"/key2.dat "$data"/way1.dat "$work"/
 # Up to the staff of global control with way1.dat, then T.
 printf 'ENTER\nENTER\nENTER\nTEXT way1.dat\nENTER\nENTER\n' > "$work/graphics.keys"
 
-# The foreground colours (SGR) of the cells of session $1 holding '+' (the tangents' ends) and of
-# the boundary's top-left corner (the monitor's colour), as "PLUS_COLOURS|CORNER_COLOUR".
+# The foreground colours (SGR) of the cells of session $1 holding a tangent arrow's head (> < v in
+# ascii, where ^ is a line glyph of the curve too; arrows elsewhere) and of the boundary's top-left corner (the monitor's colour), as
+# "HEAD_COLOURS|CORNER_COLOUR".
 colours_of() {
   tmux -L "$socket" capture-pane -e -p -t "$1" | python3 -c '
 import re, sys
@@ -35,7 +36,7 @@ for row, line in enumerate(sys.stdin.read().split("\n")[:17]):
                 elif c == "38" and i + 2 < len(codes) and codes[i + 1] == "5": fg = "38;5;" + codes[i + 2]; i += 2
                 i += 1
             continue
-        if token == "+" and row > 0: plus.add(fg)
+        if token in "><v\u2190\u2191\u2192\u2193\u2196\u2197\u2198\u2199\u21d0\u21d1\u21d2\u21d3\u21d6\u21d7\u21d8\u21d9" and row > 0: plus.add(fg)
         if row == 0 and column == 0: corner = fg
         column += 1
 print(",".join(sorted(plus)) + "|" + str(corner))'
@@ -53,9 +54,9 @@ for glyphs in braille ascii; do
   seen=$(colours_of "colour-$glyphs")
   plus=${seen%|*}
   corner=${seen#*|}
-  [ -n "$plus" ] || fail_showing "$glyphs: no tangent end (+) on the screen" "colour-$glyphs"
+  [ -n "$plus" ] || fail_showing "$glyphs: no tangent arrow head on the screen" "colour-$glyphs"
   [ "$corner" = default ] || fail_showing "$glyphs: the boundary is in $corner, not the monitor's colour" "colour-$glyphs"
-  case ",$plus," in *,default,*) fail_showing "$glyphs: a tangent end is in the curve's colour ($plus)" "colour-$glyphs" ;; esac
+  case ",$plus," in *,default,*) fail_showing "$glyphs: a tangent arrow head is in the curve's colour ($plus)" "colour-$glyphs" ;; esac
   passed=$((passed + 1))
 done
 

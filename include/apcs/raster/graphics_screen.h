@@ -53,6 +53,18 @@ struct TickedLine {
     int tick_half_height = 0; // a tick runs from y − this to y + this
 };
 
+// A tangent arrow of the path screen (T), from `tail` to `tip` in raster pixels. Pictures draw its
+// pixels into the raster; a terminal lays it as characters at any size, so that without colour it
+// still reads apart from the curve and from the other style: in each cell from tail to tip the
+// line's glyph for its direction (solid: every cell; dashed: every other), and an arrowhead
+// pointing its way in the last cell that holds no control point.
+struct CellArrow {
+    PixelPoint tail;
+    PixelPoint tip;
+    LineStyle style = LineStyle::solid;
+    ColourRole role = ColourRole::tangent;
+};
+
 // What graphics mode shows: the 720x348 raster of lines, the ticked lines, the marks and the text
 // over it. `strokes` holds the raster's lines as vector lines where the drawing recorded them
 // (Painter::record_into), for pictures that scale (SVG).
@@ -62,6 +74,12 @@ struct GraphicsScreen {
     std::vector<TextLine> text;
     std::vector<PixelMark> marks;
     std::vector<Stroke> strokes;
+    // Tangent arrows: their pixels are in the raster too (pictures), under the role `role`;
+    // render_cells lays them as characters instead.
+    std::vector<CellArrow> arrows;
+    // Boxes a terminal draws in line characters on the cells each rectangle's edges fall in (the
+    // picked region, SPEC §7.2); pictures box each point instead.
+    std::vector<PixelRect> boxes;
     // The colour role of each raster pixel (row by row), empty while every lit pixel is the
     // monitor's; paint_layer fills it. Pictures ignore it (SPEC §7.1: the monitor had one colour).
     std::vector<ColourRole> pixel_roles;

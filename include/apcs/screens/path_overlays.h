@@ -20,6 +20,8 @@ namespace apcs {
 // The tangent arrows: at every control point DD_k leaves it (solid) and DS_k arrives at it
 // (dashed), each drawn as the tangent times `scale` in world units, with a head at its tip and a
 // `+` mark at its free end (DD's tip, DS's tail), the handles a class watches split and shrink.
+// Each arrow is also kept in screen.arrows, so that a terminal lays it as characters (the lines
+// and heads tell DD from DS without colour; the heads stand for the `+` marks there).
 void draw_tangent_arrows(GraphicsScreen& screen, Painter& painter, std::span<const HermiteSegment> segments,
                          const ViewTransform& view, double scale);
 
@@ -51,9 +53,10 @@ struct LawTick {
 std::vector<LawTick> law_ticks(const EvaluatedPath& path, std::size_t span);
 
 // Draws the inset over what is under it, in the corner that covers the fewest control points,
-// then the fewest in-between marks, then the fewest lit pixels: a box, the law's curve (distance
-// against frame), the in-betweens on it, their distances as ticks on the distance axis, and a
-// title with the span's acceleration. Returns the box.
+// then the fewest in-between marks, then the fewest lit pixels: a box with a title on its top edge
+// (the span's acceleration), the law's curve (distance against frame, the axes named "distance"
+// and "frame"), the in-betweens on it, and their distances as '-' ticks left of the distance axis,
+// one a text row. Returns the box.
 PixelRect draw_law_inset(GraphicsScreen& screen, const EvaluatedPath& path, std::size_t span);
 
 } // namespace apcs
