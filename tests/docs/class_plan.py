@@ -82,16 +82,17 @@ def tmux(*args):
     return subprocess.run(["tmux", *args], capture_output=True, text=True).stdout
 
 
-def settled_screen(session):
-    """The pane once it has not changed for 0.4 s (the replay plays a PgDn's keys at once)."""
+def settled_screen(session, quiet):
+    """The pane once it has not changed for `quiet` seconds (the replay plays a PgDn's keys at once;
+    an animation changes the pane once a frame, so a presenter waits for its end)."""
     screen, since = tmux("capture-pane", "-p", "-t", session), time.time()
-    deadline = time.time() + 30
+    deadline = time.time() + 120
     while time.time() < deadline:
         time.sleep(0.1)
         now = tmux("capture-pane", "-p", "-t", session)
         if now != screen:
             screen, since = now, time.time()
-        elif time.time() - since > 0.4:
+        elif time.time() - since > quiet:
             return screen
     return screen
 
@@ -106,12 +107,14 @@ def play(apcs, folder, script, options, presses, glyphs):
         tmux("new-session", "-d", "-s", session, "-x", "80", "-y", "24", "-c", work,
              f"LANG=C.UTF-8 {command}; sleep 60")
         seen = set()
+        delay = options[options.index("--delay") + 1] if "--delay" in options else "100"
+        quiet = max(0.4, int(delay) / 1000 + 0.5)
         try:
-            screen = settled_screen(session)
+            screen = settled_screen(session, quiet)
             seen.add(screen.rstrip("\n").split("\n")[-1].strip())
             for key in presses:
                 tmux("send-keys", "-t", session, key)
-                screen = settled_screen(session)
+                screen = settled_screen(session, quiet)
                 seen.add(screen.rstrip("\n").split("\n")[-1].strip())
         finally:
             tmux("kill-session", "-t", session)
