@@ -83,7 +83,7 @@ done
 wait_for surface "A key plays the frames"
 keys surface Space
 keys surface Space
-wait_for surface "Dotted: 12 in-betweens"
+wait_for surface "Dotted: in-between 6 of 12"
 keys surface C-c
 wait_for surface "EXITED=130"
 # The slide-deck keys (SPEC 3.1): the lesson starts after its START line, PgDn goes to the next
