@@ -287,8 +287,9 @@ void ReplayDriver::play_scripted()
     if (!mid_step()) {
         m_step_end = m_played + step_length(m_script, m_played);
         m_step_label = step_label(m_script, m_played);
-        if (m_played < m_run_to && !m_run_label.empty())
-            m_step_label = m_run_label;
+        // A run past the preamble is PgDn's (the preamble's own step is named START).
+        if (m_played < m_run_to && m_played >= m_script.preamble_end)
+            m_step_label = "PGDN";
     }
     to_session(m_script.events[m_played++]);
 }
@@ -361,7 +362,6 @@ void ReplayDriver::play_to_next_caption()
     const auto next = std::find_if(captions.begin(), captions.end(),
                                    [&](const ScriptCaption& caption) { return caption.before_event > m_played; });
     m_run_to = next == captions.end() ? m_script.events.size() : next->before_event;
-    m_run_label = "PGDN";
     m_step_held = false;
 }
 

@@ -141,7 +141,6 @@ private:
     std::size_t m_step_end = 0;
     std::size_t m_run_to = 0; // keys before it play unasked: the preamble, PgDn's run
     std::string m_step_label;
-    std::string m_run_label; // the badge's label while a run plays: "PGDN"
     bool m_end_told = false;
     std::size_t m_captions_told = 0;
     std::size_t m_captions_ended = 0;
