@@ -78,8 +78,23 @@ def animation_seconds(apcs, folder, script, options):
     return sum(int(frames) * int(ms) / 1000 for frames, ms in re.findall(r"animation: (\d+) frames, (\d+) ms each", log))
 
 
+# A tmux server of the plan's own: another test's server ending cannot take this one's sessions.
+SOCKET = f"apcs-class-plan-{os.getpid()}"
+BLANK_PANE = "\n" * 24
+
+
 def tmux(*args):
-    return subprocess.run(["tmux", *args], capture_output=True, text=True).stdout
+    return subprocess.run(["tmux", "-L", SOCKET, *args], capture_output=True, text=True).stdout
+
+
+def changed_screen(session, before, most_seconds=10):
+    """Waits until the pane differs from `before`: a loaded machine may take longer than the quiet
+    time to answer a key, and the screen before the key must not pass for the screen after it."""
+    deadline = time.time() + most_seconds
+    while time.time() < deadline:
+        if tmux("capture-pane", "-p", "-t", session) != before:
+            return
+        time.sleep(0.05)
 
 
 def settled_screen(session, quiet):
@@ -108,16 +123,18 @@ def play(apcs, folder, script, options, presses, glyphs):
              f"LANG=C.UTF-8 {command}; sleep 60")
         seen = set()
         delay = options[options.index("--delay") + 1] if "--delay" in options else "100"
-        quiet = max(0.4, int(delay) / 1000 + 0.5)
+        quiet = max(0.8, int(delay) / 1000 + 0.5)
         try:
+            changed_screen(session, BLANK_PANE)
             screen = settled_screen(session, quiet)
             seen.add(screen.rstrip("\n").split("\n")[-1].strip())
             for key in presses:
                 tmux("send-keys", "-t", session, key)
+                changed_screen(session, screen)
                 screen = settled_screen(session, quiet)
                 seen.add(screen.rstrip("\n").split("\n")[-1].strip())
         finally:
-            tmux("kill-session", "-t", session)
+            tmux("kill-server")
     return seen, screen.rstrip("\n").split("\n")[-1].strip()
 
 
@@ -139,7 +156,8 @@ def main():
         print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "
               f"last caption row: {last_row}")
         if unseen:
-            failures.append(f"{script}: captions never shown with those presses: {unseen}")
+            failures.append(f"{script}: captions never shown with those presses: {unseen}; "
+                            f"the caption rows seen: {sorted(seen)}")
         if not last_row.startswith(END_OF_SCRIPT):
             failures.append(f"{script}: the presses end at '{last_row}', not at the end of the script")
         total_presses += len(presses)
