@@ -5,6 +5,7 @@
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/base/overloaded.h"
 #include "apcs/screens/path_overlays.h"
+#include "apcs/screens/reference_curve.h"
 #include "apcs/raster/screen_layout.h"
 
 #include <algorithm>
@@ -318,6 +319,10 @@ bool PathEditor::update_views(const Command& command)
                                                                  : "ghost shown after the next staff key or waypoint edit";
                               return true;
                           },
+                          [&](const command::PinReference&) {
+                              pin_or_unpin_reference();
+                              return true;
+                          },
                           [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
                           [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
                           [&](const command::ChoosePoint& choose) {
@@ -329,6 +334,20 @@ bool PathEditor::update_views(const Command& command)
                           [](const auto&) { return false; },
                       },
                       command);
+}
+
+// C pins the curve as it is, labelled with the staff's values as they are (the region's, else the
+// first control point's, which the staff shows then), or unpins the one pinned.
+void PathEditor::pin_or_unpin_reference()
+{
+    if (m_picture->has_reference()) {
+        m_picture->unpin_reference();
+        m_notice = "reference A unpinned (C pins the curve as it is)";
+        return;
+    }
+    const std::string label = reference_label(region_staff().value_or(points().front().staff));
+    m_picture->pin_reference(label);
+    m_notice = label + " pinned: dashed, beside the curve (C unpins)";
 }
 
 PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)

@@ -165,7 +165,8 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
         content.message = m_picture->refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
-    content.ghost = m_show_ghost;
+    // A pinned reference is what the curve is compared with: the ghost steps aside meanwhile.
+    content.ghost = m_show_ghost && !m_picture->has_reference();
     if (m_show_tangents)
         content.tangent_scale = m_tangent_scale;
     if (m_show_law)

@@ -114,7 +114,23 @@ void PathPicture::set_view(const ViewTransform& view)
     m_point_marks = control_point_marks(m_point_runs, m_region);
     draw_curve();
     draw_ghost();
+    draw_reference();
 }
+
+namespace {
+
+// The curve of `points` alone in `view`: no in-betweens, so no arc lengths (seconds on 10^6 points).
+Bitmap curve_pixels(const ControlPoints& points, const PathSettings& settings, const ViewTransform& view)
+{
+    PathSettings curve_only = settings;
+    curve_only.inbetween_count = 0;
+    curve_only.spacing = Spacing::nearest;
+    CurveRaster curve;
+    curve.update(evaluate_path(points, curve_only).curve, view, layout::inside_boundary);
+    return curve.pixels();
+}
+
+} // namespace
 
 // The ghost's pixels in this view, from its path: the points now taken back over the last change.
 void PathPicture::draw_ghost()
@@ -123,13 +139,28 @@ void PathPicture::draw_ghost()
         return;
     ControlPoints before = points();
     m_ghost_back(before);
-    // Only the curve is drawn: no in-betweens, so no arc lengths (seconds on 10^6 points).
-    PathSettings curve_only = m_settings;
-    curve_only.inbetween_count = 0;
-    curve_only.spacing = Spacing::nearest;
-    CurveRaster ghost;
-    ghost.update(evaluate_path(before, curve_only).curve, *m_view, layout::inside_boundary);
-    m_ghost = ghost.pixels();
+    m_ghost = curve_pixels(before, m_settings, *m_view);
+}
+
+void PathPicture::pin_reference(std::string label)
+{
+    ++m_revision;
+    m_reference = Reference{points(), std::move(label), {}};
+    if (m_view)
+        draw_reference();
+}
+
+void PathPicture::unpin_reference()
+{
+    if (m_reference)
+        ++m_revision;
+    m_reference.reset();
+}
+
+void PathPicture::draw_reference()
+{
+    if (m_reference)
+        m_reference->pixels = curve_pixels(m_reference->points, m_settings, *m_view);
 }
 
 void PathPicture::drop_ghost()
@@ -159,7 +190,12 @@ void PathPicture::draw_curve()
 GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
 {
     const Bitmap* ghost = content.ghost && m_ghost ? &*m_ghost : nullptr;
-    return draw_path_screen(content, *m_view, KeptPathLayers{m_curve.pixels(), m_point_marks, ghost});
+    KeptPathLayers kept{m_curve.pixels(), m_point_marks, ghost, nullptr, {}};
+    if (m_reference) {
+        kept.reference = &m_reference->pixels;
+        kept.reference_label = m_reference->label;
+    }
+    return draw_path_screen(content, *m_view, kept);
 }
 
 void make_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change)

@@ -22,7 +22,7 @@ constexpr auto key_map = [] {
     constexpr KeyContexts console_questions{yes_to_go_on, enter_to_go_on, any_key};
     constexpr KeyContexts graphics_steps{any_key_graphics, control_choice, region_pick, staff,
                                          waypoints,        adjust_again,   animation};
-    // The steps of the path screen whose key line shows "K/T/G/O/Z view", and those with an undo.
+    // The steps of the path screen whose key line shows "K/T/G/O/Z/C view", and those with an undo.
     constexpr KeyContexts path_steps{control_choice, region_pick, staff, adjust_again};
     constexpr KeyContexts undo_steps{control_choice, staff, adjust_again};
     // Where q ends APCS at once: no path is being adjusted.
@@ -76,29 +76,30 @@ constexpr auto key_map = [] {
         {{adjust_again}, Pattern::letter(U'N'),   cmd::No{},  "", accepts_path},
         {{adjust_again}, Pattern::of(Key::enter), cmd::No{},  "", accepts_path},
         // Scan_Parameters / tnextpixel (thesis fig. 3.1.5).
-        {{staff}, Pattern::keypad(Key::left),  cmd::StaffStep{-1},    "4/6 J/L step", "the value one step left"},
-        {{staff}, Pattern::keypad(Key::right), cmd::StaffStep{+1},    "",             "the value one step right"},
-        {{staff}, Pattern::letter(U'J'),       cmd::StaffStep{-3},    "",             "three steps left (Shift-J)"},
-        {{staff}, Pattern::letter(U'L'),       cmd::StaffStep{+3},    "",             "three steps right (Shift-L)"},
+        {{staff}, Pattern::keypad(Key::left),  cmd::StaffStep{-1},    "4/6 J/L step", "the value one step left, right"},
+        {{staff}, Pattern::keypad(Key::right), cmd::StaffStep{+1},    "",             "the value one step left, right"},
+        {{staff}, Pattern::letter(U'J'),       cmd::StaffStep{-3},    "",             "three steps left, right (Shift-J, Shift-L)"},
+        {{staff}, Pattern::letter(U'L'),       cmd::StaffStep{+3},    "",             "three steps left, right (Shift-J, Shift-L)"},
         {{staff}, Pattern::exactly(U'='),      cmd::OpenValueField{}, "= type",       "type the value on the message line"},
         {{staff}, Pattern::of(Key::enter),     cmd::Accept{},         "Enter accept", "accept the value, go to the next line"},
         {{staff}, Pattern::of(Key::escape),    cmd::Keep{},           "Esc keep",     "leave the line as it was, go to the next"},
         // The path screen's undo and teaching overlays.
         {undo_steps, Pattern::letter(U'U'),      cmd::Undo{},            "U undo",     "undo the last change of this path"},
-        {path_steps, Pattern::letter(U'K'),      cmd::ToggleKeyFrames{}, "K/T/G/O/Z view", "show or hide both key frames, dotted, beside the path"},
-        {path_steps, Pattern::letter(U'T'),      cmd::ToggleTangents{},  "K/T/G/O/Z view", "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
-        {path_steps, Pattern::letter(U'G'),      cmd::ToggleLawGraph{},  "K/T/G/O/Z view", "law graph on/off: distance against frame in the span"},
-        {path_steps, Pattern::letter(U'Z'),      cmd::Zoom{},            "K/T/G/O/Z view", "zoom x2, x4, x8 about the picked region, then back to fitted"},
-        {path_steps, Pattern::letter(U'O'),      cmd::ToggleGhost{},     "K/T/G/O/Z view", "ghost on/off: the curve before the last change, dotted"},
-        {{staff},    Pattern::of(Key::tab),      cmd::ChoosePoint{+1},   "",           "the tangents' numbers of the next control point"},
-        {{staff},    Pattern::of(Key::back_tab), cmd::ChoosePoint{-1},   "",           "the tangents' numbers of the previous control point"},
+        {path_steps, Pattern::letter(U'K'),      cmd::ToggleKeyFrames{}, "K/T/G/O/Z/C view", "show or hide both key frames, dotted, beside the path"},
+        {path_steps, Pattern::letter(U'T'),      cmd::ToggleTangents{},  "K/T/G/O/Z/C view", "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
+        {path_steps, Pattern::letter(U'G'),      cmd::ToggleLawGraph{},  "K/T/G/O/Z/C view", "law graph on/off: distance against frame in the span"},
+        {path_steps, Pattern::letter(U'Z'),      cmd::Zoom{},            "K/T/G/O/Z/C view", "zoom x2, x4, x8 about the picked region, then back to fitted"},
+        {path_steps, Pattern::letter(U'O'),      cmd::ToggleGhost{},     "K/T/G/O/Z/C view", "ghost on/off: the curve before the last change, dotted"},
+        {path_steps, Pattern::letter(U'C'),      cmd::PinReference{},    "K/T/G/O/Z/C view", "compare: pin this curve as reference A (dashed), or unpin it"},
+        {{staff},    Pattern::of(Key::tab),      cmd::ChoosePoint{+1},   "",           "the tangents' numbers of the next, previous control point"},
+        {{staff},    Pattern::of(Key::back_tab), cmd::ChoosePoint{-1},   "",           "the tangents' numbers of the next, previous control point"},
 
         // The waypoint editor: the keypad moves the chosen control point in the screen's plane. Its
         // key line is full: K/T/G and q go to the help screen only.
-        {{waypoints}, Pattern::of(Key::tab),       cmd::ChoosePoint{+1},     "Tab point",    "choose the next control point"},
-        {{waypoints}, Pattern::of(Key::back_tab),  cmd::ChoosePoint{-1},     "",             "choose the previous control point"},
-        {{waypoints}, Pattern::exactly(U']'),      cmd::ChoosePoint{+1},     "",             "choose the next control point"},
-        {{waypoints}, Pattern::exactly(U'['),      cmd::ChoosePoint{-1},     "",             "choose the previous control point"},
+        {{waypoints}, Pattern::of(Key::tab),       cmd::ChoosePoint{+1},     "Tab point",    "choose the next, previous control point"},
+        {{waypoints}, Pattern::of(Key::back_tab),  cmd::ChoosePoint{-1},     "",             "choose the next, previous control point"},
+        {{waypoints}, Pattern::exactly(U']'),      cmd::ChoosePoint{+1},     "",             "choose the next, previous control point"},
+        {{waypoints}, Pattern::exactly(U'['),      cmd::ChoosePoint{-1},     "",             "choose the next, previous control point"},
         {{waypoints}, Pattern::keypad(Key::left),  cmd::MovePoint{-1, 0, 0}, "2468 +- move", moves_across},
         {{waypoints}, Pattern::keypad(Key::right), cmd::MovePoint{+1, 0, 0}, "",             moves_across},
         {{waypoints}, Pattern::keypad(Key::up),    cmd::MovePoint{0, +1, 0}, "",             moves_up},
@@ -107,15 +108,16 @@ constexpr auto key_map = [] {
         {{waypoints}, Pattern::letter(U'L'),       cmd::MovePoint{+3, 0, 0}, "",             "three steps left, right (Shift-J, Shift-L)"},
         {{waypoints}, Pattern::exactly(U'+'),      cmd::MovePoint{0, 0, +1}, "",             "one step toward, away from the viewer"},
         {{waypoints}, Pattern::exactly(U'-'),      cmd::MovePoint{0, 0, -1}, "",             "one step toward, away from the viewer"},
-        {{waypoints}, Pattern::letter(U'I'),       cmd::InsertPoint{},       "I/D ins/del",  "insert a control point after the chosen one"},
-        {{waypoints}, Pattern::letter(U'D'),       cmd::DeletePoint{},       "",             "delete the chosen control point"},
+        {{waypoints}, Pattern::letter(U'I'),       cmd::InsertPoint{},       "I/D ins/del",  "insert a control point after the chosen one, delete it"},
+        {{waypoints}, Pattern::letter(U'D'),       cmd::DeletePoint{},       "",             "insert a control point after the chosen one, delete it"},
         {{waypoints}, Pattern::letter(U'U'),       cmd::Undo{},              "U undo",       "undo the last change in the editor"},
-        {{waypoints}, Pattern::of(Key::enter),     cmd::Accept{},            "Enter keep",   "leave the editor keeping the changes"},
-        {{waypoints}, Pattern::of(Key::escape),    cmd::Back{},              "Esc drop",     "leave the editor undoing its changes"},
+        {{waypoints}, Pattern::of(Key::enter),     cmd::Accept{},            "Enter keep",   "leave the editor keeping (Enter) or undoing (Esc) its changes"},
+        {{waypoints}, Pattern::of(Key::escape),    cmd::Back{},              "Esc drop",     "leave the editor keeping (Enter) or undoing (Esc) its changes"},
         {{waypoints}, Pattern::letter(U'K'),       cmd::ToggleKeyFrames{},   "",             "show or hide both key frames, dotted, beside the path"},
         {{waypoints}, Pattern::letter(U'T'),       cmd::ToggleTangents{},    "",             "tangents on/off: DD leaving (solid), DS arriving (dashed)"},
         {{waypoints}, Pattern::letter(U'G'),       cmd::ToggleLawGraph{},    "",             "law graph on/off: distance against frame in the span"},
         {{waypoints}, Pattern::letter(U'O'),       cmd::ToggleGhost{},       "",             "ghost on/off: the curve before the last change, dotted"},
+        {{waypoints}, Pattern::letter(U'C'),       cmd::PinReference{},      "",             "compare: pin this curve as reference A (dashed), or unpin it"},
         {{waypoints}, Pattern::letter(U'Z'),       cmd::Zoom{},              "",             "zoom x2, x4, x8 about the chosen point, then back"},
 
         // Showing_Animation.
@@ -284,7 +286,7 @@ bool over_path_screen(KeyContext context)
 // SPEC §7.2.1's legend, each overlay's name in its own colour role, from `row` on (three rows).
 void put_colour_legend(CellGrid& grid, int row)
 {
-    grid.put_text(0, row, "  Colours (--color; NO_COLOR or --color never: one colour, the ghost dotted):");
+    grid.put_text(0, row, "  Colours (NO_COLOR or --color never: one colour; the ghost dotted, A dashed):");
     int column = 2;
     ++row;
     for (const ColourRole role : colour_roles) {
@@ -306,14 +308,17 @@ CellGrid key_help_screen(std::string_view what, KeyContext context, std::string_
     constexpr int legend_rows = 4;
     CellGrid grid(text_screen_columns, rows);
     grid.put_text(0, 0, "APCS help - the keys of " + std::string(what));
-    const int legend_row = over_path_screen(context) ? rows - 3 - legend_rows : rows - 3;
-    int row = 2;
+    // Over the path screen the waypoint editor's seventeen key lines and the legend's four rows
+    // fill every row between the title and the last two.
+    constexpr int ctrl_keys_row = rows - 2;
+    const int legend_row = over_path_screen(context) ? ctrl_keys_row - legend_rows : ctrl_keys_row;
+    int row = over_path_screen(context) ? 1 : 2;
     for (const std::string& line : key_help_lines(context, empty_answer))
         if (row < legend_row)
             grid.put_text(0, row++, line);
-    if (legend_row < rows - 3)
+    if (legend_row < ctrl_keys_row)
         put_colour_legend(grid, legend_row);
-    grid.put_text(0, rows - 3, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (every file stays whole).");
+    grid.put_text(0, ctrl_keys_row, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (every file stays whole).");
     grid.put_text(0, rows - 1, "Any key closes this help.");
     return grid;
 }

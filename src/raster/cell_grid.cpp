@@ -172,14 +172,16 @@ struct RoleColour {
 
 // The one table of the roles' colours (SPEC §7.2.1): the eight colours every colour terminal has.
 constexpr RoleColour role_colours[] = {
-    {ColourRole::monitor, 2, 'm', "the terminal's own", -1, "curve, x marks, staff, text (1989)"},
+    {ColourRole::monitor, 3, 'm', "the terminal's own", -1, "curve, x marks, staff, text (1989)"},
     {ColourRole::key_frame, 0, 'k', "cyan", 6, "key frames (K)"},
-    {ColourRole::ghost, 1, 'g', "blue", 4, "ghost: the curve before the last change (O)"},
-    {ColourRole::inbetween, 3, 'i', "red", 1, "in-between marks"},
-    {ColourRole::region, 4, 'r', "magenta", 5, "picked region"},
-    {ColourRole::tangent, 5, 't', "yellow", 3, "tangents (T)"},
-    {ColourRole::law, 6, 'l', "green", 2, "law (G)"},
-    {ColourRole::goal, 7, 'o', "reverse", -1, "goal"},
+    {ColourRole::ghost, 1, 'g', "blue", 4, "ghost (O)"},
+    // Green as the law's: the law is an inset graph in a corner, never a curve beside the path.
+    {ColourRole::reference, 2, 'a', "green", 2, "reference A, pinned (C)"},
+    {ColourRole::inbetween, 4, 'i', "red", 1, "in-between marks"},
+    {ColourRole::region, 5, 'r', "magenta", 5, "picked region"},
+    {ColourRole::tangent, 6, 't', "yellow", 3, "tangents (T)"},
+    {ColourRole::law, 7, 'l', "green", 2, "law (G)"},
+    {ColourRole::goal, 8, 'o', "reverse", -1, "goal"},
 };
 
 const RoleColour& colour_of(ColourRole role)

@@ -3,6 +3,7 @@
 #include "apcs/raster/painter.h"
 #include "apcs/geometry/hercules.h"
 #include "apcs/screens/path_overlays.h"
+#include "apcs/screens/reference_curve.h"
 #include "apcs/raster/screen_layout.h"
 #include "apcs/screens/world_drawing.h"
 
@@ -295,6 +296,8 @@ GraphicsScreen draw_screen(const PathScreenContent& content, const ViewTransform
         // DRAW: the KB curve, sampled.
         if (kept != nullptr && kept->ghost != nullptr)
             draw_ghost(screen, *kept->ghost);
+        if (kept != nullptr && kept->reference != nullptr)
+            draw_reference(screen, *kept->reference, kept->curve, kept->reference_label);
         if (kept != nullptr)
             paint_layer(screen, kept->curve, ColourRole::monitor);
         else

@@ -10,7 +10,8 @@ This script
     folder with exactly those presses, and requires that every caption was shown and that the last
     press leaves "End of the script" on the caption row.
 
-Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS]   (prints each script's presses, captions and time)
+Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS [SCREENS_FOLDER]]   (prints each script's presses,
+captions and time; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
 """
 import os
 import re
@@ -112,8 +113,9 @@ def settled_screen(session, quiet):
     return screen
 
 
-def play(apcs, folder, script, options, presses, glyphs):
-    """The captions the class saw, and the caption row after the last press."""
+def play(apcs, folder, script, options, presses, glyphs, shown):
+    """The captions the class saw, and the caption row after the last press; `shown` gets each
+    screen after a press, under the press."""
     session = f"class-plan-{os.getpid()}"
     with tempfile.TemporaryDirectory() as work:
         shutil.copytree(folder, work, dirs_exist_ok=True)
@@ -128,11 +130,13 @@ def play(apcs, folder, script, options, presses, glyphs):
             changed_screen(session, BLANK_PANE)
             screen = settled_screen(session, quiet)
             seen.add(screen.rstrip("\n").split("\n")[-1].strip())
-            for key in presses:
+            shown.append(f"=== {script}: the replay begins\n{screen}")
+            for number, key in enumerate(presses, 1):
                 tmux("send-keys", "-t", session, key)
                 changed_screen(session, screen)
                 screen = settled_screen(session, quiet)
                 seen.add(screen.rstrip("\n").split("\n")[-1].strip())
+                shown.append(f"=== {script}: press {number}, {key}\n{screen}")
         finally:
             tmux("kill-server")
     return seen, screen.rstrip("\n").split("\n")[-1].strip()
@@ -141,6 +145,7 @@ def play(apcs, folder, script, options, presses, glyphs):
 def main():
     apcs, manual, data = sys.argv[1:4]
     glyphs = sys.argv[4] if len(sys.argv) > 4 else "ascii"
+    screens_folder = sys.argv[5] if len(sys.argv) > 5 else None
     total_presses, total_seconds, failures = 0, 0.0, []
     lines = plan_lines(manual)
     if not lines:
@@ -150,7 +155,12 @@ def main():
         folder = script_folder(data, script)
         captions = captions_of(os.path.join(folder, script))
         seconds = SECONDS_A_CAPTION * len(captions) + animation_seconds(apcs, folder, script, options)
-        seen, last_row = play(apcs, folder, script, options, presses, glyphs)
+        shown = []
+        seen, last_row = play(apcs, folder, script, options, presses, glyphs, shown)
+        if screens_folder:
+            os.makedirs(screens_folder, exist_ok=True)
+            with open(os.path.join(screens_folder, script + ".txt"), "w", encoding="utf-8") as out:
+                out.write("\n".join(shown))
         unseen = [caption for caption in captions
                   if caption not in seen and not (caption == "GOAL:" and any(row.startswith("GOAL:") for row in seen))]
         print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "

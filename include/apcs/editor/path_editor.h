@@ -166,6 +166,7 @@ private:
     void fit_view();
     void show_view();
     bool zoom();
+    void pin_or_unpin_reference();
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message() const;

@@ -79,6 +79,12 @@ public:
     void drop_ghost();
     bool has_ghost() const { return m_ghost.has_value(); }
 
+    // Compare (C, SPEC §3.1): the curve of the points as they now are, pinned under `label` and
+    // drawn dashed in this view and every later one, whatever the path becomes, until unpinned.
+    void pin_reference(std::string label);
+    void unpin_reference();
+    bool has_reference() const { return m_reference.has_value(); }
+
     const EvaluatedPath& evaluated() const { return m_evaluated; }
     const PathSettings& settings() const { return m_settings; }
     // What the picture shows: the document's revision it was made of, and its own, which every
@@ -99,6 +105,7 @@ private:
     void remake(const PathChange& change);
     void draw_curve();
     void draw_ghost();
+    void draw_reference();
     void refine_if_quick();
     const ControlPoints& points() const { return m_document->points(); }
 
@@ -115,6 +122,12 @@ private:
     std::vector<PixelMark> m_point_marks;
     std::optional<Bitmap> m_ghost;
     PointsBack m_ghost_back;
+    struct Reference {
+        ControlPoints points;
+        std::string label;
+        Bitmap pixels;
+    };
+    std::optional<Reference> m_reference;
 };
 
 // A waypoint edit made in `document`, or taken back, and `picture` (of the document) refreshed; the

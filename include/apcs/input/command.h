@@ -51,6 +51,8 @@ struct ToggleGhost : Signal<ToggleGhost> {};
 // T: the tangents DS and DD drawn at every control point; G: the inset graph of the span's law.
 struct ToggleTangents : Signal<ToggleTangents> {};
 struct ToggleLawGraph : Signal<ToggleLawGraph> {};
+// C: the curve as it is pinned as reference A beside the live one, or unpinned (SPEC §3.1).
+struct PinReference : Signal<PinReference> {};
 // Tab, Shift-Tab, ] and [: another control point chosen, `by` points on.
 struct ChoosePoint {
     int by = 0;
@@ -101,7 +103,8 @@ using Command = std::variant<command::TypeCharacter, command::EraseCharacter, co
                              command::ChooseGlobal, command::ChooseLocal, command::ArrowMove, command::StaffStep,
                              command::Accept, command::Keep, command::Back, command::ToggleKeyFrames, command::Zoom,
                              command::ToggleGhost,
-                             command::ToggleTangents, command::ToggleLawGraph, command::ChoosePoint,
+                             command::ToggleTangents, command::ToggleLawGraph, command::PinReference,
+                             command::ChoosePoint,
                              command::OpenValueField, command::OpenWaypoints, command::InsertPoint,
                              command::DeletePoint, command::MovePoint, command::Undo, command::Yes,
                              command::No, command::Continue, command::ShowHelp, command::SavePicture, command::Quit,

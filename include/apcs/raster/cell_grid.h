@@ -18,20 +18,20 @@ enum class CellStyle : unsigned char { plain, bold, reverse };
 // painted; the terminal maps it to a colour of its own. `monitor` is the 1989 screen's one colour
 // (curve, x marks, staff, text: the terminal's default foreground); each other role is an overlay
 // that goes beyond the 1989 screen. Without colour every role is drawn alike.
-enum class ColourRole : unsigned char { monitor, key_frame, ghost, inbetween, region, tangent, law, goal };
-inline constexpr ColourRole colour_roles[] = {ColourRole::monitor, ColourRole::key_frame, ColourRole::ghost,
-                                              ColourRole::inbetween, ColourRole::region, ColourRole::tangent,
-                                              ColourRole::law,     ColourRole::goal};
+enum class ColourRole : unsigned char { monitor, key_frame, ghost, inbetween, region, tangent, law, goal, reference };
+inline constexpr ColourRole colour_roles[] = {ColourRole::monitor,   ColourRole::key_frame, ColourRole::ghost,
+                                              ColourRole::reference, ColourRole::inbetween, ColourRole::region,
+                                              ColourRole::tangent,   ColourRole::law,       ColourRole::goal};
 
 // --color (SPEC §7.2.1): colour where the terminal has it (at least 8 colours), always, or never.
 enum class ColourChoice : unsigned char { automatic, always, never };
 
 // Which role a pixel or cell lit by two layers shows: an exercise's goal point > law inset > tangents > region > in-between
-// marks > monitor (the curve, the 1989 marks) > ghost > key frames. The overlays a class turned on
-// to see stand over the curve; the curve stands over what it is compared with (the ghost, the key
-// frames).
+// marks > monitor (the curve, the 1989 marks) > pinned reference > ghost > key frames. The overlays a
+// class turned on to see stand over the curve; the curve stands over what it is compared with (the
+// reference, the ghost, the key frames).
 int colour_priority(ColourRole role);
-// One letter per role for test dumps: m k g i r t l o.
+// One letter per role for test dumps: m k g i r t l o a.
 char colour_letter(ColourRole role);
 // The legend's name of the colour a terminal draws `role` in ("yellow"), and the curses colour
 // number (0-7: black red green yellow blue magenta cyan white) it means; monitor is the default

@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace apcs {
@@ -85,6 +86,9 @@ struct KeptPathLayers {
     std::span<const PixelMark> control_point_marks;
     // The curve before the last change (SPEC §7.2.1), none if not shown.
     const Bitmap* ghost = nullptr;
+    // The curve pinned by C and its label (SPEC §3.1, reference_curve.h), none if none is pinned.
+    const Bitmap* reference = nullptr;
+    std::string_view reference_label;
 };
 // The same screen with the curve and the control points' marks laid as kept.
 GraphicsScreen draw_path_screen(const PathScreenContent& content, const ViewTransform& view, const KeptPathLayers& kept);
