@@ -38,8 +38,9 @@ namespace apcs {
 
 namespace {
 
-// What the scene holds while it plays: the KEYS frames and MOVE offsets, and all frames when
-// they are drawn or played (not when only printed or written, one frame at a time).
+// What the scene holds while it plays: the KEYS frames, the MOVE offsets, a state a frame for each
+// object that turns or scales, and all frames when they are drawn or played (not when only printed
+// or written, one frame at a time).
 std::uint64_t scene_bytes(const Scene& scene, const PathSettings& settings, bool all_frames)
 {
     std::uint64_t bytes = 0;
@@ -59,6 +60,8 @@ std::uint64_t scene_bytes(const Scene& scene, const PathSettings& settings, bool
         }
         if (object.move)
             bytes = memory::saturating_sum(bytes, path(object.move->path, object.move->frames));
+        if (object.accumulates())
+            bytes = memory::saturating_sum(bytes, (static_cast<std::uint64_t>(scene.last_frame) + 1) * sizeof(ActorState));
     }
     const std::size_t frame_count = static_cast<std::size_t>(scene.last_frame) + 1;
     return memory::saturating_sum(bytes, memory::frames_bytes({all_frames ? frame_count : 1, points, false}));

@@ -68,9 +68,6 @@ std::vector<std::optional<std::size_t>> first_same_moves(const Scene& scene)
     return same;
 }
 
-// Frame f of a behaviour over `frames`: 0 before it, held after it.
-int elapsed(const FrameSpan& frames, int f) { return std::clamp(f, frames.from, frames.to) - frames.from; }
-
 } // namespace
 
 std::vector<Vec3> move_offsets(const SceneMove& move, const PathSettings& settings)
@@ -105,6 +102,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     , m_drawings(scene.objects.size())
     , m_move_offsets(scene.objects.size())
     , m_move_turns(scene.objects.size())
+    , m_states(scene.objects.size())
     , m_anchors(scene.objects.size())
     , m_rigid(scene.objects.size())
     , m_object_points(scene.objects.size())
@@ -141,6 +139,7 @@ SceneAnimation::SceneAnimation(const Scene& scene, const PathSettings& settings,
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         m_centres[i] = boxes[i].empty() ? Vec3{} : boxes[i].centre();
     links(scene);
+    accumulate();
 }
 
 void SceneAnimation::fit_behaviours(std::size_t index, const PathSettings& settings, SurfaceConstruction construction,
@@ -209,24 +208,9 @@ Affine SceneAnimation::transform(std::size_t index, int f) const
 
 Affine SceneAnimation::own_transform(std::size_t index, int f) const
 {
-    const SceneObject& object = m_scene.objects[index];
-    const std::optional<std::size_t> step = move_step(index, f);
-    Affine own = Affine::translation(step ? m_move_offsets[index][*step] : Vec3{});
-    if (step && !m_move_turns[index].empty())
-        own = own * m_move_turns[index][*step];
-    if (object.rotate) {
-        const SceneRotate& rotate = *object.rotate;
-        own = own * Affine::rotation_about(rotate.degrees_per_frame * elapsed(rotate.frames, f), rotate.axis,
-                                           rotate.about.value_or(m_centres[index]));
-    }
-    if (object.scale) {
-        const SceneScale& scale = *object.scale;
-        const double power = elapsed(scale.frames, f);
-        const Vec3 factors{std::pow(scale.factors.x, power), std::pow(scale.factors.y, power),
-                           std::pow(scale.factors.z, power)};
-        own = own * Affine::scale_about(factors, scale.about.value_or(m_centres[index]));
-    }
-    return own;
+    const Vec3 offset = move_offset(index, f);
+    const std::vector<ActorState>& states = m_states[index];
+    return states.empty() ? Affine::translation(offset) : actor_transform(states[static_cast<std::size_t>(f)], offset);
 }
 
 std::span<const Vec3> SceneAnimation::drawing_at(std::size_t index, int f) const
@@ -243,7 +227,7 @@ void SceneAnimation::place_rigid(std::size_t index, int f, const Affine& world, 
     const RigidMotion& rigid = *m_rigid[index];
     const AnchorLink& anchor = *m_anchors[index];
     const FrameSpan& frames = rigid.frames;
-    const double tau = static_cast<double>(elapsed(frames, f)) / (frames.to - frames.from); // KEYS has FROM < TO
+    const double tau = static_cast<double>(frames.elapsed(f)) / (frames.to - frames.from); // KEYS has FROM < TO
     const Affine turned =
         world * partial_turn(rigid.turn, acceleration_distance_fraction(tau, rigid.acceleration), rigid.anchor);
     const ObjectPoints partner = m_object_points[anchor.partner];

@@ -101,6 +101,7 @@ private:
     Expected<void> parse_staff(const Fields& fields);
     Expected<void> parse_move(const Fields& fields);
     Expected<void> parse_rotate(const Fields& fields);
+    Expected<void> parse_roll(const Fields& fields);
     Expected<void> parse_scale(const Fields& fields);
     Expected<void> parse_joint(const Fields& fields);
     Expected<void> parse_rigid(const Fields& fields);
@@ -113,7 +114,7 @@ private:
     Expected<void> span_clause(Clauses& clauses, std::string_view keyword, FrameSpan& span) const;
     Expected<Vec3> about_clause(Clauses& clauses) const;
     Expected<void> turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
-                                FrameSpan& frames, Axis* axis) const;
+                                FrameSpan* frames, Axis* axis) const;
     Expected<void> check_span(const FrameSpan& span, std::string_view keyword) const;
     Expected<void> align_clause(Clauses& clauses, SceneMove& move) const;
     Expected<void> times_clause(Clauses& clauses, const PendingPath& path, SceneMove& move) const;
@@ -170,8 +171,8 @@ Expected<void> SceneParser::parse_line(const Fields& fields)
         {"shape", &SceneParser::parse_shape}, {"keys", &SceneParser::parse_keys},
         {"paths", &SceneParser::parse_paths}, {"staff", &SceneParser::parse_staff},
         {"move", &SceneParser::parse_move},   {"rotate", &SceneParser::parse_rotate},
-        {"scale", &SceneParser::parse_scale}, {"joint", &SceneParser::parse_joint},
-        {"rigid", &SceneParser::parse_rigid}};
+        {"roll", &SceneParser::parse_roll},   {"scale", &SceneParser::parse_scale},
+        {"joint", &SceneParser::parse_joint}, {"rigid", &SceneParser::parse_rigid}};
     if (keyword == "object")
         return parse_object(fields);
     if (keyword == "view")
@@ -183,8 +184,8 @@ Expected<void> SceneParser::parse_line(const Fields& fields)
     const auto found = object_keywords.find(keyword);
     if (found == object_keywords.end())
         return error("unknown keyword " + quote_field(fields[0]) +
-                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID, VIEW or "
-                     "SPACING");
+                     "; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, ROLL, SCALE, JOINT, RIGID, VIEW "
+                     "or SPACING");
     if (m_scene.objects.empty())
         return error(std::string(fields[0]) + " before the first OBJECT line; expected 'OBJECT NAME' first");
     return (this->*found->second)(fields);
@@ -482,7 +483,8 @@ Expected<void> SceneParser::align_clause(Clauses& clauses, SceneMove& move) cons
 
 Expected<void> SceneParser::parse_rotate(const Fields& fields)
 {
-    if (auto outcome = once(object().rotate.has_value(), "ROTATE"); !outcome)
+    if (auto outcome = once(object().rotate || object().roll, object().rotate ? "ROTATE" : "ROTATE or ROLL");
+        !outcome)
         return outcome.error();
     if (fields.size() < 2)
         return error("expected 'ROTATE DEG [AXIS x|y|z] [ABOUT X Y Z] [FROM F TO G]'");
@@ -493,9 +495,33 @@ Expected<void> SceneParser::parse_rotate(const Fields& fields)
         return degrees.error();
     rotate.degrees_per_frame = *degrees;
     Clauses clauses(fields, 2);
-    if (auto outcome = turn_clauses(clauses, "ROTATE", rotate.about, rotate.frames, &rotate.axis); !outcome)
+    if (auto outcome = turn_clauses(clauses, "ROTATE", rotate.about, &rotate.frames, &rotate.axis); !outcome)
         return outcome.error();
     object().rotate = rotate;
+    return ok;
+}
+
+// ROLL RADIUS [AXIS x|y|z] [ABOUT X Y Z] (SPEC §8.1): no FROM/TO, it rolls whenever its hub moves.
+Expected<void> SceneParser::parse_roll(const Fields& fields)
+{
+    if (auto outcome = once(object().rotate || object().roll, object().roll ? "ROLL" : "ROTATE or ROLL");
+        !outcome)
+        return outcome.error();
+    if (fields.size() < 2 || !parse_number(fields[1]))
+        return error("expected 'ROLL RADIUS [AXIS x|y|z] [ABOUT X Y Z]' with RADIUS the wheel's radius" +
+                     std::string(fields.size() < 2 ? "; found nothing after ROLL" : ", found " + quote_field(fields[1])));
+    SceneRoll roll;
+    const Expected<double> radius = number(fields[1], "RADIUS");
+    if (!radius)
+        return radius.error();
+    if (*radius == 0.0)
+        return error("ROLL RADIUS " + quote_field(fields[1]) +
+                     " is 0; expected the wheel's radius (above 0, or below 0 to roll the other way)");
+    roll.radius = *radius;
+    Clauses clauses(fields, 2);
+    if (auto outcome = turn_clauses(clauses, "ROLL", roll.about, nullptr, &roll.axis); !outcome)
+        return outcome.error();
+    object().roll = roll;
     return ok;
 }
 
@@ -525,7 +551,7 @@ Expected<void> SceneParser::parse_scale(const Fields& fields)
         factors[1] = factors[2] = factors[0];
     scale.factors = {factors[0], factors[1], factors[2]};
     Clauses clauses(fields, 1 + count);
-    if (auto outcome = turn_clauses(clauses, "SCALE", scale.about, scale.frames, nullptr); !outcome)
+    if (auto outcome = turn_clauses(clauses, "SCALE", scale.about, &scale.frames, nullptr); !outcome)
         return outcome.error();
     for (std::size_t axis = 0; axis < count; ++axis) {
         const double growth = std::abs(std::log(factors[axis])) * (scale.frames.to - scale.frames.from);
@@ -652,10 +678,10 @@ Expected<void> SceneParser::span_clause(Clauses& clauses, std::string_view keywo
     return ok;
 }
 
-// The clauses of ROTATE and SCALE after their number: ABOUT X Y Z, FROM F, TO G and, when `axis`
-// is given (ROTATE), AXIS x|y|z; then FROM <= TO.
+// The clauses of ROTATE, ROLL and SCALE after their number: ABOUT X Y Z, when `frames` is given
+// (not ROLL) FROM F and TO G, then FROM <= TO, and when `axis` is given (ROTATE, ROLL) AXIS x|y|z.
 Expected<void> SceneParser::turn_clauses(Clauses& clauses, std::string_view keyword, std::optional<Vec3>& about,
-                                         FrameSpan& frames, Axis* axis) const
+                                         FrameSpan* frames, Axis* axis) const
 {
     while (!clauses.done()) {
         const std::string_view clause = clauses.peek();
@@ -672,11 +698,16 @@ Expected<void> SceneParser::turn_clauses(Clauses& clauses, std::string_view keyw
             if (!centre)
                 return centre.error();
             about = *centre;
-        } else if (Expected<void> span = span_clause(clauses, keyword, frames); !span) {
+        } else if (frames == nullptr) {
+            return error("unexpected " + quote_field(clause) + " in " + std::string(keyword) +
+                         "; expected its optional clauses (AXIS, ABOUT): it rolls whenever its hub moves");
+        } else if (Expected<void> span = span_clause(clauses, keyword, *frames); !span) {
             return span.error();
         }
     }
-    return check_span(frames, keyword);
+    if (frames == nullptr)
+        return ok;
+    return check_span(*frames, keyword);
 }
 
 // ABOUT X Y Z: the centre of a turn.

@@ -24,6 +24,8 @@ std::string node_line(const Scene& scene, std::size_t index, std::size_t parts)
         line += std::string("  MOVE") + (object.move->times.empty() ? "" : " TIMES") + (object.move->loop ? " LOOP" : "");
     if (object.rotate)
         line += "  ROTATE " + shortest_number(object.rotate->degrees_per_frame);
+    if (object.roll)
+        line += "  ROLL " + shortest_number(object.roll->radius);
     if (object.scale) {
         const Vec3& factors = object.scale->factors;
         line += "  SCALE " + shortest_number(factors.x);

@@ -135,7 +135,7 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
          "t.scn:7: joint 'j' has TOLERANCE 0.25 here and 0.5 on line 4; expected one value (or the same on both lines)"},
         {"FRAMES 5\nSHAPE square.dat\n", "t.scn:2: SHAPE before the first OBJECT line; expected 'OBJECT NAME' first"},
         {head + "WIGGLE 3\n",
-         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, SCALE, JOINT, RIGID, "
+         "t.scn:4: unknown keyword 'WIGGLE'; expected OBJECT, SHAPE, KEYS, PATHS, STAFF, MOVE, ROTATE, ROLL, SCALE, JOINT, RIGID, "
          "VIEW or SPACING"},
         {head + "OBJECT a\n", "t.scn:4: object 'a' is declared again; its first OBJECT line is line 2 (names are unique)"},
         {head + "OBJECT b PARENT c\nOBJECT c\n",
@@ -145,6 +145,22 @@ TEST_CASE("each malformed scene is refused with its file and line", "[scene]")
         {head + "SHAPE square.dat\n", "t.scn:4: a second SHAPE or KEYS for object 'a'; expected one at most"},
         {head + "KEYS k1.dat k2.dat\n", "t.scn:4: a second SHAPE or KEYS for object 'a'; expected one at most"},
         {head + "ROTATE 1\nROTATE 2\n", "t.scn:5: a second ROTATE for object 'a'; expected one at most"},
+        // Turn 4: ROLL RADIUS, one turn of its own (a ROTATE or a ROLL), no FROM/TO.
+        {head + "ROLL\n", "t.scn:4: expected 'ROLL RADIUS [AXIS x|y|z] [ABOUT X Y Z]' with RADIUS the wheel's radius; "
+                          "found nothing after ROLL"},
+        {head + "ROLL AXIS x\n", "t.scn:4: expected 'ROLL RADIUS [AXIS x|y|z] [ABOUT X Y Z]' with RADIUS the wheel's "
+                                 "radius, found 'AXIS'"},
+        {head + "ROLL 0\n",
+         "t.scn:4: ROLL RADIUS '0' is 0; expected the wheel's radius (above 0, or below 0 to roll the other way)"},
+        {head + "ROLL -0.0\n",
+         "t.scn:4: ROLL RADIUS '-0.0' is 0; expected the wheel's radius (above 0, or below 0 to roll the other way)"},
+        {head + "ROLL 1e10\n", "t.scn:4: expected a number with |value| <= 1e9 for RADIUS, found '1e10'"},
+        {head + "ROLL 1 FROM 2\n",
+         "t.scn:4: unexpected 'FROM' in ROLL; expected its optional clauses (AXIS, ABOUT): it rolls whenever its hub moves"},
+        {head + "ROLL 1 AXIS w\n", "t.scn:4: unknown AXIS 'w'; expected x, y or z"},
+        {head + "ROLL 1\nROLL 2\n", "t.scn:5: a second ROLL for object 'a'; expected one at most"},
+        {head + "ROTATE 1\nROLL 2\n", "t.scn:5: a second ROTATE or ROLL for object 'a'; expected one at most"},
+        {head + "ROLL 1\nROTATE 2\n", "t.scn:5: a second ROTATE or ROLL for object 'a'; expected one at most"},
         {head + "MOVE path.dat\nMOVE path.dat\n", "t.scn:5: a second MOVE for object 'a'; expected one at most"},
         {head + "JOINT j 5\n", "t.scn:4: joint 'j' names point 5 of object 'a', whose drawing has 4 points"},
         {head + "JOINT j 1\n", "t.scn:4: joint 'j' is used 1 time(s); expected exactly twice, in two parts of one object"},
@@ -282,4 +298,20 @@ TEST_CASE("the scene tree of a deep chain is indented 32 levels at most, deeper 
     CHECK(longest < 4 * 32 + 80);
     CHECK(tree.find("`-- (depth 100) o100  t c b a") != std::string::npos);
     CHECK(tree.find("`-- o32  t c b a") != std::string::npos);
+}
+
+TEST_CASE("ROLL RADIUS reads its radius - negative rolls the other way - its AXIS and its hub", "[scene][roll]")
+{
+    const Scene scene = scene_from("FRAMES 4\nOBJECT a\nSHAPE square.dat\nroll -1.5 ABOUT 0 1 1 AXIS z\n"
+                                   "OBJECT b\nSHAPE square.dat\nROLL 2\n",
+                                   example_files());
+    const SceneRoll& first = *scene.objects[0].roll;
+    REQUIRE(first.radius == -1.5);
+    REQUIRE(first.axis == Axis::z);
+    REQUIRE(first.about == Vec3{0, 1, 1});
+    const SceneRoll& second = *scene.objects[1].roll;
+    REQUIRE(second.radius == 2.0);
+    REQUIRE(second.axis == Axis::x);
+    REQUIRE_FALSE(second.about);
+    REQUIRE_FALSE(scene.objects[1].rotate);
 }

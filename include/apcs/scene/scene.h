@@ -21,6 +21,9 @@ struct FrameSpan {
     int from = 0;
     int to = 0;
 
+    // Frames of the behaviour by frame f: 0 before FROM, held after TO.
+    constexpr int elapsed(int f) const { return (f < from ? from : f > to ? to : f) - from; }
+
     friend constexpr bool operator==(const FrameSpan&, const FrameSpan&) = default;
 };
 
@@ -45,6 +48,15 @@ struct SceneRotate {
     Axis axis = Axis::x;
     std::optional<Vec3> about;
     FrameSpan frames;
+};
+
+// ROLL (SPEC §8.1): a wheel whose turn in the world (its parents' turns included) is, at every
+// frame, the distance its hub (`about`, default the object's centre) has travelled / radius, rolling
+// it forward: a negative turn about +axis going +y for AXIS x. A negative radius rolls the other way.
+struct SceneRoll {
+    double radius = 1.0; // ≠ 0
+    Axis axis = Axis::x;
+    std::optional<Vec3> about;
 };
 
 // SCALE: factor^(f − from) per axis of the scene about `about` (default: the object's centre);
@@ -106,6 +118,7 @@ struct SceneObject {
     bool own_staff = false;  // STAFF given on this object
     std::optional<SceneMove> move;
     std::optional<SceneRotate> rotate;
+    std::optional<SceneRoll> roll; // not with a ROTATE: one turn of its own
     std::optional<SceneScale> scale;
     std::vector<SceneJoint> joints;
     std::optional<SceneAnchor> anchor; // set when the scene has been read whole
@@ -114,6 +127,9 @@ struct SceneObject {
     int rigid_line = 0;
 
     bool rigid() const { return rigid_line != 0; }
+    // Whether its T_f needs Net_Anim's ticks (SPEC §8.2): it turns or scales. One that only moves
+    // is translated by its MOVE's offset.
+    bool accumulates() const { return rotate || roll || scale || (move && move->align); }
     bool has_drawing() const { return shape.has_value() || keys.has_value(); }
     // Its drawing at frame 0 (SHAPE, or KEY1 after adding points); a group has none.
     const Graphic* first_drawing() const { return shape ? &*shape : keys ? &keys->keys.key1 : nullptr; }

@@ -5,6 +5,7 @@
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/surface_construction.h"
 #include "apcs/geometry/affine.h"
+#include "apcs/scene/actor_state.h"
 #include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene.h"
 
@@ -39,13 +40,14 @@ struct OutOfReach {
 // --spacing (`spacing_given`), which overrides the file.
 PathSettings scene_path_settings(const Scene& scene, const PathSettings& command, bool spacing_given);
 
-// A scene's frames, one at a time (SPEC §8.2): each object's transform
-// W_f = W_f(parent) ∘ translation(MOVE) ∘ ROTATE about its centre ∘ SCALE about its centre, applied
-// to its frame-f drawing (SHAPE, or the KEYS frame); then a part whose anchor is more than its
+// A scene's frames, one at a time (SPEC §8.2): each object's transform W_f = W_f(parent) ∘ T_f,
+// T_f Net_Anim's accumulation of its MOVE, ALIGN, ROTATE, ROLL and SCALE one tick a frame
+// (tick, actor_state.h), applied to its frame-f drawing (SHAPE, or the KEYS frame); then a part whose anchor is more than its
 // tolerance apart is moved by the separation, and the parts anchored through it with it (a part
 // without an anchor moves with its parent). A RIGID part is its KEY1 drawing turned, by its law, a
 // fraction of the way to KEY2, its anchor on its partner's point. What every frame needs
-// (the KEYS frames, the MOVE offsets) is computed once, here; `scene` must outlive this.
+// (the KEYS frames, the MOVE offsets, the states of
+// the objects that turn or scale: one affine map a frame each) is computed once, here; `scene` must outlive this.
 class SceneAnimation {
 public:
     // `settings` give the KB sampling, the end slopes and the spacing of MOVE and KEYS paths;
@@ -97,8 +99,19 @@ private:
     };
     // Which of the object's MOVE offsets (and ALIGN turns) frame f shows; none before the MOVE.
     std::optional<std::size_t> move_step(std::size_t index, int f) const;
-    // T_f of the object alone: its MOVE, ROTATE and SCALE, without its parents'.
+    Vec3 move_offset(std::size_t index, int f) const;
+    // T_f of the object alone: its MOVE, ALIGN, ROTATE, ROLL and SCALE, without its parents'.
     Affine own_transform(std::size_t index, int f) const;
+    // The states of every object that accumulates, frames 0 … N (scene_accumulation.cpp).
+    void accumulate();
+    void accumulate_object(std::size_t index);
+    // Frame f's tick, from frame f − 1: its ALIGN's and ROTATE's turns, its SCALE's factors.
+    std::vector<TickTurn> tick_turns(std::size_t index, int f) const;
+    std::optional<TickScale> tick_scale(std::size_t index, int f) const;
+    // The ROLL's turn of the tick: the part's turn in the world, parents' included, grows by the
+    // hub's travel (in the world, by the tick's other changes and the parents') / radius.
+    TickTurn roll_turn(std::size_t index, int f, const ActorState& before, std::span<const TickTurn> turns,
+                       const std::optional<TickScale>& scale) const;
     std::span<const Vec3> drawing_at(std::size_t index, int f) const;
     // A RIGID part's points at frame f: KEY1 turned by law(τ) of the whole turn, moved by `world`,
     // its anchor put on its partner's joint point in `points` (the partner's already placed).
@@ -116,7 +129,8 @@ private:
     std::vector<FrameSequence> m_key_frames;       // per object: its KEYS frames FROM … TO
     std::vector<std::vector<Vec3>> m_drawings;      // per object: its SHAPE's points (empty for KEYS)
     std::vector<std::vector<Vec3>> m_move_offsets;  // per object: MOVE offset at FROM … TO
-    std::vector<std::vector<Affine>> m_move_turns;  // per object with ALIGN: its turn at FROM … TO
+    std::vector<std::vector<Affine>> m_move_turns;  // per object with ALIGN: its turn at FROM … TO, until accumulated
+    std::vector<std::vector<ActorState>> m_states;  // per object that accumulates: frames 0 … N
     std::vector<std::optional<AnchorLink>> m_anchors;
     std::vector<std::optional<RigidMotion>> m_rigid;
     std::vector<ObjectPoints> m_object_points;
