@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The manual's sentences about the four-line staff, held against the program.
+"""The manual's sentences about the four-line staff and the scenes' accumulation, held against the program.
 
 Each claim runs `apcs path … --print` on the N-to-L example's way1.dat, measures what the sentence
 says (the path's length, the angle of a corner, the gaps between frames), formats the numbers as the
@@ -9,9 +9,11 @@ A changed number in the manual, or a program that no longer does what it says, f
 Usage: manual_staff_claims.py APCS MANUAL DATA_FOLDER   (prints each sentence it checked)
 """
 import math
+import os
 import re
 import subprocess
 import sys
+import tempfile
 
 
 def path_print(apcs, path_file, *options):
@@ -93,6 +95,44 @@ def end_slope_claim(apcs, way1):
             f"{turn(chord):.1f} with slope 1, and lies at most {off} off its chord with either slope")
 
 
+def scene_frames(apcs, scene_text, drawings):
+    """`apcs play --print` of a scene written with its drawings into a fresh folder: each frame's points."""
+    with tempfile.TemporaryDirectory() as folder:
+        for name, text in {"scene.scn": scene_text, **drawings}.items():
+            with open(os.path.join(folder, name), "w") as out:
+                out.write(text)
+        lines = subprocess.run([apcs, "play", os.path.join(folder, "scene.scn"), "--print"], check=True,
+                               capture_output=True, text=True).stdout.split("\n")
+    frames = []
+    for line in lines:
+        if line.startswith("# frame"):
+            frames.append([])
+        elif line.strip() and not line.startswith("#"):
+            frames[-1].append(tuple(map(float, line.split()[:3])))
+    return frames
+
+
+def accumulation_claim(apcs):
+    """Section 20: the seed's tick against "scale about S, then turn about R" for a 2x2 square."""
+    square = [(0, -1, -1), (0, 1, -1), (0, 1, 1), (0, -1, 1)]
+    frames = scene_frames(apcs, "FRAMES 3\nOBJECT square\nSHAPE square.dat\nROTATE 10 ABOUT 0 5 0\n"
+                                "SCALE 1.1 ABOUT 0 0 3\n",
+                          {"square.dat": "".join(f"{x} {y} {z}\n" for x, y, z in square)})
+
+    def composed(point, f):
+        # Scaled by 1.1^f about (0, 0, 3), then turned 10f degrees about the x axis through (0, 5, 0),
+        # counter-clockwise seen face-on (y right, z up).
+        x, y, z = (c * 1.1 ** f for c in minus(point, (0, 0, 3)))
+        y, z = y, z + 3
+        a = math.radians(10 * f)
+        y, z = y - 5, z
+        return (x, 5 + y * math.cos(a) - z * math.sin(a), y * math.sin(a) + z * math.cos(a))
+
+    off = [max(math.dist(shown, composed(given, f)) for shown, given in zip(frames[f], square)) for f in (1, 3)]
+    return (f"SCALE 1.1 ABOUT 0 0 3 stands {off[0]:.3f} from that composition after one frame and {off[1]:.3f} "
+            f"after three, where the seed's tick puts it")
+
+
 def claims(apcs, data):
     way1 = f"{data}/n-to-l/way1.dat"
     with open(way1) as source:
@@ -129,6 +169,8 @@ def claims(apcs, data):
     gaps = [b - a for a, b in zip(frames, frames[1:])]
     yield (f"along the path the first gap between frames is {gaps[0]:.2f} units and the last {gaps[-1]:.2f}: "
            f"the * marks crowd toward KEY1, where the point now starts slowly")
+
+    yield accumulation_claim(apcs)
 
 
 def main():

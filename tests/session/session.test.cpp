@@ -411,7 +411,7 @@ TEST_CASE("? and F1 open the help screen of the step, any key closes it", "[sess
     reach_control_choice(session);
     press(session, {ch('8'), ch('?')});
     REQUIRE_FALSE(session.screen().graphics);
-    REQUIRE(screen_text(session).find("  J               three steps left (Shift-J)") != std::string::npos);
+    REQUIRE(screen_text(session).find("  J, L            three steps left, right (Shift-J, Shift-L)") != std::string::npos);
     press(session, {ch('6')}); // closes the help; the staff is unchanged
     REQUIRE(session.phase() == SessionPhase::staff);
     REQUIRE(graphics_message(session) == "way1.dat: TENSION  control points 1 to 4 of 4");
