@@ -81,7 +81,6 @@ def animation_seconds(apcs, folder, script, options):
 
 # A tmux server of the plan's own: another test's server ending cannot take this one's sessions.
 SOCKET = f"apcs-class-plan-{os.getpid()}"
-BLANK_PANE = "\n" * 24
 
 
 def tmux(*args):
@@ -98,19 +97,37 @@ def changed_screen(session, before, most_seconds=10):
         time.sleep(0.05)
 
 
-def settled_screen(session, quiet):
+def caption_row(screen):
+    return screen.rstrip("\n").split("\n")[-1].strip()
+
+
+def settled_screen(session, quiet, seen):
     """The pane once it has not changed for `quiet` seconds (the replay plays a PgDn's keys at once;
-    an animation changes the pane once a frame, so a presenter waits for its end)."""
+    an animation changes the pane once a frame, so a presenter waits for its end). Every caption
+    row on the way is added to `seen`: on a loaded machine a step's screens may stand longer than
+    the quiet time before the replay reaches its caption."""
     screen, since = tmux("capture-pane", "-p", "-t", session), time.time()
+    seen.add(caption_row(screen))
     deadline = time.time() + 120
     while time.time() < deadline:
         time.sleep(0.1)
         now = tmux("capture-pane", "-p", "-t", session)
+        seen.add(caption_row(now))
         if now != screen:
             screen, since = now, time.time()
         elif time.time() - since > quiet:
             return screen
     return screen
+
+
+def first_caption_screen(session):
+    """Waits until the replay has played its preamble and stands at its first caption (the badge
+    says "caption 1 of N"), up to 30 s."""
+    deadline = time.time() + 30
+    while time.time() < deadline:
+        if "caption 1 of" in tmux("capture-pane", "-p", "-t", session).split("\n")[0]:
+            return
+        time.sleep(0.05)
 
 
 def play(apcs, folder, script, options, presses, glyphs, shown):
@@ -127,19 +144,17 @@ def play(apcs, folder, script, options, presses, glyphs, shown):
         delay = options[options.index("--delay") + 1] if "--delay" in options else "100"
         quiet = max(0.8, int(delay) / 1000 + 0.5)
         try:
-            changed_screen(session, BLANK_PANE)
-            screen = settled_screen(session, quiet)
-            seen.add(screen.rstrip("\n").split("\n")[-1].strip())
+            first_caption_screen(session)
+            screen = settled_screen(session, quiet, seen)
             shown.append(f"=== {script}: the replay begins\n{screen}")
             for number, key in enumerate(presses, 1):
                 tmux("send-keys", "-t", session, key)
                 changed_screen(session, screen)
-                screen = settled_screen(session, quiet)
-                seen.add(screen.rstrip("\n").split("\n")[-1].strip())
+                screen = settled_screen(session, quiet, seen)
                 shown.append(f"=== {script}: press {number}, {key}\n{screen}")
         finally:
             tmux("kill-server")
-    return seen, screen.rstrip("\n").split("\n")[-1].strip()
+    return seen, caption_row(screen)
 
 
 def main():
