@@ -4,6 +4,7 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
@@ -150,9 +151,22 @@ std::optional<ExitStatus> refuse_work_folder(const std::filesystem::path& folder
     return ExitStatus::bad_input;
 }
 
-// --keys FILE: its script into `script`, its text into `script_text`; nothing without --keys.
-std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScript& script, std::string& script_text,
-                                          std::ostream& err)
+// An exercise's INPUT lines checked against the work folder before anything is written: a file a
+// session rewrote (an accepted path) could meet the goal with no key typed (issue 43). The run is
+// refused, on a terminal too, rather than replayed on the exercise's files: the script holds their
+// checksums only, not their content.
+std::optional<ExitStatus> refuse_changed_inputs(const CommonOptions& options, const KeyScript& script,
+                                                const std::filesystem::path& folder, std::ostream& err)
+{
+    if (const Expected<void> checked = check_script_inputs(script.inputs, folder, options.keys->string()); !checked)
+        return report_bad_input(checked.error(), err);
+    return std::nullopt;
+}
+
+// --keys FILE: its script into `script`, its text into `script_text`, an exercise's inputs checked
+// in `folder`; nothing without --keys.
+std::optional<ExitStatus> read_key_script(const CommonOptions& options, const std::filesystem::path& folder,
+                                          KeyScript& script, std::string& script_text, std::ostream& err)
 {
     if (!options.keys)
         return std::nullopt;
@@ -170,6 +184,8 @@ std::optional<ExitStatus> read_key_script(const CommonOptions& options, KeyScrip
     const auto inbetweens = static_cast<std::size_t>(std::max(options.path.inbetween_count, 0));
     if (Expected<void> reachable = goals_within_inbetweens(parsed->goals, inbetweens, options.keys->string()); !reachable)
         return report_bad_input(reachable.error(), err);
+    if (const std::optional<ExitStatus> refused = refuse_changed_inputs(options, *parsed, folder, err))
+        return refused;
     script = std::move(*parsed);
     script_text = *text;
     return std::nullopt;
@@ -440,7 +456,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     }
     KeyScript script;
     std::string script_text;
-    if (const std::optional<ExitStatus> refused = read_key_script(options, script, script_text, err))
+    if (const std::optional<ExitStatus> refused = read_key_script(options, folder, script, script_text, err))
         return *refused;
     const bool headless = !::isatty(STDIN_FILENO) || !terminal;
     if (const std::optional<ExitStatus> refused = refuse_replay_without_its_needs(options, headless, err))

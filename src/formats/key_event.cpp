@@ -87,6 +87,12 @@ struct StartLine {
     bool after_caption_or_goal = false;
 };
 
+// What parse_script keeps between lines besides the events.
+struct ScriptState {
+    StartLine start;
+    std::size_t open_goal = 0; // the first goal whose answer has not ended
+};
+
 // A line "START" (a comment may follow): its place checked, the preamble's end kept. Whether the
 // line is one.
 Expected<bool> take_start_line(std::string_view line, StartLine& start, std::size_t events, KeyScript* kept,
@@ -116,6 +122,64 @@ Expected<bool> take_start_line(std::string_view line, StartLine& start, std::siz
     return true;
 }
 
+// An exercise's INPUT line (script_input.h): in the preamble, before START, the first caption and
+// GOAL, since the inputs are checked before a replay begins; each file named once.
+Expected<void> take_input_line(std::string_view line, const StartLine& start, KeyScript* kept,
+                               const std::string& file_name, int line_number)
+{
+    Expected<ScriptInput> input = parse_input_line(line.substr(6), file_name, line_number);
+    if (!input)
+        return input.error();
+    if (start.line_number != 0 || start.after_caption_or_goal)
+        return Diagnostic{file_name, line_number,
+                          "INPUT after START, a caption or GOAL; expected an exercise's INPUT lines in its preamble, "
+                          "before START (they are checked before the replay begins)"};
+    if (kept == nullptr)
+        return ok;
+    for (const ScriptInput& earlier : kept->inputs)
+        if (equals_ignoring_case(earlier.name, input->name))
+            return Diagnostic{file_name, line_number,
+                              "a second INPUT " + input->name + " (the first is on line " +
+                                  std::to_string(earlier.line_number) + "); expected each input named once"};
+    kept->inputs.push_back(*input);
+    return ok;
+}
+
+// A GOAL line: its goal kept, the answers before it ended.
+Expected<void> take_goal_line(std::string_view line, ScriptState& state, std::size_t events, KeyScript* kept,
+                              const std::string& file_name, int line_number)
+{
+    state.start.after_caption_or_goal = true;
+    Expected<ScriptGoal> goal = parse_goal_line(line.substr(5), file_name, line_number);
+    if (!goal)
+        return goal.error();
+    if (kept != nullptr) {
+        end_answers(*kept, state.open_goal, events);
+        goal->before_event = goal->answer_end = events;
+        kept->goals.push_back(*goal);
+    }
+    return ok;
+}
+
+// A START, INPUT or GOAL line taken into `kept`. Whether the line is one of them.
+Expected<bool> take_directive_line(std::string_view line, ScriptState& state, std::size_t events, KeyScript* kept,
+                                   const std::string& file_name, int line_number)
+{
+    const Expected<bool> is_start = take_start_line(line, state.start, events, kept, file_name, line_number);
+    if (!is_start || *is_start)
+        return is_start;
+    Expected<void> taken = ok;
+    if (line.starts_with("INPUT "))
+        taken = take_input_line(line, state.start, kept, file_name, line_number);
+    else if (line.starts_with("GOAL "))
+        taken = take_goal_line(line, state, events, kept, file_name, line_number);
+    else
+        return false;
+    if (!taken)
+        return taken.error();
+    return true;
+}
+
 // The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
 {
@@ -126,8 +190,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         return ended.error();
     std::optional<Diagnostic> problem;
     int line_number = 0;
-    std::size_t open_goal = 0; // the first goal whose answer has not ended
-    StartLine start;
+    ScriptState state;
     while (!text.empty()) {
         ++line_number;
         std::string_view line = take_line(text);
@@ -137,23 +200,11 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
             continue;
         }
-        const Expected<bool> is_start = take_start_line(line, start, events.size(), kept, file_name, line_number);
-        if (!is_start)
-            return is_start.error();
-        if (*is_start)
+        const Expected<bool> directive = take_directive_line(line, state, events.size(), kept, file_name, line_number);
+        if (!directive)
+            return directive.error();
+        if (*directive)
             continue;
-        if (line.starts_with("GOAL ")) {
-            start.after_caption_or_goal = true;
-            Expected<ScriptGoal> goal = parse_goal_line(line.substr(5), file_name, line_number);
-            if (!goal)
-                return goal.error();
-            if (kept != nullptr) {
-                end_answers(*kept, open_goal, events.size());
-                goal->before_event = goal->answer_end = events.size();
-                kept->goals.push_back(*goal);
-            }
-            continue;
-        }
         const std::size_t comment = line.find(';');
         const Expected<std::optional<std::string>> caption =
             comment == std::string_view::npos ? Expected<std::optional<std::string>>(std::nullopt)
@@ -171,14 +222,14 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
-        start.after_caption_or_goal = start.after_caption_or_goal || caption->has_value();
+        state.start.after_caption_or_goal = state.start.after_caption_or_goal || caption->has_value();
         if (*caption && kept != nullptr) {
-            end_answers(*kept, open_goal, events.size());
+            end_answers(*kept, state.open_goal, events.size());
             kept->captions.push_back({events.size(), **caption});
         }
     }
     if (kept != nullptr)
-        end_answers(*kept, open_goal, events.size());
+        end_answers(*kept, state.open_goal, events.size());
     // Keys named by words (ENTER) take many bytes each: give back what they left unused.
     if (events.size() < events.capacity() / 2)
         events.shrink_to_fit();

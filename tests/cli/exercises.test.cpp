@@ -8,15 +8,21 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <sys/stat.h>
 
 using namespace apcs;
 
 namespace {
 
 const std::filesystem::path exercises = std::filesystem::path(APCS_SOURCE_DIR) / "data" / "exercises";
+// The answers, apart from the exercises (issue 43): a copy of data/exercises without them is what
+// students get.
+const std::filesystem::path answers = exercises / "answers";
 
 std::string read_all(const std::filesystem::path& file)
 {
@@ -26,19 +32,21 @@ std::string read_all(const std::filesystem::path& file)
     return text.str();
 }
 
+// data/exercises as a teacher hands it out: its files, not answers/.
 void copy_exercises(const test::TempFolder& folder)
 {
     for (const auto& entry : std::filesystem::directory_iterator(exercises))
-        std::filesystem::copy_file(entry.path(), folder / entry.path().filename().string());
+        if (entry.is_regular_file())
+            std::filesystem::copy_file(entry.path(), folder / entry.path().filename().string());
 }
 
-// The shipped exercises: data/exercises/exercise-*.keys less the answers, sorted.
+// The shipped exercises: data/exercises/exercise-*.keys, sorted.
 std::vector<std::string> shipped_exercises()
 {
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(exercises)) {
         const std::string name = entry.path().stem().string();
-        if (name.starts_with("exercise-") && entry.path().extension() == ".keys" && !name.ends_with("-answer"))
+        if (name.starts_with("exercise-") && entry.path().extension() == ".keys")
             names.push_back(name);
     }
     std::sort(names.begin(), names.end());
@@ -48,6 +56,13 @@ std::vector<std::string> shipped_exercises()
 test::CommandRun replay(const test::TempFolder& folder, const std::string& script)
 {
     return test::run_apcs({"--keys", (folder / script).string(), "--workdir", folder.path().string()});
+}
+
+// An answer played from answers/ on the copy in `folder`: its file names are the work folder's.
+test::CommandRun replay_answer(const test::TempFolder& folder, const std::string& exercise)
+{
+    return test::run_apcs(
+        {"--keys", (answers / (exercise + "-answer.keys")).string(), "--workdir", folder.path().string()});
 }
 
 } // namespace
@@ -61,7 +76,7 @@ TEST_CASE("every shipped exercise's answer reaches its goal headless, and the ex
         CAPTURE(name);
         const test::TempFolder answered;
         copy_exercises(answered);
-        const auto answer = replay(answered, name + "-answer.keys");
+        const auto answer = replay_answer(answered, name);
         INFO(answer.err);
         REQUIRE(answer.status == 0);
         REQUIRE(answer.err.find("goal not reached") == std::string::npos);
@@ -83,7 +98,7 @@ TEST_CASE("a wrong answer to an exercise ends with exit 1 and FILE:LINE: goal no
 {
     const test::TempFolder folder;
     copy_exercises(folder);
-    std::string script = read_all(exercises / "exercise-1-tension-answer.keys");
+    std::string script = read_all(answers / "exercise-1-tension-answer.keys");
     const std::size_t answer = script.find("L L L 6");
     REQUIRE(answer != std::string::npos);
     script.replace(answer, 7, "6 6 6");
@@ -91,7 +106,7 @@ TEST_CASE("a wrong answer to an exercise ends with exit 1 and FILE:LINE: goal no
     const auto result = replay(folder, "wrong.keys");
     REQUIRE(result.status == 1);
     REQUIRE(result.err == "apcs: the key script ended at step 4: four-line staff\n" + (folder / "wrong.keys").string() +
-                              ":14: goal not reached: tension +0.15, want +0.40 to +0.60\n");
+                              ":20: goal not reached: tension +0.15, want +0.40 to +0.60\n");
 }
 
 TEST_CASE("a GOAL line's answer is the keys up to the next caption, GOAL line or the end", "[session][exercises]")
@@ -150,4 +165,99 @@ TEST_CASE("a GOAL INBETWEEN beyond the session's in-betweens is refused with its
     REQUIRE_FALSE(beyond);
     REQUIRE(beyond.error().to_string() == "g.keys:3: GOAL INBETWEEN 13 names an in-between beyond the 12 the session "
                                           "makes (--inbetweens 12); expected K from 1 to 12");
+}
+
+namespace {
+
+// Every file of `folder` with its content, to show that a refused run wrote nothing.
+std::map<std::string, std::string> folder_content(const test::TempFolder& folder)
+{
+    std::map<std::string, std::string> content;
+    for (const auto& entry : std::filesystem::directory_iterator(folder.path())) {
+        const std::filesystem::file_status status = entry.symlink_status();
+        std::string& kept = content[entry.path().filename().string()];
+        if (std::filesystem::is_symlink(status))
+            kept = "link to " + std::filesystem::read_symlink(entry.path()).string();
+        else
+            kept = std::filesystem::is_regular_file(status) ? read_all(entry.path()) : "not a file";
+    }
+    return content;
+}
+
+} // namespace
+
+TEST_CASE("an exercise refuses the leftovers of an accepted path and headless with no answer is exit 1 on any folder",
+          "[cli][exercises][inputs]")
+{
+    // Issue 43: once a session accepted a path, way1.dat held the answer's tension, and the
+    // exercise alone passed with nothing typed. The answer, then the keys that accept the path (a
+    // caption ends the answer, so its goal is checked first), leave that folder.
+    const test::TempFolder folder;
+    copy_exercises(folder);
+    const std::string accepted =
+        read_all(answers / "exercise-1-tension-answer.keys") + ";; accepted\nENTER ENTER ENTER ENTER N\n";
+    const test::TempFolder scripts;
+    const auto leftovers = test::run_apcs({"--keys", scripts.write("accept.keys", accepted).string(), "--workdir",
+                                           folder.path().string()});
+    INFO(leftovers.err);
+    REQUIRE(leftovers.status == 0);
+    REQUIRE(read_all(folder / "way1.dat") != read_all(exercises / "way1.dat"));
+    const auto refused = replay(folder, "exercise-1-tension.keys");
+    REQUIRE(refused.status == 1);
+    REQUIRE(refused.err.starts_with((folder / "exercise-1-tension.keys").string() +
+                                    ":7: way1.dat differs from the exercise's (CRC-32 "));
+    REQUIRE(refused.err.ends_with("copy the exercise's files into the work folder again\n"));
+    REQUIRE(refused.out.empty());
+    const test::TempFolder fresh;
+    copy_exercises(fresh);
+    const auto unanswered = replay(fresh, "exercise-1-tension.keys");
+    REQUIRE(unanswered.status == 1);
+    REQUIRE(unanswered.err.find(":17: goal not reached: tension +0.00, want +0.40 to +0.60") != std::string::npos);
+    const test::TempFolder answered;
+    copy_exercises(answered);
+    REQUIRE(replay_answer(answered, "exercise-1-tension").status == 0);
+}
+
+TEST_CASE("an exercise whose input is missing or a FIFO or a symbolic link or whose INPUT line is malformed is "
+          "refused with exit 1 and writes nothing",
+          "[cli][exercises][inputs]")
+{
+    const test::TempFolder folder;
+    copy_exercises(folder);
+    const std::string script_name = (folder / "exercise-1-tension.keys").string();
+    const std::string again = ": copy the exercise's files into the work folder again\n";
+    std::string expected;
+    SECTION("a missing input")
+    {
+        std::filesystem::remove(folder / "key2.dat");
+        expected = script_name + ":6: key2.dat is missing from the work folder " + folder.path().string() +
+                   "; expected the exercise's input" + again;
+    }
+    SECTION("a FIFO as an input")
+    {
+        std::filesystem::remove(folder / "way1.dat");
+        REQUIRE(::mkfifo((folder / "way1.dat").c_str(), 0600) == 0);
+        expected = script_name + ":7: way1.dat is a FIFO; expected the exercise's input, a regular file of its own" + again;
+    }
+    SECTION("a symbolic link as an input")
+    {
+        std::filesystem::remove(folder / "way1.dat");
+        std::filesystem::create_symlink(exercises / "way1.dat", folder / "way1.dat");
+        expected =
+            script_name + ":7: way1.dat is a symbolic link; expected the exercise's input, a regular file of its own" + again;
+    }
+    SECTION("a bad hex value")
+    {
+        std::string script = read_all(folder / "exercise-1-tension.keys");
+        script.replace(script.find("CRC32 1db7d833"), 14, "CRC32 1db7d8z3");
+        folder.write("exercise-1-tension.keys", script);
+        expected = script_name + ":7: expected INPUT NAME CRC32 XXXXXXXX (XXXXXXXX the CRC-32 of the file's bytes in 8 "
+                                 "hex digits); found 'INPUT way1.dat CRC32 1db7d8z3'\n";
+    }
+    const auto before = folder_content(folder);
+    const auto result = replay(folder, "exercise-1-tension.keys");
+    REQUIRE(result.status == 1);
+    REQUIRE(result.err == expected);
+    REQUIRE(result.out.empty());
+    REQUIRE(folder_content(folder) == before);
 }

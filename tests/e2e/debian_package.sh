@@ -48,10 +48,16 @@ apcs --keys "$work/session/session.keys" --workdir "$work/session" < /dev/null >
   fail "apcs --keys: exit $?: $(cat "$work/err")"
 [ -s "$work/session/inb001.dat" ] || fail "the session wrote no inb001.dat: $(ls "$work/session")"
 
+# The answers are the teacher's: in the documentation's folder, not beside the exercises.
+[ ! -e /usr/share/apcs/exercises/answers ] || fail "the answers are installed beside the exercises"
+cp -r /usr/share/apcs/exercises "$work/ex"
+apcs --keys /usr/share/doc/apcs/answers/exercise-1-tension-answer.keys --workdir "$work/ex" < /dev/null \
+  > "$work/out" 2> "$work/err" || fail "the installed answer: exit $?: $(cat "$work/err")"
+
 MANPAGER=cat MANWIDTH=80 man apcs > "$work/man" 2> "$work/err" || fail "man apcs: $(cat "$work/err")"
 grep -q "Kochanek" "$work/man" || fail "man apcs shows no page: $(head "$work/man")"
 
 apt-get remove -y -qq apcs > "$work/remove.log" 2>&1 || fail "apt-get remove: $(cat "$work/remove.log")"
 trap 'rm -rf "$work"' EXIT
 [ ! -e /usr/bin/apcs ] && [ ! -e /usr/share/apcs ] || fail "apt-get remove left files behind"
-echo "passed: built, lintian without error, installed, figures, a session, man apcs, removed"
+echo "passed: built, lintian without error, installed, figures, a session, the answers apart, man apcs, removed"

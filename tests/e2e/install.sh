@@ -52,4 +52,12 @@ cp -r "$prefix/share/apcs/n-to-l" "$work/session"
 "$apcs" --keys "$prefix/share/apcs/n-to-l/session.keys" --workdir "$work/session" < /dev/null > "$work/out" 2> "$work/err" ||
   fail "the session: exit $?: $(cat "$work/err")"
 [ -s "$work/session/inb001.dat" ] || fail "no inb001.dat: $(ls "$work/session")"
-echo "passed: installed, figures from share/apcs, APCS_DATA, a headless session"
+# The exercises install without their answers, which go with the documentation; an installed answer
+# replays from there on a copy of the installed exercises.
+[ ! -e "$prefix/share/apcs/exercises/answers" ] || fail "the answers are installed beside the exercises"
+[ -f "$prefix/share/doc/apcs/answers/exercise-1-tension-answer.keys" ] ||
+  fail "no answers in share/doc/apcs/answers: $(ls "$prefix/share/doc/apcs")"
+cp -r "$prefix/share/apcs/exercises" "$work/ex"
+"$apcs" --keys "$prefix/share/doc/apcs/answers/exercise-1-tension-answer.keys" --workdir "$work/ex" < /dev/null \
+  > "$work/out" 2> "$work/err" || fail "the installed answer: exit $?: $(cat "$work/err")"
+echo "passed: installed, figures from share/apcs, APCS_DATA, a headless session, the answers apart"

@@ -220,7 +220,7 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
             replay.finish();
             return replay.goals();
         };
-        REQUIRE(judged(data_folder / "exercises" / "exercise-1-tension-answer.keys"));
+        REQUIRE(judged(data_folder / "exercises" / "answers" / "exercise-1-tension-answer.keys"));
         const Expected<void> failed = judged(exercise);
         REQUIRE_FALSE(failed);
         REQUIRE(failed.error().to_string().starts_with(exercise.string() + ":" + std::to_string(script.goals[0].line_number) +

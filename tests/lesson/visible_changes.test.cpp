@@ -52,7 +52,11 @@ std::vector<SessionScreen> caption_screens(const std::filesystem::path& script_f
                                            GlyphSet glyphs)
 {
     const test::TempFolder folder;
-    for (const auto& entry : std::filesystem::directory_iterator(data_folder / script_file.parent_path()))
+    // An answer's inputs are its exercise's, in the folder above answers/.
+    std::filesystem::path inputs = data_folder / script_file.parent_path();
+    if (inputs.filename() == "answers")
+        inputs = inputs.parent_path();
+    for (const auto& entry : std::filesystem::directory_iterator(inputs))
         if (entry.is_regular_file())
             std::filesystem::copy_file(entry.path(), folder / entry.path().filename().string());
     FolderFiles files(folder.path());

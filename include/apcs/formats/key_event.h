@@ -3,6 +3,7 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/physical_key.h"
 #include "apcs/formats/script_goal.h"
+#include "apcs/formats/script_input.h"
 
 #include <cstdint>
 #include <optional>
@@ -24,7 +25,8 @@ struct KeyEvent {
 
 // A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
 // literally; any other line holds tokens — a printable character, or a physical key's script name
-// (ENTER, ESC, … CTRL-L: physical_key.h); ';' starts a comment. Returns the events, or the first
+// (ENTER, ESC, … CTRL-L: physical_key.h); ';' starts a comment. START, GOAL (script_goal.h) and
+// INPUT (script_input.h) lines are a lesson's and an exercise's, kept by parse_captioned_key_script. Returns the events, or the first
 // problem with its line, named as `file_name`.
 // A longer script is refused before it is read: 16 MiB is 16 million keystrokes or more, and
 // each takes sizeof(KeyEvent) = 8 bytes once parsed.
@@ -58,6 +60,7 @@ struct KeyScript {
     std::vector<ScriptCaption> captions;
     std::vector<TypedLine> typed_lines;
     std::vector<ScriptGoal> goals; // GOAL lines (script_goal.h), in order
+    std::vector<ScriptInput> inputs; // INPUT lines (script_input.h): the files an exercise is made for
     // The keys before the script's START line (SPEC §3.1): the opening prompts' answers, which a
     // paced replay plays as one step when it begins; 0 without START.
     std::size_t preamble_end = 0;

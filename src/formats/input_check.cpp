@@ -1,0 +1,87 @@
+#include "apcs/formats/input_check.h"
+
+#include "apcs/formats/file_io.h"
+#include "posix_files.h"
+
+#include <zlib.h>
+
+namespace apcs {
+
+using namespace posix_files;
+
+namespace {
+
+constexpr const char* copy_again = "copy the exercise's files into the work folder again";
+
+// The CRC-32 of the rest of an open file.
+Expected<std::uint32_t> crc32_of_descriptor(int descriptor)
+{
+    uLong crc = ::crc32(0L, Z_NULL, 0);
+    unsigned char buffer[1 << 16];
+    while (true) {
+        const ssize_t got = ::read(descriptor, buffer, sizeof buffer);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0)
+            return Diagnostic{"", 0, "cannot be read: " + system_reason(errno)};
+        if (got == 0)
+            return static_cast<std::uint32_t>(crc);
+        crc = ::crc32(crc, buffer, static_cast<uInt>(got));
+    }
+}
+
+// The input's problem, if any, as "NAME what; expected …": the file's bytes checked against the
+// exercise's CRC-32.
+Expected<void> check_input(const ScriptInput& input, const std::filesystem::path& folder)
+{
+    // An input is looked for as the session will read it: a name in another case is the same file
+    // (find_input_path, as DOS compared names).
+    const Expected<std::filesystem::path> found = find_input_path(folder / input.name);
+    if (!found)
+        return Diagnostic{"", 0, input.name + " " + found.error().message};
+    struct stat status {};
+    if (::lstat(found->c_str(), &status) != 0 && errno == ENOENT)
+        return Diagnostic{"", 0,
+                          input.name + " is missing from the work folder " + folder.string() +
+                              "; expected the exercise's input: " + copy_again};
+    const Expected<std::uint32_t> crc32 = file_crc32(*found);
+    if (!crc32)
+        return Diagnostic{"", 0, input.name + " " + crc32.error().message + ": " + copy_again};
+    if (*crc32 != input.crc32)
+        return Diagnostic{"", 0,
+                          input.name + " differs from the exercise's (CRC-32 " + crc32_text(*crc32) + ", expected " +
+                              crc32_text(input.crc32) + "): a session rewrote it, or it is another exercise's; " +
+                              copy_again};
+    return ok;
+}
+
+} // namespace
+
+Expected<std::uint32_t> file_crc32(const std::filesystem::path& file)
+{
+    struct stat status {};
+    if (::lstat(file.c_str(), &status) != 0)
+        return Diagnostic{"", 0, "cannot be read: " + system_reason(errno)};
+    const std::string expected = "; expected the exercise's input, a regular file of its own";
+    if (!S_ISREG(status.st_mode))
+        return Diagnostic{"", 0, "is " + kind_of(status.st_mode) + expected};
+    // O_NOFOLLOW and O_NONBLOCK, then fstat: a file swapped for a link or a FIFO since lstat is
+    // refused, not followed or waited on.
+    FileDescriptor descriptor(::open(file.c_str(), O_RDONLY | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK | O_NOCTTY));
+    if (descriptor.get() < 0)
+        return Diagnostic{"", 0, "cannot be read: " + system_reason(errno)};
+    if (::fstat(descriptor.get(), &status) != 0 || !S_ISREG(status.st_mode))
+        return Diagnostic{"", 0, "is " + kind_of(status.st_mode) + expected};
+    return crc32_of_descriptor(descriptor.get());
+}
+
+Expected<void> check_script_inputs(const std::vector<ScriptInput>& inputs, const std::filesystem::path& folder,
+                                   const std::string& script_name)
+{
+    for (const ScriptInput& input : inputs)
+        if (const Expected<void> checked = check_input(input, folder); !checked)
+            return Diagnostic{script_name, input.line_number, checked.error().message};
+    return ok;
+}
+
+} // namespace apcs
