@@ -146,7 +146,11 @@ void PathPicture::pin_reference(std::string label)
 {
     ++m_revision;
     m_reference = Reference{points(), std::move(label), {}};
-    if (m_view)
+    // Pinned, the reference is the curve: its pixels are the curve's once drawn whole, and need not
+    // be evaluated again (a second on 10^6 points).
+    if (m_view && m_curve.drawn() && m_evaluated.segments_unmade.empty())
+        m_reference->pixels = m_curve.pixels();
+    else if (m_view)
         draw_reference();
 }
 
