@@ -1,12 +1,12 @@
 #include "apcs/screens/reference_curve.h"
 
 #include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/screen_layout.h"
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <optional>
 #include <vector>
 
@@ -18,14 +18,6 @@ namespace {
 constexpr std::size_t longest_label = 40;
 constexpr int label_column = 2;
 
-std::string lower_case(std::string_view name)
-{
-    std::string lower(name);
-    for (char& character : lower)
-        character = static_cast<char>(std::tolower(static_cast<unsigned char>(character)));
-    return lower;
-}
-
 std::string values_named(const StaffValues& staff, bool short_names)
 {
     std::string text;
@@ -33,7 +25,7 @@ std::string values_named(const StaffValues& staff, bool short_names)
         const double value = staff[line];
         if (format_staff_value(value) == format_staff_value(0.0))
             continue;
-        const std::string name = lower_case(staff_line_name(line));
+        const std::string name = ascii_lower_case(staff_line_name(line));
         text += (text.empty() ? "" : "  ") + (short_names ? name.substr(0, 1) : name) + " " + format_staff_value(value);
     }
     return text;
