@@ -231,7 +231,7 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
 // The script replayed at once, each step's screen on `out` and each caption as ";; TEXT" where
 // it is reached. Nobody watched the screen: a file that could not be written is the run's failure.
 ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name, GlyphSet glyphs,
-                           ReplayHooks hooks, std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
+                           ReplayHooks hooks, KeyRecording& recorded, std::ostream& out, std::ostream& err)
 {
     hooks.caption_reached = [&out, &script, pages = std::move(hooks.caption_reached)](std::size_t index,
                                                                                      const SessionScreen& shown) {
@@ -241,7 +241,7 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     };
     ReplayDriver replay(session, script, file_name, ReplayPace{}, std::move(hooks), ReplayAudience::headless);
     run_headless_session(replay, session, glyphs, out);
-    recorded = replay.handled();
+    recorded = replay.recording();
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     if (!replay.goals())
@@ -256,14 +256,14 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
 // The session on the terminal, the script replayed first; the files it wrote listed on `out` at
 // its end.
 ExitStatus run_on_terminal(Session& session, const KeyScript& script, const CommonOptions& options, GlyphSet glyphs,
-                           const TerminalRunner& terminal, ReplayHooks hooks, std::vector<KeyEvent>& recorded,
+                           const TerminalRunner& terminal, ReplayHooks hooks, KeyRecording& recorded,
                            std::ostream& out, std::ostream& err)
 {
     const ColourChoice colour = session_colour(options.colour, std::getenv("NO_COLOR"));
     const std::string script_name = options.keys ? options.keys->string() : std::string();
     ReplayDriver replay(session, script, script_name, options.pace, std::move(hooks), ReplayAudience::terminal);
     const Expected<ExitStatus> ran = terminal(replay, glyphs, colour, options.pixels);
-    recorded = replay.handled();
+    recorded = replay.recording();
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -380,19 +380,19 @@ KeyFileGuard files_read(const CommonOptions& options, const Session& session, co
 // before the session (refuse_record_target) and guarded during it, so the session wrote nothing
 // there; a KEY answer typed live may still have named it, and then it is a key file.
 std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFileGuard& read,
-                                      const std::vector<KeyEvent>& recorded, std::ostream& out, std::ostream& err)
+                                      const KeyRecording& recorded, std::ostream& out, std::ostream& err)
 {
     if (!options.record)
         return std::nullopt;
     if (*options.record == "-") {
-        out << format_key_script(recorded);
+        out << recorded.text();
         return std::nullopt;
     }
     if (read.guards(*options.record))
         return report_bad_input({options.record->string(), 0,
                                  "is a key file; key files are never written (the keystrokes were not recorded)"},
                                 err);
-    const Expected<WriteResult> written = write_file_atomically(*options.record, format_key_script(recorded), &read);
+    const Expected<WriteResult> written = write_file_atomically(*options.record, recorded.text(), &read);
     if (!written)
         return report_bad_input(written.error(), err);
     return std::nullopt;
@@ -487,7 +487,7 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     // headless, every key's work is done before the next (the screens printed are final).
     settings.refinement = headless ? Refinement::at_once : Refinement::in_steps;
     Session session(settings, files);
-    std::vector<KeyEvent> recorded;
+    KeyRecording recorded;
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;

@@ -608,4 +608,11 @@ std::optional<StaffValues> PathEditor::region_staff() const
     return std::nullopt;
 }
 
+std::optional<StaffLine> PathEditor::staff_line() const
+{
+    if (const auto* staff = std::get_if<Staff>(&m_mode))
+        return staff->line;
+    return std::nullopt;
+}
+
 } // namespace apcs

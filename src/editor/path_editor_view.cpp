@@ -20,8 +20,10 @@ std::string PathEditor::message() const
 {
     if (!m_problem.empty())
         return m_problem;
-    if (const auto* staff = std::get_if<Staff>(&m_mode); staff != nullptr && staff->field)
-        return staff->field->message(staff_line_name(staff->line));
+    if (field_open()) {
+        const Staff& staff = std::get<Staff>(m_mode);
+        return staff.field->message(staff_line_name(staff.line));
+    }
     if (!m_notice.empty())
         return m_notice;
     return std::visit(
@@ -37,6 +39,12 @@ std::string PathEditor::message() const
             [](const AskAgain&) { return std::string(text::ask_again); },
         },
         m_mode);
+}
+
+bool PathEditor::field_open() const
+{
+    const auto* staff = std::get_if<Staff>(&m_mode);
+    return staff != nullptr && staff->field.has_value();
 }
 
 // After a staff key, how far it moved the curve (SPEC §7.2.1) follows what the line shows; when both
@@ -156,12 +164,15 @@ PathScreenContent PathEditor::screen_content() const
     return content;
 }
 
-GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point) const
+GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, std::string_view goal_feedback) const
 {
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
-    // A first picture says it is one (its in-betweens are not drawn); a problem matters more.
-    if (m_problem.empty() && m_picture->refining())
+    // A first picture says it is one (its in-betweens are not drawn); a problem matters more, and
+    // a goal's feedback more than both, once the field and the last key's notice have been read.
+    if (!goal_feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open())
+        content.message = goal_feedback;
+    else if (m_problem.empty() && m_picture->refining())
         content.message = m_picture->refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;

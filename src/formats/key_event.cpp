@@ -236,20 +236,6 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     return events;
 }
 
-// The typed text `pending_text` as a script's TEXT line, emptying it. A TEXT line may not end in a
-// space that an editor could strip, so its trailing spaces follow as SPACE tokens.
-std::string take_text_line(std::string& pending_text)
-{
-    std::string trailing_spaces;
-    while (pending_text.ends_with(' ')) {
-        pending_text.pop_back();
-        trailing_spaces += "SPACE\n";
-    }
-    std::string lines = pending_text.empty() ? std::string() : "TEXT " + pending_text + "\n";
-    pending_text.clear();
-    return lines + trailing_spaces;
-}
-
 // The TEXT line whose keys start at event `first`, if one does.
 const TypedLine* typed_line_at(const KeyScript& script, std::size_t first)
 {
@@ -315,6 +301,18 @@ std::string step_label(const KeyScript& script, std::size_t first)
     }
     const PhysicalKey* row = find_physical_key(event.key);
     return row == nullptr ? std::string() : std::string(row->script_name);
+}
+
+std::string take_text_line(std::string& pending_text)
+{
+    std::string trailing_spaces;
+    while (pending_text.ends_with(' ')) {
+        pending_text.pop_back();
+        trailing_spaces += "SPACE\n";
+    }
+    std::string lines = pending_text.empty() ? std::string() : "TEXT " + pending_text + "\n";
+    pending_text.clear();
+    return lines + trailing_spaces;
 }
 
 std::string format_key_script(const std::vector<KeyEvent>& events)

@@ -1,6 +1,7 @@
 #include "apcs/formats/script_goal.h"
 
 #include "apcs/animation/input_limits.h"
+#include "apcs/formats/number_text.h"
 
 #include <algorithm>
 #include <cctype>
@@ -169,6 +170,28 @@ std::string goal_text(const ScriptGoal& goal)
         return "in-between " + std::to_string(goal.inbetween) + " within " + within + " of " + point_text(goal.point);
     }
     return {};
+}
+
+std::string goal_line(const ScriptGoal& goal)
+{
+    std::string line = "GOAL ";
+    const auto number = [&line](double value) {
+        line += ' ';
+        append_shortest(line, value);
+    };
+    switch (goal.kind) {
+    case ScriptGoal::Kind::value:
+        line += "VALUE " + std::string(staff_line_name(goal.line));
+        number(goal.low);
+        number(goal.high);
+        return line;
+    case ScriptGoal::Kind::near: line += "NEAR"; break;
+    case ScriptGoal::Kind::inbetween: line += "INBETWEEN " + std::to_string(goal.inbetween); break;
+    }
+    for (const double coordinate : {goal.point.x, goal.point.y, goal.point.z})
+        number(coordinate);
+    number(goal.within);
+    return line;
 }
 
 std::optional<Vec3> goal_point(const ScriptGoal& goal)

@@ -1,6 +1,7 @@
 #include "apcs/lesson/goal_check.h"
 
 #include "apcs/editor/path_editor.h"
+#include "apcs/formats/text_fields.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -31,51 +32,91 @@ double segment_distance(const Vec3& point, const Vec3& from, const Vec3& to)
     return distance(point, from + along * fraction);
 }
 
-double curve_distance(const Vec3& point, const std::vector<Vec3>& samples)
+// The distance from `point` to the curve's polyline, and the segment (between control points s and
+// s + 1) where it comes nearest.
+struct CurveNearest {
+    double distance = std::numeric_limits<double>::infinity();
+    std::size_t segment = 0;
+};
+CurveNearest curve_nearest(const Vec3& point, const SampledCurve& curve)
 {
+    const std::vector<Vec3> samples = curve.samples();
     if (samples.size() == 1)
-        return distance(point, samples.front());
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t index = 1; index < samples.size(); ++index)
-        nearest = std::min(nearest, segment_distance(point, samples[index - 1], samples[index]));
+        return {distance(point, samples.front()), 0};
+    CurveNearest nearest;
+    const auto per_segment = static_cast<std::size_t>(std::max(curve.samples_per_segment, 1));
+    for (std::size_t index = 1; index < samples.size(); ++index) {
+        const double off = segment_distance(point, samples[index - 1], samples[index]);
+        if (off < nearest.distance)
+            nearest = {off, (index - 1) / per_segment};
+    }
     return nearest;
+}
+
+std::string upper_name(StaffLine line) { return std::string(staff_line_name(line)); }
+
+// Where the student stands when no key there reaches a VALUE goal: another staff line, or the
+// question after the staff.
+std::string value_hint(const ScriptGoal& goal, const PathEditor& editor)
+{
+    if (editor.phase() == SessionPhase::ask_again)
+        return "the staff is done; Y adjusts the path again";
+    const std::optional<StaffLine> line = editor.staff_line();
+    if (!line || *line == goal.line)
+        return {};
+    const std::string where = "you are on " + upper_name(*line) + "; the goal is " + upper_name(goal.line);
+    return where + (*line < goal.line ? ": Enter or Esc goes down a line" : ": finish the staff, then Y");
 }
 
 GoalProgress value_progress(const ScriptGoal& goal, const PathEditor& editor)
 {
+    const std::string want = "want " + number_text(goal.low, Sign::shown) + " to " + number_text(goal.high, Sign::shown);
     const std::optional<StaffValues> staff = editor.region_staff();
     if (!staff)
-        return {false, "no region is on the staff, want " + goal_text(goal)};
+        return {false, {}, "no region is on the staff", want, "8 puts the whole path on the staff, 2 a region"};
     const double value = (*staff)[goal.line];
     // The staff's values are multiples of the step, snapped: a bound met to 1e-9 is met.
     constexpr double slack = 1e-9;
     const bool reached = value >= goal.low - slack && value <= goal.high + slack;
-    std::string said = goal_text(goal);
-    said = said.substr(0, said.find(" within ")) + " " + number_text(value, Sign::shown);
-    return {reached, said + (reached ? ": goal reached" : ", want " + number_text(goal.low, Sign::shown) + " to " +
-                                                             number_text(goal.high, Sign::shown))};
+    const std::string shown = number_text(value, Sign::shown);
+    return {reached, shown, ascii_lower_case(staff_line_name(goal.line)) + " " + shown, want,
+            reached ? std::string() : value_hint(goal, editor)};
+}
+
+// A NEAR goal's span outside the region on the staff: no staff key there moves it.
+std::string region_hint(std::size_t segment, const PathEditor& editor)
+{
+    if (!editor.staff_line())
+        return {};
+    const std::optional<ControlRegion> region = editor.region();
+    // The values of control point k shape the spans on either side of it: k - 1 to k, k to k + 1.
+    if (!region || (segment + 1 >= region->first && segment <= region->last))
+        return {};
+    return "the region (points " + std::to_string(region->first + 1) + " to " + std::to_string(region->last + 1) +
+           ") cannot move span " + std::to_string(segment + 1) + " to " + std::to_string(segment + 2) +
+           ", nearest the goal";
 }
 
 GoalProgress distance_progress(const ScriptGoal& goal, const PathEditor& editor)
 {
     const EvaluatedPath& path = editor.evaluated();
-    double off = 0.0;
-    std::string what;
-    if (goal.kind == ScriptGoal::Kind::near) {
-        off = curve_distance(goal.point, path.curve.samples());
-        what = "the curve passes ";
-    } else {
-        if (goal.inbetween > path.inbetweens.size())
-            return {false, "the path has " + std::to_string(path.inbetweens.size()) + " in-betweens, want " +
-                               goal_text(goal)};
-        off = distance(goal.point, path.inbetweens[goal.inbetween - 1].position);
-        what = "in-between " + std::to_string(goal.inbetween) + " is ";
-    }
+    const std::string want = "want within " + number_text(goal.within, Sign::left_out);
     const std::string target = goal_text(goal);
     const std::string where = target.substr(target.find(" of (") + 4);
-    const bool reached = off <= goal.within;
-    return {reached, what + number_text(off, Sign::left_out) + " from " + where +
-                         (reached ? ": goal reached" : ", want within " + number_text(goal.within, Sign::left_out))};
+    if (goal.kind == ScriptGoal::Kind::near) {
+        const CurveNearest nearest = curve_nearest(goal.point, path.curve);
+        const std::string off = number_text(nearest.distance, Sign::left_out);
+        const bool reached = nearest.distance <= goal.within;
+        return {reached, off, "the curve passes " + off + " from " + where, want,
+                reached ? std::string() : region_hint(nearest.segment, editor)};
+    }
+    if (goal.inbetween > path.inbetweens.size())
+        return {false, {}, "the path has " + std::to_string(path.inbetweens.size()) + " in-betweens",
+                "want " + goal_text(goal), {}};
+    const double distance_now = distance(goal.point, path.inbetweens[goal.inbetween - 1].position);
+    const std::string off = number_text(distance_now, Sign::left_out);
+    return {distance_now <= goal.within, off,
+            "in-between " + std::to_string(goal.inbetween) + " is " + off + " from " + where, want, {}};
 }
 
 } // namespace
@@ -84,8 +125,32 @@ GoalProgress check_goal(const ScriptGoal& goal, const Session& session)
 {
     const PathEditor* editor = session.path_editor();
     if (editor == nullptr)
-        return {false, "no path is being shaped, want " + goal_text(goal)};
+        return {false, {}, "no path is being shaped", "want " + goal_text(goal), {}};
     return goal.kind == ScriptGoal::Kind::value ? value_progress(goal, *editor) : distance_progress(goal, *editor);
+}
+
+void explain_unmoved(GoalProgress& progress, const ScriptGoal& goal, const Session& session)
+{
+    const PathEditor* editor = session.path_editor();
+    if (goal.kind != ScriptGoal::Kind::inbetween || editor == nullptr || progress.value.empty())
+        return;
+    const std::string stayed = "in-between " + std::to_string(goal.inbetween) + " stayed " + progress.value + " off: ";
+    // Nearest spacing puts each in-between on the curve sample nearest its target (SPEC §4.3): a
+    // step smaller than a sample's share of the path moves the target, not the sample.
+    progress.hint = stayed + (editor->settings().spacing == Spacing::nearest
+                                  ? "nearest spacing snaps it to a curve sample"
+                                  : "the key changed no span it lies in");
+}
+
+std::string goal_distance_text(const GoalProgress& progress) { return progress.said + ", " + progress.want; }
+
+std::string goal_feedback(const GoalProgress& progress)
+{
+    if (progress.reached)
+        return "GOAL REACHED: " + progress.said + " (" + progress.want + ")";
+    if (!progress.hint.empty())
+        return "GOAL: " + progress.hint;
+    return "GOAL: " + goal_distance_text(progress);
 }
 
 } // namespace apcs

@@ -16,7 +16,9 @@ ReplayDriver::ReplayDriver(Session& session, const KeyScript& script, std::strin
     , m_pace(pace)
     , m_hooks(std::move(hooks))
     , m_audience(audience)
+    , m_script_lines(script_lines(script))
 {
+    m_recording.add_inputs(script.inputs);
     // Headless, the captions and goals before the first key are reached with it (play_next).
     if (m_audience == ReplayAudience::terminal) {
         // The opening answers play as one step when a paced lesson begins: it starts where it teaches.
@@ -69,6 +71,8 @@ void ReplayDriver::work()
 
 void ReplayDriver::take(const KeyEvent& key)
 {
+    if (std::exchange(m_reached_said, false))
+        m_session->say_goal({});
     if (script_ready() && plays_unasked()) {
         // Read once the keys that play unasked have played, as if typed then.
         m_typed_meanwhile.push_back(key);
@@ -125,6 +129,9 @@ void ReplayDriver::leave_exercise()
     stop();
     m_typed_after = true;
     m_session->mark_goal(std::nullopt);
+    m_session->say_goal({});
+    if (m_waiting_goal)
+        judged(*std::exchange(m_waiting_goal, std::nullopt), GoalOutcome::Verdict::not_reached, m_waiting_progress);
 }
 
 void ReplayDriver::take_tick()
@@ -170,8 +177,6 @@ ReplayDriver::Shown ReplayDriver::shown() const
         return {std::string(leave_exercise_question), {}, {}};
     if (m_typed_after)
         return {};
-    if (!m_goal_said.empty())
-        return {m_goal_said, {}, {}};
     Shown over;
     const std::optional<std::size_t> caption = caption_on_row();
     if (caption)
@@ -217,6 +222,9 @@ void ReplayDriver::settle()
     if (!m_stopped && session_idle())
         tell_captions();
     wait_at_goal();
+    // A session ended at a goal (q, Y): the goal was not reached, as far as it was then.
+    if (m_session->finished() && m_waiting_goal)
+        judged(*std::exchange(m_waiting_goal, std::nullopt), GoalOutcome::Verdict::not_reached, m_waiting_progress);
     if (!playing() && session_idle() && !at_goal())
         end_caption();
     // A goal is the student's: a Space held before it is not its answer.
@@ -244,9 +252,10 @@ void ReplayDriver::end_caption()
         m_hooks.caption_ended(m_captions_ended - 1, m_session->screen());
 }
 
-// A goal that does not hold yet keeps the replay there, its feedback on the caption row
-// ("GOAL: tension +0.10, want …") and its point marked, while the student's keys go to the
-// session; a goal that holds is passed, its answer's keys skipped.
+// A goal that does not hold yet keeps the replay there, its feedback on the message line ("GOAL:
+// tension +0.10, want …") under the task's caption and its point marked, while the student's keys
+// go to the session; a goal that holds is passed ("GOAL REACHED: …" until the next key), its
+// answer's keys skipped.
 void ReplayDriver::wait_at_goal()
 {
     m_goal_said.clear();
@@ -256,14 +265,35 @@ void ReplayDriver::wait_at_goal()
     for (; m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played; ++m_next_goal) {
         if (goals[m_next_goal].before_event < m_played)
             continue;
-        const GoalProgress progress = check_goal(goals[m_next_goal], *m_session);
-        m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goals[m_next_goal]));
-        if (!progress.reached) {
-            m_goal_said = "GOAL: " + progress.said;
+        if (!check_waiting_goal())
             return;
-        }
         m_played = m_step_end = goals[m_next_goal].answer_end;
     }
+}
+
+bool ReplayDriver::check_waiting_goal()
+{
+    const ScriptGoal& goal = m_script.goals[m_next_goal];
+    GoalProgress progress = check_goal(goal, *m_session);
+    const PathEditor* editor = m_session->path_editor();
+    const std::optional<StaffValues> staff = editor ? editor->region_staff() : std::nullopt;
+    // A key that changed the staff but left the in-between where it was: say why.
+    if (m_waiting_goal == m_next_goal && !progress.reached && staff && m_waiting_staff && staff != m_waiting_staff &&
+        progress.value == m_waiting_progress.value)
+        explain_unmoved(progress, goal, *m_session);
+    m_session->say_goal(goal_feedback(progress));
+    m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
+    if (progress.reached) {
+        m_waiting_goal.reset();
+        m_reached_said = true;
+        judged(m_next_goal, GoalOutcome::Verdict::reached, progress);
+        return true;
+    }
+    m_waiting_goal = m_next_goal;
+    m_waiting_progress = std::move(progress);
+    m_waiting_staff = staff;
+    m_goal_said = goal_feedback(m_waiting_progress);
+    return false;
 }
 
 // Headless: each goal judged once `played` keys have played its answer (the first not reached is
@@ -275,11 +305,29 @@ void ReplayDriver::judge_goals(std::size_t played)
         const ScriptGoal& goal = goals[m_next_goal];
         const GoalProgress progress = check_goal(goal, *m_session);
         if (!progress.reached && m_goals)
-            m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + progress.said};
+            m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + goal_distance_text(progress)};
         m_session->mark_goal(std::nullopt);
+        judged(m_next_goal, progress.reached ? GoalOutcome::Verdict::reached : GoalOutcome::Verdict::not_reached,
+               progress);
     }
     if (m_next_goal < goals.size() && goals[m_next_goal].before_event <= played)
         m_session->mark_goal(goal_point(goals[m_next_goal]));
+}
+
+// apcs.log's line for the goal: "goal reached: tension +0.45 at key 12", "goal not reached: tension
+// +0.10, want +0.40 to +0.60", "goal skipped".
+void ReplayDriver::judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress)
+{
+    m_outcomes.push_back({goal, verdict, progress, m_handled.size()});
+    if (!m_hooks.log)
+        return;
+    switch (verdict) {
+    case GoalOutcome::Verdict::reached:
+        m_hooks.log("goal reached: " + progress.said + " at key " + std::to_string(m_handled.size()));
+        break;
+    case GoalOutcome::Verdict::not_reached: m_hooks.log("goal not reached: " + goal_distance_text(progress)); break;
+    case GoalOutcome::Verdict::skipped: m_hooks.log("goal skipped"); break;
+    }
 }
 
 void ReplayDriver::play_scripted()
@@ -291,13 +339,54 @@ void ReplayDriver::play_scripted()
         if (m_played < m_run_to && m_played >= m_script.preamble_end)
             m_step_label = "PGDN";
     }
-    to_session(m_script.events[m_played++]);
+    // The key is recorded after the lines before it: m_played moves on once it is played.
+    to_session(m_script.events[m_played]);
+    ++m_played;
 }
 
 void ReplayDriver::to_session(const KeyEvent& key)
 {
+    record_lines(m_recording, m_lines_recorded, m_played);
+    m_recording.add_key(key, m_session->takes_typed_text());
     m_handled.push_back(key);
     m_session->handle(key);
+}
+
+std::vector<ReplayDriver::ScriptLine> ReplayDriver::script_lines(const KeyScript& script)
+{
+    std::vector<ScriptLine> lines;
+    if (script.preamble_end > 0)
+        lines.push_back({script.preamble_end, ScriptLine::Kind::start, 0});
+    for (std::size_t caption = 0; caption < script.captions.size(); ++caption)
+        lines.push_back({script.captions[caption].before_event, ScriptLine::Kind::caption, caption});
+    for (std::size_t goal = 0; goal < script.goals.size(); ++goal)
+        lines.push_back({script.goals[goal].before_event, ScriptLine::Kind::goal, goal});
+    // START before the captions and goals at its event, a caption before the GOAL it introduces.
+    std::stable_sort(lines.begin(), lines.end(), [](const ScriptLine& a, const ScriptLine& b) {
+        return a.before_event < b.before_event || (a.before_event == b.before_event && a.kind < b.kind);
+    });
+    return lines;
+}
+
+void ReplayDriver::record_lines(KeyRecording& recording, std::size_t& lines_recorded, std::size_t event) const
+{
+    for (; lines_recorded < m_script_lines.size() && m_script_lines[lines_recorded].before_event <= event;
+         ++lines_recorded) {
+        const ScriptLine& line = m_script_lines[lines_recorded];
+        switch (line.kind) {
+        case ScriptLine::Kind::start: recording.add_start(); break;
+        case ScriptLine::Kind::caption: recording.add_caption(m_script.captions[line.index].text); break;
+        case ScriptLine::Kind::goal: recording.add_goal(m_script.goals[line.index]); break;
+        }
+    }
+}
+
+KeyRecording ReplayDriver::recording() const
+{
+    KeyRecording recording = m_recording;
+    std::size_t lines_recorded = m_lines_recorded;
+    record_lines(recording, lines_recorded, m_played);
+    return recording;
 }
 
 // Esc during a paced replay: the keyboard takes over, the caption on the row stays.
@@ -368,9 +457,10 @@ void ReplayDriver::play_to_next_caption()
 // PgDn at a goal: passed as a goal that holds is, its answer's keys not played; apcs.log says so.
 void ReplayDriver::skip_goal()
 {
-    if (m_hooks.log)
-        m_hooks.log("goal skipped");
     m_session->mark_goal(std::nullopt);
+    m_session->say_goal({});
+    m_waiting_goal.reset();
+    judged(m_next_goal, GoalOutcome::Verdict::skipped, m_waiting_progress);
     m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
     m_goal_said.clear();
     m_step_label = "PGDN";
@@ -385,7 +475,11 @@ void ReplayDriver::go_back_to(std::size_t caption, std::string label)
     const std::size_t events =
         m_script.captions.empty() ? m_script.preamble_end : m_script.captions[std::min(caption, m_script.captions.size() - 1)].before_event;
     std::unique_ptr<Session> session = m_hooks.session_as_started();
+    m_recording = KeyRecording();
+    m_recording.add_inputs(m_script.inputs);
+    m_lines_recorded = 0;
     catch_up(*session, events);
+    record_lines(m_recording, m_lines_recorded, events);
     if (m_hooks.caught_up)
         m_hooks.caught_up();
     // The new session counts its screens from 0: the sum the terminal watches must still grow.
@@ -399,7 +493,9 @@ void ReplayDriver::go_back_to(std::size_t caption, std::string label)
                                                return goal.before_event >= events;
                                            }) - goals.begin());
     m_goal_said.clear();
-    m_step_held = m_end_told = m_leave_asked = false;
+    m_waiting_goal.reset();
+    std::erase_if(m_outcomes, [&](const GoalOutcome& outcome) { return outcome.goal >= m_next_goal; });
+    m_step_held = m_end_told = m_leave_asked = m_reached_said = false;
     m_typed_meanwhile.clear();
     m_step_label = std::move(label);
 }
@@ -409,6 +505,8 @@ void ReplayDriver::go_back_to(std::size_t caption, std::string label)
 void ReplayDriver::catch_up(Session& session, std::size_t events)
 {
     for (std::size_t event = 0; event < events && !session.finished(); ++event) {
+        record_lines(m_recording, m_lines_recorded, event);
+        m_recording.add_key(m_script.events[event], session.takes_typed_text());
         session.handle(m_script.events[event]);
         while (session.busy() || session.animating())
             session.busy() ? session.work() : session.tick();

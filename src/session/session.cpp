@@ -119,6 +119,14 @@ std::optional<Session::ShapingLook> Session::shaping_look() const
     return ShapingLook{shaping->editor.look(), m_notice, overlaid};
 }
 
+void Session::say_goal(std::string feedback)
+{
+    if (feedback == m_goal_feedback)
+        return;
+    m_goal_feedback = std::move(feedback);
+    ++m_revision;
+}
+
 void Session::mark_goal(std::optional<Vec3> point)
 {
     if (point == m_goal_point)
@@ -273,13 +281,15 @@ SessionScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
         return {false, key_help_screen(phase_name(phase()), help->keys, help->empty_answer), {}};
-    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point)); },
+    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point, m_goal_feedback)); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
                                      SessionScreen shown{false, console_screen(), {}};
                                      std::string message = m_notice;
                                      if constexpr (std::is_same_v<std::decay_t<decltype(text_step)>, step::Splitting>)
                                          message = text_step.progress();
+                                     if (message.empty())
+                                         message = m_goal_feedback;
                                      if (!message.empty())
                                          shown.text.put_text(0, TextConsole::rows - 1, message);
                                      return shown;

@@ -82,7 +82,10 @@ TEST_CASE("a recording to - (--record -) goes to standard output, not to a file 
     CAPTURE(recorded.err);
     REQUIRE(recorded.status == 0);
     CHECK_FALSE(std::filesystem::exists("-"));
-    CHECK(recorded.out.starts_with("ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT way1.dat\n")); // keys, no screens
+    // Keys and the script's captions, no screens.
+    CHECK(recorded.out.starts_with(";; Step 1 (fig. 4.2.1): KEY1 and KEY2, the two key frames: an N and an L\nENTER\nENTER\n;; "
+                                   "Step 2 (fig. 4.2.2): points added, one path file each; now the view, face-on\nTEXT 0 90 "
+                                   "100\nENTER\n"));
 }
 
 TEST_CASE("a recording (--record) never replaces a key file whose name was typed key by key, nor backs up over one",

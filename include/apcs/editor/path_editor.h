@@ -63,8 +63,9 @@ public:
     // A staff step or a waypoint edit adds to what the keys before it left to refine (a key held
     // down on a long path); any other command first finishes it, and so acts on the final picture.
     Outcome update(const Command& command);
-    // The path screen, with an exercise's goal point marked when one is given.
-    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt) const;
+    // The path screen, with an exercise's goal point marked and its feedback on the message line
+    // when given (below a problem, an open field and what the last key did: SPEC §7.3).
+    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt, std::string_view goal_feedback = {}) const;
     // Refinement::in_steps: whether the last keys left work (PathPicture::refining), and one step of it.
     bool refining() const { return m_picture->refining(); }
     void refine_step();
@@ -74,6 +75,7 @@ public:
     SessionPhase phase() const;
     KeyContext key_context() const;
     const std::string& path_name() const { return m_setup.path_name; }
+    const PathSettings& settings() const { return m_setup.settings; }
     // The path as edited (in the waypoint editor too).
     const ControlPoints& points() const { return m_document->points(); }
     // Parallel to points(): each point's index among the path file's points, or new_point for one
@@ -86,6 +88,11 @@ public:
     // The staff's values for the region on it (while a staff line is active, and at "Adjust the
     // path again ?"); none before a region is chosen or in the waypoint editor.
     std::optional<StaffValues> region_staff() const;
+    // The staff line taking keys, none off the staff.
+    std::optional<StaffLine> staff_line() const;
+    // The region boxed: the one on the staff or at "Adjust the path again ?", the first point
+    // picked while the last is picked; none otherwise.
+    std::optional<ControlRegion> region() const { return picked_region(); }
     // What the path screen shows, as far as a command can change it: two equal looks are the same
     // screen.
     struct Look {
@@ -170,6 +177,8 @@ private:
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message() const;
+    // A staff line's "=" field is open: what is typed there is on the message line.
+    bool field_open() const;
     std::string staff_message(const Staff& staff) const;
     std::string with_move(const std::string& shown, const Staff& staff) const;
     PathScreenContent screen_content() const;

@@ -92,6 +92,10 @@ struct ReplayPace {
     int milliseconds = 0;
 };
 
+// The typed text `pending_text` as a script's TEXT line, emptying it: "TEXT way1.dat\n" (its
+// trailing spaces as SPACE lines, which no editor strips); empty for no text.
+std::string take_text_line(std::string& pending_text);
+
 // Writes events as a script that parse_key_script reads back to the same events: runs of
 // printable characters typed in a line become TEXT lines.
 std::string format_key_script(const std::vector<KeyEvent>& events);

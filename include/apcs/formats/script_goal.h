@@ -47,6 +47,10 @@ struct ScriptGoal {
 [[nodiscard]] Expected<void> goals_within_inbetweens(const std::vector<ScriptGoal>& goals, std::size_t inbetween_count,
                                                      const std::string& file_name);
 
+// The GOAL line parse_goal_line reads back to the same goal: "GOAL VALUE TENSION 0.4 0.6",
+// "GOAL NEAR 0 1 2 0.1", "GOAL INBETWEEN 1 0.31 -0.41 0.47 0.1" (shortest numbers).
+std::string goal_line(const ScriptGoal& goal);
+
 // The point a NEAR or INBETWEEN goal names, to be marked on screen; none for VALUE.
 std::optional<Vec3> goal_point(const ScriptGoal& goal);
 

@@ -2,7 +2,9 @@
 
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_event.h"
+#include "apcs/formats/key_recording.h"
 #include "apcs/input/interactive_program.h"
+#include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_hooks.h"
 #include "apcs/session/session.h"
 
@@ -22,6 +24,15 @@ inline constexpr std::string_view leave_exercise_question = "Leave the exercise 
 
 // On the caption row once a paced replay has played its script and the presenter asks for more.
 inline constexpr std::string_view end_of_script_caption = "End of the script: the keyboard is yours (PgUp, Home: back)";
+
+// What became of a goal of the script (SPEC §3.1): apcs.log has a line for each, apcs grade a row.
+struct GoalOutcome {
+    enum class Verdict { reached, not_reached, skipped };
+    std::size_t goal = 0; // its index among the script's goals
+    Verdict verdict = Verdict::not_reached;
+    GoalProgress progress; // when it was judged (reached, left, the session ended, the answer played)
+    std::size_t at_key = 0; // the keys the session had handled then
+};
 
 // Who watches a replay. On a terminal a person does: the script plays at its pace (ReplayPace),
 // Esc hands the keyboard over, a goal waits for the student's keys until it holds (a goal that
@@ -75,6 +86,12 @@ public:
     const Expected<void>& goals() const { return m_goals; }
     // Every key the session handled, in order.
     const std::vector<KeyEvent>& handled() const { return m_handled; }
+    // The same keys as --record writes them, with the script's INPUT, START, caption and GOAL
+    // lines where the replay met them.
+    KeyRecording recording() const;
+    // Each goal judged so far, in order: headless every goal once finish() has run; on a terminal
+    // the goals reached, skipped or left, and the one waited at when the session ended.
+    const std::vector<GoalOutcome>& goal_outcomes() const { return m_outcomes; }
 
 private:
     // What the replay lays over the session's screen.
@@ -97,7 +114,13 @@ private:
     void tell_captions();
     void end_caption();
     void wait_at_goal();
+    // The goal waited at, checked again: its feedback on the message line, its answer skipped once
+    // it holds. Whether it holds.
+    bool check_waiting_goal();
     void judge_goals(std::size_t played);
+    void judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress);
+    // The script's START, captions and GOAL lines before event `event` into `recording`.
+    void record_lines(KeyRecording& recording, std::size_t& lines_recorded, std::size_t event) const;
     // The session neither splits nor animates: a scripted key may play, a caption be reached.
     bool session_idle() const { return !m_session->busy() && !m_session->animating(); }
     // The replay's next key may play now on a terminal: not at a goal, nor while the session
@@ -115,6 +138,13 @@ private:
     bool mid_step() const { return m_played < m_step_end; }
     void play_scripted();
     void to_session(const KeyEvent& key);
+    // The script's lines a recording keeps (START, captions, GOAL), by the event they stand before.
+    struct ScriptLine {
+        std::size_t before_event = 0;
+        enum class Kind { start, caption, goal } kind = Kind::start;
+        std::size_t index = 0; // the caption's or the goal's
+    };
+    static std::vector<ScriptLine> script_lines(const KeyScript& script);
     void stop();
     void leave_exercise();
     // The slide-deck keys (SPEC §3.1).
@@ -146,6 +176,15 @@ private:
     std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;
     std::string m_goal_said;
+    // The goal waited at and how far it was at the last check (what the log says if it is left).
+    std::optional<std::size_t> m_waiting_goal;
+    GoalProgress m_waiting_progress;
+    std::optional<StaffValues> m_waiting_staff;
+    bool m_reached_said = false; // "GOAL REACHED: …" stays until the next key
+    std::vector<GoalOutcome> m_outcomes;
+    std::vector<ScriptLine> m_script_lines;
+    KeyRecording m_recording;
+    std::size_t m_lines_recorded = 0;
     bool m_step_held = false;
     bool m_stopped = false;
     bool m_typed_after = false;

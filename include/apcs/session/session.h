@@ -57,6 +57,9 @@ public:
     const Expected<void>& writes() const { return m_model.written.outcome(); }
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
     void mark_goal(std::optional<Vec3> point);
+    // An exercise's feedback ("GOAL: …", "GOAL REACHED: …") on the message line, below an open
+    // field or question, an error and what the last key did (SPEC §7.3); empty for none.
+    void say_goal(std::string feedback);
 
 private:
     // What the path screen shows, as far as a key can change it: compared before and after a key.
@@ -90,6 +93,7 @@ private:
     // What the last key did that the message line tells once (a picture written), if anything.
     std::string m_notice;
     std::optional<Vec3> m_goal_point;
+    std::string m_goal_feedback;
     std::uint64_t m_revision = 0;
 };
 

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "apcs/formats/key_event.h"
+
+#include <string>
+#include <vector>
+
+namespace apcs {
+
+// What --record writes (SPEC §3.1): the keys the session handled, each marked typed text or not,
+// and the lines of the script that made it an exercise or a lesson, in the order they were met:
+// its INPUT lines first, START after the opening answers, each caption and GOAL where the replay
+// reached it. The replay controls (PgDn, PgUp, Home) never reach the session: they are not keys
+// of it. Read back by parse_captioned_key_script, it replays the same keys to the same goals, so
+// `apcs --keys` and `apcs grade` recheck it.
+class KeyRecording {
+public:
+    void add_inputs(std::vector<ScriptInput> inputs) { m_inputs = std::move(inputs); }
+    // A key, and whether the session took it as typed text (a prompt's answer, a staff value).
+    void add_key(const KeyEvent& key, bool typed_text);
+    void add_start() { m_entries.push_back({Entry::Kind::start, {}, false, {}}); }
+    void add_caption(std::string text) { m_entries.push_back({Entry::Kind::caption, {}, false, std::move(text)}); }
+    void add_goal(const ScriptGoal& goal) { m_entries.push_back({Entry::Kind::goal, {}, false, goal_line(goal)}); }
+    // Everything after the first `keys` keys gone (PgUp and Home replay from an earlier caption),
+    // the lines met before them kept.
+    void keep_keys(std::size_t keys);
+    std::size_t key_count() const { return m_key_count; }
+    // One token a line, typed text as TEXT lines (a ';' typed alone: "TEXT ;").
+    std::string text() const;
+
+private:
+    struct Entry {
+        enum class Kind { key, start, caption, goal };
+        Kind kind = Kind::key;
+        KeyEvent key;
+        bool typed_text = false;
+        std::string line; // a caption's text, a GOAL line
+    };
+    std::vector<ScriptInput> m_inputs;
+    std::vector<Entry> m_entries;
+    std::size_t m_key_count = 0;
+};
+
+} // namespace apcs
