@@ -169,8 +169,10 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, std::string_view
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
     // A first picture says it is one (its in-betweens are not drawn); a problem matters more, and
-    // a goal's feedback more than both, once the field and the last key's notice have been read.
-    if (!goal_feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open())
+    // a goal's feedback more than both, once the field, the question after the staff and the last
+    // key's notice have been read.
+    if (!goal_feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open() &&
+        !std::holds_alternative<AskAgain>(m_mode))
         content.message = goal_feedback;
     else if (m_problem.empty() && m_picture->refining())
         content.message = m_picture->refining_message();

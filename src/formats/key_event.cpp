@@ -156,6 +156,7 @@ Expected<void> take_goal_line(std::string_view line, ScriptState& state, std::si
     if (kept != nullptr) {
         end_answers(*kept, state.open_goal, events);
         goal->before_event = goal->answer_end = events;
+        goal->captions_before = kept->captions.size();
         kept->goals.push_back(*goal);
     }
     return ok;

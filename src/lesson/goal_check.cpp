@@ -55,12 +55,10 @@ CurveNearest curve_nearest(const Vec3& point, const SampledCurve& curve)
 
 std::string upper_name(StaffLine line) { return std::string(staff_line_name(line)); }
 
-// Where the student stands when no key there reaches a VALUE goal: another staff line, or the
-// question after the staff.
+// Where the student stands when no key there reaches a VALUE goal: another staff line. (At the
+// question after the staff the question has the message line: SPEC §7.3.)
 std::string value_hint(const ScriptGoal& goal, const PathEditor& editor)
 {
-    if (editor.phase() == SessionPhase::ask_again)
-        return "the staff is done; Y adjusts the path again";
     const std::optional<StaffLine> line = editor.staff_line();
     if (!line || *line == goal.line)
         return {};
@@ -125,7 +123,8 @@ GoalProgress check_goal(const ScriptGoal& goal, const Session& session)
 {
     const PathEditor* editor = session.path_editor();
     if (editor == nullptr)
-        return {false, {}, "no path is being shaped", "want " + goal_text(goal), {}};
+        return {false, {}, "no path is being shaped", "want " + goal_text(goal),
+                "no path is being shaped: the goal waits for one"};
     return goal.kind == ScriptGoal::Kind::value ? value_progress(goal, *editor) : distance_progress(goal, *editor);
 }
 

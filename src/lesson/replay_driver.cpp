@@ -91,7 +91,7 @@ void ReplayDriver::take(const KeyEvent& key)
         return;
     }
     // Space after the script's last step: the end is told, the keyboard still the presenter's.
-    if (paced() && at_end() && !m_end_told && !m_typed_after && key.key == Key::space) {
+    if (paced() && at_end() && !at_goal() && !m_end_told && !m_typed_after && key.key == Key::space) {
         m_end_told = true;
         return;
     }
@@ -181,7 +181,7 @@ ReplayDriver::Shown ReplayDriver::shown() const
     const std::optional<std::size_t> caption = caption_on_row();
     if (caption)
         over.caption = m_script.captions[*caption].text;
-    if (m_end_told && at_end())
+    if (m_end_told && at_end() && !at_goal())
         over.caption = end_of_script_caption;
     if (!paced())
         return over;
@@ -265,8 +265,13 @@ void ReplayDriver::wait_at_goal()
     for (; m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played; ++m_next_goal) {
         if (goals[m_next_goal].before_event < m_played)
             continue;
-        if (!check_waiting_goal())
+        if (!check_waiting_goal()) {
+            m_waiting_goal_line = static_cast<std::size_t>(
+                std::find_if(m_script_lines.begin(), m_script_lines.end(), [&](const ScriptLine& line) {
+                    return line.kind == ScriptLine::Kind::goal && line.index == m_next_goal;
+                }) - m_script_lines.begin());
             return;
+        }
         m_played = m_step_end = goals[m_next_goal].answer_end;
     }
 }
@@ -361,9 +366,18 @@ std::vector<ReplayDriver::ScriptLine> ReplayDriver::script_lines(const KeyScript
         lines.push_back({script.captions[caption].before_event, ScriptLine::Kind::caption, caption});
     for (std::size_t goal = 0; goal < script.goals.size(); ++goal)
         lines.push_back({script.goals[goal].before_event, ScriptLine::Kind::goal, goal});
-    // START before the captions and goals at its event, a caption before the GOAL it introduces.
-    std::stable_sort(lines.begin(), lines.end(), [](const ScriptLine& a, const ScriptLine& b) {
-        return a.before_event < b.before_event || (a.before_event == b.before_event && a.kind < b.kind);
+    // At one key, in the script's order: START first, then captions and GOAL lines as the goals'
+    // captions_before place them (caption i before goal g when i < captions_before).
+    const auto rank = [&script](const ScriptLine& line) -> std::size_t {
+        switch (line.kind) {
+        case ScriptLine::Kind::start: return 0;
+        case ScriptLine::Kind::caption: return 2 * line.index + 1;
+        case ScriptLine::Kind::goal: return 2 * script.goals[line.index].captions_before;
+        }
+        return 0;
+    };
+    std::stable_sort(lines.begin(), lines.end(), [&rank](const ScriptLine& a, const ScriptLine& b) {
+        return a.before_event < b.before_event || (a.before_event == b.before_event && rank(a) < rank(b));
     });
     return lines;
 }
@@ -373,6 +387,10 @@ void ReplayDriver::record_lines(KeyRecording& recording, std::size_t& lines_reco
     for (; lines_recorded < m_script_lines.size() && m_script_lines[lines_recorded].before_event <= event;
          ++lines_recorded) {
         const ScriptLine& line = m_script_lines[lines_recorded];
+        // The student's keys at a goal come before the lines after its GOAL line (a closing caption).
+        if (m_waiting_goal && line.before_event == event && line.kind != ScriptLine::Kind::start &&
+            lines_recorded > m_waiting_goal_line)
+            return;
         switch (line.kind) {
         case ScriptLine::Kind::start: recording.add_start(); break;
         case ScriptLine::Kind::caption: recording.add_caption(m_script.captions[line.index].text); break;
@@ -398,6 +416,11 @@ void ReplayDriver::stop()
 
 std::optional<std::size_t> ReplayDriver::caption_on_row() const
 {
+    // A goal waiting shows its task, the caption before its GOAL line, not one that closes it.
+    if (m_waiting_goal) {
+        const std::size_t before = m_script.goals[*m_waiting_goal].captions_before;
+        return before > 0 ? std::optional<std::size_t>(before - 1) : std::nullopt;
+    }
     const ScriptCaption* caption = caption_at(m_script, m_played);
     if (caption == nullptr)
         return std::nullopt;

@@ -261,3 +261,49 @@ TEST_CASE("an exercise whose input is missing or a FIFO or a symbolic link or wh
     REQUIRE(result.out.empty());
     REQUIRE(folder_content(folder) == before);
 }
+
+TEST_CASE("a recording of every exercise's answer keeps its GOAL and rechecks on fresh inputs and apcs.log says "
+          "whether each goal was reached",
+          "[cli][exercises][record]")
+{
+    for (const std::string& name : shipped_exercises()) {
+        CAPTURE(name);
+        const test::TempFolder answered;
+        copy_exercises(answered);
+        const test::TempFolder handed_in;
+        const std::string recording = (handed_in / "mine.keys").string();
+        const auto answer = test::run_apcs({"--keys", (answers / (name + "-answer.keys")).string(), "--workdir",
+                                            answered.path().string(), "--record", recording});
+        INFO(answer.err);
+        REQUIRE(answer.status == 0);
+        const std::string recorded = read_all(recording);
+        const Expected<KeyScript> exercise = parse_captioned_key_script(read_all(exercises / (name + ".keys")), name);
+        REQUIRE(exercise);
+        // The exercise's INPUT lines, START and GOAL as the script has them; keys one a line.
+        REQUIRE(recorded.starts_with(input_line(exercise->inputs[0]) + "\n"));
+        REQUIRE(recorded.find("\nSTART\n") != std::string::npos);
+        REQUIRE(recorded.find("\n" + goal_line(exercise->goals[0]) + "\n") != std::string::npos);
+        REQUIRE(recorded.find("L L") == std::string::npos);
+        REQUIRE(read_all(answered / "apcs.log").find("\ngoal reached: ") != std::string::npos);
+
+        const test::TempFolder fresh;
+        copy_exercises(fresh);
+        const auto recheck = test::run_apcs({"--keys", recording, "--workdir", fresh.path().string()});
+        INFO(recheck.err);
+        REQUIRE(recheck.status == 0);
+        REQUIRE(read_all(fresh / "apcs.log") == read_all(answered / "apcs.log"));
+    }
+    // The exercise alone, recorded, rechecks as not reached: exit 1 and the log says how far off.
+    const test::TempFolder bare;
+    copy_exercises(bare);
+    const test::TempFolder handed_in;
+    const auto unanswered = test::run_apcs({"--keys", (bare / "exercise-1-tension.keys").string(), "--workdir",
+                                            bare.path().string(), "--record", (handed_in / "mine.keys").string()});
+    REQUIRE(unanswered.status == 1);
+    REQUIRE(read_all(handed_in / "mine.keys").find("\nGOAL VALUE TENSION 0.4 0.6\n") != std::string::npos);
+    REQUIRE(read_all(bare / "apcs.log").find("\ngoal not reached: tension +0.00, want +0.40 to +0.60\n") !=
+            std::string::npos);
+    const test::TempFolder fresh;
+    copy_exercises(fresh);
+    REQUIRE(test::run_apcs({"--keys", (handed_in / "mine.keys").string(), "--workdir", fresh.path().string()}).status == 1);
+}

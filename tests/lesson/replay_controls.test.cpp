@@ -17,6 +17,8 @@
 using namespace apcs;
 using test::data_folder;
 using test::example_files;
+using test::at_goal_feedback;
+using test::message_line;
 using test::run_until_idle;
 
 namespace {
@@ -243,13 +245,13 @@ TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is no
         test::read_all(data_folder / "exercises" / "exercise-1-tension.keys"), "exercise-1-tension.keys");
     REQUIRE(exercise);
     Deck deck(*exercise, "exercises");
-    for (int step = 0; step < 40 && !deck.replay->screen().caption.starts_with("GOAL: "); ++step)
+    for (int step = 0; step < 40 && !at_goal_feedback(*deck.replay); ++step)
         press(*deck.replay, space);
-    REQUIRE(deck.replay->screen().caption.starts_with("GOAL: "));
+    REQUIRE(at_goal_feedback(*deck.replay));
     const std::size_t at_goal = deck.replay->handled().size();
     press(*deck.replay, KeyEvent::typed(U']'));
     REQUIRE(deck.replay->handled().size() == at_goal + 1);
-    REQUIRE(deck.replay->screen().caption.starts_with("GOAL: "));
+    REQUIRE(at_goal_feedback(*deck.replay));
     press(*deck.replay, page_down);
     REQUIRE(deck.folder.log_lines.back() == "goal skipped");
     REQUIRE(deck.replay->handled().size() == at_goal + 1);

@@ -16,16 +16,12 @@
 using namespace apcs;
 using test::data_folder;
 using test::example_files;
+using test::at_goal_feedback;
+using test::message_line;
+using test::read_script;
 using test::run_until_idle;
 
 namespace {
-
-KeyScript read_script(const std::filesystem::path& file)
-{
-    Expected<KeyScript> script = parse_captioned_key_script(test::read_all(file), file.string());
-    REQUIRE(script);
-    return std::move(*script);
-}
 
 // The steps of `script` as a paced replay plays them: a TEXT line is one.
 std::size_t step_count(const KeyScript& script)
@@ -186,18 +182,21 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
         Session session({}, files);
         ReplayDriver replay(session, script, exercise.string(), {ReplayPace::Kind::on_space, 0}, {},
                             ReplayAudience::terminal);
-        for (std::size_t step = 0; step < 20 && !replay.screen().caption.starts_with("GOAL: "); ++step) {
+        for (std::size_t step = 0; step < 20 && !at_goal_feedback(replay); ++step) {
             replay.handle(space);
             run_until_idle(replay);
         }
-        REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+        REQUIRE(at_goal_feedback(replay));
+        // The task stays on the caption row, the feedback under it on the message line.
+        REQUIRE(replay.screen().caption == "Exercise 1: tighten the whole path: TENSION from +0.40 to +0.60");
+        REQUIRE(message_line(replay) == "GOAL: tension +0.00, want +0.40 to +0.60");
         REQUIRE(replay.handled().size() == script.goals[0].before_event);
         // At the goal every key is the student's: L (Shift-L) raises the tension, until the goal holds.
         const double start = session.path_editor()->region_staff()->tension;
         int raised = 0;
-        for (; raised < 10 && replay.screen().caption.starts_with("GOAL: "); ++raised)
+        for (; raised < 10 && at_goal_feedback(replay); ++raised)
             replay.handle(KeyEvent::typed(U'L'));
-        REQUIRE_FALSE(replay.screen().caption.starts_with("GOAL: "));
+        REQUIRE(message_line(replay) == "GOAL REACHED: tension +0.45 (want +0.40 to +0.60)");
         REQUIRE(replay.handled().size() == script.goals[0].before_event + static_cast<std::size_t>(raised));
         const double tension = session.path_editor()->region_staff()->tension;
         REQUIRE(tension > start);
@@ -207,6 +206,9 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
         REQUIRE(script.goals[0].answer_end == script.events.size());
         REQUIRE_FALSE(replay.playing());
         REQUIRE(replay.screen().caption == script.captions.back().text);
+        // Until the next key.
+        replay.handle(KeyEvent::typed(U'4'));
+        REQUIRE_FALSE(message_line(replay).starts_with("GOAL"));
     }
     SECTION("headless")
     {
@@ -238,12 +240,12 @@ TEST_CASE("q at a goal asks to leave the exercise: N goes back to the goal, Y en
     MemoryFiles files = example_files("exercises");
     Session session({}, files);
     ReplayDriver replay(session, script, exercise.string(), {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
-    for (std::size_t step = 0; step < 20 && !replay.screen().caption.starts_with("GOAL: "); ++step) {
+    for (std::size_t step = 0; step < 20 && !at_goal_feedback(replay); ++step) {
         replay.handle(space);
         run_until_idle(replay);
     }
     const std::string goal_row = replay.screen().caption;
-    REQUIRE(goal_row.starts_with("GOAL: "));
+    REQUIRE(at_goal_feedback(replay));
     const std::size_t handled = replay.handled().size();
     const std::uint64_t revision = replay.screen_revision();
     replay.handle(KeyEvent::typed(U'q'));
@@ -256,6 +258,7 @@ TEST_CASE("q at a goal asks to leave the exercise: N goes back to the goal, Y en
     replay.handle(KeyEvent::typed(U'Y'));
     REQUIRE_FALSE(replay.playing());
     REQUIRE(replay.screen().caption.empty());
+    REQUIRE_FALSE(message_line(replay).starts_with("GOAL"));
     REQUIRE(replay.handled().size() == handled);
     // The keyboard is the student's: the next key reaches the session.
     replay.handle(KeyEvent::typed(U'L'));
@@ -271,11 +274,11 @@ TEST_CASE("q at a goal is a typed letter where the session takes text: the promp
     MemoryFiles files = example_files("exercises");
     Session session({}, files);
     ReplayDriver replay(session, *script, "g.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
-    REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+    REQUIRE(at_goal_feedback(replay));
     REQUIRE(session.takes_typed_text());
     replay.handle(KeyEvent::typed(U'q'));
     replay.handle(KeyEvent::typed(U'u'));
-    REQUIRE(replay.screen().caption.starts_with("GOAL: "));
+    REQUIRE(at_goal_feedback(replay));
     REQUIRE(replay.handled() == std::vector<KeyEvent>{KeyEvent::typed(U'q'), KeyEvent::typed(U'u')});
 }
 

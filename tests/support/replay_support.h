@@ -3,6 +3,7 @@
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session_files.h"
 
+#include "support/session_keys.h"
 #include "support/temp_folder.h"
 
 #include <filesystem>
@@ -21,6 +22,28 @@ inline MemoryFiles example_files(const std::string& example)
             files.files[entry.path().filename().string()] = read_all(entry.path());
     return files;
 }
+
+// A key script of the source tree, parsed with its captions, goals and inputs.
+inline KeyScript read_script(const std::filesystem::path& file)
+{
+    Expected<KeyScript> script = parse_captioned_key_script(read_all(file), file.string());
+    REQUIRE(script);
+    return std::move(*script);
+}
+
+// The message line of what a replay shows: a GOAL's feedback stands there (SPEC §3.1), the task's
+// caption on the caption row above it.
+inline std::string message_line(const ReplayDriver& replay)
+{
+    const SessionScreen screen = replay.screen();
+    if (screen.graphics)
+        return message_of(screen.picture);
+    std::string row = screen.text.row_text(screen.text.rows() - 1);
+    row.erase(row.find_last_not_of(' ') + 1);
+    return row;
+}
+
+inline bool at_goal_feedback(const ReplayDriver& replay) { return message_line(replay).starts_with("GOAL: "); }
 
 // What the terminal loop does while it waits for no key: the program's work, then its ticks.
 inline void run_until_idle(ReplayDriver& replay)

@@ -32,6 +32,9 @@ struct ScriptGoal {
     std::size_t before_event = 0; // the keys played before it
     std::size_t answer_end = 0;   // the first key after its answer
     int line_number = 0;          // where the script has it, for FILE:LINE
+    // The script's captions before the GOAL line: the last of them is the task, shown while the
+    // goal waits (a caption right after the line, at the same key, closes the exercise).
+    std::size_t captions_before = 0;
     bool operator==(const ScriptGoal&) const = default;
 };
 

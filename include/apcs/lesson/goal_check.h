@@ -11,7 +11,7 @@ namespace apcs {
 // staff value, "0.35" for a distance; empty before there is one), that quantity in words ("tension
 // +0.10"; "the curve passes 0.35 from (0.00, 1.00, 2.00)"; "no path is being shaped"), what the goal
 // wants ("want +0.40 to +0.60") and, when the student is where no key can reach the goal, where to
-// go ("you are on BIAS; the goal is TENSION: Y at 'Adjust the path again ?' comes back to it").
+// go ("you are on BIAS; the goal is TENSION: finish the staff, then Y").
 struct GoalProgress {
     bool reached = false;
     std::string value;
@@ -33,8 +33,8 @@ void explain_unmoved(GoalProgress& progress, const ScriptGoal& goal, const Sessi
 // "tension +0.10, want +0.40 to +0.60": how far off, for FILE:LINE: goal not reached and apcs.log.
 std::string goal_distance_text(const GoalProgress& progress);
 
-// The message line at a goal (SPEC §3.1): "GOAL: tension +0.10, want +0.40 to +0.60", the hint
-// after it when there is one (and then without the want, which the hint names), or "GOAL REACHED:
+// The message line at a goal (SPEC §3.1): "GOAL: tension +0.10, want +0.40 to +0.60", or the hint
+// instead when there is one ("GOAL: you are on BIAS; …"), or "GOAL REACHED:
 // tension +0.45 (want +0.40 to +0.60)".
 std::string goal_feedback(const GoalProgress& progress);
 

@@ -178,6 +178,7 @@ private:
     std::string m_goal_said;
     // The goal waited at and how far it was at the last check (what the log says if it is left).
     std::optional<std::size_t> m_waiting_goal;
+    std::size_t m_waiting_goal_line = 0; // its GOAL line among m_script_lines
     GoalProgress m_waiting_progress;
     std::optional<StaffValues> m_waiting_staff;
     bool m_reached_said = false; // "GOAL REACHED: …" stays until the next key
