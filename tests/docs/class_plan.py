@@ -58,15 +58,10 @@ def script_folder(data, script):
 
 
 def captions_of(path):
-    """The script's captions; a caption a GOAL line follows is the task, which the caption row gives
-    over to the goal's feedback ("GOAL: ...") while the goal waits: it is seen as that."""
+    """The script's captions; a task (the caption a GOAL line follows) stays on the caption row while
+    its goal waits, the goal's feedback on the message line."""
     lines = [line.strip() for line in open(path, encoding="utf-8") if line.strip() and not line.startswith("; ")]
-    captions = []
-    for k, line in enumerate(lines):
-        if line.startswith(";;"):
-            task = k + 1 < len(lines) and lines[k + 1].startswith("GOAL ")
-            captions.append("GOAL:" if task else line[2:].strip())
-    return captions
+    return [line[2:].strip() for line in lines if line.startswith(";;")]
 
 
 def animation_seconds(apcs, folder, script, options):
@@ -176,8 +171,7 @@ def main():
             os.makedirs(screens_folder, exist_ok=True)
             with open(os.path.join(screens_folder, script + ".txt"), "w", encoding="utf-8") as out:
                 out.write("\n".join(shown))
-        unseen = [caption for caption in captions
-                  if caption not in seen and not (caption == "GOAL:" and any(row.startswith("GOAL:") for row in seen))]
+        unseen = [caption for caption in captions if caption not in seen]
         print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "
               f"last caption row: {last_row}")
         if unseen:
