@@ -14,6 +14,27 @@ constexpr char dos_end_of_file = '\x1A';
 
 bool is_trailer(char c) { return c == dos_end_of_file || c == '\r' || c == '\n' || is_field_blank(c); }
 
+// string_view::find_first_of looks each byte up in its set with a memchr of its own: for the
+// lines of a 10^5-point key that was a fifth of apcs fit's time. One pass over the bytes instead.
+template <typename Wanted>
+std::size_t find_first(std::string_view text, std::size_t start, Wanted wanted)
+{
+    const auto found = std::find_if(text.begin() + static_cast<std::ptrdiff_t>(start), text.end(), wanted);
+    return found == text.end() ? std::string_view::npos : static_cast<std::size_t>(found - text.begin());
+}
+
+// Where the line starting at `start` ends: a CR, an LF or DOS' end of file.
+std::size_t line_end(std::string_view text, std::size_t start)
+{
+    return find_first(text, start, [](char c) { return c == '\n' || c == '\r' || c == dos_end_of_file; });
+}
+
+// Where a line's comment starts (';' or '#'), npos for none.
+std::size_t comment_start(std::string_view line)
+{
+    return find_first(line, 0, [](char c) { return c == ';' || c == '#'; });
+}
+
 constexpr const char* more_after_end_of_file = "Ctrl-Z (end of file) followed by more data; expected it only at the end";
 
 } // namespace
@@ -76,7 +97,7 @@ std::size_t DataLineReader::take_lines(std::string_view text, bool at_end)
 {
     std::size_t start = 0;
     while (m_outcome) {
-        const std::size_t end = text.find_first_of(std::string_view("\r\n\x1A", 3), start);
+        const std::size_t end = line_end(text, start);
         if (end == std::string_view::npos) {
             if (!at_end || start == text.size())
                 return start;
@@ -113,7 +134,7 @@ void DataLineReader::handle_line(std::string_view content)
     else if (content.find('\0') != std::string_view::npos)
         m_outcome = Diagnostic{m_file_name, m_line, "NUL byte; expected a text file"};
     else
-        m_outcome = m_handle(m_line, content.substr(0, content.find_first_of(";#")));
+        m_outcome = m_handle(m_line, content.substr(0, comment_start(content)));
 }
 
 void DataLineReader::check_trailer(std::string_view bytes)

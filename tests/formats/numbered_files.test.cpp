@@ -6,6 +6,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <filesystem>
 #include <string>
 #include <sys/statvfs.h>
@@ -42,6 +43,25 @@ TEST_CASE("the bytes of numbered files are measured file by file when small, els
     CHECK(estimated_files_bytes(12, small, 4096) == 12 * 4096);
     CHECK(estimated_files_bytes(2, [](std::size_t, const ContentSink& sink) { sink(std::string(4097, 'x')); }, 4096) ==
           2 * 8192);
+}
+
+TEST_CASE("where the room is ample the free-space check makes one file of the run and not five", "[formats][files]")
+{
+    // Issue 44 item 7: five samples made before the first write cost the fit of 10^5 points x 12
+    // in-betweens 5 of its 12 frames again. Now the middle file alone, when the run would take a
+    // quarter of the free space or less by it.
+    const TempFolder folder;
+    std::atomic<int> made = 0;
+    const auto writer_of = [&made](std::size_t, const ContentSink& sink) {
+        ++made;
+        sink("0 0 0\n");
+    };
+    const auto written = write_numbered_files(
+        folder.path(), 12, [](std::size_t index) { return "inb" + std::to_string(100 + index + 1) + ".dat"; },
+        writer_of, KeyFileGuard{}, "the in-between files");
+    REQUIRE(written);
+    CHECK(written->size() == 12);
+    CHECK(made == 12 + 1);
 }
 
 TEST_CASE("files that do not fit the folder's free space are refused in one line: needed, free", "[formats][files]")
