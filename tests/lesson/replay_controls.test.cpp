@@ -257,3 +257,32 @@ TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is no
     REQUIRE(deck.replay->handled().size() == at_goal + 1);
     REQUIRE(deck.replay->screen().caption == exercise->captions.back().text);
 }
+
+TEST_CASE("after PgUp the recording is the script up to the caption gone back to and what was typed from there "
+          "and PgDn PgUp Home are never in it",
+          "[lesson][replay][deck][record]")
+{
+    const std::string script = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+                               ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\n;; three\n4\n";
+    const KeyScript keys = parsed(script); // the replay keeps a reference to it
+    Deck deck(keys, "n-to-l");
+    for (int step = 0; step < 10 && !at_goal_feedback(*deck.replay); ++step)
+        press(*deck.replay, space);
+    REQUIRE(at_goal_feedback(*deck.replay));
+    // At the goal the student types two keys, then goes back to caption one and plays on from there.
+    press(*deck.replay, KeyEvent::typed(U'6'));
+    press(*deck.replay, KeyEvent::typed(U'J'));
+    const std::string before_back = deck.replay->recording().text();
+    REQUIRE(before_back.ends_with(";; two\nGOAL VALUE TENSION 0.4 0.6\n6\nJ\n"));
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().caption == "one");
+    REQUIRE(deck.replay->recording().text() ==
+            "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n;; one\n");
+    press(*deck.replay, space); // 8
+    REQUIRE(at_goal_feedback(*deck.replay));
+    press(*deck.replay, KeyEvent::typed(U'L'));
+    press(*deck.replay, KeyEvent::typed(U'L'));
+    press(*deck.replay, KeyEvent::typed(U'L'));
+    REQUIRE(deck.replay->recording().text() == "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n"
+                                                ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\nL\nL\nL\n;; three\n");
+}
