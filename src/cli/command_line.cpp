@@ -4,6 +4,7 @@
 #include "apcs/cli/draw_command.h"
 #include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
+#include "apcs/cli/grade_command.h"
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
@@ -302,6 +303,7 @@ struct ParsedLine {
     std::vector<std::filesystem::path> fit_files;
     std::vector<std::filesystem::path> draw_files;
     PlayRequest play;
+    GradeRequest grade;
 
     // The files the run reads: only the chosen command's are given, the others stay empty.
     std::vector<std::filesystem::path> inputs() const
@@ -330,16 +332,21 @@ struct Subcommand {
     const char* name;
     const char* summary;
     const char* operands; // what it takes besides options, for "fit takes four files …; 2 given"
-    const char* examples; // command lines for --help, each runnable in a copy of data/n-to-l
+    const char* examples; // command lines for --help, each runnable where `place` says
+    const char* place;    // "a copy of data/n-to-l"
     void (*set_up)(CLI::App& command, ParsedLine& line);
     int (*run)(ParsedLine& line, const RunPlace& place);
 };
 
-constexpr std::array<Subcommand, 6> subcommands{{
+// Where most commands' --help examples run: the files they name are that example's.
+constexpr const char* n_to_l_copy = "a copy of data/n-to-l";
+
+constexpr std::array<Subcommand, 7> subcommands{{
     {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
      "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
      "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png\n"
      "  apcs path way1.dat --sixel -         (the picture in xterm -ti vt340, not through tmux)",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
          add_path_command_options(command, line.options, line.slopes);
@@ -350,6 +357,7 @@ constexpr std::array<Subcommand, 6> subcommands{{
     {"inbetween", "in-between frames by an interpolation law and a padding", "two key files KEY1 KEY2",
      "  apcs inbetween key1.dat key2.dat --law ease-in --print\n"
      "  apcs inbetween key1.dat key2.dat --inbetweens 6 --out linear",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("KEYS", line.key_files, "KEY1 KEY2: the key frames (.dat)")
              ->expected(2)
@@ -365,6 +373,7 @@ constexpr std::array<Subcommand, 6> subcommands{{
     {"fit", "surface fitting: the in-between frames of two key frames", "four files KEY1 KEY2 PATH_FIRST PATH_LAST",
      "  apcs fit key1.dat key2.dat way1.dat way4.dat --out frames\n"
      "  apcs fit key1.dat key2.dat way1.dat way4.dat --surface ferguson --png fit.png",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("FILES", line.fit_files, "KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")
              ->expected(4)
@@ -378,6 +387,7 @@ constexpr std::array<Subcommand, 6> subcommands{{
      }},
     {"draw", "draw key frames and in-between files overlaid as a picture", "one or more .dat files",
      "  apcs draw key1.dat key2.dat --png keys.png",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
          command
              .add_option("FILES", line.draw_files,
@@ -395,6 +405,7 @@ constexpr std::array<Subcommand, 6> subcommands{{
     {"play", "play a scene of several objects and actors (.scn)", "one scene file SCENE.scn",
      "  apcs play ../robot/robot.scn --tree\n"
      "  apcs play ../car/car.scn --gif car.gif",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("SCENE", line.play.scene, "the scene file (.scn)")->required()->type_name("");
          add_play_command_options(command, line.options, line.slopes, line.play.tree);
@@ -404,9 +415,25 @@ constexpr std::array<Subcommand, 6> subcommands{{
      }},
     {"figures", "redraw the thesis' figures and examples as PNG", "no files (--out names the folder)",
      "  apcs figures --out figures",
+     n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) { add_figures_command_options(command, line.options, line.slopes); },
      [](ParsedLine& line, const RunPlace& place) {
          return to_int(run_figures_command(line.options, place.out, place.err));
+     }},
+    {"grade", "grade homework: replay each recording of an exercise, one CSV row per goal",
+     "an exercise EXERCISE.keys and one or more recordings RECORDING...",
+     "  apcs grade data/exercises/exercise-1-tension.keys data/exercises/answers/exercise-1-tension-answer.keys",
+     "the source tree (data/exercises: the exercises, their inputs and answers/)",
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("EXERCISE", line.grade.exercise, "the exercise (.keys), its INPUT files beside it")
+             ->required()
+             ->type_name("");
+         command.add_option("RECORDINGS", line.grade.recordings, "what --record kept of each student's keys (.keys)")
+             ->required()
+             ->type_name("");
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         return to_int(run_grade_command(line.grade, line.options, place.out, place.err));
      }},
 }};
 
@@ -426,7 +453,7 @@ void set_up_command_line(CLI::App& app, ParsedLine& line)
     add_session_options(app, line.options, line.slopes);
     for (const Subcommand& row : subcommands) {
         CLI::App* command = app.add_subcommand(row.name, row.summary);
-        command->footer("Examples, in a copy of data/n-to-l:\n" + std::string(row.examples) + "\n\n" + manual);
+        command->footer("Examples, in " + std::string(row.place) + ":\n" + row.examples + "\n\n" + manual);
         row.set_up(*command, line);
         command->group("Commands");
     }

@@ -228,20 +228,63 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
     return terminal_glyphs_here(asked);
 }
 
-// The script replayed at once, each step's screen on `out` and each caption as ";; TEXT" where
-// it is reached. Nobody watched the screen: a file that could not be written is the run's failure.
-ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name, GlyphSet glyphs,
-                           ReplayHooks hooks, KeyRecording& recorded, std::ostream& out, std::ostream& err)
+// What a replay keeps for after it: the keys for --record, each goal's outcome for apcs grade.
+struct ReplayKept {
+    KeyRecording recording;
+    std::vector<GoalOutcome> goals;
+};
+
+// The settings of a session that `options` asks for, within the memory budget `limit`. On a
+// terminal a key's first picture comes at once and is refined while no key waits; headless, every
+// key's work is done before the next (the screens printed are final).
+SessionSettings replay_settings(const CommonOptions& options, std::uint64_t limit, ReplayAudience audience)
 {
-    hooks.caption_reached = [&out, &script, pages = std::move(hooks.caption_reached)](std::size_t index,
-                                                                                     const SessionScreen& shown) {
-        out << ";; " << script.captions[index].text << '\n';
-        if (pages)
-            pages(index, shown);
-    };
+    SessionSettings settings = session_settings(options);
+    settings.memory_limit_bytes = limit;
+    settings.refinement = audience == ReplayAudience::headless ? Refinement::at_once : Refinement::in_steps;
+    return settings;
+}
+
+// Where a headless replay's transcript goes: each step's screen (in `glyphs`) and each caption
+// as ";; TEXT" where it is reached, on `out`; none without `out`, and then no screen is drawn at
+// all (apcs grade: drawing screens is most of a replay's time, and nobody would see them).
+struct Transcript {
+    std::ostream* out = nullptr;
+    GlyphSet glyphs = GlyphSet::ascii;
+};
+
+// The keys played as run_headless_session plays them, the screens left undrawn.
+void play_unseen(ReplayDriver& replay, const Session& session)
+{
+    while (replay.playing() && !session.finished()) {
+        replay.play_next();
+        while (session.busy())
+            replay.work();
+        while (session.animating())
+            replay.tick();
+    }
+    replay.finish();
+}
+
+// The script replayed at once, its transcript as `transcript` says. Nobody watched the screen: a
+// file that could not be written is the run's failure.
+ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name,
+                           Transcript transcript, ReplayHooks hooks, ReplayKept& kept, std::ostream& err)
+{
+    if (transcript.out != nullptr)
+        hooks.caption_reached = [out = transcript.out, &script, pages = std::move(hooks.caption_reached)](
+                                    std::size_t index, const SessionScreen& shown) {
+            *out << ";; " << script.captions[index].text << '\n';
+            if (pages)
+                pages(index, shown);
+        };
     ReplayDriver replay(session, script, file_name, ReplayPace{}, std::move(hooks), ReplayAudience::headless);
-    run_headless_session(replay, session, glyphs, out);
-    recorded = replay.recording();
+    if (transcript.out != nullptr)
+        run_headless_session(replay, session, transcript.glyphs, *transcript.out);
+    else
+        play_unseen(replay, session);
+    kept.recording = replay.recording();
+    kept.goals = replay.goal_outcomes();
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     if (!replay.goals())
@@ -481,13 +524,10 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     if (options.record && *options.record != "-")
         files.protect_key_file(std::filesystem::absolute(*options.record).string());
     files.log("session started");
-    SessionSettings settings = session_settings(options);
-    settings.memory_limit_bytes = *limit;
-    // On a terminal a key's first picture comes at once and is refined while no key waits;
-    // headless, every key's work is done before the next (the screens printed are final).
-    settings.refinement = headless ? Refinement::at_once : Refinement::in_steps;
+    const SessionSettings settings =
+        replay_settings(options, *limit, headless ? ReplayAudience::headless : ReplayAudience::terminal);
     Session session(settings, files);
-    KeyRecording recorded;
+    ReplayKept kept;
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
@@ -502,15 +542,34 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     }
     const ExitStatus status = handout_outcome(
         handout, options, session, folder,
-        headless ? replay_headless(session, script, options.keys->string(), *glyphs, hooks, recorded, screens, err)
-                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, recorded, out, err),
+        headless ? replay_headless(session, script, options.keys->string(), {&screens, *glyphs}, hooks, kept, err)
+                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, kept.recording, out, err),
         err);
     if (status == ExitStatus::terminal_problem)
         return status;
     // A recording that fails is reported; a session stopped by a signal still ends as stopped.
-    if (const std::optional<ExitStatus> refused = record_keys(options, files_read(options, session, folder), recorded, out, err))
+    if (const std::optional<ExitStatus> refused =
+            record_keys(options, files_read(options, session, folder), kept.recording, out, err))
         return status == ExitStatus::stopped ? status : *refused;
     return status;
+}
+
+HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name, const CommonOptions& options,
+                                const std::filesystem::path& folder, std::ostream& err)
+{
+    const Expected<std::uint64_t> limit = memory_limit(options);
+    if (!limit) {
+        err << limit.error().to_string() << '\n';
+        return {ExitStatus::bad_usage, {}};
+    }
+    FolderFiles files(folder);
+    files.log("session started");
+    Session session(replay_settings(options, *limit, ReplayAudience::headless), files);
+    ReplayHooks hooks;
+    hooks.log = [&files](const std::string& line) { files.log(line); };
+    ReplayKept kept;
+    const ExitStatus status = replay_headless(session, script, script_name, Transcript{}, std::move(hooks), kept, err);
+    return {status, std::move(kept.goals)};
 }
 
 ColourChoice session_colour(ColourChoice asked, const char* no_color)

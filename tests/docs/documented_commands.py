@@ -23,7 +23,7 @@ import sys
 import tempfile
 
 EXAMPLES = ("n-to-l", "stick", "snake-apple", "robot", "bicycle", "car")
-COMMANDS = ("path", "inbetween", "fit", "draw", "play", "figures")
+COMMANDS = ("path", "inbetween", "fit", "draw", "play", "figures", "grade")
 OUTPUTS = ("--print", "--out", "--png", "--png-raw", "--svg", "--gif", "--sixel", "--kitty", "--tree")
 
 

@@ -8,6 +8,7 @@
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session.h"
 
+#include <filesystem>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -49,6 +50,21 @@ SessionSettings session_settings(const CommonOptions& options);
 // a line "--- STEP", then the 80x24 screen, trailing blanks removed. The replay's hooks hear of
 // each caption as it is reached (the headless command prints ";; TEXT" there).
 void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out);
+
+// What a headless replay left: the exit status `apcs --keys` ends with, and the outcome of each
+// goal of the script (every goal: headless, the replay's finish() judges those left).
+struct HeadlessReplay {
+    ExitStatus status = ExitStatus::success;
+    std::vector<GoalOutcome> goals;
+};
+
+// `script` (named `script_name` in messages) replayed headless in `folder` with `options`, as
+// `apcs --keys SCRIPT --workdir FOLDER </dev/null` replays it: the same keys into the same
+// session, the same files and apcs.log there; but no screen is drawn (nobody sees one, and
+// drawing them is most of a replay's time). Its problems go to `err`. The script's INPUT lines
+// are not checked here: the caller did, or made the folder from them (apcs grade).
+HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name, const CommonOptions& options,
+                                const std::filesystem::path& folder, std::ostream& err);
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,

@@ -1,0 +1,214 @@
+#include "apcs/cli/grade_command.h"
+
+#include "apcs/cli/memory_limit.h"
+#include "apcs/cli/report.h"
+#include "apcs/cli/session_command.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/input_check.h"
+#include "apcs/lesson/grade.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// A folder of this run's own, made by mkdtemp (mode 0700: no other user reads a student's replay
+// or swaps a file in it) and removed with everything in it when the run ends, whichever way.
+class PrivateFolder {
+public:
+    PrivateFolder() = default;
+    PrivateFolder(const PrivateFolder&) = delete;
+    PrivateFolder& operator=(const PrivateFolder&) = delete;
+    ~PrivateFolder()
+    {
+        std::error_code ignored;
+        if (!m_path.empty())
+            fs::remove_all(m_path, ignored);
+    }
+
+    // The folder made under the system's temporary folder (TMPDIR, else /tmp); the problem if not.
+    Expected<void> make()
+    {
+        std::error_code error;
+        const fs::path temporary = fs::temp_directory_path(error);
+        if (error)
+            return Diagnostic{"apcs", 0, "grade: no temporary folder: " + error.message()};
+        std::string pattern = (temporary / "apcs-grade-XXXXXX").string();
+        if (::mkdtemp(pattern.data()) == nullptr)
+            return Diagnostic{"apcs", 0, "grade: cannot make a folder in " + temporary.string() + ": " +
+                                             std::strerror(errno)};
+        m_path = pattern;
+        return ok;
+    }
+    const fs::path& path() const { return m_path; }
+
+private:
+    fs::path m_path;
+};
+
+// What every recording is graded against: the exercise as read, its name as typed, and the
+// private copy of its inputs.
+struct Exercise {
+    KeyScript script;
+    std::string name;
+    fs::path inputs;                 // the folder of the checked copies, in the private folder
+    std::vector<fs::path> copies;    // each copy, named as beside the exercise
+};
+
+// EXERCISE.keys read and parsed as --keys reads a script; it must have goals to grade and inputs
+// to replay on. The problem on `err` and the exit status, or nullopt.
+std::optional<ExitStatus> read_exercise(const fs::path& file, KeyScript& script, std::ostream& err)
+{
+    const Expected<std::string> text = read_text_file(file, max_key_script_bytes);
+    if (!text)
+        return report_bad_input(text.error(), err);
+    Expected<KeyScript> parsed = parse_captioned_key_script(*text, file.string());
+    if (!parsed)
+        return report_bad_input(parsed.error(), err);
+    if (parsed->goals.empty())
+        return report_bad_input({file.string(), 0, "has no GOAL line; apcs grade grades an exercise's goals"}, err);
+    if (parsed->inputs.empty())
+        return report_bad_input({file.string(), 0,
+                                 "names no input (INPUT NAME CRC32 XXXXXXXX lines); apcs grade replays each "
+                                 "recording on fresh copies of the exercise's inputs"},
+                                err);
+    script = std::move(*parsed);
+    return std::nullopt;
+}
+
+// The file `from` copied as `to`, which the owner may write (the session rewrites an accepted
+// path file, as it does in a student's copy, whatever the teacher's file's mode).
+Expected<void> copy_writable(const fs::path& from, const fs::path& to)
+{
+    std::error_code error;
+    fs::copy_file(from, to, fs::copy_options::overwrite_existing, error);
+    if (!error)
+        fs::permissions(to, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::add, error);
+    if (error)
+        return Diagnostic{"apcs", 0, "grade: cannot copy " + from.string() + " to " + to.string() + ": " +
+                                         error.message()};
+    return ok;
+}
+
+// The exercise's inputs beside it, checked, copied into the private folder and checked again
+// there, so that what the recordings are replayed on is what the exercise names even if the
+// teacher's files change meanwhile. The problem on `err` and the exit status, or nullopt.
+std::optional<ExitStatus> copy_inputs(Exercise& exercise, const fs::path& exercise_file, std::ostream& err)
+{
+    const fs::path beside = exercise_file.has_parent_path() ? exercise_file.parent_path() : fs::path(".");
+    if (const Expected<void> checked = check_script_inputs(exercise.script.inputs, beside, exercise.name); !checked)
+        return report_bad_input(checked.error(), err);
+    std::error_code error;
+    if (fs::create_directory(exercise.inputs, error); error)
+        return report_bad_input({"apcs", 0, "grade: cannot make " + exercise.inputs.string() + ": " + error.message()},
+                                err);
+    for (const ScriptInput& input : exercise.script.inputs) {
+        // The file as the check found it: another case of its name is the same file (as DOS had it).
+        const fs::path found = resolve_input_path(beside / input.name);
+        exercise.copies.push_back(exercise.inputs / found.filename());
+        if (const Expected<void> copied = copy_writable(found, exercise.copies.back()); !copied)
+            return report_bad_input(copied.error(), err);
+    }
+    if (const Expected<void> checked = check_script_inputs(exercise.script.inputs, exercise.inputs, exercise.name);
+        !checked)
+        return report_bad_input(checked.error(), err);
+    return std::nullopt;
+}
+
+// A work folder holding nothing but fresh copies of the checked inputs, as a student's copy of the
+// exercise is before the session.
+Expected<void> fresh_work_folder(const Exercise& exercise, const fs::path& work)
+{
+    std::error_code error;
+    fs::remove_all(work, error);
+    if (!error)
+        fs::create_directory(work, error);
+    if (error)
+        return Diagnostic{"apcs", 0, "grade: cannot make " + work.string() + ": " + error.message()};
+    for (const fs::path& copy : exercise.copies)
+        if (const Expected<void> copied = copy_writable(copy, work / copy.filename()); !copied)
+            return copied;
+    return ok;
+}
+
+// The recording's script, or the reason it cannot be graded (FILE:LINE on `err`). Only a regular
+// file is read (read_text_file): a FIFO or a device is refused without being opened.
+std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream& err)
+{
+    const Expected<std::string> text = read_text_file(recording, max_key_script_bytes);
+    if (!text) {
+        err << text.error().to_string() << '\n';
+        return std::nullopt;
+    }
+    Expected<KeyScript> parsed = parse_captioned_key_script(*text, recording.string());
+    if (!parsed) {
+        err << parsed.error().to_string() << '\n';
+        return std::nullopt;
+    }
+    return std::move(*parsed);
+}
+
+// One recording's rows: error when it cannot be read or replayed, other when it is another
+// exercise's, else each goal as its replay in `work` left it. `work` is removed after the replay.
+std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& recording,
+                                      const CommonOptions& options, const fs::path& work, std::ostream& err)
+{
+    const GradeNames names{recording.string(), exercise.name};
+    const std::optional<KeyScript> script = read_recording(recording, err);
+    if (!script)
+        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
+    if (!same_exercise(exercise.script, *script))
+        return unreplayed_rows(names, exercise.script, GradeVerdict::other);
+    if (const Expected<void> made = fresh_work_folder(exercise, work); !made) {
+        err << made.error().to_string() << '\n';
+        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
+    }
+    // The report is the grade: a replay's "goal not reached" and the like are not shown.
+    std::ostream unheard(nullptr);
+    const HeadlessReplay replayed = replay_in_folder(*script, recording.string(), options, work, unheard);
+    std::error_code ignored;
+    fs::remove_all(work, ignored);
+    return replayed_rows(names, *script, replayed.goals);
+}
+
+} // namespace
+
+ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& options, std::ostream& out,
+                             std::ostream& err)
+{
+    if (const Expected<std::uint64_t> limit = memory_limit(options); !limit) {
+        err << limit.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
+    Exercise exercise;
+    exercise.name = request.exercise.string();
+    if (const std::optional<ExitStatus> refused = read_exercise(request.exercise, exercise.script, err))
+        return *refused;
+    PrivateFolder folder;
+    if (const Expected<void> made = folder.make(); !made)
+        return report_bad_input(made.error(), err);
+    exercise.inputs = folder.path() / "inputs";
+    if (const std::optional<ExitStatus> refused = copy_inputs(exercise, request.exercise, err))
+        return *refused;
+    out << grade_csv_header << '\n';
+    bool every_one_graded = true;
+    for (const fs::path& recording : request.recordings) {
+        for (const GradeRow& row : grade_recording(exercise, recording, options, folder.path() / "work", err)) {
+            out << grade_csv_line(row);
+            every_one_graded = every_one_graded && row.reached != GradeVerdict::error;
+        }
+    }
+    return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;
+}
+
+} // namespace apcs

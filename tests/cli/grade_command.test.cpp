@@ -1,0 +1,284 @@
+#include "support/run_apcs.h"
+#include "support/temp_folder.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
+
+using namespace apcs;
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path shipped = fs::path(APCS_SOURCE_DIR) / "data" / "exercises";
+
+const std::string header = "file,exercise,goal,reached,value,keys\n";
+
+// data/exercises as a teacher keeps it: the exercises and their inputs in `folder`, the answers
+// in `folder`/answers.
+void copy_shipped_exercises(const test::TempFolder& folder)
+{
+    fs::copy(shipped, folder.path(), fs::copy_options::recursive | fs::copy_options::overwrite_existing);
+}
+
+std::string exercise_of(const test::TempFolder& folder, int number, const std::string& topic)
+{
+    return (folder / ("exercise-" + std::to_string(number) + "-" + topic + ".keys")).string();
+}
+
+std::string answer_of(const test::TempFolder& folder, int number, const std::string& topic)
+{
+    return (folder.path() / "answers" / ("exercise-" + std::to_string(number) + "-" + topic + "-answer.keys")).string();
+}
+
+test::CommandRun grade(std::vector<std::string> files)
+{
+    files.insert(files.begin(), "grade");
+    return test::run_apcs(files);
+}
+
+// Every entry under `folder` (its own included): kind, mode, time of last change and, for a file,
+// its bytes. A file made and removed again inside a folder changes that folder's time.
+std::map<std::string, std::string> snapshot(const fs::path& folder)
+{
+    std::map<std::string, std::string> entries;
+    const auto note = [&entries, &folder](const fs::path& entry) {
+        struct stat status {};
+        ::lstat(entry.c_str(), &status);
+        std::string& kept = entries[fs::relative(entry, folder).string()];
+        kept = std::to_string(status.st_mode) + " " + std::to_string(status.st_mtim.tv_sec) + "." +
+               std::to_string(status.st_mtim.tv_nsec);
+        if (S_ISREG(status.st_mode))
+            kept += " " + test::read_all(entry);
+    };
+    note(folder);
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder))
+        note(entry.path());
+    return entries;
+}
+
+// TMPDIR pointed at a folder of the test's while it lives, so that what grade leaves there is seen.
+class TemporaryFolderSetting {
+public:
+    explicit TemporaryFolderSetting(const fs::path& folder)
+    {
+        if (const char* old = std::getenv("TMPDIR"))
+            m_old = old;
+        ::setenv("TMPDIR", folder.c_str(), 1);
+    }
+    TemporaryFolderSetting(const TemporaryFolderSetting&) = delete;
+    TemporaryFolderSetting& operator=(const TemporaryFolderSetting&) = delete;
+    ~TemporaryFolderSetting()
+    {
+        if (m_old)
+            ::setenv("TMPDIR", m_old->c_str(), 1);
+        else
+            ::unsetenv("TMPDIR");
+    }
+
+private:
+    std::optional<std::string> m_old;
+};
+
+} // namespace
+
+TEST_CASE("apcs grade prints yes for each recording of the answer and no for the exercise itself",
+          "[cli][grade][exercises]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const std::string answer = answer_of(folder, 1, "tension");
+    const auto result = grade({exercise, answer, answer, exercise});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    REQUIRE(result.err.empty());
+    const std::string goal = ",GOAL VALUE TENSION 0.4 0.6,";
+    REQUIRE(result.out == header + answer + "," + exercise + goal + "yes,+0.50,L L L 6\n" + answer + "," + exercise +
+                              goal + "yes,+0.50,L L L 6\n" + exercise + "," + exercise + goal + "no,+0.00,\n");
+}
+
+TEST_CASE("apcs grade grades every shipped answer yes against its own exercise", "[cli][grade][exercises]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const auto [number, topic] = GENERATE(table<int, std::string>(
+        {{1, "tension"}, {2, "continuity"}, {3, "bias"}, {4, "near"}, {5, "inbetween"}}));
+    CAPTURE(topic);
+    const auto result = grade({exercise_of(folder, number, topic), answer_of(folder, number, topic)});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.starts_with(header));
+    REQUIRE(result.out.find(",yes,") != std::string::npos);
+    REQUIRE(result.out.find(",no,") == std::string::npos);
+}
+
+TEST_CASE("apcs grade says other for a recording of another exercise and does not replay it", "[cli][grade][exercises]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const std::string answer = answer_of(folder, 2, "continuity");
+    const auto result = grade({exercise, answer});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.err.empty());
+    REQUIRE(result.out == header + answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,\n");
+}
+
+TEST_CASE("apcs grade says other for a recording whose INPUT lines differ from the exercise's", "[cli][grade][inputs]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    std::string recording = test::read_all(answer_of(folder, 1, "tension"));
+    recording.replace(recording.find("CRC32 1db7d833"), 14, "CRC32 1db7d834");
+    const std::string other = folder.write("other-input.keys", recording).string();
+    const auto result = grade({exercise_of(folder, 1, "tension"), other});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.ends_with(",other,,\n"));
+}
+
+TEST_CASE("apcs grade gives error rows for a recording that is missing or a FIFO or a folder or garbage",
+          "[cli][grade][inputs]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const test::TempFolder handed_in;
+    const std::string missing = (handed_in / "missing.keys").string();
+    const std::string fifo = (handed_in / "fifo.keys").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const std::string folder_name = (handed_in / "folder.keys").string();
+    fs::create_directory(folder_name);
+    const std::string garbage = handed_in.write("garbage.keys", "ENTER\nFROBNICATE the staff\n").string();
+    const std::string answer = answer_of(folder, 1, "tension");
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    // The FIFO has no writer: opening it to read would wait for ever.
+    const auto result = grade({exercise, missing, fifo, folder_name, garbage, answer});
+    REQUIRE(result.status == 1);
+    const std::string row_end = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,error,,\n";
+    REQUIRE(result.out == header + missing + row_end + fifo + row_end + folder_name + row_end + garbage + row_end +
+                              answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6\n");
+    REQUIRE(result.err.find(missing + ": ") != std::string::npos);
+    REQUIRE(result.err.find(fifo + ": is not a regular file (a FIFO)") != std::string::npos);
+    REQUIRE(result.err.find(folder_name + ": ") != std::string::npos);
+    REQUIRE(result.err.find(garbage + ":2: ") != std::string::npos);
+}
+
+TEST_CASE("apcs grade follows a symbolic link to a recording and grades what it names", "[cli][grade][inputs]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const test::TempFolder handed_in;
+    const fs::path link = handed_in / "link.keys";
+    fs::create_symlink(answer_of(folder, 1, "tension"), link);
+    const auto result = grade({exercise_of(folder, 1, "tension"), link.string()});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.ends_with(",yes,+0.50,L L L 6\n"));
+    REQUIRE(fs::is_symlink(fs::symlink_status(link)));
+}
+
+TEST_CASE("apcs grade refuses with exit 1 an exercise whose input changed or is missing naming it and prints no row",
+          "[cli][grade][inputs]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    std::string expected;
+    SECTION("a changed input")
+    {
+        folder.write("way1.dat", test::read_all(folder / "way1.dat") + "\n");
+        expected = exercise + ":7: way1.dat differs from the exercise's (CRC-32 ";
+    }
+    SECTION("a missing input")
+    {
+        fs::remove(folder / "key2.dat");
+        expected = exercise + ":6: key2.dat is missing from the work folder " + folder.path().string();
+    }
+    const auto result = grade({exercise, answer_of(folder, 1, "tension")});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out.empty());
+    REQUIRE(result.err.starts_with(expected));
+}
+
+TEST_CASE("apcs grade refuses with exit 1 an exercise with no GOAL line", "[cli][grade][inputs]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string lesson = folder.write("lesson.keys", "INPUT key1.dat CRC32 de215594\nENTER ENTER\n").string();
+    const auto result = grade({lesson, answer_of(folder, 1, "tension")});
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out.empty());
+    REQUIRE(result.err == lesson + ": has no GOAL line; apcs grade grades an exercise's goals\n");
+}
+
+TEST_CASE("apcs grade leaves the exercise's folder and the recordings' folder and the temporary folder as they were",
+          "[cli][grade][exercises]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const test::TempFolder temporary;
+    const TemporaryFolderSetting setting(temporary.path());
+    const auto before = snapshot(folder.path());
+    const auto result = grade({exercise_of(folder, 1, "tension"), answer_of(folder, 1, "tension"),
+                               answer_of(folder, 2, "continuity"), exercise_of(folder, 1, "tension")});
+    REQUIRE(result.status == 0);
+    REQUIRE(snapshot(folder.path()) == before);
+    // The private folder was made there, and is gone with everything in it.
+    REQUIRE(fs::is_empty(temporary.path()));
+}
+
+TEST_CASE("apcs grade quotes a recording's name that holds a comma or a quote as RFC 4180 says", "[cli][grade]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string recording =
+        folder.write("Doe, \"Jo\".keys", test::read_all(answer_of(folder, 1, "tension"))).string();
+    std::string quoted = "\"";
+    for (const char c : recording)
+        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    quoted += '"';
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const auto result = grade({exercise, recording});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out == header + quoted + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6\n");
+}
+
+TEST_CASE("apcs grade says no for a goal that can never be met", "[cli][grade][exercises]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const auto far_away = [](std::string script) {
+        script.replace(script.find("GOAL VALUE TENSION 0.40 0.60"), 28, "GOAL NEAR 1e8 1e8 1e8 0.01");
+        return script;
+    };
+    const std::string exercise =
+        folder.write("far.keys", far_away(test::read_all(exercise_of(folder, 1, "tension")))).string();
+    const std::string recording =
+        folder.write("far-answer.keys", far_away(test::read_all(answer_of(folder, 1, "tension")))).string();
+    const auto result = grade({exercise, recording, exercise});
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out.find(recording + "," + exercise + ",GOAL NEAR 1e+08 1e+08 1e+08 0.01,no,") !=
+            std::string::npos);
+    REQUIRE(result.out.find(",yes,") == std::string::npos);
+}
+
+TEST_CASE("apcs grade needs an exercise and at least one recording and its help shows a runnable example",
+          "[cli][grade]")
+{
+    const auto none = test::run_apcs({"grade"});
+    REQUIRE(none.status == 2);
+    REQUIRE(none.out.empty());
+    const auto exercise_only = test::run_apcs({"grade", (shipped / "exercise-1-tension.keys").string()});
+    REQUIRE(exercise_only.status == 2);
+    const auto help = test::run_apcs({"grade", "--help"});
+    REQUIRE(help.status == 0);
+    REQUIRE(help.out.find("apcs grade data/exercises/exercise-1-tension.keys "
+                          "data/exercises/answers/exercise-1-tension-answer.keys") != std::string::npos);
+}
