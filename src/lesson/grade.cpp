@@ -16,6 +16,7 @@ bool same_goal(ScriptGoal left, ScriptGoal right)
         goal->before_event = 0;
         goal->answer_end = 0;
         goal->line_number = 0;
+        goal->captions_before = 0;
     }
     return left == right;
 }
