@@ -29,7 +29,7 @@ std::optional<KeyEvent> key_of_token(std::string_view token)
         if (token == row.script_name)
             return KeyEvent::of(row.key);
     const std::u32string characters = decode_utf8(token);
-    if (characters.size() != 1 || characters[0] < 0x21 || characters[0] == 0x7F || characters[0] == 0xFFFD)
+    if (characters.size() != 1 || !is_token_character(characters[0]))
         return std::nullopt;
     return KeyEvent::typed(characters[0]);
 }
@@ -302,6 +302,11 @@ std::string step_label(const KeyScript& script, std::size_t first)
     }
     const PhysicalKey* row = find_physical_key(event.key);
     return row == nullptr ? std::string() : std::string(row->script_name);
+}
+
+bool is_token_character(char32_t character)
+{
+    return character > 0x20 && character != 0x7F && character != 0xFFFD;
 }
 
 std::string take_text_line(std::string& pending_text)

@@ -15,7 +15,7 @@ bool has_token(const KeyEvent& key)
 {
     if (key.key != Key::character)
         return find_physical_key(key.key) != nullptr;
-    return key.character > 0x20 && key.character != 0x7F && key.character != U';' && key.character != 0xFFFD;
+    return is_token_character(key.character) && key.character != U';';
 }
 
 std::string token_line(const KeyEvent& key)

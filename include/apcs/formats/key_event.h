@@ -92,6 +92,9 @@ struct ReplayPace {
     int milliseconds = 0;
 };
 
+// A character a script names by a token of its own ("L", "6"): printable, not a blank.
+bool is_token_character(char32_t character);
+
 // The typed text `pending_text` as a script's TEXT line, emptying it: "TEXT way1.dat\n" (its
 // trailing spaces as SPACE lines, which no editor strips); empty for no text.
 std::string take_text_line(std::string& pending_text);
