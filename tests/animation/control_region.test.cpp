@@ -43,7 +43,7 @@ TEST_CASE("global control gives every point, the last too, the staff's accelerat
         REQUIRE(point.staff.acceleration == -0.6);
 }
 
-TEST_CASE("staff values reaching a region are clamped to [-1, 1], and a region past the path stops at its end",
+TEST_CASE("staff values reaching a region are clamped to -1 and +1, and a region past the path stops at its end",
           "[animation][region]")
 {
     ControlPoints points = five_points();

@@ -171,7 +171,7 @@ TEST_CASE("fewer than two control points give no segments", "[animation][kb]")
     REQUIRE(sample_curve({}, 32).sample_count() == 0);
 }
 
-TEST_CASE("tension, continuity and bias beyond [-1, 1] are clamped: 3 shapes the curve as 1 does", "[animation][kb]")
+TEST_CASE("tension, continuity and bias beyond -1 and +1 are clamped: 3 shapes the curve as 1 does", "[animation][kb]")
 {
     const std::array<Vec3, 3> p{{{0, 0, 0}, {2, 3, 1}, {5, 1, -1}}};
     for (const StaffLine line : {StaffLine::tension, StaffLine::continuity, StaffLine::bias}) {
@@ -187,7 +187,7 @@ TEST_CASE("tension, continuity and bias beyond [-1, 1] are clamped: 3 shapes the
     }
 }
 
-TEST_CASE("end slopes beyond [0, 1] are clamped: 3 gives the tangent of 1, -2 that of 0", "[animation][kb]")
+TEST_CASE("end slopes beyond 0 and 1 are clamped: 3 gives the tangent of 1, -2 that of 0", "[animation][kb]")
 {
     const ControlPoints points = points_with(zigzag);
     const auto beyond = kb_segments(points, {3.0, -2.0});

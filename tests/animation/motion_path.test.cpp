@@ -76,7 +76,7 @@ TEST_CASE("negative acceleration shrinks the gaps and positive acceleration grow
     }
 }
 
-TEST_CASE("the acceleration targets follow d = L[(1-|a|)tau + |a|w(tau)] worked by hand", "[animation][acceleration]")
+TEST_CASE("the acceleration targets follow d = L((1-|a|)tau + |a|w(tau)) worked by hand", "[animation][acceleration]")
 {
     // A straight two-point path from 0 to 12 with slopes 1: samples are evenly spaced (P(u) = 12u),
     // 120 samples put one every 0.1. M = 1: tau = 1/2. a = −1: d = 12·sin(π/4) = 8.485 → 8.5.

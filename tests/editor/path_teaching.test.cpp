@@ -169,7 +169,7 @@ TEST_CASE("the law inset takes the corner that hides the fewest control points a
     REQUIRE(screen.marks.size() == 7);
 }
 
-TEST_CASE("= types a staff value: clamped to [-1, 1], a non-number is refused and the field stays", "[session][teaching]")
+TEST_CASE("= types a staff value: clamped to -1 and +1, a non-number is refused and the field stays", "[session][teaching]")
 {
     LogLines log;
     PathEditor editor(zigzag(), log);

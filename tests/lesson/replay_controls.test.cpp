@@ -238,7 +238,7 @@ TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the
 }
 
 TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is not played and the closing caption "
-          "shows - at a goal ']' is the session's",
+          "shows - at a goal the key of a right bracket is the session's",
           "[lesson][replay][deck][goal]")
 {
     Expected<KeyScript> exercise = parse_captioned_key_script(
