@@ -22,7 +22,9 @@ bash "$source_tree/scripts/package.sh" "${package_options[@]}" "$work/deb" > "$w
 grep -E "tests passed|tests failed" "$work/build.log"
 # The package is built without -Werror (a newer compiler's new warning must not break a Debian
 # build), so GCC's warnings are refused here: this is the only GCC build CI makes.
-if grep -E "warning: .*\[-W[a-zA-Z0-9=+-]+\]" "$work/build.log"; then
+gcc_warning='warning: .*\[-W[a-zA-Z0-9=+-]+\]'
+if grep -qE "$gcc_warning" "$work/build.log"; then
+  grep -E -B14 -A4 "$gcc_warning" "$work/build.log"   # with the lines that say where it was inlined from
   fail "GCC warns (above)"
 fi
 grep -q -- "-D_FORTIFY_SOURCE=2 .*-c .*src/main.cpp" "$work/build.log" ||

@@ -64,8 +64,12 @@ TEST_CASE("a handout page keeps a Thai caption's combining marks: in its text, a
     const std::string thai = "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35";
     SessionScreen console;
     console.text = CellGrid(80, 24);
-    console.text.put_text(0, 23, " " + thai + " x", CellStyle::reverse);
-    REQUIRE(screen_text(console, GlyphSet::ascii) == std::string(23, '\n') + " " + thai + " x\n");
+    const std::string caption = " " + thai + " x";
+    console.text.put_text(0, 23, caption, CellStyle::reverse);
+    // Not std::string(23, '\n') + caption: GCC 12 at -O1 warns falsely of that temporary's bounds.
+    std::string console_text(23, '\n');
+    console_text += caption + "\n";
+    REQUIRE(screen_text(console, GlyphSet::ascii) == console_text);
     const GraphicsScreen picture = screen_picture(console);
     REQUIRE(picture.text.size() == 1);
     REQUIRE(picture.text[0].text == " " + thai + " x");
