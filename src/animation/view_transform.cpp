@@ -83,6 +83,20 @@ void ProjectedExtent::add(const EyePoint& eye)
     top = std::max(top, y);
 }
 
+void ProjectedExtent::join(const ProjectedExtent& other)
+{
+    if (other.empty)
+        return;
+    if (empty) {
+        *this = other;
+        return;
+    }
+    left = std::min(left, other.left);
+    right = std::max(right, other.right);
+    bottom = std::min(bottom, other.bottom);
+    top = std::max(top, other.top);
+}
+
 bool ProjectedExtent::holds(const EyePoint& eye, double margin) const
 {
     if (empty || !(eye.z > 0.0))

@@ -1,5 +1,8 @@
 #include "apcs/formats/dat_file.h"
 
+#include "apcs/base/parallel_work.h"
+#include "dat_point_lines.h"
+
 #include "apcs/animation/input_limits.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/text_fields.h"
@@ -27,27 +30,8 @@ void append_xyz(std::string& text, const Vec3& point)
     append_shortest(text, point.z);
 }
 
-// The blank-separated fields of a line: the first eight, and how many there are in all (a
-// point has at most seven, so no line needs more to be judged; nothing is allocated per line).
-struct Fields {
-    std::array<std::string_view, 8> items;
-    std::size_t count = 0;
-
-    std::size_t size() const { return count; }
-    bool empty() const { return count == 0; }
-    std::string_view operator[](std::size_t i) const { return items[i]; }
-};
-
-Fields split_fields(std::string_view line)
-{
-    Fields fields;
-    for_each_field(line, [&](std::string_view field) {
-        if (fields.count < fields.items.size())
-            fields.items[fields.count] = field;
-        ++fields.count;
-    });
-    return fields;
-}
+using dat_lines::Fields;
+using dat_lines::split_fields;
 
 // Reads a file line by line and collects parts and points; the first problem ends the reading.
 class DatParser {
@@ -62,6 +46,9 @@ public:
     }
 
     Expected<DatFile> parse(std::string_view text);
+    // The same, the text's two halves scanned on both cores (when it has a line end past its
+    // middle and holds no Ctrl-Z), then their other lines read and their points taken in order.
+    Expected<DatFile> parse_in_halves(std::string_view text);
     // Only for a parser made with positions_only.
     Expected<Graphic> parse_graphic_pieces(std::size_t line_count, const TextPieces& read);
 
@@ -71,6 +58,10 @@ private:
     Expected<void> parse_slopes(const Fields& fields);
     Expected<void> parse_part(const Fields& fields);
     Expected<void> parse_point(const Fields& fields);
+    void start_unnamed_part();
+    void add_point(const DatPoint& point);
+    Expected<void> take_half(dat_lines::ScannedHalf& half, int line_offset);
+    Expected<void> take_points(std::vector<DatPoint>& points, std::size_t first, std::size_t end, int line_offset);
     Expected<void> finish();
     [[nodiscard]] Diagnostic error(std::string message, int line) const
     {
@@ -243,54 +234,136 @@ Expected<void> DatParser::parse_part(const Fields& fields)
 
 Expected<void> DatParser::parse_point(const Fields& fields)
 {
+    using dat_lines::PointFault;
     m_seen_data = true;
     if (fields.size() != 2 && fields.size() != 3 && fields.size() != 7)
         return error("expected a point of 2, 3 or 7 numbers (x y [z] [t c b a]), found " +
                      std::to_string(fields.size()) + " fields");
     if (m_points == max_dat_points)
         return error("more than " + std::to_string(max_dat_points) + " points; expected at most that many");
-    std::array<double, 7> values{};
-    for (std::size_t i = 0; i < fields.size(); ++i) {
-        const std::optional<double> value = parse_number(fields[i]);
-        if (!value)
-            return error("expected a number, found " + quote_field(fields[i]));
-        if (!std::isfinite(*value))
-            return error("expected a finite number, found " + quote_field(fields[i]));
-        if (std::abs(*value) > max_dat_magnitude)
-            return error("number " + quote_field(fields[i]) + " is out of range; expected |value| <= 1e9");
-        values[i] = *value;
+    dat_lines::ReadPoint read = dat_lines::read_point(fields);
+    const std::string_view field = fields[read.field];
+    switch (read.fault) {
+    case PointFault::none: break;
+    case PointFault::field_count: break; // checked above
+    case PointFault::not_a_number: return error("expected a number, found " + quote_field(field));
+    case PointFault::not_finite: return error("expected a finite number, found " + quote_field(field));
+    case PointFault::too_large:
+        return error("number " + quote_field(field) + " is out of range; expected |value| <= 1e9");
+    case PointFault::staff_outside:
+        return error(ascii_lower_case(staff_line_name(staff_lines[read.field - 3])) + " " + quote_field(field) +
+                     " is outside " + range_text(limits::staff_value));
     }
-    DatPoint point{{values[0], values[1], values[2]}, std::nullopt, m_line};
-    if (fields.size() == 7) {
-        // t c b a follow x y z in the staff's order.
-        StaffValues staff;
-        for (std::size_t i = 0; i < staff_lines.size(); ++i) {
-            if (!limits::staff_value.contains(values[3 + i]))
-                return error(ascii_lower_case(staff_line_name(staff_lines[i])) + " " + quote_field(fields[3 + i]) +
-                             " is outside " + range_text(limits::staff_value));
-            staff[staff_lines[i]] = values[3 + i];
-        }
-        point.staff = staff;
-    }
-    if (m_file.parts.empty()) {
-        m_file.parts.push_back({"", Closure::open, {}});
-        m_part_lines.push_back(0);
-        m_marked_closed.push_back(false);
-        if (m_positions_only)
-            m_positions.emplace_back();
-    }
+    read.point.line = m_line;
+    add_point(read.point);
+    return ok;
+}
+
+void DatParser::start_unnamed_part()
+{
+    m_file.parts.push_back({"", Closure::open, {}});
+    m_part_lines.push_back(0);
+    m_marked_closed.push_back(false);
+    if (m_positions_only)
+        m_positions.emplace_back();
+}
+
+// A point read (its line set) joins the last part, or the unnamed part that points before any
+// PART line form.
+void DatParser::add_point(const DatPoint& point)
+{
+    if (m_file.parts.empty())
+        start_unnamed_part();
     ++m_points;
     if (m_positions_only) {
         std::vector<Vec3>& positions = m_positions.back();
         if (positions.capacity() == 0)
             reserve_for_lines_left(positions);
         positions.push_back(point.position);
-        return ok;
+        return;
     }
     std::vector<DatPoint>& points = m_file.parts.back().points;
     if (points.capacity() == 0)
         reserve_for_lines_left(points);
     points.push_back(point);
+}
+
+Expected<DatFile> DatParser::parse_in_halves(std::string_view text)
+{
+    const std::size_t split = text.find('\n', text.size() / 2);
+    if (split == std::string_view::npos || split + 1 >= text.size())
+        return parse(text);
+    const std::array<std::string_view, 2> halves{text.substr(0, split + 1), text.substr(split + 1)};
+    std::array<dat_lines::ScannedHalf, 2> scanned;
+    std::size_t text_lines = 0;
+    split_across_cores(2, 1, [&](std::size_t first, std::size_t end) {
+        for (std::size_t h = first; h < end; ++h) {
+            // The first half's points take the second's too (it becomes the part's vector): room
+            // for every line of the text, as parse_all reserves.
+            if (h == 0)
+                text_lines = line_count_of(text);
+            const std::size_t expected = h == 0 ? text_lines : line_count_of(halves[1]);
+            scanned[h] = dat_lines::scan_half(halves[h], m_file_name, h == 0, expected);
+        }
+    });
+    if (scanned[0].needs_whole_text || scanned[1].needs_whole_text)
+        return parse(text);
+    m_text_lines = text_lines;
+    if (auto outcome = take_half(scanned[0], 0); !outcome)
+        return outcome.error();
+    if (auto outcome = take_half(scanned[1], scanned[0].line_count); !outcome)
+        return outcome.error();
+    if (auto outcome = finish(); !outcome)
+        return outcome.error();
+    return std::move(m_file);
+}
+
+// A scanned half's lines in order: its points taken between the other lines, which are read as
+// parse_all reads them; the half's own problem ends it. `line_offset`: the lines before the half.
+Expected<void> DatParser::take_half(dat_lines::ScannedHalf& half, int line_offset)
+{
+    std::size_t taken = 0;
+    for (const dat_lines::OtherLine& other : half.others) {
+        if (auto outcome = take_points(half.points, taken, other.points_before, line_offset); !outcome)
+            return outcome;
+        taken = other.points_before;
+        m_line = other.line + line_offset;
+        if (auto outcome = parse_line(other.content); !outcome)
+            return outcome;
+    }
+    if (auto outcome = take_points(half.points, taken, half.points.size(), line_offset); !outcome)
+        return outcome;
+    if (half.problem) {
+        Diagnostic problem = *half.problem;
+        problem.line += line_offset;
+        return problem;
+    }
+    return ok;
+}
+
+// Points first … end − 1 of a half, as parse_point would take them (the limit on points checked
+// before each). The first half's points, when they start the first part, become its vector.
+Expected<void> DatParser::take_points(std::vector<DatPoint>& points, std::size_t first, std::size_t end,
+                                      int line_offset)
+{
+    if (first == end)
+        return ok;
+    m_seen_data = true;
+    const bool whole_vector = first == 0 && end == points.size() && line_offset == 0;
+    if (whole_vector && m_file.parts.empty() && m_points + points.size() <= max_dat_points) {
+        start_unnamed_part();
+        m_points += points.size();
+        m_file.parts.back().points = std::move(points);
+        return ok;
+    }
+    for (std::size_t k = first; k < end; ++k) {
+        m_line = points[k].line + line_offset;
+        if (m_points == max_dat_points)
+            return error("more than " + std::to_string(max_dat_points) + " points; expected at most that many");
+        DatPoint point = points[k];
+        point.line = m_line;
+        add_point(point);
+    }
     return ok;
 }
 
@@ -351,7 +424,16 @@ std::string part_line(const std::string& part_name, Closure closure, std::size_t
 
 Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points)
 {
-    return DatParser(file_name, minimum_points).parse(text);
+    // Below a megabyte (some 40000 points) a second thread costs more than it saves.
+    constexpr std::size_t worth_halves = std::size_t{1} << 20;
+    return parse_dat(text, file_name, minimum_points, text.size() >= worth_halves ? DatReading::in_halves : DatReading::in_order);
+}
+
+Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points,
+                            DatReading reading)
+{
+    DatParser parser(file_name, minimum_points);
+    return reading == DatReading::in_halves ? parser.parse_in_halves(text) : parser.parse(text);
 }
 
 Expected<Graphic> parse_key_frame(std::string_view text, const std::string& file_name, std::size_t minimum_points)

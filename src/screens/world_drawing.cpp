@@ -1,5 +1,6 @@
 #include "apcs/screens/world_drawing.h"
 
+#include "apcs/base/parallel_work.h"
 #include "apcs/screens/curve_raster.h"
 
 #include <algorithm>
@@ -16,8 +17,7 @@ ViewScene& ViewScene::add(std::span<const Vec3> points)
 
 ViewScene& ViewScene::add(std::span<const ControlPoint> points)
 {
-    for (const ControlPoint& point : points)
-        m_points.push_back(point.position);
+    m_control_points.push_back(points);
     return *this;
 }
 
@@ -101,17 +101,76 @@ bool hull_inside_extent(const HermiteSegment& segment, const ViewTransform& view
     return true;
 }
 
+// Below this many points a list is gone over on one core.
+constexpr std::size_t points_worth_a_thread = std::size_t{1} << 14;
+
+// reach(extent, index) for the indices 0 … count − 1, in two halves on both cores when there are
+// many; each half's extent is kept on its own thread's stack (no cache line written by both) and
+// joined to `extent` in the halves' order.
+template <typename Extent, typename ReachIndex>
+void reach_in_halves(Extent& extent, std::size_t count, const ReachIndex& reach)
+{
+    std::array<Extent, 2> halves;
+    split_across_cores(count, points_worth_a_thread, [&](std::size_t first, std::size_t end) {
+        Extent half;
+        for (std::size_t index = first; index < end; ++index)
+            reach(half, index);
+        halves[first == 0 ? 0 : 1] = half;
+    });
+    extent.join(halves[0]);
+    extent.join(halves[1]);
+}
+
+// How far a fit's projection reaches from the middle: the largest |x_e/z_e| and |y_e/z_e|.
+struct ProjectedFocus {
+    double widest = 0.0;
+    double tallest = 0.0;
+
+    void join(const ProjectedFocus& other)
+    {
+        widest = std::max(widest, other.widest);
+        tallest = std::max(tallest, other.tallest);
+    }
+};
+
 } // namespace
+
+template <typename Extent, typename Reach>
+void ViewScene::reach_control_points(Extent& extent, const Reach& reach) const
+{
+    for (const std::span<const ControlPoint> points : m_control_points)
+        reach_in_halves(extent, points.size(), [&](Extent& half, std::size_t k) { reach(half, points[k].position); });
+    reach_in_halves(extent, m_points.size(), [&](Extent& half, std::size_t k) { reach(half, m_points[k]); });
+    for (const SampledCurve* curve : m_curves) {
+        const std::vector<HermiteSegment>& segments = curve->segments;
+        reach_in_halves(extent, segments.size(), [&](Extent& half, std::size_t s) { reach(half, segments[s].start); });
+        if (!segments.empty())
+            reach(extent, segments.back().end);
+    }
+}
+
+template <typename Extent, typename Within, typename Reach>
+void ViewScene::reach_samples_beyond(Extent& extent, const Within& within, const Reach& reach) const
+{
+    for (const SampledCurve* curve : m_curves) {
+        const auto per_segment = static_cast<std::size_t>(curve->samples_per_segment);
+        reach_in_halves(extent, curve->segments.size(), [&](Extent& half, std::size_t s) {
+            if (!within(curve->segments[s]))
+                for (std::size_t j = 0; j <= per_segment; ++j)
+                    reach(half, curve->segment_sample(s, j));
+        });
+    }
+}
 
 ViewTransform ViewScene::fill(ViewAngles angles, PixelRect area) const
 {
     ViewTransform view = ViewTransform::centred_on(angles, bounds(), area);
+    const auto reach = [&view](ProjectedExtent& extent, const Vec3& point) { extent.add(view.to_eye(point)); };
     ProjectedExtent extent;
-    const auto reach = [&](const Vec3& point) { extent.add(view.to_eye(point)); };
-    for_each_control_point(reach);
+    reach_control_points(extent, reach);
     const ProjectedExtent known = extent;
-    for_each_sample_beyond([&](const HermiteSegment& segment) { return hull_inside_extent(segment, view, known); },
-                           reach);
+    reach_samples_beyond(
+        extent, [&](const HermiteSegment& segment) { return hull_inside_extent(segment, view, known); }, reach);
     view.fill(extent, area);
     return view;
 }
@@ -122,30 +181,29 @@ ViewTransform ViewScene::fill(ViewAngles angles, PixelRect area) const
 ViewTransform ViewScene::fit(ViewAngles angles, PixelRect drawing_area) const
 {
     ViewTransform view = ViewTransform::centred_on(angles, bounds(), drawing_area);
-    double widest = 0.0;
-    double tallest = 0.0;
-    const auto reach = [&](const Vec3& point) {
+    const auto reach = [&view](ProjectedFocus& focus, const Vec3& point) {
         const EyePoint eye = view.to_eye(point);
-        widest = std::max(widest, std::abs(eye.x / eye.z));
-        tallest = std::max(tallest, std::abs(eye.y / eye.z));
+        focus.widest = std::max(focus.widest, std::abs(eye.x / eye.z));
+        focus.tallest = std::max(focus.tallest, std::abs(eye.y / eye.z));
     };
-    for_each_control_point(reach);
-    const double known_widest = widest;
-    const double known_tallest = tallest;
-    for_each_sample_beyond(
-        [&](const HermiteSegment& segment) { return hull_inside_focus(segment, view, known_widest, known_tallest); },
+    ProjectedFocus focus;
+    reach_control_points(focus, reach);
+    const ProjectedFocus known = focus;
+    reach_samples_beyond(
+        focus,
+        [&](const HermiteSegment& segment) { return hull_inside_focus(segment, view, known.widest, known.tallest); },
         reach);
-    view.focus_on(widest, tallest, drawing_area);
+    view.focus_on(focus.widest, focus.tallest, drawing_area);
     return view;
 }
 
 BoundingBox ViewScene::bounds() const
 {
+    const auto reach = [](BoundingBox& box, const Vec3& point) { box.add(point); };
     BoundingBox known;
-    for_each_control_point([&](const Vec3& point) { known.add(point); });
+    reach_control_points(known, reach);
     BoundingBox box = known;
-    for_each_sample_beyond([&](const HermiteSegment& segment) { return hull_inside_box(segment, known); },
-                           [&](const Vec3& point) { box.add(point); });
+    reach_samples_beyond(box, [&](const HermiteSegment& segment) { return hull_inside_box(segment, known); }, reach);
     return box;
 }
 

@@ -349,6 +349,24 @@ TEST_CASE("control point runs updated around inserted, deleted and moved points 
     }
 }
 
+namespace {
+
+// The view fitted to the control points and then every sample, visited one by one in order.
+ViewTransform fitted_to_every_point(ViewAngles angles, const ControlPoints& points, const std::vector<Vec3>& samples)
+{
+    return ViewTransform::fit_visiting(
+        angles,
+        [&](const auto& visit) {
+            for (const ControlPoint& point : points)
+                visit(point.position);
+            for (const Vec3& sample : samples)
+                visit(sample);
+        },
+        layout::view_area);
+}
+
+} // namespace
+
 TEST_CASE("a scene's view, fitted past the segments that cannot reach further, is the view fitted to every sample",
           "[session][path]")
 {
@@ -363,21 +381,42 @@ TEST_CASE("a scene's view, fitted past the segments that cannot reach further, i
         scene.add(std::span<const ControlPoint>(points)).add(path.curve);
         const std::vector<Vec3> every = path.curve.samples();
         for (const ViewAngles angles : {ViewAngles{30, 40}, ViewAngles{0, 90}, ViewAngles{-70, 10}}) {
-            const ViewTransform visited = ViewTransform::fit_visiting(
-                angles,
-                [&](const auto& visit) {
-                    for (const ControlPoint& point : points)
-                        visit(point.position);
-                    for (const Vec3& sample : every)
-                        visit(sample);
-                },
-                layout::view_area);
-            REQUIRE(scene.fit(angles, layout::view_area) == visited);
+            REQUIRE(scene.fit(angles, layout::view_area) == fitted_to_every_point(angles, points, every));
         }
         BoundingBox box;
         for (const Vec3& sample : every)
             box.add(sample);
         REQUIRE(scene.bounds().low() == box.low());
         REQUIRE(scene.bounds().high() == box.high());
+    }
+}
+
+TEST_CASE("a long scene's view gathered on both cores is the view gathered point by point in order", "[session][path]")
+{
+    // Enough segments and points (2 x 2^14 and more) for every list to be gone over in two halves.
+    ControlPoints points;
+    for (int k = 0; k < 40000; ++k)
+        points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.5, std::cos(k * 0.7) * 4.0}, {k % 7 == 0 ? -1.0 : 0.2, 0, 0, 0}});
+    const EvaluatedPath path = evaluate_path(points, {{1, 1}, 8, 12, Spacing::nearest});
+    ViewScene scene;
+    scene.add(std::span<const ControlPoint>(points)).add(path.curve);
+    const std::vector<Vec3> every = path.curve.samples();
+    BoundingBox box;
+    for (const ControlPoint& point : points)
+        box.add(point.position);
+    for (const Vec3& sample : every)
+        box.add(sample);
+    REQUIRE(scene.bounds().low() == box.low());
+    REQUIRE(scene.bounds().high() == box.high());
+    for (const ViewAngles angles : {ViewAngles{30, 40}, ViewAngles{0, 90}}) {
+        ViewTransform filled = ViewTransform::centred_on(angles, box, layout::view_area);
+        ProjectedExtent extent;
+        for (const ControlPoint& point : points)
+            extent.add(filled.to_eye(point.position));
+        for (const Vec3& sample : every)
+            extent.add(filled.to_eye(sample));
+        filled.fill(extent, layout::view_area);
+        REQUIRE(scene.fill(angles, layout::view_area) == filled);
+        REQUIRE(scene.fit(angles, layout::view_area) == fitted_to_every_point(angles, points, every));
     }
 }

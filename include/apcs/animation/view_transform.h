@@ -52,6 +52,9 @@ struct ProjectedExtent {
     bool empty = true;
 
     void add(const EyePoint& eye);
+    // Both extents' projections: as adding `other`'s points one by one after this one's (the
+    // extremes of projections that are not NaN do not depend on their order; a tie keeps this one's).
+    void join(const ProjectedExtent& other);
     // Whether `eye` lies inside, `margin` (a fraction of the extent's size) from every side.
     bool holds(const EyePoint& eye, double margin) const;
 };

@@ -47,7 +47,17 @@ inline constexpr double max_dat_magnitude = 1e9;
 // Parses `text` (the whole file) read from `file_name`. Accepts CRLF, a trailing Ctrl-Z, a UTF-8
 // byte-order mark, tabs and exponents; rejects everything else SPEC §2.1 lists with
 // "FILE:LINE: what was expected". `minimum_points` is checked over the whole file.
+// A text of a megabyte or more is read in halves (DatReading::in_halves).
 Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points = 2);
+
+// How parse_dat reads: line after line, or the text's two halves (split after the first line end
+// past its middle) scanned on both cores, each half's point lines read there and every other line
+// (a count, PART or SLOPES line, a line at fault) read after, in order, so that the file, its
+// points' lines and the first problem are those read in order gives. A text with a Ctrl-Z, or
+// without a line end past its middle, is read in order.
+enum class DatReading { in_order, in_halves };
+Expected<DatFile> parse_dat(std::string_view text, const std::string& file_name, std::size_t minimum_points,
+                            DatReading reading);
 
 // Formats a .dat file: one PART line per part when there is more than one part or a part is named
 // or closed, each point with the shortest decimal form that reads back exactly. Points with staff

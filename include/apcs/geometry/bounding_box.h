@@ -25,6 +25,20 @@ public:
         for (const Vec3& point : points)
             add(point);
     }
+    // The box around both boxes' points: as adding `other`'s points one by one after this one's
+    // (the extremes of points that are not NaN do not depend on their order; a tie keeps this one's).
+    void join(const BoundingBox& other)
+    {
+        if (other.m_empty)
+            return;
+        if (m_empty) {
+            *this = other;
+            return;
+        }
+        m_low = {std::min(m_low.x, other.m_low.x), std::min(m_low.y, other.m_low.y), std::min(m_low.z, other.m_low.z)};
+        m_high = {std::max(m_high.x, other.m_high.x), std::max(m_high.y, other.m_high.y),
+                  std::max(m_high.z, other.m_high.z)};
+    }
     bool empty() const { return m_empty; }
     Vec3 low() const { return m_low; }
     Vec3 high() const { return m_high; }

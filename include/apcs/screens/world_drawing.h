@@ -17,6 +17,8 @@ namespace apcs {
 class ViewScene {
 public:
     ViewScene& add(std::span<const Vec3> points);
+    // The control points' positions, visited where they are needed, never copied (a long path has
+    // 10^6); the points must outlive the scene, and are visited before every other point.
     ViewScene& add(std::span<const ControlPoint> points);
     // Its samples, visited where they are needed, never gathered (a long path has 10^7); the
     // curve must outlive the scene.
@@ -33,32 +35,18 @@ public:
     BoundingBox bounds() const;
 
 private:
-    // The points, and the curves' control points (samples too: a segment's first and last).
-    template <typename Visit>
-    void for_each_control_point(const Visit& visit) const
-    {
-        for (const Vec3& point : m_points)
-            visit(point);
-        for (const SampledCurve* curve : m_curves) {
-            for (const HermiteSegment& segment : curve->segments)
-                visit(segment.start);
-            if (!curve->segments.empty())
-                visit(curve->segments.back().end);
-        }
-    }
+    // Each adds to `extent` what it reaches: reach(extent, point) for every point, and the extents
+    // of a long list's two halves, gathered on both cores, joined in order (Extent::join keeps what
+    // adding the second half's points one by one would keep: extremes are the same in any order,
+    // and a tie keeps the earlier value). Visits the control points, the points, and the curves'
+    // control points (samples too: a segment's first and last).
+    template <typename Extent, typename Reach>
+    void reach_control_points(Extent& extent, const Reach& reach) const;
     // The samples of every segment for which within(segment) is false.
-    template <typename Within, typename Visit>
-    void for_each_sample_beyond(const Within& within, const Visit& visit) const
-    {
-        for (const SampledCurve* curve : m_curves) {
-            const auto per_segment = static_cast<std::size_t>(curve->samples_per_segment);
-            for (std::size_t s = 0; s < curve->segments.size(); ++s)
-                if (!within(curve->segments[s]))
-                    for (std::size_t j = 0; j <= per_segment; ++j)
-                        visit(curve->segment_sample(s, j));
-        }
-    }
+    template <typename Extent, typename Within, typename Reach>
+    void reach_samples_beyond(Extent& extent, const Within& within, const Reach& reach) const;
 
+    std::vector<std::span<const ControlPoint>> m_control_points;
     std::vector<Vec3> m_points;
     std::vector<const SampledCurve*> m_curves;
 };
