@@ -1,7 +1,7 @@
 // What a person waits for when opening a long path: the real program in an 80x24 pseudo-terminal,
 // its output read by a VT emulator (libvterm), so a screen counts as shown when the emulated
 // terminal shows it, not when the program has computed it. For a path of N control points (10^6
-// by default, 26 MB, written once to a temporary folder) and each spacing, each run times
+// by default, 33 MB, written once to a temporary folder) and each spacing, each run times
 //   reading: Enter on the path file's name until the slopes prompt is on the screen;
 //   opening:  Enter on the slopes until the path screen's first picture is on the screen (its
 //             staff and key line; with exact spacing its message line says the arc lengths are
@@ -12,10 +12,11 @@
 // A screen is on the screen when the emulated terminal holds it and the burst of bytes that drew
 // it has ended (no byte for 3 ms: a refinement step, ~10 ms of work, comes later).
 // Usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS] (every figure is printed, then medians)
+#include "pty_reading.h"
+
 #include <vterm.h>
 
 #include <poll.h>
-#include <pty.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -51,15 +52,8 @@ public:
         m_screen = vterm_obtain_screen(m_vterm);
         vterm_screen_enable_altscreen(m_screen, 1);
         vterm_screen_reset(m_screen, 1);
-        winsize size{rows, columns, 0, 0};
-        m_child = forkpty(&m_pty, nullptr, nullptr, &size);
-        if (m_child == 0) {
-            setenv("TERM", "xterm", 1);
-            setenv("LANG", "C.UTF-8", 1);
-            execl(apcs.c_str(), apcs.c_str(), "--workdir", folder.c_str(), "--glyphs", "ascii", "--spacing", spacing,
-                  static_cast<char*>(nullptr));
-            _exit(127);
-        }
+        m_child = apcs::bench::start_in_terminal(
+            m_pty, columns, rows, {apcs, "--workdir", folder.string(), "--glyphs", "ascii", "--spacing", spacing});
     }
     EmulatedTerminal(const EmulatedTerminal&) = delete;
     EmulatedTerminal& operator=(const EmulatedTerminal&) = delete;

@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <pty.h>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -28,16 +27,9 @@ Play play_once(const std::string& apcs, const std::string& scene, unsigned short
                const char* glyphs)
 {
     int terminal = -1;
-    winsize size{rows, columns, 0, 0};
     const auto start = std::chrono::steady_clock::now();
-    const pid_t child = forkpty(&terminal, nullptr, nullptr, &size);
-    if (child == 0) {
-        setenv("TERM", "xterm", 1);
-        setenv("LANG", "C.UTF-8", 1);
-        execl(apcs.c_str(), apcs.c_str(), "play", scene.c_str(), "--delay", "0", "--glyphs", glyphs,
-              static_cast<char*>(nullptr));
-        _exit(127);
-    }
+    const pid_t child = apcs::bench::start_in_terminal(
+        terminal, columns, rows, {apcs, "play", scene, "--delay", "0", "--glyphs", glyphs});
     const apcs::bench::Drained played = apcs::bench::drain(terminal, 500);
     (void)!write(terminal, "q", 1);
     apcs::bench::drain(terminal, 200);

@@ -1,12 +1,36 @@
 #pragma once
 
 #include <poll.h>
+#include <pty.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstddef>
+#include <cstdlib>
+#include <string>
+#include <vector>
 
 namespace apcs::bench {
+
+// Runs `arguments` (the program's path first) in a new pseudo-terminal of `columns` x `rows`, as an
+// xterm in a UTF-8 locale; returns the child's pid and sets `terminal` to the pseudo-terminal.
+inline pid_t start_in_terminal(int& terminal, unsigned short columns, unsigned short rows,
+                               const std::vector<std::string>& arguments)
+{
+    winsize size{rows, columns, 0, 0};
+    const pid_t child = forkpty(&terminal, nullptr, nullptr, &size);
+    if (child == 0) {
+        setenv("TERM", "xterm", 1);
+        setenv("LANG", "C.UTF-8", 1);
+        std::vector<char*> argv;
+        for (const std::string& argument : arguments)
+            argv.push_back(const_cast<char*>(argument.c_str()));
+        argv.push_back(nullptr);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    return child;
+}
 
 struct Drained {
     std::size_t bytes = 0;

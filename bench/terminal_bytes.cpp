@@ -9,7 +9,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <pty.h>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,14 +25,8 @@ void type(int terminal, const std::string& keys, int quiet_ms = 150)
 std::vector<std::size_t> measure(const std::string& apcs, const std::filesystem::path& folder, const char* glyphs)
 {
     int terminal = -1;
-    winsize size{24, 80, 0, 0};
-    const pid_t child = forkpty(&terminal, nullptr, nullptr, &size);
-    if (child == 0) {
-        setenv("TERM", "xterm", 1);
-        setenv("LANG", "C.UTF-8", 1);
-        execl(apcs.c_str(), apcs.c_str(), "--workdir", folder.c_str(), "--glyphs", glyphs, static_cast<char*>(nullptr));
-        _exit(127);
-    }
+    const pid_t child =
+        apcs::bench::start_in_terminal(terminal, 80, 24, {apcs, "--workdir", folder.string(), "--glyphs", glyphs});
     apcs::bench::drain(terminal, 300);
     type(terminal, "\r");             // key1.dat
     type(terminal, "\r");             // key2.dat

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds with Clang, AddressSanitizer and UBSan (the clang-asan preset:
-# Debug, -Werror, Ninja) and runs every test once with CTest: each test file's Catch2 cases in a
+# -O1, -Werror, Ninja) and runs every test once with CTest: each test file's Catch2 cases in a
 # random order in one process, each replay, fuzz corpus and end-to-end script on its own. A
 # heap-use-after-free or undefined behaviour ends the test it is in. (CI, .ci/run, runs this and
 # the Debian package's build with its tests: GCC's warnings and the optimised, hardened program.)
