@@ -13,12 +13,15 @@ This script
 Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS [SCREENS_FOLDER]]   (prints each script's presses,
 captions and time; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
 """
+import concurrent.futures
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 
 MOST_PRESSES = 120
@@ -74,12 +77,48 @@ def animation_seconds(apcs, folder, script, options):
     return sum(int(frames) * int(ms) / 1000 for frames, ms in re.findall(r"animation: (\d+) frames, (\d+) ms each", log))
 
 
-# A tmux server of the plan's own: another test's server ending cannot take this one's sessions.
+# The scripts are played side by side, each in a tmux server of its own (SOCKET-N): one script's
+# server ending cannot take another's session, nor another test's server this plan's. A play mostly
+# waits for its screen to settle: four at once, the longest first (62 s against 117 s one by one).
 SOCKET = f"apcs-class-plan-{os.getpid()}"
+PLAYS_AT_ONCE = 4
+local = threading.local()
 
 
 def tmux(*args):
-    return subprocess.run(["tmux", "-L", SOCKET, *args], capture_output=True, text=True).stdout
+    return subprocess.run(["tmux", "-L", local.socket, *args], capture_output=True, text=True).stdout
+
+
+def children_of(pid):
+    children = []
+    for entry in os.listdir("/proc"):
+        try:
+            with open(f"/proc/{entry}/stat", encoding="utf-8") as stat:
+                fields = stat.read().rsplit(")", 1)[1].split()
+        except (OSError, IndexError):
+            continue
+        if entry.isdigit() and int(fields[1]) == pid:
+            children.append(int(entry))
+    return children
+
+
+def end_program(session):
+    """Ends the program with SIGTERM, as a user's `kill` would, and waits for it to go before the
+    server does. Killing the server under a running program hangs up its terminal, and the hang-up's
+    SIGCONT can erase the SIGSTOP with which LeakSanitizer stops the exiting program's threads: the
+    sanitizer build's program then spins at exit for ever (three such were found eating two cores)."""
+    shell = tmux("list-panes", "-t", session, "-F", "#{pane_pid}").strip()
+    if not shell.isdigit():
+        return None
+    for pid in children_of(int(shell)):
+        os.kill(pid, signal.SIGTERM)
+        deadline = time.time() + 30
+        while os.path.exists(f"/proc/{pid}") and pid in children_of(int(shell)) and time.time() < deadline:
+            time.sleep(0.05)
+        if pid in children_of(int(shell)):
+            os.kill(pid, signal.SIGKILL)
+            return f"the program (pid {pid}) did not end within 30 s of SIGTERM"
+    return None
 
 
 def changed_screen(session, before, most_seconds=10):
@@ -125,10 +164,16 @@ def first_caption_screen(session):
         time.sleep(0.05)
 
 
+def quiet_seconds(options):
+    """How long a screen must stand still to count as settled: longer than an animation's frame."""
+    delay = options[options.index("--delay") + 1] if "--delay" in options else "100"
+    return max(0.8, int(delay) / 1000 + 0.5)
+
+
 def play(apcs, folder, script, options, presses, glyphs, shown):
-    """The captions the class saw, and the caption row after the last press; `shown` gets each
-    screen after a press, under the press."""
-    session = f"class-plan-{os.getpid()}"
+    """The captions the class saw, the caption row after the last press, and what went wrong in
+    ending the program (or None); `shown` gets each screen after a press, under the press."""
+    session = "class-plan"
     with tempfile.TemporaryDirectory() as work:
         shutil.copytree(folder, work, dirs_exist_ok=True)
         command = " ".join([apcs, "--keys", script, "--pace", "step", "--glyphs", glyphs, *options])
@@ -136,8 +181,7 @@ def play(apcs, folder, script, options, presses, glyphs, shown):
         tmux("new-session", "-d", "-s", session, "-x", "80", "-y", "24", "-c", work,
              f"LANG=C.UTF-8 {command}; sleep 60")
         seen = set()
-        delay = options[options.index("--delay") + 1] if "--delay" in options else "100"
-        quiet = max(0.8, int(delay) / 1000 + 0.5)
+        quiet = quiet_seconds(options)
         try:
             first_caption_screen(session)
             screen = settled_screen(session, quiet, seen)
@@ -148,8 +192,21 @@ def play(apcs, folder, script, options, presses, glyphs, shown):
                 screen = settled_screen(session, quiet, seen)
                 shown.append(f"=== {script}: press {number}, {key}\n{screen}")
         finally:
+            ending = end_program(session)
             tmux("kill-server")
-    return seen, caption_row(screen)
+    return seen, caption_row(screen), ending
+
+
+def hold(apcs, data, glyphs, number, words):
+    """One line of the plan played: its script, presses, captions, seconds and what was seen."""
+    local.socket = f"{SOCKET}-{number}"
+    script, options, presses = parse(words)
+    folder = script_folder(data, script)
+    captions = captions_of(os.path.join(folder, script))
+    seconds = SECONDS_A_CAPTION * len(captions) + animation_seconds(apcs, folder, script, options)
+    shown = []
+    seen, last_row, ending = play(apcs, folder, script, options, presses, glyphs, shown)
+    return script, presses, captions, seconds, shown, seen, last_row, ending
 
 
 def main():
@@ -160,13 +217,15 @@ def main():
     lines = plan_lines(manual)
     if not lines:
         sys.exit("class_plan: manual section 25 has no PRESS line")
-    for words in lines:
-        script, options, presses = parse(words)
-        folder = script_folder(data, script)
-        captions = captions_of(os.path.join(folder, script))
-        seconds = SECONDS_A_CAPTION * len(captions) + animation_seconds(apcs, folder, script, options)
-        shown = []
-        seen, last_row = play(apcs, folder, script, options, presses, glyphs, shown)
+    # The longest plays (most presses, each waiting the longest quiet) start first.
+    def waits(number):
+        _, options, presses = parse(lines[number])
+        return len(presses) * quiet_seconds(options)
+    order = sorted(range(len(lines)), key=waits, reverse=True)
+    with concurrent.futures.ThreadPoolExecutor(PLAYS_AT_ONCE) as plays:
+        held = {number: plays.submit(hold, apcs, data, glyphs, number, lines[number]) for number in order}
+        results = [held[number].result() for number in range(len(lines))]
+    for script, presses, captions, seconds, shown, seen, last_row, ending in results:
         if screens_folder:
             os.makedirs(screens_folder, exist_ok=True)
             with open(os.path.join(screens_folder, script + ".txt"), "w", encoding="utf-8") as out:
@@ -179,6 +238,8 @@ def main():
                             f"the caption rows seen: {sorted(seen)}")
         if not last_row.startswith(END_OF_SCRIPT):
             failures.append(f"{script}: the presses end at '{last_row}', not at the end of the script")
+        if ending:
+            failures.append(f"{script}: {ending}")
         total_presses += len(presses)
         total_seconds += seconds
     print(f"the plan: {total_presses} presses, {total_seconds / 60:.1f} minutes")
