@@ -13,4 +13,8 @@ if grep -qs '^CMAKE_GENERATOR:INTERNAL=Unix Makefiles$' build/clang-asan/CMakeCa
 fi
 cmake --preset clang-asan >/dev/null
 cmake --build --preset clang-asan -j"$(nproc)"
-ctest --preset clang-asan -j"$(nproc)"
+status=0
+ctest --preset clang-asan -j"$(nproc)" || status=$?
+# No test may leave a program running (scripts/programs_left.sh says why).
+bash scripts/programs_left.sh build/clang-asan || status=1
+exit "$status"
