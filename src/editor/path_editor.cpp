@@ -226,10 +226,14 @@ void PathEditor::show_problem(const std::string& message)
 
 namespace {
 
-bool adds_to_refinement(const Command& command)
+// A change of the path is added to what is left of the picture; 8 and 2 only open the staff or the
+// region's pick over it (an opened long path's arc lengths are measured meanwhile). Any other key
+// acts on the finished picture.
+bool leaves_refinement_running(const Command& command)
 {
     return std::holds_alternative<command::StaffStep>(command) || std::holds_alternative<command::MovePoint>(command) ||
-           std::holds_alternative<command::InsertPoint>(command) || std::holds_alternative<command::DeletePoint>(command);
+           std::holds_alternative<command::InsertPoint>(command) || std::holds_alternative<command::DeletePoint>(command) ||
+           std::holds_alternative<command::ChooseGlobal>(command) || std::holds_alternative<command::ChooseLocal>(command);
 }
 
 } // namespace
@@ -257,7 +261,7 @@ void PathEditor::measure_move_when_refined()
 
 PathEditor::Outcome PathEditor::update(const Command& command)
 {
-    if (!adds_to_refinement(command))
+    if (!leaves_refinement_running(command))
         refine();
     const Outcome outcome = take_command(command);
     // The waypoint editor boxes its chosen point in the picture it holds.

@@ -41,6 +41,15 @@ std::string PathEditor::message() const
         m_mode);
 }
 
+// The 8/2 question stays while an opened path is finished (8 and 2 are taken meanwhile): what is
+// still being done follows it in a few words.
+std::string PathEditor::refining_message() const
+{
+    if (std::holds_alternative<ControlChoice>(m_mode) && m_notice.empty())
+        return std::string(text::choose_control) + "    (" + m_picture->refining_words() + "...)";
+    return m_picture->refining_message();
+}
+
 bool PathEditor::field_open() const
 {
     const auto* staff = std::get_if<Staff>(&m_mode);
@@ -175,7 +184,7 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, std::string_view
         !std::holds_alternative<AskAgain>(m_mode))
         content.message = goal_feedback;
     else if (m_problem.empty() && m_picture->refining())
-        content.message = m_picture->refining_message();
+        content.message = refining_message();
     if (m_show_key_frames)
         content.key_frame_polylines = m_setup.key_frame_polylines;
     // A pinned reference is what the curve is compared with: the ghost steps aside meanwhile.

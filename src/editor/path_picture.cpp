@@ -106,6 +106,15 @@ std::string PathPicture::refining_message() const
     return {};
 }
 
+std::string PathPicture::refining_words() const
+{
+    if (m_view && !m_curve.drawn())
+        return "drawing the curve";
+    if (!m_evaluated.inbetweens_current)
+        return "measuring arc lengths";
+    return {};
+}
+
 void PathPicture::set_view(const ViewTransform& view)
 {
     ++m_revision;

@@ -5,6 +5,7 @@
 #include "apcs/screens/curve_raster.h"
 #include "apcs/editor/path_editor.h"
 #include "apcs/raster/screen_layout.h"
+#include "apcs/screens/session_text.h"
 
 #include "support/same_path.h"
 #include "support/session_keys.h"
@@ -195,9 +196,13 @@ int refine_editor(PathEditor& editor)
     while (editor.refining()) {
         const GraphicsScreen first = editor.view();
         const std::string message = message_of(first);
-        const bool says_so = message.starts_with("drawing the curve: ") || message.starts_with("measuring arc lengths");
+        // The 8/2 question stays, what is left following it in a few words.
+        const std::string question(session_text::choose_control);
+        const bool says_so = message.starts_with("drawing the curve: ") || message.starts_with("measuring arc lengths") ||
+                             message == question + "    (drawing the curve...)" ||
+                             message == question + "    (measuring arc lengths...)";
         REQUIRE(says_so);
-        if (message.starts_with("measuring"))
+        if (message.find("measuring") != std::string::npos)
             REQUIRE_FALSE(has_inbetween_marks(first));
         editor.refine_step();
         REQUIRE(++steps < 10000);
@@ -267,6 +272,40 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
         // The steps were taken: the first pictures were first pictures (the curve's last block at
         // opening and after each global key; 15 steps of arc lengths too for each with exact spacing).
         REQUIRE(steps_taken >= (spacing == Spacing::exact ? 40 : 4));
+    }
+}
+
+TEST_CASE("an opened path's 8/2 question stands on its first picture, and 8 or 2 opens the staff or the pick while "
+          "the arc lengths are measured",
+          "[session][editor][refinement]")
+{
+    LogLines log;
+    PathEditor at_once(zigzag_setup(Spacing::exact, Refinement::at_once), log);
+    const std::string question(session_text::choose_control);
+    for (const bool global : {true, false}) {
+        CAPTURE(global);
+        PathEditor editor(zigzag_setup(Spacing::exact, Refinement::in_steps), log);
+        REQUIRE(editor.refining());
+        REQUIRE(message_of(editor.view()) == question + "    (drawing the curve...)");
+        while (message_of(editor.view()).find("drawing") != std::string::npos)
+            editor.refine_step();
+        REQUIRE(editor.refining());
+        REQUIRE(message_of(editor.view()) == question + "    (measuring arc lengths...)");
+        REQUIRE_FALSE(has_inbetween_marks(editor.view()));
+        const Command choice = global ? Command{cmd::ChooseGlobal{}} : Command{cmd::ChooseLocal{}};
+        apply(editor, {choice});
+        REQUIRE(editor.phase() == (global ? SessionPhase::staff : SessionPhase::pick_region_first));
+        REQUIRE(editor.refining());
+        REQUIRE(message_of(editor.view()).starts_with("measuring arc lengths for exact spacing"));
+        refine_editor(editor);
+        PathEditor at_once_chosen(zigzag_setup(Spacing::exact, Refinement::at_once), log);
+        apply(at_once_chosen, {choice});
+        const GraphicsScreen expected = at_once_chosen.view();
+        const GraphicsScreen shown = editor.view();
+        REQUIRE(shown.bitmap == expected.bitmap);
+        REQUIRE(marks_of(shown) == marks_of(expected));
+        REQUIRE(message_of(shown) == message_of(expected));
+        require_same_path(editor.evaluated(), at_once.evaluated());
     }
 }
 

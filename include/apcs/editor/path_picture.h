@@ -72,8 +72,10 @@ public:
     bool refining() const;
     void refine_step();
     void refine();
-    // While refining: what is left, for the message line ("drawing the curve: 12 of 245 blocks").
+    // While refining: what is left, for the message line ("drawing the curve: 12 of 245 blocks"),
+    // and in a few words, to follow a question that stays on it ("measuring arc lengths").
     std::string refining_message() const;
+    std::string refining_words() const;
 
     // The ghost is drawn dotted when the content asks, until drop_ghost or a change without one.
     void drop_ghost();
