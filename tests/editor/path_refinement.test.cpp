@@ -189,6 +189,18 @@ bool has_inbetween_marks(const GraphicsScreen& screen)
     return false;
 }
 
+// The editor whose pictures were refined in steps shows what the one that made each at once shows,
+// to the pixel and the message, and holds the same path.
+void require_same_screen(const PathEditor& in_steps, const PathEditor& at_once)
+{
+    const GraphicsScreen expected = at_once.view();
+    const GraphicsScreen shown = in_steps.view();
+    REQUIRE(shown.bitmap == expected.bitmap);
+    REQUIRE(marks_of(shown) == marks_of(expected));
+    REQUIRE(message_of(shown) == message_of(expected));
+    require_same_path(in_steps.evaluated(), at_once.evaluated());
+}
+
 // Refines in steps, each first picture saying that it is one; returns the steps taken.
 int refine_editor(PathEditor& editor)
 {
@@ -243,12 +255,7 @@ TEST_CASE("every key's picture, refined in steps before the next, is the picture
         const auto same_screen = [&](const char* after) {
             CAPTURE(after);
             steps_taken += refine_editor(in_steps);
-            const GraphicsScreen expected = at_once.view();
-            const GraphicsScreen shown = in_steps.view();
-            REQUIRE(shown.bitmap == expected.bitmap);
-            REQUIRE(marks_of(shown) == marks_of(expected));
-            REQUIRE(message_of(shown) == message_of(expected));
-            require_same_path(in_steps.evaluated(), at_once.evaluated());
+            require_same_screen(in_steps, at_once);
         };
         const auto both = [&](std::initializer_list<Command> commands) { twins.both(commands); };
         same_screen("opening");
@@ -280,7 +287,6 @@ TEST_CASE("an opened path's 8/2 question stands on its first picture, and 8 or 2
           "[session][editor][refinement]")
 {
     LogLines log;
-    PathEditor at_once(zigzag_setup(Spacing::exact, Refinement::at_once), log);
     const std::string question(session_text::choose_control);
     for (const bool global : {true, false}) {
         CAPTURE(global);
@@ -298,14 +304,9 @@ TEST_CASE("an opened path's 8/2 question stands on its first picture, and 8 or 2
         REQUIRE(editor.refining());
         REQUIRE(message_of(editor.view()).starts_with("measuring arc lengths for exact spacing"));
         refine_editor(editor);
-        PathEditor at_once_chosen(zigzag_setup(Spacing::exact, Refinement::at_once), log);
-        apply(at_once_chosen, {choice});
-        const GraphicsScreen expected = at_once_chosen.view();
-        const GraphicsScreen shown = editor.view();
-        REQUIRE(shown.bitmap == expected.bitmap);
-        REQUIRE(marks_of(shown) == marks_of(expected));
-        REQUIRE(message_of(shown) == message_of(expected));
-        require_same_path(editor.evaluated(), at_once.evaluated());
+        PathEditor at_once(zigzag_setup(Spacing::exact, Refinement::at_once), log);
+        apply(at_once, {choice});
+        require_same_screen(editor, at_once);
     }
 }
 
