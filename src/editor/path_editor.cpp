@@ -254,7 +254,10 @@ void PathEditor::measure_move_when_refined()
 {
     if (!m_move_unmeasured || m_picture->refining())
         return;
-    m_moved = curve_move_text(curve_move(*m_move_unmeasured, points(), m_setup.settings.slopes,
+    const auto& key = std::get<StaffEdit>(m_document->edits()[*m_move_unmeasured]);
+    const std::vector<SegmentBeforeKey> before =
+        segments_before_key(points(), m_setup.settings.slopes, key.region, key.points_before);
+    m_moved = curve_move_text(curve_move(before, points(), m_setup.settings.slopes,
                                          m_picture->evaluated().curve.basis, m_picture->view()));
     m_move_unmeasured.reset();
 }
@@ -435,9 +438,6 @@ void PathEditor::set_staff_value(Staff& staff, double value)
     const PathChange::What what =
         runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
     PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
-    std::vector<SegmentBeforeKey> before;
-    if (what == PathChange::What::staff)
-        before = segments_before_key(points(), m_setup.settings.slopes, staff.region, change.points_before);
     m_document->record(std::move(change));
     reevaluate_region(staff.region, what, std::move(back));
     // An acceleration moves no segment.
@@ -445,7 +445,7 @@ void PathEditor::set_staff_value(Staff& staff, double value)
         m_moved = "only the in-betweens moved";
         return;
     }
-    m_move_unmeasured = std::move(before);
+    m_move_unmeasured = m_document->edit_count() - 1;
     measure_move_when_refined();
 }
 

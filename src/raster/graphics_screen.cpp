@@ -6,6 +6,7 @@
 #include "apcs/raster/short_screen.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <utility>
 
@@ -221,15 +222,23 @@ void paint_layer(GraphicsScreen& screen, const Bitmap& layer, ColourRole role)
     if (screen.pixel_roles.empty())
         screen.pixel_roles.assign(static_cast<std::size_t>(bitmap.width()) * static_cast<std::size_t>(bitmap.height()),
                                   ColourRole::monitor);
-    for (int y = 0; y < std::min(bitmap.height(), layer.height()); ++y)
-        for (int x = 0; x < std::min(bitmap.width(), layer.width()); ++x) {
-            if (!layer.get(x, y))
+    // A layer is mostly unlit: its rows are read a byte (8 pixels) at a time.
+    const int width = std::min(bitmap.width(), layer.width());
+    for (int y = 0; y < std::min(bitmap.height(), layer.height()); ++y) {
+        const std::uint8_t* row = layer.row(y);
+        for (int first = 0; first < width; first += 8) {
+            if (row[first / 8] == 0)
                 continue;
-            ColourRole& shown = screen.pixel_roles[pixel_index(bitmap, x, y)];
-            if (!bitmap.get(x, y) || colour_priority(role) > colour_priority(shown))
-                shown = role;
-            bitmap.set(x, y, true);
+            for (int x = first; x < std::min(width, first + 8); ++x) {
+                if (!layer.get(x, y))
+                    continue;
+                ColourRole& shown = screen.pixel_roles[pixel_index(bitmap, x, y)];
+                if (!bitmap.get(x, y) || colour_priority(role) > colour_priority(shown))
+                    shown = role;
+                bitmap.set(x, y, true);
+            }
         }
+    }
 }
 
 ColourRole pixel_role(const GraphicsScreen& screen, int x, int y)

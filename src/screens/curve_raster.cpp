@@ -64,23 +64,41 @@ void CurveRaster::splice(const SegmentSplice& change)
             block.segment_count += change.inserted;
         inserted_placed = true;
     }
+    // The rasters of the blocks the change emptied serve the blocks a large one is split into: a
+    // global key's 245 are neither freed nor allocated and cleared again (draw_block clears each).
+    std::vector<Bitmap> spare_rasters;
+    for (Block& block : m_blocks)
+        if (block.segment_count == 0)
+            spare_rasters.push_back(std::move(block.raster));
     std::erase_if(m_blocks, [](const Block& block) { return block.segment_count == 0; });
-    split_large_blocks();
+    split_large_blocks(std::move(spare_rasters));
     m_segment_count = m_segment_count - change.removed + change.inserted;
 }
 
-void CurveRaster::split_large_blocks()
+// A block of more than two blocks' segments becomes blocks of segments_per_block, the last of up
+// to twice as many.
+void CurveRaster::split_large_blocks(std::vector<Bitmap> spare_rasters)
 {
-    for (std::size_t b = 0; b < m_blocks.size(); ++b) {
-        if (m_blocks[b].segment_count <= 2 * segments_per_block)
-            continue;
-        Block second;
-        second.segment_count = m_blocks[b].segment_count - segments_per_block;
-        m_blocks[b].segment_count = segments_per_block;
-        m_blocks[b].current = false;
-        m_composed_whole = false;
-        m_blocks.insert(m_blocks.begin() + static_cast<std::ptrdiff_t>(b) + 1, std::move(second));
+    const auto large = [](const Block& block) { return block.segment_count > 2 * segments_per_block; };
+    if (std::ranges::none_of(m_blocks, large))
+        return;
+    m_composed_whole = false;
+    std::vector<Block> split;
+    for (Block& block : m_blocks) {
+        if (large(block))
+            block.current = false;
+        std::size_t left = block.segment_count;
+        while (left > 2 * segments_per_block) {
+            Bitmap raster = spare_rasters.empty() ? Bitmap() : std::move(spare_rasters.back());
+            if (!spare_rasters.empty())
+                spare_rasters.pop_back();
+            split.push_back(Block{segments_per_block, false, std::move(raster)});
+            left -= segments_per_block;
+        }
+        block.segment_count = left;
+        split.push_back(std::move(block));
     }
+    m_blocks = std::move(split);
 }
 
 void CurveRaster::start_blocks(std::size_t segment_count)

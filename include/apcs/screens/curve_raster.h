@@ -94,7 +94,7 @@ private:
     };
 
     void start_blocks(std::size_t segment_count);
-    void split_large_blocks();
+    void split_large_blocks(std::vector<Bitmap> spare_rasters);
     // Returns the work it did.
     std::size_t draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const;
     void compose();
