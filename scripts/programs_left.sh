@@ -5,20 +5,6 @@
 # it exited, was found spinning in LeakSanitizer's stop of its threads for good, three a run, each
 # eating half a core of the rest of CI (and of every run after it on the same machine).
 set -uo pipefail
+source "$(dirname "$0")/../tests/e2e/ended_lib.sh"
 folder=$(realpath "$1")
-# find complains of processes that end while it looks: only what it printed counts.
-running_from_folder() {
-  { find /proc -mindepth 2 -maxdepth 2 -name exe -lname "$folder/*" -printf '%h\n' 2> /dev/null || true; } |
-    sed 's|^/proc/||'
-}
-for _ in $(seq 150); do
-  left=$(running_from_folder)
-  [ -z "$left" ] && exit 0
-  sleep 0.1
-done
-echo "FAILED: programs built in $folder still run 15 s after the tests ended:"
-for pid in $left; do
-  echo "  $pid: $(tr '\0' ' ' < "/proc/$pid/cmdline" 2> /dev/null)"
-done
-kill -KILL $left 2> /dev/null
-exit 1
+all_ended processes_from "$folder" "programs built in $folder still run 15 s after the tests ended"

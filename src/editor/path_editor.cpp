@@ -19,6 +19,13 @@ namespace apcs {
 
 namespace {
 
+// A segment of the curve before a staff key, with its index: one the key may move (on a long
+// region every stride-th of them), to say how far the key moved the curve.
+struct SegmentBeforeKey {
+    std::size_t index = 0;
+    HermiteSegment before;
+};
+
 // Keys add multiples of the step; rounding to 1e-9 keeps repeated steps from drifting.
 double snapped(double value) { return limits::staff_value.clamp(std::round(value * 1e9) / 1e9); }
 

@@ -68,7 +68,7 @@ void PathPicture::refine_if_quick()
         refine_path(points(), m_settings, m_evaluated, m_refinement.segments_a_step);
 }
 
-bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || (m_view && !m_curve.drawn()); }
+bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || curve_left(); }
 
 // The segments first, and the blocks they complete drawn; then the rest of the curve (the
 // picture); then the arc lengths.
@@ -79,7 +79,7 @@ void PathPicture::refine_step()
         refine_path(points(), m_settings, m_evaluated, m_refinement.segments_made_a_step);
         if (m_view)
             draw_curve();
-    } else if (m_view && !m_curve.drawn()) {
+    } else if (curve_left()) {
         draw_curve();
     } else {
         refine_path(points(), m_settings, m_evaluated, m_refinement.segments_a_step);
@@ -92,13 +92,13 @@ void PathPicture::refine()
         ++m_revision;
     while (!refine_path(points(), m_settings, m_evaluated, std::numeric_limits<std::size_t>::max()))
         ;
-    if (m_view && !m_curve.drawn())
+    if (curve_left())
         m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
 }
 
 std::string PathPicture::refining_message() const
 {
-    if (m_view && !m_curve.drawn())
+    if (curve_left())
         return "drawing the curve: " + std::to_string(m_curve.blocks_drawn()) + " of " +
                std::to_string(m_curve.block_count()) + " blocks (keys are taken meanwhile)";
     if (!m_evaluated.inbetweens_current)
@@ -108,7 +108,7 @@ std::string PathPicture::refining_message() const
 
 std::string PathPicture::refining_words() const
 {
-    if (m_view && !m_curve.drawn())
+    if (curve_left())
         return "drawing the curve";
     if (!m_evaluated.inbetweens_current)
         return "measuring arc lengths";

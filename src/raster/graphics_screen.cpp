@@ -227,10 +227,11 @@ void paint_layer(GraphicsScreen& screen, const Bitmap& layer, ColourRole role)
     for (int y = 0; y < std::min(bitmap.height(), layer.height()); ++y) {
         const std::uint8_t* row = layer.row(y);
         for (int first = 0; first < width; first += 8) {
-            if (row[first / 8] == 0)
+            const std::uint8_t lit = row[first / 8];
+            if (lit == 0)
                 continue;
             for (int x = first; x < std::min(width, first + 8); ++x) {
-                if (!layer.get(x, y))
+                if ((lit & (0x80u >> (x - first))) == 0) // most significant bit leftmost, as Bitmap::set
                     continue;
                 ColourRole& shown = screen.pixel_roles[pixel_index(bitmap, x, y)];
                 if (!bitmap.get(x, y) || colour_priority(role) > colour_priority(shown))

@@ -91,13 +91,13 @@ def tmux(*args):
 
 def children_of(pid):
     children = []
-    for entry in os.listdir("/proc"):
+    for entry in filter(str.isdigit, os.listdir("/proc")):
         try:
             with open(f"/proc/{entry}/stat", encoding="utf-8") as stat:
-                fields = stat.read().rsplit(")", 1)[1].split()
-        except (OSError, IndexError):
+                parent = int(stat.read().rsplit(")", 1)[1].split()[1])
+        except (OSError, IndexError, ValueError):
             continue
-        if entry.isdigit() and int(fields[1]) == pid:
+        if parent == pid:
             children.append(int(entry))
     return children
 
@@ -113,9 +113,9 @@ def end_program(session):
     for pid in children_of(int(shell)):
         os.kill(pid, signal.SIGTERM)
         deadline = time.time() + 30
-        while os.path.exists(f"/proc/{pid}") and pid in children_of(int(shell)) and time.time() < deadline:
+        while os.path.exists(f"/proc/{pid}") and time.time() < deadline:
             time.sleep(0.05)
-        if pid in children_of(int(shell)):
+        if os.path.exists(f"/proc/{pid}"):
             os.kill(pid, signal.SIGKILL)
             return f"the program (pid {pid}) did not end within 30 s of SIGTERM"
     return None

@@ -25,13 +25,6 @@
 
 namespace apcs {
 
-// A segment of the curve before a staff key, with its index: one the key may move (on a long
-// region every stride-th of them), to say how far the key moved the curve.
-struct SegmentBeforeKey {
-    std::size_t index = 0;
-    HermiteSegment before;
-};
-
 // Graphics mode while one graphic point's path is shaped (thesis Ch. 4.2 steps 3–5): the choice of
 // global or local control (Check_GorL_Control), picking the region with the arrow
 // (Scan_Control_Point), the four-line staff (Scan_Parameters, one Scan_*_Value per line, one

@@ -104,6 +104,8 @@ public:
     GraphicsScreen draw(const PathScreenContent& content) const;
 
 private:
+    // The view set and its curve not yet drawn whole: a first picture's blocks are still being drawn.
+    bool curve_left() const { return m_view && !m_curve.drawn(); }
     void remake(const PathChange& change);
     void draw_curve();
     void draw_ghost();
