@@ -15,8 +15,10 @@
 
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <initializer_list>
+#include <thread>
 
 using namespace apcs;
 
@@ -25,7 +27,10 @@ namespace {
 enum class KeyKind { global_tension, local_tension, global_acceleration };
 enum class WaypointKey { move, insert, remove };
 enum class Shape { trajectory, scribble };
-enum class Until { first_picture, final_picture };
+// first_picture_after_a_wait: the first picture of a key typed 300 ms after the last picture was
+// finished, as a person types (the wait not timed). On a virtual machine the wait leaves the
+// page-table walks cold, which a key typed at once does not show (PERFORMANCE.md 9i).
+enum class Until { first_picture, final_picture, first_picture_after_a_wait };
 
 PathEditor::Setup long_path(std::size_t count, Spacing spacing, Shape shape = Shape::trajectory,
                             Refinement refinement = Refinement::at_once)
@@ -122,6 +127,8 @@ void staff_key_in_steps(benchmark::State& state, Shape shape)
         } else {
             state.PauseTiming();
             refine_all(editor);
+            if (until == Until::first_picture_after_a_wait)
+                std::this_thread::sleep_for(std::chrono::milliseconds(300));
             state.ResumeTiming();
         }
     }
@@ -198,6 +205,7 @@ constexpr int nearest = static_cast<int>(Spacing::nearest);
 constexpr int exact = static_cast<int>(Spacing::exact);
 constexpr int first_picture = static_cast<int>(Until::first_picture);
 constexpr int final_picture = static_cast<int>(Until::final_picture);
+constexpr int after_a_wait = static_cast<int>(Until::first_picture_after_a_wait);
 
 } // namespace
 
@@ -237,7 +245,7 @@ BENCHMARK(staff_key_in_steps_on_long_path)
                    {static_cast<int>(KeyKind::global_tension), static_cast<int>(KeyKind::local_tension),
                     static_cast<int>(KeyKind::global_acceleration)},
                    {nearest, exact},
-                   {first_picture, final_picture}})
+                   {first_picture, final_picture, after_a_wait}})
     ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(staff_key_in_steps_on_scribble)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/base/large_array.h"
 #include "apcs/geometry/vec3.h"
 
 #include <array>
@@ -68,6 +69,6 @@ struct EndSlopes {
 };
 
 // A motion path: at least two control points, first = KEY1 position, last = KEY2 position.
-using ControlPoints = std::vector<ControlPoint>;
+using ControlPoints = std::vector<ControlPoint, LargeArrayAllocator<ControlPoint>>;
 
 } // namespace apcs
