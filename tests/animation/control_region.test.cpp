@@ -95,11 +95,5 @@ TEST_CASE("a region of 200000 control points, done in two halves, gives back its
 TEST_CASE("a path of 10^6 control points is held in memory advised for 2 MB pages", "[animation][region]")
 {
     ControlPoints points(1'000'000);
-    if (!test::kernel_has_huge_pages()) {
-        WARN("this kernel has no transparent huge pages: the advice is not checked");
-        return;
-    }
-    const std::string flags = test::vm_flags_at(&points[500'000]);
-    INFO(flags);
-    CHECK(flags.find(" hg") != std::string::npos);
+    test::check_advised_for_huge_pages(&points[500'000]);
 }

@@ -22,13 +22,7 @@ TEST_CASE("an array of 2 MB or more is on a 2 MB boundary, advised for the kerne
     std::vector<Point56, LargeArrayAllocator<Point56>> points(1'000'000);
     const auto address = reinterpret_cast<std::uintptr_t>(points.data());
     CHECK(address % large_array::huge_page_bytes == 0);
-    if (!test::kernel_has_huge_pages()) {
-        WARN("this kernel has no transparent huge pages: the advice is not checked");
-        return;
-    }
-    const std::string flags = test::vm_flags_at(points.data() + points.size() / 2);
-    INFO(flags);
-    CHECK(flags.find(" hg") != std::string::npos);
+    test::check_advised_for_huge_pages(points.data() + points.size() / 2);
 }
 
 TEST_CASE("an array that grows past 2 MB keeps its values, and a small one is ordinary", "[base][large_array]")

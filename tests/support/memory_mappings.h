@@ -1,5 +1,7 @@
 #pragma once
 
+#include <catch2/catch.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -30,5 +32,17 @@ inline std::string vm_flags_at(const void* address)
 }
 
 inline bool kernel_has_huge_pages() { return std::filesystem::exists("/sys/kernel/mm/transparent_hugepage/enabled"); }
+
+// Checks that the memory at `address` is advised for huge pages, where the kernel has them.
+inline void check_advised_for_huge_pages(const void* address)
+{
+    if (!kernel_has_huge_pages()) {
+        WARN("this kernel has no transparent huge pages: the advice is not checked");
+        return;
+    }
+    const std::string flags = vm_flags_at(address);
+    INFO(flags);
+    CHECK(flags.find(" hg") != std::string::npos);
+}
 
 } // namespace apcs::test
