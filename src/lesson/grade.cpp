@@ -59,6 +59,39 @@ GradeRow row_of(const GradeNames& names, const ScriptGoal& goal, GradeVerdict re
     return {names.recording, names.exercise, goal_line(goal), reached, {}, {}};
 }
 
+// A number as a spreadsheet reads one: a sign, digits with at most one point, an exponent.
+bool plain_number(std::string_view text)
+{
+    std::size_t at = text.find_first_not_of("+-") == 1 ? 1 : 0;
+    const auto digits = [&text, &at] {
+        const std::size_t from = at;
+        while (at < text.size() && text[at] >= '0' && text[at] <= '9')
+            ++at;
+        return at - from;
+    };
+    std::size_t mantissa = digits();
+    if (at < text.size() && text[at] == '.') {
+        ++at;
+        mantissa += digits();
+    }
+    if (mantissa == 0)
+        return false;
+    if (at < text.size() && (text[at] == 'e' || text[at] == 'E')) {
+        const bool signed_exponent = at + 1 < text.size() && (text[at + 1] == '+' || text[at + 1] == '-');
+        at += signed_exponent ? 2u : 1u;
+        if (digits() == 0)
+            return false;
+    }
+    return at == text.size();
+}
+
+// What Excel, LibreOffice and Google Sheets read as the start of a formula (OWASP's list).
+bool formula_like(std::string_view text)
+{
+    return !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos &&
+           !plain_number(text);
+}
+
 } // namespace
 
 std::string_view verdict_name(GradeVerdict verdict)
@@ -74,10 +107,11 @@ std::string_view verdict_name(GradeVerdict verdict)
 
 std::string csv_field(std::string_view text)
 {
-    if (text.find_first_of(",\"\r\n") == std::string_view::npos)
-        return std::string(text);
+    const std::string field = formula_like(text) ? "'" + std::string(text) : std::string(text);
+    if (field.find_first_of(",\"\r\n") == std::string::npos)
+        return field;
     std::string quoted = "\"";
-    for (const char c : text) {
+    for (const char c : field) {
         quoted += c;
         if (c == '"')
             quoted += '"';

@@ -250,6 +250,27 @@ TEST_CASE("apcs grade quotes a recording's name that holds a comma or a quote as
     REQUIRE(result.out == header + quoted + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6\n");
 }
 
+TEST_CASE("apcs grade writes a field a spreadsheet would run as a formula after an apostrophe",
+          "[cli][grade]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    std::string answer = test::read_all(answer_of(folder, 1, "tension"));
+    answer.replace(answer.find("L L L 6"), std::string("L L L 6").size(), "=\nTEXT 0.5\nENTER\n");
+    const test::TempFolder handed_in;
+    handed_in.write("=1+1.keys", answer);
+    handed_in.write("@jo.keys", answer);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const fs::path here = fs::current_path();
+    fs::current_path(handed_in.path());
+    const auto result = grade({exercise, "=1+1.keys", "@jo.keys"});
+    fs::current_path(here);
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const std::string row = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,'= TEXT 0.5 ENTER\n";
+    REQUIRE(result.out == header + "'=1+1.keys" + row + "'@jo.keys" + row);
+}
+
 TEST_CASE("apcs grade says no for a goal that can never be met", "[cli][grade][exercises]")
 {
     const test::TempFolder folder;

@@ -36,6 +36,29 @@ TEST_CASE("a CSV field is quoted only when it holds a comma or a quote or a line
     REQUIRE(csv_field(text) == field);
 }
 
+TEST_CASE("a CSV field a spreadsheet would run as a formula begins with an apostrophe, a number does not",
+          "[lesson][grade]")
+{
+    const auto [text, field] = GENERATE(table<std::string, std::string>({
+        {"= TEXT 0.45 ENTER", "'= TEXT 0.45 ENTER"},
+        {"=HYPERLINK(\"http://x\")", "\"'=HYPERLINK(\"\"http://x\"\")\""},
+        {"=1+1,2.keys", "\"'=1+1,2.keys\""},
+        {"@SUM(A1).keys", "'@SUM(A1).keys"},
+        {"-cmd.keys", "'-cmd.keys"},
+        {"+", "'+"},
+        {"+1.2.3", "'+1.2.3"},
+        {"\tx.keys", "'\tx.keys"},
+        {"\rx.keys", "\"'\rx.keys\""},
+        {"+0.45", "+0.45"},
+        {"-0.50", "-0.50"},
+        {"-.5", "-.5"},
+        {"1e+09", "1e+09"},
+        {"-2.5E-3", "-2.5E-3"},
+        {"L L = TEXT 0.45", "L L = TEXT 0.45"},
+    }));
+    REQUIRE(csv_field(text) == field);
+}
+
 TEST_CASE("a grade row is one CSV record in the header's order", "[lesson][grade]")
 {
     const GradeRow row{"a,b.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::yes, "+0.45", "L L L 6"};
