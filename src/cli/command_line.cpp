@@ -10,6 +10,7 @@
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/play_command.h"
 #include "apcs/cli/report.h"
+#include "apcs/cli/script_options.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/version.h"
 #include "option_sets.h"
@@ -508,7 +509,13 @@ void complete_options(const CLI::App& app, ParsedLine& line)
         line.options.path.slopes = {line.slopes[0], line.slopes[1]};
     const bool view_given = given_count(app, "--view") > 0;
     line.options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
-                          given_count(app, "--delay") > 0, line.slopes.size() == 2, given_count(app, "--spacing") > 0};
+                          given_count(app, "--delay") > 0, line.slopes.size() == 2, given_count(app, "--spacing") > 0,
+                          {}};
+    for (const std::string_view name : carried_option_names) {
+        const bool theta_or_phi = name == "--theta" || name == "--phi";
+        if (given_count(app, std::string(name)) > 0 || (theta_or_phi && view_given))
+            line.options.given.carried.emplace_back(name);
+    }
     line.options.read_files = line.inputs();
 }
 

@@ -2,6 +2,7 @@
 
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
+#include "apcs/cli/script_options.h"
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/input_check.h"
@@ -169,13 +170,19 @@ std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& 
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     if (!same_exercise(exercise.script, *script))
         return unreplayed_rows(names, exercise.script, GradeVerdict::other);
+    // The student's staff step, in-between count ... as the recording's OPTIONS line has them.
+    CommonOptions replay_options = options;
+    if (const Expected<void> taken = take_script_options(script->options, recording.string(), replay_options); !taken) {
+        err << taken.error().to_string() << '\n';
+        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
+    }
     if (const Expected<void> made = fresh_work_folder(exercise, work); !made) {
         err << made.error().to_string() << '\n';
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     }
     // The report is the grade: a replay's "goal not reached" and the like are not shown.
     std::ostream unheard(nullptr);
-    const HeadlessReplay replayed = replay_in_folder(*script, recording.string(), options, work, unheard);
+    const HeadlessReplay replayed = replay_in_folder(*script, recording.string(), replay_options, work, unheard);
     std::error_code ignored;
     fs::remove_all(work, ignored);
     return replayed_rows(names, *script, replayed.goals);

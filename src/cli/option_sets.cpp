@@ -312,7 +312,7 @@ void add_pixels(CLI::App& command, CommonOptions& options)
 
 } // namespace
 
-void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
+void add_carried_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
 {
     add_staff(app, options);
     add_curve(app, options, slopes);
@@ -320,13 +320,18 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     add_inbetween_count(app, options);
     add_view(app, options);
     add_delay(app, options);
-    add_glyphs(app, options);
-    add_colour(app, options);
-    add_pixels(app, options);
     app.add_option("--step", options.step,
                    "staff step per key, " + range_text(limits::staff_step) + ", default 0.05")
         ->check(number_in(limits::staff_step))
         ->type_name("S");
+}
+
+void add_session_options(CLI::App& app, CommonOptions& options, std::vector<double>& slopes)
+{
+    add_carried_options(app, options, slopes);
+    add_glyphs(app, options);
+    add_colour(app, options);
+    add_pixels(app, options);
     add_pictures(app, options, "the overlay of all frames");
     app.add_option("--workdir", options.workdir, "folder the session reads and writes, default the current one")
         ->type_name("DIR");

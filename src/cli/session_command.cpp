@@ -3,6 +3,7 @@
 #include "apcs/cli/handout_writer.h"
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
+#include "apcs/cli/script_options.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
@@ -163,9 +164,10 @@ std::optional<ExitStatus> refuse_changed_inputs(const CommonOptions& options, co
     return std::nullopt;
 }
 
-// --keys FILE: its script into `script`, its text into `script_text`, an exercise's inputs checked
-// in `folder`; nothing without --keys.
-std::optional<ExitStatus> read_key_script(const CommonOptions& options, const std::filesystem::path& folder,
+// --keys FILE: its script into `script`, its text into `script_text`, its OPTIONS line into
+// `options` (where the command line gave none of them), an exercise's inputs checked in `folder`;
+// nothing without --keys.
+std::optional<ExitStatus> read_key_script(CommonOptions& options, const std::filesystem::path& folder,
                                           KeyScript& script, std::string& script_text, std::ostream& err)
 {
     if (!options.keys)
@@ -181,6 +183,8 @@ std::optional<ExitStatus> read_key_script(const CommonOptions& options, const st
     Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
     if (!parsed)
         return report_bad_input(parsed.error(), err);
+    if (const Expected<void> taken = take_script_options(parsed->options, options.keys->string(), options); !taken)
+        return report_bad_input(taken.error(), err);
     const auto inbetweens = static_cast<std::size_t>(std::max(options.path.inbetween_count, 0));
     if (Expected<void> reachable = goals_within_inbetweens(parsed->goals, inbetweens, options.keys->string()); !reachable)
         return report_bad_input(reachable.error(), err);
@@ -419,14 +423,16 @@ KeyFileGuard files_read(const CommonOptions& options, const Session& session, co
     return read;
 }
 
-// --record FILE: the keys handled, as a script; "-" writes them to `out`. The target was checked
-// before the session (refuse_record_target) and guarded during it, so the session wrote nothing
-// there; a KEY answer typed live may still have named it, and then it is a key file.
-std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFileGuard& read,
-                                      const KeyRecording& recorded, std::ostream& out, std::ostream& err)
+// --record FILE: the keys handled, as a script with the options that shaped them; "-" writes
+// them to `out`. The target was checked before the session (refuse_record_target) and guarded
+// during it, so the session wrote nothing there; a KEY answer typed live may still have named it,
+// and then it is a key file.
+std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFileGuard& read, KeyRecording& recorded,
+                                      std::ostream& out, std::ostream& err)
 {
     if (!options.record)
         return std::nullopt;
+    recorded.add_options(carried_options_words(options));
     if (*options.record == "-") {
         out << recorded.text();
         return std::nullopt;
@@ -486,9 +492,10 @@ ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOp
 
 } // namespace
 
-ExitStatus run_session_command(const CommonOptions& options, const TerminalRunner& terminal, std::ostream& out,
+ExitStatus run_session_command(const CommonOptions& command_line, const TerminalRunner& terminal, std::ostream& out,
                                std::ostream& err)
 {
+    CommonOptions options = command_line; // and the --keys script's OPTIONS
     const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
     if (const std::optional<ExitStatus> refused = refuse_work_folder(folder, err))
         return *refused;
@@ -554,9 +561,15 @@ ExitStatus run_session_command(const CommonOptions& options, const TerminalRunne
     return status;
 }
 
-HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name, const CommonOptions& options,
-                                const std::filesystem::path& folder, std::ostream& err)
+HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name,
+                                const CommonOptions& command_line, const std::filesystem::path& folder,
+                                std::ostream& err)
 {
+    CommonOptions options = command_line;
+    if (const Expected<void> taken = take_script_options(script.options, script_name, options); !taken) {
+        err << taken.error().to_string() << '\n';
+        return {ExitStatus::bad_input, {}};
+    }
     const Expected<std::uint64_t> limit = memory_limit(options);
     if (!limit) {
         err << limit.error().to_string() << '\n';

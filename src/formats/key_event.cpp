@@ -91,6 +91,7 @@ struct StartLine {
 struct ScriptState {
     StartLine start;
     std::size_t open_goal = 0; // the first goal whose answer has not ended
+    int options_line = 0;      // the OPTIONS line's number; 0: none yet
 };
 
 // A line "START" (a comment may follow): its place checked, the preamble's end kept. Whether the
@@ -145,6 +146,31 @@ Expected<void> take_input_line(std::string_view line, const StartLine& start, Ke
     return ok;
 }
 
+// An OPTIONS line: before the first key, START, the first caption and GOAL, since the options are
+// the session's before it begins; one at most, naming at least one option. Which options it may
+// name is the command line's to say (script_options.h): here they are words.
+Expected<void> take_options_line(std::string_view line, const StartLine& start, std::size_t events, KeyScript* kept,
+                                 const std::string& file_name, int line_number, int& options_line)
+{
+    const std::string expected = "; expected one OPTIONS line before the script's first key, START, caption and "
+                                 "GOAL, holding the session's options (OPTIONS --step 0.1)";
+    if (options_line != 0)
+        return Diagnostic{file_name, line_number,
+                          "a second OPTIONS (the first is on line " + std::to_string(options_line) + ")" + expected};
+    if (events > 0 || start.line_number != 0 || start.after_caption_or_goal)
+        return Diagnostic{file_name, line_number, "OPTIONS after a key, START, a caption or GOAL" + expected};
+    std::string words;
+    for_each_field(line.substr(0, line.find(';')).substr(7), [&words](std::string_view word) {
+        words += (words.empty() ? "" : " ") + std::string(word);
+    });
+    if (words.empty())
+        return Diagnostic{file_name, line_number, "OPTIONS names no option" + expected};
+    options_line = line_number;
+    if (kept != nullptr)
+        kept->options = {words, line_number};
+    return ok;
+}
+
 // A GOAL line: its goal kept, the answers before it ended.
 Expected<void> take_goal_line(std::string_view line, ScriptState& state, std::size_t events, KeyScript* kept,
                               const std::string& file_name, int line_number)
@@ -162,7 +188,7 @@ Expected<void> take_goal_line(std::string_view line, ScriptState& state, std::si
     return ok;
 }
 
-// A START, INPUT or GOAL line taken into `kept`. Whether the line is one of them.
+// A START, INPUT, OPTIONS or GOAL line taken into `kept`. Whether the line is one of them.
 Expected<bool> take_directive_line(std::string_view line, ScriptState& state, std::size_t events, KeyScript* kept,
                                    const std::string& file_name, int line_number)
 {
@@ -172,6 +198,8 @@ Expected<bool> take_directive_line(std::string_view line, ScriptState& state, st
     Expected<void> taken = ok;
     if (line.starts_with("INPUT "))
         taken = take_input_line(line, state.start, kept, file_name, line_number);
+    else if (line.starts_with("OPTIONS ") || line.starts_with("OPTIONS;") || line == "OPTIONS")
+        taken = take_options_line(line, state.start, events, kept, file_name, line_number, state.options_line);
     else if (line.starts_with("GOAL "))
         taken = take_goal_line(line, state, events, kept, file_name, line_number);
     else

@@ -58,6 +58,8 @@ std::string KeyRecording::text() const
     std::string script;
     for (const ScriptInput& input : m_inputs)
         script += input_line(input) + "\n";
+    if (!m_options.empty())
+        script += "OPTIONS " + m_options + "\n";
     std::string typed;
     for (const Entry& entry : m_entries) {
         const bool typing = entry.kind == Entry::Kind::key && entry.typed_text &&

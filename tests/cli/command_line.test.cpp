@@ -217,7 +217,7 @@ TEST_CASE("the session takes the command line's answers only where they were giv
     CHECK(untyped.spacing == Spacing::exact);
     CHECK(untyped.step == 0.1);
 
-    options.given = {true, true, true, true, true};
+    options.given = {true, true, true, true, true, {}};
     const SessionSettings typed = session_settings(options);
     CHECK(typed.theta_degrees == 10.0);
     CHECK(typed.phi_degrees == 20.0);
@@ -226,7 +226,7 @@ TEST_CASE("the session takes the command line's answers only where they were giv
     CHECK(typed.slopes->start == 0.5);
     CHECK(typed.slopes->end == 0.25);
 
-    options.given = {false, true, false, false, false};
+    options.given = {false, true, false, false, false, {}};
     const SessionSettings phi_only = session_settings(options);
     CHECK_FALSE(phi_only.theta_degrees);
     CHECK(phi_only.phi_degrees == 20.0);

@@ -65,6 +65,18 @@ test::CommandRun replay_answer(const test::TempFolder& folder, const std::string
         {"--keys", (answers / (exercise + "-answer.keys")).string(), "--workdir", folder.path().string()});
 }
 
+// `recording` replayed headless on a fresh copy of the exercises ends with exit 0 and writes the
+// apcs.log the session that made it wrote in `played`.
+void require_recheck_as_played(const std::string& recording, const test::TempFolder& played)
+{
+    const test::TempFolder fresh;
+    copy_exercises(fresh);
+    const auto recheck = test::run_apcs({"--keys", recording, "--workdir", fresh.path().string()});
+    INFO(recheck.err);
+    REQUIRE(recheck.status == 0);
+    REQUIRE(read_all(fresh / "apcs.log") == read_all(played / "apcs.log"));
+}
+
 } // namespace
 
 TEST_CASE("every shipped exercise's answer reaches its goal headless, and the exercise alone does not",
@@ -286,12 +298,7 @@ TEST_CASE("a recording of every exercise's answer keeps its GOAL and rechecks on
         REQUIRE(recorded.find("L L") == std::string::npos);
         REQUIRE(read_all(answered / "apcs.log").find("\ngoal reached: ") != std::string::npos);
 
-        const test::TempFolder fresh;
-        copy_exercises(fresh);
-        const auto recheck = test::run_apcs({"--keys", recording, "--workdir", fresh.path().string()});
-        INFO(recheck.err);
-        REQUIRE(recheck.status == 0);
-        REQUIRE(read_all(fresh / "apcs.log") == read_all(answered / "apcs.log"));
+        require_recheck_as_played(recording, answered);
     }
     // The exercise alone, recorded, rechecks as not reached: exit 1 and the log says how far off.
     const test::TempFolder bare;
@@ -306,4 +313,45 @@ TEST_CASE("a recording of every exercise's answer keeps its GOAL and rechecks on
     const test::TempFolder fresh;
     copy_exercises(fresh);
     REQUIRE(test::run_apcs({"--keys", (handed_in / "mine.keys").string(), "--workdir", fresh.path().string()}).status == 1);
+}
+
+TEST_CASE("a recording made with another staff step keeps it on its OPTIONS line and rechecks as it was played",
+          "[cli][exercises][record][options]")
+{
+    const test::TempFolder answered;
+    copy_exercises(answered);
+    // Five presses of 6 reach tension +0.50 in steps of 0.1, +0.25 in the default 0.05.
+    std::string answer = read_all(answers / "exercise-1-tension-answer.keys");
+    answer.replace(answer.find("L L L 6"), std::string("L L L 6").size(), "6 6 6 6 6");
+    const test::TempFolder handed_in;
+    const std::string script = handed_in.write("five.keys", answer).string();
+    const std::string recording = (handed_in / "mine.keys").string();
+    const auto played = test::run_apcs({"--keys", script, "--workdir", answered.path().string(), "--step", "0.1",
+                                        "--glyphs", "ascii", "--record", recording});
+    INFO(played.err);
+    REQUIRE(played.status == 0);
+    const std::string recorded = read_all(recording);
+    REQUIRE(recorded.starts_with("INPUT key1.dat CRC32 de215594\nINPUT key2.dat CRC32 b2c6a1da\n"
+                                 "INPUT way1.dat CRC32 1db7d833\nOPTIONS --step 0.1\nENTER\n"));
+
+    require_recheck_as_played(recording, answered);
+    // The command line's own step wins over the recording's.
+    const test::TempFolder other;
+    copy_exercises(other);
+    const auto stepped = test::run_apcs({"--keys", recording, "--workdir", other.path().string(), "--step", "0.05"});
+    REQUIRE(stepped.status == 1);
+    REQUIRE(stepped.err.find("mine.keys:16: goal not reached: tension +0.25, want +0.40 to +0.60") != std::string::npos);
+}
+
+TEST_CASE("a script whose OPTIONS line names an option a script does not carry is refused before the session",
+          "[cli][exercises][options]")
+{
+    const test::TempFolder folder;
+    copy_exercises(folder);
+    const std::string script = folder.write("mine.keys", "OPTIONS --png over.png\nENTER\n").string();
+    const auto refused = test::run_apcs({"--keys", script, "--workdir", folder.path().string()});
+    REQUIRE(refused.status == 1);
+    REQUIRE(refused.err.starts_with(script + ":1: OPTIONS --png: not an option a script carries; expected"));
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
+    REQUIRE_FALSE(std::filesystem::exists(folder / "over.png"));
 }

@@ -3,6 +3,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -269,6 +270,34 @@ TEST_CASE("apcs grade writes a field a spreadsheet would run as a formula after 
     REQUIRE(result.status == 0);
     const std::string row = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,'= TEXT 0.5 ENTER\n";
     REQUIRE(result.out == header + "'=1+1.keys" + row + "'@jo.keys" + row);
+}
+
+TEST_CASE("apcs grade replays a recording with the options on its OPTIONS line and refuses one naming another option",
+          "[cli][grade][options]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    std::string answer = test::read_all(answer_of(folder, 1, "tension"));
+    answer.replace(answer.find("L L L 6"), std::string("L L L 6").size(), "6 6 6 6 6");
+    const std::string input_lines = "INPUT way1.dat CRC32 1db7d833\n";
+    const std::size_t options_at = answer.find(input_lines) + input_lines.size();
+    const std::string options_line = std::to_string(
+        std::count(answer.begin(), answer.begin() + static_cast<std::ptrdiff_t>(options_at), '\n') + 1);
+    const test::TempFolder handed_in;
+    const std::string recorded_step =
+        handed_in.write("step.keys", std::string(answer).insert(options_at, "OPTIONS --step 0.1\n")).string();
+    const std::string default_step = handed_in.write("plain.keys", answer).string();
+    const std::string pictures =
+        handed_in.write("png.keys", std::string(answer).insert(options_at, "OPTIONS --png /tmp/grade.png\n"))
+            .string();
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const auto result = grade({exercise, recorded_step, default_step, pictures});
+    const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    REQUIRE(result.out == header + recorded_step + goal + "yes,+0.50,6 6 6 6 6\n" + default_step + goal +
+                              "no,+0.25,6 6 6 6 6\n" + pictures + goal + "error,,\n");
+    REQUIRE(result.status == 1);
+    REQUIRE(result.err.starts_with(pictures + ":" + options_line +
+                                   ": OPTIONS --png: not an option a script carries; expected"));
 }
 
 TEST_CASE("apcs grade says no for a goal that can never be met", "[cli][grade][exercises]")

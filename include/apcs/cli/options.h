@@ -25,6 +25,9 @@ struct GivenOptions {
     bool delay = false;   // --delay
     bool slopes = false;  // --slopes
     bool spacing = false; // --spacing
+    // Of the options a key script may carry (script_options.h), those given, by name ("--step"),
+    // on the command line or by the script's OPTIONS line; --view gives --theta and --phi.
+    std::vector<std::string> carried;
 };
 
 // The options every command shares (SPEC §1), validated by the command line parser.

@@ -61,8 +61,9 @@ struct HeadlessReplay {
 // `script` (named `script_name` in messages) replayed headless in `folder` with `options`, as
 // `apcs --keys SCRIPT --workdir FOLDER </dev/null` replays it: the same keys into the same
 // session, the same files and apcs.log there; but no screen is drawn (nobody sees one, and
-// drawing them is most of a replay's time). Its problems go to `err`. The script's INPUT lines
-// are not checked here: the caller did, or made the folder from them (apcs grade).
+// drawing them is most of a replay's time). The script's OPTIONS line gives what `options` does
+// not (script_options.h). Its problems go to `err`. The script's INPUT lines are not checked
+// here: the caller did, or made the folder from them (apcs grade).
 HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name, const CommonOptions& options,
                                 const std::filesystem::path& folder, std::ostream& err);
 

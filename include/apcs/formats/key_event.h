@@ -25,8 +25,9 @@ struct KeyEvent {
 
 // A keystroke script (SPEC §3): a line starting with "TEXT " types the rest of the line
 // literally; any other line holds tokens — a printable character, or a physical key's script name
-// (ENTER, ESC, … CTRL-L: physical_key.h); ';' starts a comment. START, GOAL (script_goal.h) and
-// INPUT (script_input.h) lines are a lesson's and an exercise's, kept by parse_captioned_key_script. Returns the events, or the first
+// (ENTER, ESC, … CTRL-L: physical_key.h); ';' starts a comment. START, GOAL (script_goal.h),
+// INPUT (script_input.h) and OPTIONS lines are a lesson's, an exercise's and a recording's, kept
+// by parse_captioned_key_script. Returns the events, or the first
 // problem with its line, named as `file_name`.
 // A longer script is refused before it is read: 16 MiB is 16 million keystrokes or more, and
 // each takes sizeof(KeyEvent) = 8 bytes once parsed.
@@ -54,6 +55,16 @@ struct TypedLine {
     bool operator==(const TypedLine&) const = default;
 };
 
+// The session options a script was made with: its OPTIONS line, before the first key, the words
+// after OPTIONS as the command line gives them ("--step 0.1 --inbetweens 20"). --record writes
+// the line; a replay takes each option the command line does not give (script_options.h). Empty
+// words: no OPTIONS line.
+struct ScriptOptions {
+    std::string words;
+    int line_number = 0;
+    bool operator==(const ScriptOptions&) const = default;
+};
+
 // A script with its captions and its TEXT lines, in order.
 struct KeyScript {
     std::vector<KeyEvent> events;
@@ -61,6 +72,7 @@ struct KeyScript {
     std::vector<TypedLine> typed_lines;
     std::vector<ScriptGoal> goals; // GOAL lines (script_goal.h), in order
     std::vector<ScriptInput> inputs; // INPUT lines (script_input.h): the files an exercise is made for
+    ScriptOptions options;           // its OPTIONS line
     // The keys before the script's START line (SPEC §3.1): the opening prompts' answers, which a
     // paced replay plays as one step when it begins; 0 without START.
     std::size_t preamble_end = 0;

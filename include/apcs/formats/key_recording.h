@@ -9,13 +9,15 @@ namespace apcs {
 
 // What --record writes (SPEC §3.1): the keys the session handled, each marked typed text or not,
 // and the lines of the script that made it an exercise or a lesson, in the order they were met:
-// its INPUT lines first, START after the opening answers, each caption and GOAL where the replay
+// its INPUT lines first, then the OPTIONS the session ran with, START after the opening answers, each caption and GOAL where the replay
 // reached it. The replay controls (PgDn, PgUp, Home) never reach the session: they are not keys
 // of it. Read back by parse_captioned_key_script, it replays the same keys to the same goals, so
 // `apcs --keys` and `apcs grade` recheck it.
 class KeyRecording {
 public:
     void add_inputs(std::vector<ScriptInput> inputs) { m_inputs = std::move(inputs); }
+    // The session's options, as an OPTIONS line writes them after the INPUT lines; none if empty.
+    void add_options(std::string words) { m_options = std::move(words); }
     // A key, and whether the session took it as typed text (a prompt's answer, a staff value).
     void add_key(const KeyEvent& key, bool typed_text);
     void add_start() { m_entries.push_back({Entry::Kind::start, {}, false, {}}); }
@@ -37,6 +39,7 @@ private:
         std::string line; // a caption's text, a GOAL line
     };
     std::vector<ScriptInput> m_inputs;
+    std::string m_options;
     std::vector<Entry> m_entries;
     std::size_t m_key_count = 0;
 };

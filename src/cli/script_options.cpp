@@ -1,0 +1,154 @@
+#include "apcs/cli/script_options.h"
+
+#include "apcs/formats/number_text.h"
+#include "apcs/formats/text_fields.h"
+#include "option_sets.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <optional>
+#include <vector>
+
+namespace apcs {
+
+namespace {
+
+// How one carried option is taken from the options a script gave and written for a recording.
+struct CarriedOption {
+    std::string_view name;
+    void (*take)(CommonOptions& to, const CommonOptions& from);
+    std::string (*value)(const CommonOptions& options);
+};
+
+std::string number(double value) { return shortest_number(value); }
+
+constexpr std::array<CarriedOption, carried_option_names.size()> carried_options{{
+    {"--tension", [](CommonOptions& to, const CommonOptions& from) { to.staff.tension = from.staff.tension; },
+     [](const CommonOptions& options) { return number(options.staff.tension); }},
+    {"--continuity", [](CommonOptions& to, const CommonOptions& from) { to.staff.continuity = from.staff.continuity; },
+     [](const CommonOptions& options) { return number(options.staff.continuity); }},
+    {"--bias", [](CommonOptions& to, const CommonOptions& from) { to.staff.bias = from.staff.bias; },
+     [](const CommonOptions& options) { return number(options.staff.bias); }},
+    {"--accel", [](CommonOptions& to, const CommonOptions& from) { to.staff.acceleration = from.staff.acceleration; },
+     [](const CommonOptions& options) { return number(options.staff.acceleration); }},
+    {"--slopes",
+     [](CommonOptions& to, const CommonOptions& from) {
+         to.path.slopes = from.path.slopes;
+         to.given.slopes = true;
+     },
+     [](const CommonOptions& options) {
+         return number(options.path.slopes.start) + " " + number(options.path.slopes.end);
+     }},
+    {"--samples",
+     [](CommonOptions& to, const CommonOptions& from) { to.path.samples_per_segment = from.path.samples_per_segment; },
+     [](const CommonOptions& options) { return std::to_string(options.path.samples_per_segment); }},
+    {"--spacing",
+     [](CommonOptions& to, const CommonOptions& from) {
+         to.path.spacing = from.path.spacing;
+         to.given.spacing = true;
+     },
+     [](const CommonOptions& options) {
+         return std::string(options.path.spacing == Spacing::exact ? "exact" : "nearest");
+     }},
+    {"--surface", [](CommonOptions& to, const CommonOptions& from) { to.surface = from.surface; },
+     [](const CommonOptions& options) {
+         return std::string(options.surface == SurfaceConstruction::ferguson ? "ferguson" : "blend");
+     }},
+    {"--inbetweens",
+     [](CommonOptions& to, const CommonOptions& from) { to.path.inbetween_count = from.path.inbetween_count; },
+     [](const CommonOptions& options) { return std::to_string(options.path.inbetween_count); }},
+    {"--theta",
+     [](CommonOptions& to, const CommonOptions& from) {
+         to.view.theta_degrees = from.view.theta_degrees;
+         to.given.theta = true;
+     },
+     [](const CommonOptions& options) { return number(options.view.theta_degrees); }},
+    {"--phi",
+     [](CommonOptions& to, const CommonOptions& from) {
+         to.view.phi_degrees = from.view.phi_degrees;
+         to.given.phi = true;
+     },
+     [](const CommonOptions& options) { return number(options.view.phi_degrees); }},
+    {"--delay",
+     [](CommonOptions& to, const CommonOptions& from) {
+         to.delay_ms = from.delay_ms;
+         to.given.delay = true;
+     },
+     [](const CommonOptions& options) { return std::to_string(options.delay_ms); }},
+    {"--step", [](CommonOptions& to, const CommonOptions& from) { to.step = from.step; },
+     [](const CommonOptions& options) { return number(options.step); }},
+}};
+
+bool given(const std::vector<std::string>& names, std::string_view name)
+{
+    return std::ranges::find(names, name) != names.end();
+}
+
+std::string carried_list()
+{
+    std::string list;
+    for (const std::string_view name : carried_option_names)
+        list += (list.empty() ? "" : ", ") + std::string(name);
+    return list + " or --view";
+}
+
+// The first word of `words` that names an option a script does not carry ("--png"), if one does:
+// a word that starts with '-' and is not a number ("-0.5" is --tension's value).
+std::optional<std::string> uncarried_option(std::string_view words)
+{
+    std::optional<std::string> found;
+    for_each_field(words, [&found](std::string_view word) {
+        if (found || !word.starts_with('-') || parse_number(word))
+            return;
+        const std::string_view name = word.substr(0, word.find('='));
+        if (name != "--view" && std::ranges::find(carried_option_names, name) == carried_option_names.end())
+            found = std::string(name);
+    });
+    return found;
+}
+
+} // namespace
+
+Expected<void> take_script_options(const ScriptOptions& line, const std::string& file_name, CommonOptions& options)
+{
+    if (line.words.empty())
+        return ok;
+    if (const std::optional<std::string> name = uncarried_option(line.words))
+        return Diagnostic{file_name, line.line_number,
+                          "OPTIONS " + *name + ": not an option a script carries; expected the session's options " +
+                              carried_list() + ", each with its value, as on the command line"};
+    CommonOptions from_script;
+    std::vector<double> slopes;
+    CLI::App app{"", "OPTIONS"};
+    app.set_help_flag();
+    add_carried_options(app, from_script, slopes);
+    try {
+        app.parse(line.words, false);
+    } catch (const CLI::ParseError& error) {
+        return Diagnostic{file_name, line.line_number, "OPTIONS: " + std::string(error.what())};
+    }
+    if (slopes.size() == 2)
+        from_script.path.slopes = {slopes[0], slopes[1]};
+    const bool view_given = app.get_option("--view")->count() > 0;
+    for (const CarriedOption& option : carried_options) {
+        const bool theta_or_phi = option.name == "--theta" || option.name == "--phi";
+        const bool in_script = app.get_option(std::string(option.name))->count() > 0 || (theta_or_phi && view_given);
+        if (!in_script || given(options.given.carried, option.name))
+            continue;
+        option.take(options, from_script);
+        options.given.carried.emplace_back(option.name);
+    }
+    return ok;
+}
+
+std::string carried_options_words(const CommonOptions& options)
+{
+    std::string words;
+    for (const CarriedOption& option : carried_options)
+        if (given(options.given.carried, option.name))
+            words += (words.empty() ? "" : " ") + std::string(option.name) + " " + option.value(options);
+    return words;
+}
+
+} // namespace apcs
