@@ -6,6 +6,7 @@
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/input_check.h"
+#include "apcs/formats/unfinished_files.h"
 #include "apcs/lesson/grade.h"
 
 #include <cerrno>
@@ -17,14 +18,19 @@
 #include <system_error>
 #include <vector>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace apcs {
 
 namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of this run's own, made by mkdtemp (mode 0700: no other user reads a student's replay
-// or swaps a file in it) and removed with everything in it when the run ends, whichever way.
+// A folder of this run's own, made as mkdtemp makes one (mode 0700: no other user reads a
+// student's replay or swaps a file in it) and removed with everything in it when the run ends,
+// whichever way: at the end, after an error, or by the handler of a signal that stops APCS
+// (unfinished_files.h), which finds it by its parent folder's descriptor.
 class PrivateFolder {
 public:
     PrivateFolder() = default;
@@ -35,6 +41,9 @@ public:
         std::error_code ignored;
         if (!m_path.empty())
             fs::remove_all(m_path, ignored);
+        m_known.reset();
+        if (m_parent >= 0)
+            ::close(m_parent);
     }
 
     // The folder made under the system's temporary folder (TMPDIR, else /tmp); the problem if not.
@@ -44,16 +53,19 @@ public:
         const fs::path temporary = fs::temp_directory_path(error);
         if (error)
             return Diagnostic{"apcs", 0, "grade: no temporary folder: " + error.message()};
-        std::string pattern = (temporary / "apcs-grade-XXXXXX").string();
-        if (::mkdtemp(pattern.data()) == nullptr)
+        m_parent = ::open(temporary.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+        std::string name = "apcs-grade-XXXXXX";
+        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0)
             return Diagnostic{"apcs", 0, "grade: cannot make a folder in " + temporary.string() + ": " +
                                              std::strerror(errno)};
-        m_path = pattern;
+        m_path = temporary / name;
         return ok;
     }
     const fs::path& path() const { return m_path; }
 
 private:
+    int m_parent = -1;
+    std::optional<UnfinishedFolder> m_known;
     fs::path m_path;
 };
 

@@ -7,10 +7,12 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <dirent.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <string_view>
 #include <sys/random.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace apcs {
@@ -69,9 +71,53 @@ UnfinishedFile::~UnfinishedFile()
 
 namespace {
 
+// The folder a stop removes, if one is known.
+struct FolderSlot {
+    std::atomic<bool> in_use{false};
+    int parent = -1;
+    char name[NAME_MAX + 1] = {};
+};
+
+FolderSlot& folder_slot()
+{
+    static FolderSlot slot;
+    return slot;
+}
+
+} // namespace
+
+UnfinishedFolder::UnfinishedFolder(int parent, const std::string& name) noexcept
+{
+    FolderSlot& slot = folder_slot();
+    if (name.size() > NAME_MAX || slot.in_use.load())
+        return;
+    slot.parent = parent;
+    std::memcpy(slot.name, name.c_str(), name.size() + 1);
+    slot.in_use.store(true, std::memory_order_release);
+    m_known = true;
+}
+
+UnfinishedFolder::~UnfinishedFolder()
+{
+    if (m_known)
+        folder_slot().in_use.store(false, std::memory_order_release);
+}
+
+namespace {
+
+// Makes the entry `name` in the folder open as `folder`: a descriptor or 0, or -1 with errno.
+using MakeEntry = int (*)(int folder, const char* name) noexcept;
+
+int make_file(int folder, const char* name) noexcept
+{
+    return ::openat(folder, name, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+}
+
+int make_folder(int folder, const char* name) noexcept { return ::mkdirat(folder, name, 0700); }
+
 // mkstemp in the folder open as `folder`: its XXXXXX replaced by random letters and digits until
-// a name is free (O_EXCL), at most 100 tries.
-int make_temporary_at(int folder, std::string& pattern) noexcept
+// a name is free (O_EXCL, or mkdir's own EEXIST), at most 100 tries.
+int make_unique_at(int folder, std::string& pattern, MakeEntry make) noexcept
 {
     constexpr std::string_view letters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789";
     constexpr std::size_t unique = 6;
@@ -85,37 +131,81 @@ int make_temporary_at(int folder, std::string& pattern) noexcept
             return -1;
         for (std::size_t i = 0; i < unique; ++i)
             pattern[pattern.size() - unique + i] = letters[static_cast<std::size_t>(random[i]) % letters.size()];
-        const int descriptor = ::openat(folder, pattern.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-        if (descriptor >= 0 || errno != EEXIST)
-            return descriptor;
+        const int made = make(folder, pattern.c_str());
+        if (made >= 0 || errno != EEXIST)
+            return made;
     }
     return -1;
 }
 
-} // namespace
-
-int create_unfinished_file(int folder, std::string& pattern, std::optional<UnfinishedFile>& known) noexcept
+// `make` of a unique `pattern` in `folder`, `remember` called on the name made. With every signal
+// blocked here, a stop's handler runs on another thread (or after this), which then waits for
+// being_made to fall to 0 (it cannot wait on its own thread), and finds the entry known.
+template <typename Remember>
+int create_known(int folder, std::string& pattern, MakeEntry make, Remember remember) noexcept
 {
-    // With every signal blocked here, a stop's handler runs on another thread (or after this),
-    // which then waits for being_made to fall to 0: it cannot wait on its own thread.
     sigset_t all;
     sigset_t previous;
     sigfillset(&all);
     pthread_sigmask(SIG_BLOCK, &all, &previous);
     being_made.fetch_add(1);
-    int descriptor = -1;
+    int made = -1;
     if (stopping.load()) {
         errno = EINTR;
     } else {
-        descriptor = make_temporary_at(folder, pattern);
-        if (descriptor >= 0)
-            known.emplace(folder, pattern);
+        made = make_unique_at(folder, pattern, make);
+        if (made >= 0)
+            remember();
     }
     being_made.fetch_sub(1);
     const int reason = errno;
     pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     errno = reason;
-    return descriptor;
+    return made;
+}
+
+// Everything in the folder `name` of the folder open as `parent`, then the folder, removed with
+// system calls only (async-signal-safe: no allocation, no stdio); `depth` folders deep at most.
+// Entries are removed while the folder is read, so it is read again until a pass removes nothing.
+void remove_tree_at(int parent, const char* name, int depth) noexcept
+{
+    const int folder = ::openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (folder < 0)
+        return;
+    alignas(struct dirent64) char entries[2048];
+    for (bool removed = true; removed;) {
+        removed = false;
+        ::lseek(folder, 0, SEEK_SET);
+        for (ssize_t size; (size = ::getdents64(folder, entries, sizeof entries)) > 0;) {
+            for (ssize_t at = 0; at < size;) {
+                const auto* entry = reinterpret_cast<const struct dirent64*>(entries + at);
+                at += entry->d_reclen;
+                const std::string_view entry_name = entry->d_name;
+                if (entry_name == "." || entry_name == "..")
+                    continue;
+                if (::unlinkat(folder, entry->d_name, 0) != 0 && errno == EISDIR && depth > 0) {
+                    remove_tree_at(folder, entry->d_name, depth - 1);
+                    ::unlinkat(folder, entry->d_name, AT_REMOVEDIR);
+                }
+                removed = true;
+            }
+        }
+    }
+    ::close(folder);
+    ::unlinkat(parent, name, AT_REMOVEDIR);
+}
+
+} // namespace
+
+int create_unfinished_folder(int parent, std::string& pattern, std::optional<UnfinishedFolder>& known) noexcept
+{
+    const int made = create_known(parent, pattern, make_folder, [&] { known.emplace(parent, pattern); });
+    return made < 0 ? -1 : 0;
+}
+
+int create_unfinished_file(int folder, std::string& pattern, std::optional<UnfinishedFile>& known) noexcept
+{
+    return create_known(folder, pattern, make_file, [&] { known.emplace(folder, pattern); });
 }
 
 void remove_unfinished_files() noexcept
@@ -128,6 +218,10 @@ void remove_unfinished_files() noexcept
     for (Slot& slot : slots())
         if (slot.in_use.load(std::memory_order_acquire))
             ::unlinkat(slot.folder, slot.name, 0);
+    // apcs grade's folder holds its copies and a work folder with what a session writes.
+    constexpr int deepest = 8;
+    if (FolderSlot& folder = folder_slot(); folder.in_use.load(std::memory_order_acquire))
+        remove_tree_at(folder.parent, folder.name, deepest);
 }
 
 } // namespace apcs

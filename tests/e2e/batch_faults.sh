@@ -3,9 +3,10 @@
 # clear exit 3, a FIFO is neither read nor replaced (streams); output lost on a full standard
 # output is exit 1 (full-output); a full disk leaves no partial file and keeps the old one
 # (full-disk); a signal while the in-betweens are written is exit 130 (SPEC §1) and leaves no
-# temporary file (signal). A case that cannot run here exits 77, which CTest reports as a skip
-# (SKIP_RETURN_CODE); only full-disk may, and only where the user is not root: as root (CI) a
-# tmpfs it cannot mount is a failure. Usage: batch_faults.sh APCS streams|full-output|full-disk|signal
+# temporary file (signal); one while apcs grade replays leaves no private folder (grade-signal).
+# A case that cannot run here exits 77, which CTest reports as a skip (SKIP_RETURN_CODE); only
+# full-disk may, and only where the user is not root: as root (CI) a tmpfs it cannot mount is a
+# failure. Usage: batch_faults.sh APCS streams|full-output|full-disk|signal|grade-signal
 set -uo pipefail
 apcs=$1
 case_name=$2
@@ -96,21 +97,13 @@ full_disk() {
   [ "$leftovers" -eq 0 ] || fail "temporary files left: $(ls -a "$work/small")"
 }
 
-# Starts `apcs fit` on keys of POINTS points into $work/signal/out and sends SIGNAL as soon as a
-# hidden temporary in-between file shows; prints the exit status, or "missed" when the fit ended
-# before one was seen.
-signal_while_writing() {
-  local signal=$1 points=$2 pid status
-  rm -rf "$work/signal" && mkdir -p "$work/signal/out"
-  awk -v n="$points" 'BEGIN { for (i = 0; i < n; i++) printf "0 %d %d\n", i, i % 7 }' > "$work/signal/key1.dat"
-  awk -v n="$points" 'BEGIN { for (i = 0; i < n; i++) printf "5 %d %d\n", i, i % 5 }' > "$work/signal/key2.dat"
-  printf '0 0 0\n5 0 0\n' > "$work/signal/first.dat"
-  printf '0 %d 0\n5 %d 4\n' "$((points - 1))" "$((points - 1))" > "$work/signal/last.dat"
-  "$apcs" fit "$work/signal/key1.dat" "$work/signal/key2.dat" "$work/signal/first.dat" "$work/signal/last.dat" \
-    --inbetweens 40 --out "$work/signal/out" > /dev/null 2>&1 &
-  pid=$!
+# Sends SIGNAL to PID (a child of this shell) as soon as `find FIND_ARGUMENTS...` prints a name;
+# prints PID's exit status, or "missed" when it ended before.
+signal_when_found() {
+  local pid=$1 signal=$2
+  shift 2
   while kill -0 "$pid" 2>/dev/null; do
-    if [ -n "$(find "$work/signal/out" -name '.inb*' -type f 2>/dev/null | head -1)" ]; then
+    if [ -n "$(find "$@" 2>/dev/null | head -1)" ]; then
       kill -s "$signal" "$pid"
       wait "$pid"; echo $?
       return
@@ -119,6 +112,21 @@ signal_while_writing() {
   done
   wait "$pid"
   echo missed
+}
+
+# Starts `apcs fit` on keys of POINTS points into $work/signal/out and sends SIGNAL as soon as a
+# hidden temporary in-between file shows; prints the exit status, or "missed" when the fit ended
+# before one was seen.
+signal_while_writing() {
+  local signal=$1 points=$2
+  rm -rf "$work/signal" && mkdir -p "$work/signal/out"
+  awk -v n="$points" 'BEGIN { for (i = 0; i < n; i++) printf "0 %d %d\n", i, i % 7 }' > "$work/signal/key1.dat"
+  awk -v n="$points" 'BEGIN { for (i = 0; i < n; i++) printf "5 %d %d\n", i, i % 5 }' > "$work/signal/key2.dat"
+  printf '0 0 0\n5 0 0\n' > "$work/signal/first.dat"
+  printf '0 %d 0\n5 %d 4\n' "$((points - 1))" "$((points - 1))" > "$work/signal/last.dat"
+  "$apcs" fit "$work/signal/key1.dat" "$work/signal/key2.dat" "$work/signal/first.dat" "$work/signal/last.dat" \
+    --inbetweens 40 --out "$work/signal/out" > /dev/null 2>&1 &
+  signal_when_found $! "$signal" "$work/signal/out" -name '.inb*' -type f
 }
 
 stopping_signals() {
@@ -138,11 +146,37 @@ stopping_signals() {
   done
 }
 
+# `apcs grade` of 400 recordings with TMPDIR=$work/grade/tmp, SIGNAL sent once its private folder
+# holds a work folder (a replay under way); prints the exit status, or "missed" when it ended first.
+signal_while_grading() {
+  local signal=$1 exercises
+  exercises=$(dirname "$0")/../../data/exercises
+  rm -rf "$work/grade" && mkdir -p "$work/grade/tmp" "$work/grade/ex" "$work/grade/in"
+  cp "$exercises"/*.keys "$exercises"/*.dat "$work/grade/ex/"
+  for i in $(seq 400); do cp "$exercises/answers/exercise-1-tension-answer.keys" "$work/grade/in/$i.keys"; done
+  TMPDIR=$work/grade/tmp "$apcs" grade "$work/grade/ex/exercise-1-tension.keys" "$work/grade/in"/*.keys \
+    > /dev/null 2>&1 &
+  signal_when_found $! "$signal" "$work/grade/tmp" -mindepth 2 -maxdepth 2 -name work
+}
+
+grading_signals() {
+  # A signal that stops apcs grade mid-replay: exit 130, and its private folder under TMPDIR (the
+  # exercise's copies, the work folder of the replay) is gone with everything in it.
+  for name in TERM INT HUP; do
+    status=$(signal_while_grading "$name")
+    [ "$status" != missed ] || fail "SIG$name: apcs grade was never caught replaying"
+    [ "$status" -eq 130 ] || fail "SIG$name while grading: exit $status, SPEC §1 says 130"
+    left=$(find "$work/grade/tmp" -mindepth 1 | head -5)
+    [ -z "$left" ] || fail "SIG$name left in TMPDIR: $left"
+  done
+}
+
 case $case_name in
   streams) streams ;;
   full-output) full_output ;;
   full-disk) full_disk ;;
   signal) stopping_signals ;;
-  *) fail "no case '$case_name' (streams, full-output, full-disk, signal)" ;;
+  grade-signal) grading_signals ;;
+  *) fail "no case '$case_name' (streams, full-output, full-disk, signal, grade-signal)" ;;
 esac
 echo "batch_faults $case_name: passed"

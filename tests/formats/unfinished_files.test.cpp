@@ -6,7 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <optional>
 #include <string>
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -103,6 +106,40 @@ TEST_CASE("a stop removes a temporary file whose folder was renamed meanwhile", 
                 ::_exit(hidden_files(folder / "moved").empty() ? 0 : 1);
             });
         ::_exit(2);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
+
+TEST_CASE("a stop removes the unfinished folder with the files and folders it holds, and a folder made after "
+          "the stop begins is refused",
+          "[formats][files][signals]")
+{
+    // apcs grade's private folder under TMPDIR (its copies, a work folder a session writes in) was
+    // left behind by SIGTERM: /tmp/apcs-grade-p328MP/work/ani4.dat ...
+    const TempFolder folder;
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        const int parent = ::open(folder.path().c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+        std::string name = "apcs-grade-XXXXXX";
+        std::optional<UnfinishedFolder> known;
+        if (parent < 0 || create_unfinished_folder(parent, name, known) != 0 || name == "apcs-grade-XXXXXX")
+            ::_exit(2);
+        const std::filesystem::path made = folder / name;
+        const auto write = [](const std::filesystem::path& file, const char* text) { std::ofstream(file) << text; };
+        std::filesystem::create_directories(made / "work" / "deeper");
+        for (int file = 0; file < 300; ++file) // more than one read of the folder holds
+            write(made / "work" / ("ani" + std::to_string(file) + ".dat"), "0 0 0\n");
+        write(made / "work" / "deeper" / "apcs.log", "session started\n");
+        write(made / "key1.dat", "0 0 0\n");
+        remove_unfinished_files(); // what the signal handler does, before its _exit
+        std::string late = "late-XXXXXX";
+        std::optional<UnfinishedFolder> refused;
+        const bool late_refused = create_unfinished_folder(parent, late, refused) != 0 && errno == EINTR;
+        ::_exit(std::filesystem::is_empty(folder.path()) && late_refused ? 0 : 1);
     }
     int status = 0;
     REQUIRE(::waitpid(child, &status, 0) == child);

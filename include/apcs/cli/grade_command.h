@@ -23,8 +23,9 @@ struct GradeRequest {
 // first: one missing or changed (or a link, a FIFO), an exercise that cannot be read or names no
 // GOAL or no INPUT, is exit 1 with FILE:LINE on `err` and nothing on `out`. They are copied once
 // into a private folder (mkdtemp, mode 0700, under TMPDIR or /tmp), and from there into a fresh
-// work folder for each recording; both are removed at the end, also after an error. Nothing is
-// written beside the exercise or a recording: the sessions write in the copies.
+// work folder for each recording; both are removed at the end, also after an error or a stop by
+// a signal. Nothing is written beside the exercise or a recording: the sessions write in the
+// copies.
 //
 // A recording is read as `--keys` reads a file, except that only a regular file (or a symbolic
 // link to one, followed: it is only read) is read, so a FIFO nobody writes never hangs the

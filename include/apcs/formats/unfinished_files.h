@@ -28,10 +28,30 @@ private:
 // made while the program is being stopped). Signals wait while the file is made.
 int create_unfinished_file(int folder, std::string& pattern, std::optional<UnfinishedFile>& known) noexcept;
 
-// Removes every temporary file being written now, first waiting for any being made on another
-// thread, and makes no more from then on (the threads writing run until the program ends: one
-// made after the removal would stay). Async-signal-safe: for a signal handler that then ends the
-// program.
+// A folder of the program's own, made by create_unfinished_folder (apcs grade's private folder of
+// copies and replays), which remove_unfinished_files() removes with everything in it while it is
+// known: by its parent's descriptor (which must stay open meanwhile) and its name. One is known at
+// a time; a second is made but not known. The owner removes it when done, then lets it be forgotten.
+class UnfinishedFolder {
+public:
+    UnfinishedFolder(int parent, const std::string& name) noexcept;
+    ~UnfinishedFolder();
+    UnfinishedFolder(const UnfinishedFolder&) = delete;
+    UnfinishedFolder& operator=(const UnfinishedFolder&) = delete;
+
+private:
+    bool m_known = false;
+};
+
+// As mkdtemp(pattern) in the folder open as `parent` (pattern a name ending in XXXXXX, which is
+// replaced; mode 0700), the folder made known in `known` before any signal can end the program:
+// 0, or -1 with errno (EINTR once remove_unfinished_files has begun).
+int create_unfinished_folder(int parent, std::string& pattern, std::optional<UnfinishedFolder>& known) noexcept;
+
+// Removes every temporary file being written now and the unfinished folder with all it holds,
+// first waiting for any being made on another thread, and makes no more from then on (the
+// threads writing run until the program ends: one made after the removal would stay).
+// Async-signal-safe: for a signal handler that then ends the program.
 void remove_unfinished_files() noexcept;
 
 } // namespace apcs
