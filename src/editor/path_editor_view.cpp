@@ -2,6 +2,7 @@
 #include "apcs/editor/path_editor.h"
 
 #include "apcs/base/overloaded.h"
+#include "apcs/base/utf8.h"
 #include "apcs/screens/path_overlays.h"
 #include "apcs/screens/session_text.h"
 
@@ -13,6 +14,23 @@ namespace {
 
 // The message line's text fits 79 columns (the 80th holds no text).
 constexpr std::size_t max_message_width = 79;
+
+bool fits_message_line(std::string_view text)
+{
+    return static_cast<std::size_t>(text_columns(text)) <= max_message_width;
+}
+
+// "Adjust the path again ? (Y/N)" first, and beside it the goal, whole or in a few words, as it
+// fits: the student sees whether to answer Y.
+std::string question_with_goal(const GoalSaid& goal)
+{
+    for (const std::string_view said : {goal.feedback, goal.briefly}) {
+        const std::string line = std::string(text::ask_again) + "   " + std::string(said);
+        if (!said.empty() && fits_message_line(line))
+            return line;
+    }
+    return std::string(text::ask_again);
+}
 
 } // namespace
 
@@ -173,16 +191,18 @@ PathScreenContent PathEditor::screen_content() const
     return content;
 }
 
-GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, std::string_view goal_feedback) const
+GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, const GoalSaid& goal) const
 {
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
     // A first picture says it is one (its in-betweens are not drawn); a problem matters more, and
     // a goal's feedback more than both, once the field, the question after the staff and the last
     // key's notice have been read.
-    if (!goal_feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open() &&
-        !std::holds_alternative<AskAgain>(m_mode))
-        content.message = goal_feedback;
+    const bool goal_said = !goal.feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open();
+    if (goal_said && !std::holds_alternative<AskAgain>(m_mode))
+        content.message = goal.feedback;
+    else if (goal_said)
+        content.message = question_with_goal(goal);
     else if (m_problem.empty() && m_picture->refining())
         content.message = refining_message();
     if (m_show_key_frames)

@@ -71,14 +71,15 @@ GoalProgress value_progress(const ScriptGoal& goal, const PathEditor& editor)
     const std::string want = "want " + number_text(goal.low, Sign::shown) + " to " + number_text(goal.high, Sign::shown);
     const std::optional<StaffValues> staff = editor.region_staff();
     if (!staff)
-        return {false, {}, "no region is on the staff", want, "8 puts the whole path on the staff, 2 a region"};
+        return {false, {}, "no region is on the staff", want, "8 puts the whole path on the staff, 2 a region",
+                "no region"};
     const double value = (*staff)[goal.line];
     // The staff's values are multiples of the step, snapped: a bound met to 1e-9 is met.
     constexpr double slack = 1e-9;
     const bool reached = value >= goal.low - slack && value <= goal.high + slack;
     const std::string shown = number_text(value, Sign::shown);
-    return {reached, shown, ascii_lower_case(staff_line_name(goal.line)) + " " + shown, want,
-            reached ? std::string() : value_hint(goal, editor)};
+    const std::string said = ascii_lower_case(staff_line_name(goal.line)) + " " + shown;
+    return {reached, shown, said, want, reached ? std::string() : value_hint(goal, editor), said};
 }
 
 // A NEAR goal's span outside the region on the staff: no staff key there moves it.
@@ -106,15 +107,15 @@ GoalProgress distance_progress(const ScriptGoal& goal, const PathEditor& editor)
         const std::string off = number_text(nearest.distance, Sign::left_out);
         const bool reached = nearest.distance <= goal.within;
         return {reached, off, "the curve passes " + off + " from " + where, want,
-                reached ? std::string() : region_hint(nearest.segment, editor)};
+                reached ? std::string() : region_hint(nearest.segment, editor), off + " off"};
     }
     if (goal.inbetween > path.inbetweens.size())
         return {false, {}, "the path has " + std::to_string(path.inbetweens.size()) + " in-betweens",
-                "want " + goal_text(goal), {}};
+                "want " + goal_text(goal), {}, std::to_string(path.inbetweens.size()) + " in-betweens"};
     const double distance_now = distance(goal.point, path.inbetweens[goal.inbetween - 1].position);
     const std::string off = number_text(distance_now, Sign::left_out);
     return {distance_now <= goal.within, off,
-            "in-between " + std::to_string(goal.inbetween) + " is " + off + " from " + where, want, {}};
+            "in-between " + std::to_string(goal.inbetween) + " is " + off + " from " + where, want, {}, off + " off"};
 }
 
 } // namespace
@@ -124,7 +125,7 @@ GoalProgress check_goal(const ScriptGoal& goal, const Session& session)
     const PathEditor* editor = session.path_editor();
     if (editor == nullptr)
         return {false, {}, "no path is being shaped", "want " + goal_text(goal),
-                "no path is being shaped: the goal waits for one"};
+                "no path is being shaped: the goal waits for one", "no path"};
     return goal.kind == ScriptGoal::Kind::value ? value_progress(goal, *editor) : distance_progress(goal, *editor);
 }
 
@@ -150,6 +151,13 @@ std::string goal_feedback(const GoalProgress& progress)
     if (!progress.hint.empty())
         return "GOAL: " + progress.hint;
     return "GOAL: " + goal_distance_text(progress);
+}
+
+std::string goal_feedback_briefly(const GoalProgress& progress)
+{
+    if (progress.reached)
+        return "GOAL REACHED: " + progress.said_briefly;
+    return "GOAL: " + progress.said_briefly + ", " + progress.want;
 }
 
 } // namespace apcs

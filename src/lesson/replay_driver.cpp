@@ -286,7 +286,7 @@ bool ReplayDriver::check_waiting_goal()
     if (m_waiting_goal == m_next_goal && !progress.reached && staff && m_waiting_staff && staff != m_waiting_staff &&
         progress.value == m_waiting_progress.value)
         explain_unmoved(progress, goal, *m_session);
-    m_session->say_goal(goal_feedback(progress));
+    m_session->say_goal(goal_feedback(progress), goal_feedback_briefly(progress));
     m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
     if (progress.reached) {
         m_waiting_goal.reset();

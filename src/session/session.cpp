@@ -119,11 +119,12 @@ std::optional<Session::ShapingLook> Session::shaping_look() const
     return ShapingLook{shaping->editor.look(), m_notice, overlaid};
 }
 
-void Session::say_goal(std::string feedback)
+void Session::say_goal(std::string feedback, std::string briefly)
 {
-    if (feedback == m_goal_feedback)
+    if (feedback == m_goal_feedback && briefly == m_goal_briefly)
         return;
     m_goal_feedback = std::move(feedback);
+    m_goal_briefly = std::move(briefly);
     ++m_revision;
 }
 
@@ -281,7 +282,7 @@ SessionScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
         return {false, key_help_screen(phase_name(phase()), help->keys, help->empty_answer), {}};
-    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point, m_goal_feedback)); },
+    return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point, {m_goal_feedback, m_goal_briefly})); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
                                      SessionScreen shown{false, console_screen(), {}};

@@ -2,6 +2,7 @@
 // on the message line, says GOAL REACHED, names a wrong staff line or region, and says why an
 // in-between did not move; apcs.log has a line per goal; --record keeps the student's keys as
 // tokens between the script's GOAL line and its closing caption.
+#include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/screens/session_text.h"
 #include "apcs/session/session_files.h"
@@ -70,8 +71,11 @@ TEST_CASE("at a goal the task stays on the caption row and the message line name
     REQUIRE(exercise.press(enter) == "GOAL: you are on BIAS; the goal is CONTINUITY: finish the staff, then Y");
     REQUIRE(exercise.press(enter) ==
             "GOAL: you are on ACCELERATION; the goal is CONTINUITY: finish the staff, then Y");
-    // The question after the staff has the message line (SPEC §7.3), the task the caption row.
-    REQUIRE(exercise.press(enter) == session_text::ask_again);
+    // The question after the staff comes first on the message line (SPEC §7.3), the goal beside it
+    // where both fit in 79 columns, so the student sees whether to answer Y; the task keeps the
+    // caption row.
+    REQUIRE(exercise.press(enter) ==
+            std::string(session_text::ask_again) + "   GOAL: continuity +0.00, want -0.60 to -0.40");
     REQUIRE(exercise.replay->screen().caption == task);
     REQUIRE(exercise.press(U'Y') == "GOAL: 8 puts the whole path on the staff, 2 a region");
     REQUIRE(exercise.press(U'8') == "GOAL: you are on TENSION; the goal is CONTINUITY: Enter or Esc goes down a line");
@@ -105,7 +109,8 @@ TEST_CASE("a NEAR goal names the region on the staff when no key there can move 
     // On control point 2 it can: the distance again. (A region of one point has no ACCELERATION.)
     for (int line = 0; line < 2; ++line)
         exercise.press(enter);
-    REQUIRE(exercise.press(enter) == session_text::ask_again);
+    // Beside the question the whole feedback does not fit in 79 columns: it is said briefly.
+    REQUIRE(exercise.press(enter) == std::string(session_text::ask_again) + "   GOAL: 0.39 off, want within 0.10");
     exercise.press(U'Y');
     exercise.press(U'2');
     exercise.press(U'6');
@@ -173,4 +178,15 @@ TEST_CASE("apcs.log gets a line for a goal the student leaves and the recording 
     REQUIRE(recheck.goal_outcomes().size() == 1);
     REQUIRE(recheck.goal_outcomes()[0].verdict == GoalOutcome::Verdict::reached);
     REQUIRE(recheck.goal_outcomes()[0].progress.value == "+0.45");
+}
+
+TEST_CASE("a goal's feedback in a few words says the quantity and what the goal wants", "[lesson][goal]")
+{
+    GoalProgress progress{false, "0.39", "the curve passes 0.39 from (1.50, -2.00, 2.50)", "want within 0.10", {},
+                          "0.39 off"};
+    CHECK(goal_feedback_briefly(progress) == "GOAL: 0.39 off, want within 0.10");
+    progress.hint = "the region (points 3 to 3) cannot move span 1 to 2, nearest the goal";
+    CHECK(goal_feedback_briefly(progress) == "GOAL: 0.39 off, want within 0.10");
+    progress = {true, "+0.45", "tension +0.45", "want +0.40 to +0.60", {}, "tension +0.45"};
+    CHECK(goal_feedback_briefly(progress) == "GOAL REACHED: tension +0.45");
 }

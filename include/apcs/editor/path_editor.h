@@ -20,10 +20,19 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
 namespace apcs {
+
+// An exercise's feedback for the message line (lesson/goal_check.h): whole ("GOAL: the curve
+// passes 0.35 from (0.00, 1.00, 2.00), want within 0.10") and in a few words ("GOAL: 0.35 off,
+// want within 0.10"); both empty for none.
+struct GoalSaid {
+    std::string_view feedback;
+    std::string_view briefly;
+};
 
 // Graphics mode while one graphic point's path is shaped (thesis Ch. 4.2 steps 3–5): the choice of
 // global or local control (Check_GorL_Control), picking the region with the arrow
@@ -58,7 +67,7 @@ public:
     Outcome update(const Command& command);
     // The path screen, with an exercise's goal point marked and its feedback on the message line
     // when given (below a problem, an open field and what the last key did: SPEC §7.3).
-    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt, std::string_view goal_feedback = {}) const;
+    GraphicsScreen view(std::optional<Vec3> goal_point = std::nullopt, const GoalSaid& goal = {}) const;
     // Refinement::in_steps: whether the last keys left work (PathPicture::refining), and one step of it.
     bool refining() const { return m_picture->refining(); }
     void refine_step();

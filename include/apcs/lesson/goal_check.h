@@ -18,6 +18,7 @@ struct GoalProgress {
     std::string said;
     std::string want;
     std::string hint;
+    std::string said_briefly; // the quantity in a few words: "tension +0.10", "0.35 off"
 };
 
 // The goal checked against the path being shaped: VALUE against the staff of the region on it,
@@ -37,5 +38,9 @@ std::string goal_distance_text(const GoalProgress& progress);
 // instead when there is one ("GOAL: you are on BIAS; …"), or "GOAL REACHED:
 // tension +0.45 (want +0.40 to +0.60)".
 std::string goal_feedback(const GoalProgress& progress);
+
+// The feedback in a few words, for beside "Adjust the path again ? (Y/N)" when the whole of it
+// does not fit there: "GOAL: 0.35 off, want within 0.10", "GOAL REACHED: tension +0.45".
+std::string goal_feedback_briefly(const GoalProgress& progress);
 
 } // namespace apcs

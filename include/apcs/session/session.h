@@ -58,8 +58,9 @@ public:
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
     void mark_goal(std::optional<Vec3> point);
     // An exercise's feedback ("GOAL: …", "GOAL REACHED: …") on the message line, below an open
-    // field or question, an error and what the last key did (SPEC §7.3); empty for none.
-    void say_goal(std::string feedback);
+    // field or question, an error and what the last key did (SPEC §7.3); empty for none. `briefly`
+    // is it in a few words, beside the question after the staff where the whole does not fit.
+    void say_goal(std::string feedback, std::string briefly = {});
 
 private:
     // What the path screen shows, as far as a key can change it: compared before and after a key.
@@ -94,6 +95,7 @@ private:
     std::string m_notice;
     std::optional<Vec3> m_goal_point;
     std::string m_goal_feedback;
+    std::string m_goal_briefly;
     std::uint64_t m_revision = 0;
 };
 
