@@ -490,55 +490,78 @@ ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOp
     return ExitStatus::bad_input;
 }
 
+// What a session needs before it starts.
+struct SessionStart {
+    std::filesystem::path folder;
+    std::uint64_t limit = 0; // the memory budget
+    KeyScript script;
+    std::string script_text;
+    bool headless = false;
+    GlyphSet glyphs = GlyphSet::ascii;
+    std::optional<HandoutWriter> handout;
+};
+
+// The session's needs checked in order into `start`: its folder, its memory budget, the --keys
+// script (its OPTIONS taken into `options`), a terminal or a script, glyphs it can show, the
+// recording's target and the handout's folder. The first refusal's exit status, its reason on `err`.
+std::optional<ExitStatus> check_session_start(CommonOptions& options, const TerminalRunner& terminal,
+                                              SessionStart& start, std::ostream& err)
+{
+    start.folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
+    if (const std::optional<ExitStatus> refused = refuse_work_folder(start.folder, err))
+        return refused;
+    const Expected<std::uint64_t> limit = memory_limit(options);
+    if (!limit) {
+        err << limit.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
+    start.limit = *limit;
+    if (const std::optional<ExitStatus> refused =
+            read_key_script(options, start.folder, start.script, start.script_text, err))
+        return refused;
+    start.headless = !::isatty(STDIN_FILENO) || !terminal;
+    if (const std::optional<ExitStatus> refused = refuse_replay_without_its_needs(options, start.headless, err))
+        return refused;
+    const Expected<GlyphSet> glyphs = session_glyphs(options.glyphs, start.headless);
+    if (!glyphs) {
+        err << glyphs.error().to_string() << '\n';
+        return ExitStatus::bad_usage;
+    }
+    start.glyphs = *glyphs;
+    if (const std::optional<ExitStatus> refused =
+            refuse_record_target(options, start.script_text, start.folder, start.headless, err))
+        return refused;
+    return open_handout(options, start.handout, err);
+}
+
 } // namespace
 
 ExitStatus run_session_command(const CommonOptions& command_line, const TerminalRunner& terminal, std::ostream& out,
                                std::ostream& err)
 {
     CommonOptions options = command_line; // and the --keys script's OPTIONS
-    const std::filesystem::path folder = options.workdir.empty() ? std::filesystem::path(".") : options.workdir;
-    if (const std::optional<ExitStatus> refused = refuse_work_folder(folder, err))
+    SessionStart start;
+    if (const std::optional<ExitStatus> refused = check_session_start(options, terminal, start, err))
         return *refused;
-    const Expected<std::uint64_t> limit = memory_limit(options);
-    if (!limit) {
-        err << limit.error().to_string() << '\n';
-        return ExitStatus::bad_usage;
-    }
-    KeyScript script;
-    std::string script_text;
-    if (const std::optional<ExitStatus> refused = read_key_script(options, folder, script, script_text, err))
-        return *refused;
-    const bool headless = !::isatty(STDIN_FILENO) || !terminal;
-    if (const std::optional<ExitStatus> refused = refuse_replay_without_its_needs(options, headless, err))
-        return *refused;
-    const Expected<GlyphSet> glyphs = session_glyphs(options.glyphs, headless);
-    if (!glyphs) {
-        err << glyphs.error().to_string() << '\n';
-        return ExitStatus::bad_usage;
-    }
-    if (const std::optional<ExitStatus> refused = refuse_record_target(options, script_text, folder, headless, err))
-        return *refused;
-    std::optional<HandoutWriter> handout;
-    if (const std::optional<ExitStatus> refused = open_handout(options, handout, err))
-        return *refused;
+    const std::filesystem::path& folder = start.folder;
     FolderFiles folder_files(folder);
     // PgUp and Home replay from the files as they were at the start: a paced replay on a terminal
     // keeps each file as first read (headless, nobody goes back: no copy is kept).
     RewindableFiles rewindable(folder_files);
-    const bool can_go_back = !headless && options.pace.kind != ReplayPace::Kind::at_once;
+    const bool can_go_back = !start.headless && options.pace.kind != ReplayPace::Kind::at_once;
     SessionFiles& files = can_go_back ? static_cast<SessionFiles&>(rewindable) : folder_files;
     // An answer typed at a prompt that names the recording is refused there, as a key file is.
     if (options.record && *options.record != "-")
         files.protect_key_file(std::filesystem::absolute(*options.record).string());
     files.log("session started");
     const SessionSettings settings =
-        replay_settings(options, *limit, headless ? ReplayAudience::headless : ReplayAudience::terminal);
+        replay_settings(options, start.limit, start.headless ? ReplayAudience::headless : ReplayAudience::terminal);
     Session session(settings, files);
     ReplayKept kept;
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
-    ReplayHooks hooks = replay_hooks(handout, options, session, script, *glyphs, folder);
+    ReplayHooks hooks = replay_hooks(start.handout, options, session, start.script, start.glyphs, folder);
     hooks.log = [&files](const std::string& line) { files.log(line); };
     if (can_go_back) {
         hooks.session_as_started = [&rewindable, &settings] {
@@ -548,9 +571,10 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
         hooks.caught_up = [&rewindable] { rewindable.caught_up(); };
     }
     const ExitStatus status = handout_outcome(
-        handout, options, session, folder,
-        headless ? replay_headless(session, script, options.keys->string(), {&screens, *glyphs}, hooks, kept, err)
-                 : run_on_terminal(session, script, options, *glyphs, terminal, hooks, kept.recording, out, err),
+        start.handout, options, session, folder,
+        start.headless
+            ? replay_headless(session, start.script, options.keys->string(), {&screens, start.glyphs}, hooks, kept, err)
+            : run_on_terminal(session, start.script, options, start.glyphs, terminal, hooks, kept.recording, out, err),
         err);
     if (status == ExitStatus::terminal_problem)
         return status;
