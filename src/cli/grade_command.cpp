@@ -73,14 +73,17 @@ private:
 // private copy of its inputs.
 struct Exercise {
     KeyScript script;
+    CommonOptions options;           // apcs's defaults and the exercise's OPTIONS line: its task
     std::string name;
     fs::path inputs;                 // the folder of the checked copies, in the private folder
     std::vector<fs::path> copies;    // each copy, named as beside the exercise
 };
 
-// EXERCISE.keys read and parsed as --keys reads a script; it must have goals to grade and inputs
-// to replay on. The problem on `err` and the exit status, or nullopt.
-std::optional<ExitStatus> read_exercise(const fs::path& file, KeyScript& script, std::ostream& err)
+// EXERCISE.keys read and parsed as --keys reads a script, its OPTIONS taken over `options`; it
+// must have goals to grade and inputs to replay on. The problem on `err` and the exit status, or
+// nullopt.
+std::optional<ExitStatus> read_exercise(const fs::path& file, Exercise& exercise, const CommonOptions& options,
+                                        std::ostream& err)
 {
     const Expected<std::string> text = read_text_file(file, max_key_script_bytes);
     if (!text)
@@ -95,7 +98,10 @@ std::optional<ExitStatus> read_exercise(const fs::path& file, KeyScript& script,
                                  "names no input (INPUT NAME CRC32 XXXXXXXX lines); apcs grade replays each "
                                  "recording on fresh copies of the exercise's inputs"},
                                 err);
-    script = std::move(*parsed);
+    exercise.options = options;
+    if (const Expected<void> taken = take_script_options(parsed->options, file.string(), exercise.options); !taken)
+        return report_bad_input(taken.error(), err);
+    exercise.script = std::move(*parsed);
     return std::nullopt;
 }
 
@@ -182,12 +188,16 @@ std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& 
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     if (!same_exercise(exercise.script, *script))
         return unreplayed_rows(names, exercise.script, GradeVerdict::other);
-    // The student's staff step, in-between count ... as the recording's OPTIONS line has them.
+    // The student's staff step, in-between count ... as the recording's OPTIONS line has them; a
+    // recording whose options set another task (another starting staff, in-between count ...) is
+    // of another exercise, as one with other GOAL lines is.
     CommonOptions replay_options = options;
     if (const Expected<void> taken = take_script_options(script->options, recording.string(), replay_options); !taken) {
         err << taken.error().to_string() << '\n';
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     }
+    if (changed_task_option(exercise.options, replay_options))
+        return unreplayed_rows(names, exercise.script, GradeVerdict::other);
     if (const Expected<void> made = fresh_work_folder(exercise, work); !made) {
         err << made.error().to_string() << '\n';
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
@@ -211,7 +221,7 @@ ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& o
     }
     Exercise exercise;
     exercise.name = request.exercise.string();
-    if (const std::optional<ExitStatus> refused = read_exercise(request.exercise, exercise.script, err))
+    if (const std::optional<ExitStatus> refused = read_exercise(request.exercise, exercise, options, err))
         return *refused;
     PrivateFolder folder;
     if (const Expected<void> made = folder.make(); !made)

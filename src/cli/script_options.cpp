@@ -93,19 +93,46 @@ std::string carried_list()
     return list + " or --view";
 }
 
-// The first word of `words` that names an option a script does not carry ("--png"), if one does:
-// a word that starts with '-' and is not a number ("-0.5" is --tension's value).
-std::optional<std::string> uncarried_option(std::string_view words)
+// A word as the message shows it: as it is when it is printable ASCII, else quoted with its other
+// bytes escaped ('--st\xFFep').
+std::string as_written(std::string_view word)
+{
+    const bool plain = std::ranges::all_of(word, [](char c) { return c > ' ' && c < '\x7f'; });
+    return plain ? std::string(word) : quote_field(word);
+}
+
+// What is wrong with the words of an OPTIONS line before CLI11 reads them, if anything: a word
+// that names an option a script does not carry ("--png"), or an option named twice. A word that
+// starts with '-' and is a number is a value ("-0.5", --tension's).
+std::optional<std::string> misnamed_option(std::string_view words)
 {
     std::optional<std::string> found;
-    for_each_field(words, [&found](std::string_view word) {
+    std::vector<std::string_view> named;
+    for_each_field(words, [&found, &named](std::string_view word) {
         if (found || !word.starts_with('-') || parse_number(word))
             return;
         const std::string_view name = word.substr(0, word.find('='));
         if (name != "--view" && std::ranges::find(carried_option_names, name) == carried_option_names.end())
-            found = std::string(name);
+            found = as_written(name) + ": not an option a script carries; expected the session's options " +
+                    carried_list() + ", each with its value, as on the command line";
+        else if (std::ranges::find(named, name) != named.end())
+            found = std::string(name) + " given twice; expected each option once";
+        named.push_back(name);
     });
     return found;
+}
+
+// CLI11's refusal of the words, said as APCS says a problem: a value a check refused says what
+// was expected already; a word left over is named as written, in its place.
+std::string refusal_text(const CLI::ParseError& error, const CLI::App& app)
+{
+    if (dynamic_cast<const CLI::ValidationError*>(&error) != nullptr)
+        return error.what();
+    const std::vector<std::string> left = app.remaining();
+    if (dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr && !left.empty())
+        return as_written(left.front()) + ": neither an option nor its value; expected the session's options " +
+               carried_list() + ", each with its value, as on the command line";
+    return std::string(error.what()) + "; expected each option with its value, as on the command line";
 }
 
 } // namespace
@@ -114,10 +141,8 @@ Expected<void> take_script_options(const ScriptOptions& line, const std::string&
 {
     if (line.words.empty())
         return ok;
-    if (const std::optional<std::string> name = uncarried_option(line.words))
-        return Diagnostic{file_name, line.line_number,
-                          "OPTIONS " + *name + ": not an option a script carries; expected the session's options " +
-                              carried_list() + ", each with its value, as on the command line"};
+    if (const std::optional<std::string> problem = misnamed_option(line.words))
+        return Diagnostic{file_name, line.line_number, "OPTIONS " + *problem};
     CommonOptions from_script;
     std::vector<double> slopes;
     CLI::App app{"", "OPTIONS"};
@@ -126,7 +151,7 @@ Expected<void> take_script_options(const ScriptOptions& line, const std::string&
     try {
         app.parse(line.words, false);
     } catch (const CLI::ParseError& error) {
-        return Diagnostic{file_name, line.line_number, "OPTIONS: " + std::string(error.what())};
+        return Diagnostic{file_name, line.line_number, "OPTIONS: " + refusal_text(error, app)};
     }
     if (slopes.size() == 2)
         from_script.path.slopes = {slopes[0], slopes[1]};
@@ -149,6 +174,16 @@ std::string carried_options_words(const CommonOptions& options)
         if (given(options.given.carried, option.name))
             words += (words.empty() ? "" : " ") + std::string(option.name) + " " + option.value(options);
     return words;
+}
+
+std::optional<std::string> changed_task_option(const CommonOptions& task, const CommonOptions& options)
+{
+    for (const CarriedOption& option : carried_options) {
+        const bool sets_task = std::ranges::find(task_option_names, option.name) != task_option_names.end();
+        if (sets_task && option.value(task) != option.value(options))
+            return std::string(option.name) + " " + option.value(options);
+    }
+    return std::nullopt;
 }
 
 } // namespace apcs

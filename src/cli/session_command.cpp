@@ -164,6 +164,25 @@ std::optional<ExitStatus> refuse_changed_inputs(const CommonOptions& options, co
     return std::nullopt;
 }
 
+// An exercise (a script with GOAL lines) sets its task: the command line may not start the staff
+// elsewhere or change what its goals measure, or apcs grade would grade the recording "other".
+std::optional<ExitStatus> refuse_changed_task(const KeyScript& script, const CommonOptions& options,
+                                              std::ostream& err)
+{
+    if (script.goals.empty())
+        return std::nullopt;
+    CommonOptions task;
+    if (!take_script_options(script.options, options.keys->string(), task))
+        return std::nullopt; // refused already, with the options taken into `options`
+    const std::optional<std::string> changed = changed_task_option(task, options);
+    if (!changed)
+        return std::nullopt;
+    err << "apcs: " << *changed << ": " << options.keys->string()
+        << " is an exercise (it has GOAL lines) and this changes its task: apcs grade would grade the recording "
+           "'other'; expected the exercise's own (only --step, --delay, --theta and --phi may differ)\n";
+    return ExitStatus::bad_usage;
+}
+
 // --keys FILE: its script into `script`, its text into `script_text`, its OPTIONS line into
 // `options` (where the command line gave none of them), an exercise's inputs checked in `folder`;
 // nothing without --keys.
@@ -185,6 +204,8 @@ std::optional<ExitStatus> read_key_script(CommonOptions& options, const std::fil
         return report_bad_input(parsed.error(), err);
     if (const Expected<void> taken = take_script_options(parsed->options, options.keys->string(), options); !taken)
         return report_bad_input(taken.error(), err);
+    if (const std::optional<ExitStatus> refused = refuse_changed_task(*parsed, options, err))
+        return refused;
     const auto inbetweens = static_cast<std::size_t>(std::max(options.path.inbetween_count, 0));
     if (Expected<void> reachable = goals_within_inbetweens(parsed->goals, inbetweens, options.keys->string()); !reachable)
         return report_bad_input(reachable.error(), err);

@@ -159,6 +159,12 @@ Expected<void> take_options_line(std::string_view line, const StartLine& start, 
                           "a second OPTIONS (the first is on line " + std::to_string(options_line) + ")" + expected};
     if (events > 0 || start.line_number != 0 || start.after_caption_or_goal)
         return Diagnostic{file_name, line_number, "OPTIONS after a key, START, a caption or GOAL" + expected};
+    // Every option a script carries, each with a long value, takes some 300 bytes.
+    constexpr std::size_t longest = 1024;
+    if (line.size() > longest)
+        return Diagnostic{file_name, line_number,
+                          "OPTIONS line of " + std::to_string(line.size()) + " bytes; expected at most " +
+                              std::to_string(longest) + ", each option once"};
     std::string words;
     for_each_field(line.substr(0, line.find(';')).substr(7), [&words](std::string_view word) {
         words += (words.empty() ? "" : " ") + std::string(word);

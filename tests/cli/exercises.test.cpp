@@ -355,3 +355,23 @@ TEST_CASE("a script whose OPTIONS line names an option a script does not carry i
     REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
     REQUIRE_FALSE(std::filesystem::exists(folder / "over.png"));
 }
+
+TEST_CASE("an exercise refuses a command-line option that changes its task and takes one that does not",
+          "[cli][exercises][options]")
+{
+    const test::TempFolder folder;
+    copy_exercises(folder);
+    const std::string exercise = (folder / "exercise-1-tension.keys").string();
+    const auto refused = test::run_apcs({"--keys", exercise, "--workdir", folder.path().string(), "--tension", "0.5"});
+    REQUIRE(refused.status == 2);
+    REQUIRE(refused.err == "apcs: --tension 0.5: " + exercise +
+                               " is an exercise (it has GOAL lines) and this changes its task: apcs grade would "
+                               "grade the recording 'other'; expected the exercise's own (only --step, --delay, "
+                               "--theta and --phi may differ)\n");
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
+    // The same value as the exercise's (the default) is no change; a lesson has no task to keep.
+    const auto same = test::run_apcs({"--keys", exercise, "--workdir", folder.path().string(), "--inbetweens", "12",
+                                      "--step", "0.1", "--theta", "10"});
+    REQUIRE(same.status == 1); // the exercise alone: its goal is not reached
+    REQUIRE(same.err.find("goal not reached") != std::string::npos);
+}

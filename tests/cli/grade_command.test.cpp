@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -298,6 +299,46 @@ TEST_CASE("apcs grade replays a recording with the options on its OPTIONS line a
     REQUIRE(result.status == 1);
     REQUIRE(result.err.starts_with(pictures + ":" + options_line +
                                    ": OPTIONS --png: not an option a script carries; expected"));
+}
+
+TEST_CASE("apcs grade says other for a recording whose OPTIONS set another task than the exercise's",
+          "[cli][grade][options]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string input_lines = "INPUT way1.dat CRC32 1db7d833\n";
+    // The exercise alone with its staff started at tension +0.50: the goal held with no key typed.
+    std::string bare = test::read_all(exercise_of(folder, 1, "tension"));
+    bare.insert(bare.find(input_lines) + input_lines.size(), "OPTIONS --tension 0.5\n");
+    const test::TempFolder handed_in;
+    const std::string started = handed_in.write("started.keys", bare).string();
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    REQUIRE(grade({exercise, started}).out ==
+            header + started + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,\n");
+
+    // An exercise that sets its in-between count: a recording made without it is another task.
+    std::string six = test::read_all(exercise_of(folder, 5, "inbetween"));
+    six.insert(six.find(input_lines) + input_lines.size(), "OPTIONS --inbetweens 6\n");
+    const std::string sixes = folder.write("six.keys", six).string();
+    const std::string answer = answer_of(folder, 5, "inbetween");
+    std::string answer_six = test::read_all(answer);
+    answer_six.insert(answer_six.find(input_lines) + input_lines.size(), "OPTIONS --inbetweens 6 --step 0.1\n");
+    const std::string with_six = handed_in.write("with-six.keys", answer_six).string();
+    const auto result = grade({sixes, answer, with_six});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const std::vector<std::string> rows = [&result] {
+        std::vector<std::string> lines;
+        std::istringstream text(result.out);
+        for (std::string line; std::getline(text, line);)
+            lines.push_back(line);
+        return lines;
+    }();
+    REQUIRE(rows.size() == 3);
+    CHECK(rows[1].starts_with(answer + "," + sixes + ",GOAL INBETWEEN 1 0.31 -0.41 0.47 0.1,other,"));
+    // The staff step may differ: the recording with the exercise's in-betweens is replayed.
+    CHECK(rows[2].starts_with(with_six + "," + sixes + ",GOAL INBETWEEN 1 0.31 -0.41 0.47 0.1,"));
+    CHECK(rows[2].find(",other,") == std::string::npos);
 }
 
 TEST_CASE("apcs grade says no for a goal that can never be met", "[cli][grade][exercises]")

@@ -81,7 +81,13 @@ TEST_CASE("a script's OPTIONS that name another option or a value out of range a
         {"--step 5", "mine.keys:3: OPTIONS: --step: expected a number in [0.001, 2], found 5"},
         {"--step 0,1", "mine.keys:3: OPTIONS: --step: expected a number in [0.001, 2], found '0,1'"},
         {"--spacing far", "mine.keys:3: OPTIONS: --spacing: expected one of nearest, exact, found 'far'"},
-        {"extra", "mine.keys:3: OPTIONS: The following argument was not expected: extra"},
+        {"extra", "mine.keys:3: OPTIONS: extra: neither an option nor its value" + list},
+        {"--step 0.1 stray words", "mine.keys:3: OPTIONS: stray: neither an option nor its value" + list},
+        {"--step 0.1 --step=0.2", "mine.keys:3: OPTIONS --step given twice; expected each option once"},
+        {"--st\xFF""ep 1", "mine.keys:3: OPTIONS '--st\\xFFep': not an option a script carries" + list},
+        {"--slopes 1",
+         "mine.keys:3: OPTIONS: --slopes: At least 2 required but received 1; expected each option with its value, "
+         "as on the command line"},
     }));
     CommonOptions options;
     const Expected<void> refused = take_script_options({words, 3}, "mine.keys", options);
@@ -89,4 +95,19 @@ TEST_CASE("a script's OPTIONS that name another option or a value out of range a
     CHECK(refused.error().to_string() == message);
     CHECK(options.step == 0.05);
     CHECK(options.given.carried.empty());
+}
+
+TEST_CASE("a task option is one that starts the staff elsewhere or changes what a goal measures",
+          "[cli][record][options]")
+{
+    const CommonOptions defaults;
+    CHECK_FALSE(changed_task_option(defaults, defaults));
+    CHECK_FALSE(changed_task_option(defaults, taken("--step 0.1 --delay 40 --view top")));
+    CHECK(changed_task_option(defaults, taken("--step 0.1 --tension 0.5")) == "--tension 0.5");
+    CHECK(changed_task_option(defaults, taken("--slopes 0 1")) == "--slopes 0 1");
+    CHECK(changed_task_option(defaults, taken("--inbetweens 6")) == "--inbetweens 6");
+    CHECK(changed_task_option(defaults, taken("--spacing exact")) == "--spacing exact");
+    CHECK(changed_task_option(taken("--inbetweens 6"), taken("--inbetweens 6 --step 0.2")) == std::nullopt);
+    // The defaults given out loud set the same task.
+    CHECK_FALSE(changed_task_option(defaults, taken("--inbetweens 12 --samples 32 --slopes 1 1 --tension 0")));
 }

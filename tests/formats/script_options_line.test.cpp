@@ -37,6 +37,8 @@ TEST_CASE("an OPTIONS line after a key or START or a caption or GOAL, a second o
          "m.keys:3: a second OPTIONS (the first is on line 1)" + expected},
         {"OPTIONS\n", "m.keys:1: OPTIONS names no option" + expected},
         {"OPTIONS ; only a comment\n", "m.keys:1: OPTIONS names no option" + expected},
+        {"OPTIONS" + std::string(1100, ' ') + "--step 0.1\n",
+         "m.keys:1: OPTIONS line of 1117 bytes; expected at most 1024, each option once"},
     }));
     CAPTURE(text);
     const Expected<KeyScript> refused = parse_captioned_key_script(text, "m.keys");

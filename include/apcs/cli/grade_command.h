@@ -31,7 +31,8 @@ struct GradeRequest {
 // link to one, followed: it is only read) is read, so a FIFO nobody writes never hangs the
 // report; a directory, a device, a missing file or a script that does not parse is an `error` row
 // per goal of the exercise, the reason (FILE:LINE) on `err`. A recording whose GOAL or INPUT lines
-// differ from the exercise's is an `other` row per goal, not replayed. The replays' screens and
+// differ from the exercise's, or whose OPTIONS set another task (script_options.h), is an `other`
+// row per goal, not replayed; else it is replayed with its OPTIONS. The replays' screens and
 // messages are not shown. Exit 0 when every recording was graded (yes, no or other), 1 when one was
 // an error, 2 for an APCS_MEMORY_LIMIT that is no byte count.
 ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& options, std::ostream& out,

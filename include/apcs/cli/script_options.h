@@ -5,6 +5,7 @@
 #include "apcs/formats/key_event.h"
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,6 +20,12 @@ inline constexpr std::array<std::string_view, 13> carried_option_names{
     "--tension", "--continuity", "--bias",  "--accel", "--slopes", "--samples", "--spacing",
     "--surface", "--inbetweens", "--theta", "--phi",   "--delay",  "--step"};
 
+// Of those, the ones that set an exercise's task: where the staff starts, the curve and what a
+// goal measures. The staff step, the delay and the view change how the keys are typed and the
+// path is seen, not the task.
+inline constexpr std::array<std::string_view, 9> task_option_names{
+    "--tension", "--continuity", "--bias", "--accel", "--slopes", "--samples", "--spacing", "--surface", "--inbetweens"};
+
 // Each option of the script's OPTIONS line that the command line did not give, taken into
 // `options` as if given there (the command line's own value wins over the script's). An option
 // that is not one of carried_option_names (or --view), or a value out of its range, is
@@ -30,5 +37,9 @@ inline constexpr std::array<std::string_view, 13> carried_option_names{
 // value the session ran with ("--step 0.1 --spacing exact"), numbers with a '.' in every locale;
 // empty when none was given.
 std::string carried_options_words(const CommonOptions& options);
+
+// The first task option (task_option_names) whose value in `options` differs from the exercise's
+// (`task`), as the command line would give it ("--tension 0.5"); none when both set one task.
+std::optional<std::string> changed_task_option(const CommonOptions& task, const CommonOptions& options);
 
 } // namespace apcs
