@@ -164,6 +164,10 @@ void ReplayDriver::take_work()
 SessionScreen ReplayDriver::screen() const
 {
     SessionScreen screen = m_session->screen();
+    // The help fills the screen from its title to "Any key closes this help.": a caption there
+    // would push the title off, the badge cover its first key line. Both come back as it closes.
+    if (m_session->showing_help())
+        return screen;
     Shown over = shown();
     screen.caption = std::move(over.caption);
     screen.badge = std::move(over.badge);

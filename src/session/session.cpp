@@ -119,6 +119,8 @@ std::optional<Session::ShapingLook> Session::shaping_look() const
     return ShapingLook{shaping->editor.look(), m_notice, overlaid};
 }
 
+bool Session::showing_help() const { return m_overlays.help() != nullptr; }
+
 void Session::say_goal(std::string feedback, std::string briefly)
 {
     if (feedback == m_goal_feedback && briefly == m_goal_briefly)

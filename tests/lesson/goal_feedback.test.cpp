@@ -4,6 +4,7 @@
 // tokens between the script's GOAL line and its closing caption.
 #include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_driver.h"
+#include "apcs/raster/replay_caption.h"
 #include "apcs/screens/session_text.h"
 #include "apcs/session/session_files.h"
 #include "support/replay_support.h"
@@ -189,4 +190,28 @@ TEST_CASE("a goal's feedback in a few words says the quantity and what the goal 
     CHECK(goal_feedback_briefly(progress) == "GOAL: 0.39 off, want within 0.10");
     progress = {true, "+0.45", "tension +0.45", "want +0.40 to +0.60", {}, "tension +0.45"};
     CHECK(goal_feedback_briefly(progress) == "GOAL REACHED: tension +0.45");
+}
+
+TEST_CASE("the help over a paced replay keeps its title and last line: no caption or badge is laid over it",
+          "[lesson][replay][goal]")
+{
+    // At 80x24 a caption pushed the help's title off the top and the badge covered its first key
+    // line ("4, Left, 6, Right  the value one step left, righ key ENTER | caption 2 of 3").
+    Exercise exercise("exercise-2-continuity.keys");
+    exercise.replay->handle(KeyEvent::typed(U'?'));
+    run_until_idle(*exercise.replay);
+    const SessionScreen help = exercise.replay->screen();
+    REQUIRE_FALSE(help.graphics);
+    CHECK(help.caption.empty());
+    CHECK(help.badge.empty());
+    // As the terminal lays it out (with_caption): the title on the top row, the last line last.
+    const SessionScreen shown = with_caption(help, help.caption);
+    CHECK(shown.text.row_text(0).starts_with("APCS help - the keys of step 4: four-line staff"));
+    CHECK(shown.text.row_text(shown.text.rows() - 1).starts_with("Any key closes this help."));
+    // Closed, the task is on the caption row again and the goal on the message line.
+    exercise.replay->handle(KeyEvent::typed(U'x'));
+    run_until_idle(*exercise.replay);
+    CHECK(exercise.replay->screen().caption ==
+          "Exercise 2: a corner at the middle point: CONTINUITY from -0.60 to -0.40");
+    CHECK(message_line(*exercise.replay).starts_with("GOAL: "));
 }

@@ -46,6 +46,8 @@ public:
     std::uint64_t screen_revision() const override { return m_revision; }
 
     SessionPhase phase() const;
+    // Whether the help (? or F1) is over the step: a whole screen of its own until a key closes it.
+    bool showing_help() const;
     // Whether the step now takes typed text: a prompt's line, or a staff value after '='.
     bool takes_typed_text() const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
