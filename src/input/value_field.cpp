@@ -5,6 +5,7 @@
 #include "apcs/raster/cell_grid.h"
 #include "apcs/base/overloaded.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace apcs {
@@ -23,6 +24,17 @@ void erase_last_character(std::string& text)
 // Wider than any number worth typing; the message line stays one line.
 constexpr std::size_t longest_text = 24;
 
+// Why `text` is no value: a number with a decimal comma (a German keyboard's 0,5) is shown with
+// its point, since numbers have a '.' in every locale.
+std::string refusal(const std::string& text)
+{
+    std::string with_point = text;
+    std::ranges::replace(with_point, ',', '.');
+    if (with_point != text && parse_number(with_point))
+        return "'" + text + "' is not a number: the decimal point is '.', type " + with_point;
+    return "'" + text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
+}
+
 } // namespace
 
 ValueField::Outcome ValueField::update(const Command& command)
@@ -30,6 +42,9 @@ ValueField::Outcome ValueField::update(const Command& command)
     return std::visit(Overloaded{
                           [&](const command::TypeCharacter& typed) {
                               m_problem.clear();
+                              // '=' again on an empty field is the key that opened it, not text.
+                              if (m_text.empty() && typed.character == U'=')
+                                  return Outcome::editing;
                               if (m_text.size() < longest_text)
                                   append_utf8(m_text, typed.character);
                               return Outcome::editing;
@@ -55,7 +70,10 @@ ValueField::Outcome ValueField::submit()
     }
     const std::optional<double> number = parse_number(m_text);
     if (!number || !std::isfinite(*number)) {
-        m_problem = "'" + m_text + "' is not a number: type a value from -1 to 1, e.g. 0.35";
+        // The text is said in the problem and taken away: what is typed next starts afresh, as
+        // the field shows it once the problem has been read.
+        m_problem = refusal(m_text);
+        m_text.clear();
         return Outcome::editing;
     }
     m_value = limits::staff_value.clamp(*number);

@@ -169,6 +169,20 @@ TEST_CASE("the law inset takes the corner that hides the fewest control points a
     REQUIRE(screen.marks.size() == 7);
 }
 
+TEST_CASE("a staff value typed with a decimal comma is refused with its point shown", "[session][teaching]")
+{
+    LogLines log;
+    PathEditor editor(zigzag(), log);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::OpenValueField{}});
+    type(editor, "-0,5");
+    apply(editor, {cmd::SubmitLine{}});
+    REQUIRE(message_of(editor.view()) == "'-0,5' is not a number: the decimal point is '.', type -0.5");
+    type(editor, "=-0.5");
+    apply(editor, {cmd::SubmitLine{}});
+    REQUIRE(editor.key_context() == KeyContext::staff);
+    REQUIRE(editor.points()[1].staff.tension == -0.5);
+}
+
 TEST_CASE("= types a staff value: clamped to -1 and +1, a non-number is refused and the field stays", "[session][teaching]")
 {
     LogLines log;
@@ -183,7 +197,10 @@ TEST_CASE("= types a staff value: clamped to -1 and +1, a non-number is refused 
     apply(editor, {cmd::SubmitLine{}});
     REQUIRE(message_of(editor.view()) == "'abc' is not a number: type a value from -1 to 1, e.g. 0.35");
     REQUIRE(editor.key_context() == KeyContext::value_field);
-    apply(editor, {cmd::EraseCharacter{}, cmd::EraseCharacter{}, cmd::EraseCharacter{}});
+    // The refused text is gone: a student who types '=' and the value again gets that value (it
+    // was "'abc=0.35' is not a number", the open field hidden under the problem).
+    type(editor, "=");
+    REQUIRE(message_of(editor.view()) == "TENSION = _  a value from -1 to 1, Enter sets it");
     type(editor, "0.35");
     apply(editor, {cmd::SubmitLine{}});
     REQUIRE(editor.key_context() == KeyContext::staff);

@@ -13,8 +13,9 @@ class ValueField {
 public:
     enum class Outcome { editing, set, closed };
 
-    // Typing, Backspace, Enter (a number sets; anything else says why and keeps the field open with
-    // its text), Esc (ClearLine) closes.
+    // Typing, Backspace, Enter (a number sets; anything else says why, quoting the text, and keeps
+    // the field open and empty), Esc (ClearLine) closes. '=' typed on an empty field is ignored: it
+    // is the key that opened it.
     Outcome update(const Command& command);
     // The number read by the Enter that gave Outcome::set, clamped to [-1, 1].
     double value() const { return m_value; }
