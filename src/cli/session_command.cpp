@@ -337,11 +337,14 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
         return ExitStatus::terminal_problem;
     }
     const ExitStatus status = *ran;
-    if (status == ExitStatus::stopped)
+    if (status == ExitStatus::stopped) {
         err << "apcs: stopped; every file written so far is whole\n";
-    else
-        for (const std::string& name : replay.session().written_files())
-            out << name << '\n';
+        return status;
+    }
+    // As the last screen said it, a name a line (for scripts), once the terminal is given back.
+    out << "APCS is done. Files written:\n";
+    for (const std::string& name : replay.session().written_files())
+        out << name << '\n';
     return status;
 }
 
@@ -603,6 +606,9 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
     if (const std::optional<ExitStatus> refused =
             record_keys(options, files_read(options, session, folder), kept.recording, out, err))
         return status == ExitStatus::stopped ? status : *refused;
+    // A student at a terminal sees where the keys went, the file to hand in.
+    if (!start.headless && options.record && *options.record != "-")
+        out << "Keystrokes recorded in " << options.record->string() << '\n';
     return status;
 }
 

@@ -52,6 +52,9 @@ screen student | grep -qF "GOAL REACHED" && fail "GOAL REACHED stays after the n
 keys student q
 keys student Y
 wait_for student "EXITED=0"
+# Back at the shell the student reads what was written and which file to hand in.
+screen student | grep -qx "APCS is done. Files written:" || fail "no heading over the files written" student
+screen student | grep -qx "Keystrokes recorded in $work/mine.keys" || fail "the recording's name is not said" student
 
 grep -q "^goal reached: continuity -0.40 at key " "$work/apcs.log" || { cat "$work/apcs.log"; fail "apcs.log has no goal line"; }
 # The recording: the student's keys as tokens after the GOAL line, the closing caption after them.
@@ -59,4 +62,4 @@ sed -n '/^GOAL /,/^;; Negative/p' "$work/mine.keys" | tr '\n' ' ' |
   grep -qF "GOAL VALUE CONTINUITY -0.6 -0.4 SPACE ENTER ENTER ENTER Y 8 ENTER J J 4 4 ;; Negative" ||
   { cat "$work/mine.keys"; fail "the recording does not keep the student's keys between the GOAL line and the caption"; }
 "$apcs" --keys "$work/mine.keys" --workdir "$fresh" < /dev/null > /dev/null || fail "the recording does not recheck"
-echo "ok: task on the caption row, GOAL feedback on the message line, wrong-line hints, GOAL REACHED, recording rechecks"
+echo "ok: task on the caption row, GOAL feedback on the message line, wrong-line hints, GOAL REACHED, recording named at the end and rechecks"
