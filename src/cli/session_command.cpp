@@ -7,6 +7,7 @@
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
+#include "apcs/formats/text_fields.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/rewindable_files.h"
@@ -43,6 +44,16 @@ std::string_view term_of_environment()
     return term == nullptr ? std::string_view() : std::string_view(term);
 }
 
+// The locale the environment asks for the character set: LC_ALL, else LC_CTYPE, else LANG (as
+// setlocale reads them); "" when none is set.
+std::string_view locale_of_environment()
+{
+    for (const char* name : {"LC_ALL", "LC_CTYPE", "LANG"})
+        if (const char* value = std::getenv(name); value != nullptr && *value != '\0')
+            return value;
+    return {};
+}
+
 } // namespace
 
 bool is_utf8_codeset(std::string_view codeset)
@@ -63,15 +74,21 @@ GlyphSet default_glyphs(std::string_view codeset, std::string_view term)
     return is_utf8_codeset(codeset) && shows_braille ? GlyphSet::braille : GlyphSet::ascii;
 }
 
-Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term)
+Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term,
+                                   std::string_view locale_asked)
 {
     if (asked == GlyphSet::automatic)
         return default_glyphs(codeset, term);
-    if (asked != GlyphSet::ascii && !is_utf8_codeset(codeset))
+    if (asked == GlyphSet::ascii || is_utf8_codeset(codeset))
+        return asked;
+    const std::string needs = "--glyphs " + std::string(glyph_set_name(asked)) + " needs a UTF-8 locale";
+    const std::string lower = ascii_lower_case(locale_asked);
+    if (lower.find("utf-8") != std::string::npos || lower.find("utf8") != std::string::npos)
         return Diagnostic{"apcs", 0,
-                          "--glyphs " + std::string(glyph_set_name(asked)) +
-                              " needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii"};
-    return asked;
+                          needs + ": " + std::string(locale_asked) +
+                              " is not installed here (locale -a lists those that are); use LANG=C.UTF-8, or "
+                              "--glyphs ascii"};
+    return Diagnostic{"apcs", 0, needs + " (LANG=C.UTF-8 or similar); use --glyphs ascii"};
 }
 
 SessionSettings session_settings(const CommonOptions& options)
@@ -135,7 +152,7 @@ void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet
 
 Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)
 {
-    return terminal_glyphs(asked, nl_langinfo(CODESET), term_of_environment());
+    return terminal_glyphs(asked, nl_langinfo(CODESET), term_of_environment(), locale_of_environment());
 }
 
 namespace {

@@ -179,6 +179,15 @@ TEST_CASE("a glyph set asked for is shown where the locale can, else refused wit
     REQUIRE_FALSE(blocks);
     CHECK(blocks.error().to_string() ==
           "apcs: --glyphs blocks needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii");
+    // A UTF-8 locale named but not installed: setlocale fell back to "C", and the name is why.
+    const Expected<GlyphSet> missing = terminal_glyphs(GlyphSet::braille, "ANSI_X3.4-1968", "xterm", "de_DE.UTF-8");
+    REQUIRE_FALSE(missing);
+    CHECK(missing.error().to_string() ==
+          "apcs: --glyphs braille needs a UTF-8 locale: de_DE.UTF-8 is not installed here (locale -a lists those "
+          "that are); use LANG=C.UTF-8, or --glyphs ascii");
+    CHECK(terminal_glyphs(GlyphSet::braille, "ANSI_X3.4-1968", "xterm", "C").error().to_string() ==
+          "apcs: --glyphs braille needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs ascii");
+    CHECK(terminal_glyphs(GlyphSet::braille, "UTF-8", "xterm", "de_DE.utf8").value() == GlyphSet::braille);
 }
 
 TEST_CASE("the session takes the command line's answers only where they were given", "[cli]")

@@ -33,8 +33,11 @@ GlyphSet default_glyphs(std::string_view codeset, std::string_view term);
 // The glyphs a terminal session shows: the set asked for with --glyphs, or default_glyphs where
 // none was (GlyphSet::automatic). braille and blocks under a locale that is not UTF-8 are refused
 // (exit 2): "apcs: --glyphs braille needs a UTF-8 locale (LANG=C.UTF-8 or similar); use --glyphs
-// ascii", since curses would show their characters as escapes.
-[[nodiscard]] Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term);
+// ascii", since curses would show their characters as escapes. `locale_asked`, the locale the
+// environment names (LC_ALL, else LC_CTYPE, else LANG), is said when it names a UTF-8 locale the
+// machine does not have: the codeset is then not UTF-8 however right the name is.
+[[nodiscard]] Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term,
+                                                 std::string_view locale_asked = {});
 
 // terminal_glyphs for this process's locale and TERM.
 [[nodiscard]] Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked);
