@@ -73,6 +73,7 @@ void ReplayDriver::take(const KeyEvent& key)
 {
     if (std::exchange(m_reached_said, false))
         m_session->say_goal({});
+    m_controls_told = false;
     if (script_ready() && plays_unasked()) {
         // Read once the keys that play unasked have played, as if typed then.
         m_typed_meanwhile.push_back(key);
@@ -87,6 +88,9 @@ void ReplayDriver::take(const KeyEvent& key)
             stop();
         else if (m_pace.kind == ReplayPace::Kind::on_space && key.key == Key::space)
             play_scripted();
+        else
+            // A key the replay does not take (8 at the 8/2 choice, say): the badge says which it does.
+            m_controls_told = paced();
         after_change();
         return;
     }
@@ -190,7 +194,9 @@ ReplayDriver::Shown ReplayDriver::shown() const
     if (!paced())
         return over;
     over.badge = m_step_label;
-    if (caption)
+    if (m_controls_told)
+        over.place = m_pace.kind == ReplayPace::Kind::on_space ? replay_keys_on_space : replay_keys_timed;
+    else if (caption)
         over.place = "caption " + std::to_string(*caption + 1) + " of " + std::to_string(m_script.captions.size());
     return over;
 }

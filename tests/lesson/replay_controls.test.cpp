@@ -134,6 +134,24 @@ TEST_CASE("a paced lesson begins after its preamble, at its first caption, the b
         " key START | caption 1 of 3   "));
 }
 
+TEST_CASE("a key a paced replay does not take puts in the badge the keys it does, until the next key",
+          "[lesson][replay][deck]")
+{
+    // A student at the first screen pressed 8, as the 8/2 choice on the message line invites, and
+    // nothing happened, nothing said why.
+    const KeyScript script = parsed(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, KeyEvent::typed(U'8'));
+    REQUIRE(deck.replay->handled().size() == 21); // not played: the keys are the script's
+    const SessionScreen told = deck.replay->screen();
+    REQUIRE(told.badge_place == replay_keys_on_space);
+    REQUIRE(with_played_key(CellGrid(80, 24), told.badge, told.badge_place).row_text(0).ends_with(
+        " key START | Space next step  PgDn next caption  Esc your keyboard   "));
+    press(*deck.replay, space);
+    REQUIRE(deck.replay->handled().size() == 22);
+    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+}
+
 TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next caption, past the last it tells the end",
           "[lesson][replay][deck]")
 {

@@ -24,6 +24,9 @@ inline constexpr std::string_view leave_exercise_question = "Leave the exercise 
 
 // On the caption row once a paced replay has played its script and the presenter asks for more.
 inline constexpr std::string_view end_of_script_caption = "End of the script: the keyboard is yours (PgUp, Home: back)";
+// In the badge after a key a paced replay does not take: the keys it does.
+inline constexpr std::string_view replay_keys_on_space = "Space next step  PgDn next caption  Esc your keyboard";
+inline constexpr std::string_view replay_keys_timed = "PgDn next caption  PgUp back  Esc your keyboard";
 
 // What became of a goal of the script (SPEC §3.1): apcs.log has a line for each, apcs grade a row.
 struct GoalOutcome {
@@ -172,6 +175,7 @@ private:
     std::size_t m_run_to = 0; // keys before it play unasked: the preamble, PgDn's run
     std::string m_step_label;
     bool m_end_told = false;
+    bool m_controls_told = false; // a key the paced replay does not take: the badge names those it does
     std::size_t m_captions_told = 0;
     std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;
