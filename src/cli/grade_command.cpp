@@ -55,9 +55,11 @@ public:
             return Diagnostic{"apcs", 0, "grade: no temporary folder: " + error.message()};
         m_parent = ::open(temporary.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
         std::string name = "apcs-grade-XXXXXX";
-        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0)
+        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0) {
+            const int reason = errno; // before the message's allocations
             return Diagnostic{"apcs", 0, "grade: cannot make a folder in " + temporary.string() + ": " +
-                                             std::strerror(errno)};
+                                             std::strerror(reason)};
+        }
         m_path = temporary / name;
         return ok;
     }

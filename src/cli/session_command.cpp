@@ -359,8 +359,9 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
         return status;
     }
     // As the last screen said it, a name a line (for scripts), once the terminal is given back.
-    out << "APCS is done. Files written:\n";
-    for (const std::string& name : replay.session().written_files())
+    const std::vector<std::string>& written = replay.session().written_files();
+    out << (written.empty() ? "APCS is done. No file written.\n" : "APCS is done. Files written:\n");
+    for (const std::string& name : written)
         out << name << '\n';
     return status;
 }

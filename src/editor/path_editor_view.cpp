@@ -196,8 +196,8 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, const GoalSaid& 
     PathScreenContent content = screen_content();
     content.goal_point = goal_point;
     // A first picture says it is one (its in-betweens are not drawn); a problem matters more, and
-    // a goal's feedback more than both, once the field, the question after the staff and the last
-    // key's notice have been read.
+    // a goal's feedback more than both, once the field and the last key's notice have been read;
+    // the question after the staff keeps the line's start, the goal beside it.
     const bool goal_said = !goal.feedback.empty() && m_problem.empty() && m_notice.empty() && !field_open();
     if (goal_said && !std::holds_alternative<AskAgain>(m_mode))
         content.message = goal.feedback;

@@ -146,6 +146,14 @@ Expected<void> take_input_line(std::string_view line, const StartLine& start, Ke
     return ok;
 }
 
+// "OPTIONS" alone or followed by a blank or a comment.
+bool is_options_line(std::string_view line)
+{
+    constexpr std::string_view word = "OPTIONS";
+    return line.starts_with(word) &&
+           (line.size() == word.size() || std::string_view(" \t;").find(line[word.size()]) != std::string_view::npos);
+}
+
 // An OPTIONS line: before the first key, START, the first caption and GOAL, since the options are
 // the session's before it begins; one at most, naming at least one option. Which options it may
 // name is the command line's to say (script_options.h): here they are words.
@@ -204,7 +212,7 @@ Expected<bool> take_directive_line(std::string_view line, ScriptState& state, st
     Expected<void> taken = ok;
     if (line.starts_with("INPUT "))
         taken = take_input_line(line, state.start, kept, file_name, line_number);
-    else if (line.starts_with("OPTIONS ") || line.starts_with("OPTIONS;") || line == "OPTIONS")
+    else if (is_options_line(line))
         taken = take_options_line(line, state.start, events, kept, file_name, line_number, state.options_line);
     else if (line.starts_with("GOAL "))
         taken = take_goal_line(line, state, events, kept, file_name, line_number);

@@ -73,6 +73,7 @@ namespace {
 
 // The folder a stop removes, if one is known.
 struct FolderSlot {
+    std::atomic<bool> claimed{false};
     std::atomic<bool> in_use{false};
     int parent = -1;
     char name[NAME_MAX + 1] = {};
@@ -89,7 +90,8 @@ FolderSlot& folder_slot()
 UnfinishedFolder::UnfinishedFolder(int parent, const std::string& name) noexcept
 {
     FolderSlot& slot = folder_slot();
-    if (name.size() > NAME_MAX || slot.in_use.load())
+    bool free = false;
+    if (name.size() > NAME_MAX || !slot.claimed.compare_exchange_strong(free, true))
         return;
     slot.parent = parent;
     std::memcpy(slot.name, name.c_str(), name.size() + 1);
@@ -99,8 +101,10 @@ UnfinishedFolder::UnfinishedFolder(int parent, const std::string& name) noexcept
 
 UnfinishedFolder::~UnfinishedFolder()
 {
-    if (m_known)
-        folder_slot().in_use.store(false, std::memory_order_release);
+    if (!m_known)
+        return;
+    folder_slot().in_use.store(false, std::memory_order_release);
+    folder_slot().claimed.store(false, std::memory_order_release);
 }
 
 namespace {
@@ -166,14 +170,17 @@ int create_known(int folder, std::string& pattern, MakeEntry make, Remember reme
 
 // Everything in the folder `name` of the folder open as `parent`, then the folder, removed with
 // system calls only (async-signal-safe: no allocation, no stdio); `depth` folders deep at most.
-// Entries are removed while the folder is read, so it is read again until a pass removes nothing.
+// Entries are removed while the folder is read, so it is read again until a pass removes nothing
+// (an entry that cannot be removed stays: a stop must end), a few passes at most.
 void remove_tree_at(int parent, const char* name, int depth) noexcept
 {
     const int folder = ::openat(parent, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
     if (folder < 0)
         return;
     alignas(struct dirent64) char entries[2048];
-    for (bool removed = true; removed;) {
+    constexpr int most_passes = 8;
+    bool removed = true;
+    for (int pass = 0; removed && pass < most_passes; ++pass) {
         removed = false;
         ::lseek(folder, 0, SEEK_SET);
         for (ssize_t size; (size = ::getdents64(folder, entries, sizeof entries)) > 0;) {
@@ -183,11 +190,12 @@ void remove_tree_at(int parent, const char* name, int depth) noexcept
                 const std::string_view entry_name = entry->d_name;
                 if (entry_name == "." || entry_name == "..")
                     continue;
-                if (::unlinkat(folder, entry->d_name, 0) != 0 && errno == EISDIR && depth > 0) {
+                if (::unlinkat(folder, entry->d_name, 0) == 0) {
+                    removed = true;
+                } else if (errno == EISDIR && depth > 0) {
                     remove_tree_at(folder, entry->d_name, depth - 1);
-                    ::unlinkat(folder, entry->d_name, AT_REMOVEDIR);
+                    removed = ::unlinkat(folder, entry->d_name, AT_REMOVEDIR) == 0 || removed;
                 }
-                removed = true;
             }
         }
     }

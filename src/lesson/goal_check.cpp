@@ -56,7 +56,7 @@ CurveNearest curve_nearest(const Vec3& point, const SampledCurve& curve)
 std::string upper_name(StaffLine line) { return std::string(staff_line_name(line)); }
 
 // Where the student stands when no key there reaches a VALUE goal: another staff line. (At the
-// question after the staff the question has the message line: SPEC §7.3.)
+// question after the staff the question comes first on the message line, the goal beside it.)
 std::string value_hint(const ScriptGoal& goal, const PathEditor& editor)
 {
     const std::optional<StaffLine> line = editor.staff_line();

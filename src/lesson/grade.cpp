@@ -85,10 +85,11 @@ bool plain_number(std::string_view text)
     return at == text.size();
 }
 
-// What Excel, LibreOffice and Google Sheets read as the start of a formula (OWASP's list).
+// What Excel, LibreOffice and Google Sheets read as the start of a formula (OWASP's list), and an
+// apostrophe, so that a program dropping the first apostrophe gets every field back as it was.
 bool formula_like(std::string_view text)
 {
-    return !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos &&
+    return !text.empty() && std::string_view("=+-@\t\r'").find(text.front()) != std::string_view::npos &&
            !plain_number(text);
 }
 

@@ -194,8 +194,17 @@ ReplayDriver::Shown ReplayDriver::shown() const
     if (!paced())
         return over;
     over.badge = m_step_label;
-    if (m_controls_told)
+    if (m_controls_told) {
         over.place = m_pace.kind == ReplayPace::Kind::on_space ? replay_keys_on_space : replay_keys_timed;
+        // The badge with the keys fits the 80-column top edge: a long step label gives way.
+        constexpr std::size_t label_room = 12;
+        if (over.badge.size() > label_room) {
+            std::size_t cut = label_room - 3;
+            while (cut > 0 && (static_cast<unsigned char>(over.badge[cut]) & 0xC0) == 0x80)
+                --cut; // not inside a character
+            over.badge = over.badge.substr(0, cut) + "...";
+        }
+    }
     else if (caption)
         over.place = "caption " + std::to_string(*caption + 1) + " of " + std::to_string(m_script.captions.size());
     return over;
@@ -347,6 +356,7 @@ void ReplayDriver::judged(std::size_t goal, GoalOutcome::Verdict verdict, const 
 
 void ReplayDriver::play_scripted()
 {
+    m_controls_told = false; // the badge names the step again
     if (!mid_step()) {
         m_step_end = m_played + step_length(m_script, m_played);
         m_step_label = step_label(m_script, m_played);

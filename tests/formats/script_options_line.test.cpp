@@ -16,6 +16,9 @@ TEST_CASE("an OPTIONS line before the first key keeps its words one space apart 
     REQUIRE(script);
     REQUIRE(script->options == ScriptOptions{"--step 0.1 --inbetweens 20", 2});
     REQUIRE(script->events.size() == 2);
+    const Expected<KeyScript> tabbed = parse_captioned_key_script("OPTIONS\t--step\t0.1\nENTER\n", "mine.keys");
+    REQUIRE(tabbed);
+    REQUIRE(tabbed->options == ScriptOptions{"--step 0.1", 1});
     const Expected<KeyScript> none = parse_captioned_key_script("ENTER\n", "mine.keys");
     REQUIRE(none);
     REQUIRE(none->options.words.empty());

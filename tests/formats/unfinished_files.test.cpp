@@ -146,3 +146,33 @@ TEST_CASE("a stop removes the unfinished folder with the files and folders it ho
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0);
 }
+
+TEST_CASE("a stop ends even when the unfinished folder holds what it cannot remove", "[formats][files][signals]")
+{
+    // A folder nested deeper than the stop goes made it spin at 100 % CPU until SIGKILL.
+    const TempFolder folder;
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        ::alarm(20); // a stop that spins is killed, and the test fails
+        const int parent = ::open(folder.path().c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
+        std::string name = "apcs-grade-XXXXXX";
+        std::optional<UnfinishedFolder> known;
+        if (parent < 0 || create_unfinished_folder(parent, name, known) != 0)
+            ::_exit(2);
+        std::filesystem::path deep = folder / name;
+        for (int level = 0; level < 12; ++level)
+            deep /= "d";
+        std::filesystem::create_directories(deep);
+        std::ofstream(deep / "apcs.log") << "session started\n";
+        std::ofstream(folder / name / "key1.dat") << "0 0 0\n";
+        remove_unfinished_files();
+        // What lies within the depth went; the deepest, left, keeps its folders.
+        const bool top_gone = !std::filesystem::exists(folder / name / "key1.dat");
+        ::_exit(top_gone && std::filesystem::exists(deep / "apcs.log") ? 0 : 1);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}

@@ -76,7 +76,7 @@ TEST_CASE("at a goal the task stays on the caption row and the message line name
     // where both fit in 79 columns, so the student sees whether to answer Y; the task keeps the
     // caption row.
     REQUIRE(exercise.press(enter) ==
-            std::string(session_text::ask_again) + "   GOAL: continuity +0.00, want -0.60 to -0.40");
+            "Adjust the path again ? (Y/N)   GOAL: continuity +0.00, want -0.60 to -0.40");
     REQUIRE(exercise.replay->screen().caption == task);
     REQUIRE(exercise.press(U'Y') == "GOAL: 8 puts the whole path on the staff, 2 a region");
     REQUIRE(exercise.press(U'8') == "GOAL: you are on TENSION; the goal is CONTINUITY: Enter or Esc goes down a line");
@@ -111,7 +111,7 @@ TEST_CASE("a NEAR goal names the region on the staff when no key there can move 
     for (int line = 0; line < 2; ++line)
         exercise.press(enter);
     // Beside the question the whole feedback does not fit in 79 columns: it is said briefly.
-    REQUIRE(exercise.press(enter) == std::string(session_text::ask_again) + "   GOAL: 0.39 off, want within 0.10");
+    REQUIRE(exercise.press(enter) == "Adjust the path again ? (Y/N)   GOAL: 0.39 off, want within 0.10");
     exercise.press(U'Y');
     exercise.press(U'2');
     exercise.press(U'6');

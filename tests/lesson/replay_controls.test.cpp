@@ -150,6 +150,16 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
     press(*deck.replay, space);
     REQUIRE(deck.replay->handled().size() == 22);
     REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+    // A long step's label gives way to the keys: the badge still fits the 80-column top edge.
+    const KeyScript long_step = parsed("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+                                       ";; one\nTEXT my-first-path.dat\n;; two\n8\n");
+    Deck typed(long_step, "n-to-l"); // the replay keeps a reference to its script
+    press(*typed.replay, space);
+    press(*typed.replay, KeyEvent::typed(U'x'));
+    const SessionScreen long_label = typed.replay->screen();
+    REQUIRE(long_label.badge == "TEXT my-f...");
+    REQUIRE(with_played_key(CellGrid(80, 24), long_label.badge, long_label.badge_place).row_text(0).ends_with(
+        " key TEXT my-f... | Space next step  PgDn next caption  Esc your keyboard   "));
 }
 
 TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next caption, past the last it tells the end",

@@ -9,8 +9,8 @@ namespace apcs {
 
 // What --record writes (SPEC §3.1): the keys the session handled, each marked typed text or not,
 // and the lines of the script that made it an exercise or a lesson, in the order they were met:
-// its INPUT lines first, then the OPTIONS the session ran with, START after the opening answers, each caption and GOAL where the replay
-// reached it. The replay controls (PgDn, PgUp, Home) never reach the session: they are not keys
+// its INPUT lines first, then the OPTIONS the session ran with, START after the opening answers,
+// each caption and GOAL where the replay reached it. The replay controls (PgDn, PgUp, Home) never reach the session: they are not keys
 // of it. Read back by parse_captioned_key_script, it replays the same keys to the same goals, so
 // `apcs --keys` and `apcs grade` recheck it.
 class KeyRecording {

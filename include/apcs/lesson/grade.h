@@ -43,8 +43,8 @@ inline constexpr std::string_view grade_csv_header = "file,exercise,goal,reached
 
 // A CSV field as RFC 4180 writes it: in double quotes, each quote doubled, when it holds a comma,
 // a double quote, CR or LF; as it is otherwise. A field a spreadsheet would take for a formula
-// (it begins with = + - @, a tab or CR and is not a number such as "+0.45") begins with an
-// apostrophe, so it is shown as the text it is: an answer's keys "= TEXT 0.45 ENTER" are not
+// (it begins with = + - @, a tab or CR and is not a number such as "+0.45"), and one that begins
+// with an apostrophe already, begins with an apostrophe, so it is shown as the text it is: an answer's keys "= TEXT 0.45 ENTER" are not
 // run, nor is a student's file named "=HYPERLINK(...).keys".
 std::string csv_field(std::string_view text);
 
