@@ -510,12 +510,7 @@ void complete_options(const CLI::App& app, ParsedLine& line)
     const bool view_given = given_count(app, "--view") > 0;
     line.options.given = {view_given || given_count(app, "--theta") > 0, view_given || given_count(app, "--phi") > 0,
                           given_count(app, "--delay") > 0, line.slopes.size() == 2, given_count(app, "--spacing") > 0,
-                          {}};
-    for (const std::string_view name : carried_option_names) {
-        const bool theta_or_phi = name == "--theta" || name == "--phi";
-        if (given_count(app, std::string(name)) > 0 || (theta_or_phi && view_given))
-            line.options.given.carried.emplace_back(name);
-    }
+                          given_carried_options([&app](const std::string& name) { return given_count(app, name) > 0; })};
     line.options.read_files = line.inputs();
 }
 

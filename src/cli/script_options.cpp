@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -137,13 +138,25 @@ std::string refusal_text(const CLI::ParseError& error, const CLI::App& app)
 
 } // namespace
 
-Expected<void> take_script_options(const ScriptOptions& line, const std::string& file_name, CommonOptions& options)
+std::vector<std::string> given_carried_options(const std::function<bool(const std::string& name)>& given_by_name)
 {
+    const bool view_given = given_by_name("--view");
+    std::vector<std::string> names;
+    for (const std::string_view name : carried_option_names) {
+        const bool theta_or_phi = name == "--theta" || name == "--phi";
+        if (given_by_name(std::string(name)) || (theta_or_phi && view_given))
+            names.emplace_back(name);
+    }
+    return names;
+}
+
+Expected<CommonOptions> options_of_script(const ScriptOptions& line, const std::string& file_name)
+{
+    CommonOptions from_script;
     if (line.words.empty())
-        return ok;
+        return from_script;
     if (const std::optional<std::string> problem = misnamed_option(line.words))
         return Diagnostic{file_name, line.line_number, "OPTIONS " + *problem};
-    CommonOptions from_script;
     std::vector<double> slopes;
     CLI::App app{"", "OPTIONS"};
     app.set_help_flag();
@@ -155,15 +168,27 @@ Expected<void> take_script_options(const ScriptOptions& line, const std::string&
     }
     if (slopes.size() == 2)
         from_script.path.slopes = {slopes[0], slopes[1]};
-    const bool view_given = app.get_option("--view")->count() > 0;
+    from_script.given.carried =
+        given_carried_options([&app](const std::string& name) { return app.get_option(name)->count() > 0; });
+    return from_script;
+}
+
+void merge_script_options(const CommonOptions& script, CommonOptions& options)
+{
     for (const CarriedOption& option : carried_options) {
-        const bool theta_or_phi = option.name == "--theta" || option.name == "--phi";
-        const bool in_script = app.get_option(std::string(option.name))->count() > 0 || (theta_or_phi && view_given);
-        if (!in_script || given(options.given.carried, option.name))
+        if (!given(script.given.carried, option.name) || given(options.given.carried, option.name))
             continue;
-        option.take(options, from_script);
+        option.take(options, script);
         options.given.carried.emplace_back(option.name);
     }
+}
+
+Expected<void> take_script_options(const ScriptOptions& line, const std::string& file_name, CommonOptions& options)
+{
+    const Expected<CommonOptions> script = options_of_script(line, file_name);
+    if (!script)
+        return script.error();
+    merge_script_options(*script, options);
     return ok;
 }
 

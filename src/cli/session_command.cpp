@@ -181,16 +181,14 @@ std::optional<ExitStatus> refuse_changed_inputs(const CommonOptions& options, co
     return std::nullopt;
 }
 
-// An exercise (a script with GOAL lines) sets its task: the command line may not start the staff
-// elsewhere or change what its goals measure, or apcs grade would grade the recording "other".
-std::optional<ExitStatus> refuse_changed_task(const KeyScript& script, const CommonOptions& options,
-                                              std::ostream& err)
+// An exercise (a script with GOAL lines) sets its task (`task`: the defaults and its OPTIONS): the
+// command line may not start the staff elsewhere or change what its goals measure, or apcs grade
+// would grade the recording "other".
+std::optional<ExitStatus> refuse_changed_task(const KeyScript& script, const CommonOptions& task,
+                                              const CommonOptions& options, std::ostream& err)
 {
     if (script.goals.empty())
         return std::nullopt;
-    CommonOptions task;
-    if (!take_script_options(script.options, options.keys->string(), task))
-        return std::nullopt; // refused already, with the options taken into `options`
     const std::optional<std::string> changed = changed_task_option(task, options);
     if (!changed)
         return std::nullopt;
@@ -219,9 +217,11 @@ std::optional<ExitStatus> read_key_script(CommonOptions& options, const std::fil
     Expected<KeyScript> parsed = parse_captioned_key_script(*text, options.keys->string());
     if (!parsed)
         return report_bad_input(parsed.error(), err);
-    if (const Expected<void> taken = take_script_options(parsed->options, options.keys->string(), options); !taken)
-        return report_bad_input(taken.error(), err);
-    if (const std::optional<ExitStatus> refused = refuse_changed_task(*parsed, options, err))
+    const Expected<CommonOptions> task = options_of_script(parsed->options, options.keys->string());
+    if (!task)
+        return report_bad_input(task.error(), err);
+    merge_script_options(*task, options);
+    if (const std::optional<ExitStatus> refused = refuse_changed_task(*parsed, *task, options, err))
         return refused;
     const auto inbetweens = static_cast<std::size_t>(std::max(options.path.inbetween_count, 0));
     if (Expected<void> reachable = goals_within_inbetweens(parsed->goals, inbetweens, options.keys->string()); !reachable)

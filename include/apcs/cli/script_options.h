@@ -5,9 +5,11 @@
 #include "apcs/formats/key_event.h"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace apcs {
 
@@ -25,6 +27,17 @@ inline constexpr std::array<std::string_view, 13> carried_option_names{
 // path is seen, not the task.
 inline constexpr std::array<std::string_view, 9> task_option_names{
     "--tension", "--continuity", "--bias", "--accel", "--slopes", "--samples", "--spacing", "--surface", "--inbetweens"};
+
+// Of carried_option_names, those `given_by_name` says were given; --view gives --theta and --phi.
+std::vector<std::string> given_carried_options(const std::function<bool(const std::string& name)>& given_by_name);
+
+// apcs's defaults with the script's OPTIONS line taken, its options named in given.carried: what
+// the script alone sets (an exercise's task). The problems as take_script_options says them.
+[[nodiscard]] Expected<CommonOptions> options_of_script(const ScriptOptions& line, const std::string& file_name);
+
+// Each option the script gave (`script`, options_of_script's) that `options` was not given, taken
+// into `options` as if given there.
+void merge_script_options(const CommonOptions& script, CommonOptions& options);
 
 // Each option of the script's OPTIONS line that the command line did not give, taken into
 // `options` as if given there (the command line's own value wins over the script's). An option
