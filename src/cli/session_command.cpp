@@ -8,6 +8,7 @@
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/text_fields.h"
+#include "apcs/input/play_to_idle.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/rewindable_files.h"
@@ -127,24 +128,19 @@ void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet
     std::string shown = screen_text(session.screen(), glyphs);
     SessionPhase shown_phase = session.phase();
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
-    while (replay.playing() && !session.finished()) {
-        replay.play_next();
-        // Nobody can press Esc: the split runs to its end.
-        while (session.busy())
-            replay.work();
+    // Nobody can press Esc: each split runs to its end, and the animation's last frame ends its
+    // step. A step's screen is printed when the next one changes the phase (the transcript's
+    // steps).
+    IdleDrive drive;
+    drive.after_step = [&] {
+        if (session.busy())
+            return;
         if (session.phase() != shown_phase)
             print_shown();
-        // The animation's last frame ends its step.
-        while (session.animating()) {
-            shown_phase = session.phase();
-            shown = screen_text(session.screen(), glyphs);
-            replay.tick();
-            if (session.phase() != shown_phase)
-                print_shown();
-        }
         shown = screen_text(session.screen(), glyphs);
         shown_phase = session.phase();
-    }
+    };
+    play_to_idle(replay, drive);
     replay.finish();
     // The last step: the end, or where a script that ends mid-step stopped and why.
     print_shown();
@@ -295,19 +291,6 @@ struct Transcript {
     GlyphSet glyphs = GlyphSet::ascii;
 };
 
-// The keys played as run_headless_session plays them, the screens left undrawn.
-void play_unseen(ReplayDriver& replay, const Session& session)
-{
-    while (replay.playing() && !session.finished()) {
-        replay.play_next();
-        while (session.busy())
-            replay.work();
-        while (session.animating())
-            replay.tick();
-    }
-    replay.finish();
-}
-
 // The script replayed at once, its transcript as `transcript` says. Nobody watched the screen: a
 // file that could not be written is the run's failure.
 ExitStatus replay_headless(Session& session, const KeyScript& script, const std::string& file_name,
@@ -323,8 +306,10 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     ReplayDriver replay(session, script, file_name, ReplayPace{}, std::move(hooks), ReplayAudience::headless);
     if (transcript.out != nullptr)
         run_headless_session(replay, session, transcript.glyphs, *transcript.out);
-    else
-        play_unseen(replay, session);
+    else {
+        play_to_idle(replay);
+        replay.finish();
+    }
     kept.recording = replay.recording();
     kept.goals = replay.goal_outcomes();
     if (!session.finished())

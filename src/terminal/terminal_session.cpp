@@ -1,5 +1,6 @@
 #include "apcs/terminal/terminal_session.h"
 
+#include "apcs/input/play_to_idle.h"
 #include "apcs/raster/replay_caption.h"
 #include "apcs/raster/short_screen.h"
 #include "apcs/terminal/terminal.h"
@@ -55,9 +56,10 @@ void work_a_while(InteractiveProgram& program)
 {
     constexpr auto slice = std::chrono::milliseconds(30);
     const auto start = std::chrono::steady_clock::now();
-    do
-        program.work();
-    while (program.busy() && std::chrono::steady_clock::now() - start < slice);
+    IdleDrive drive;
+    drive.animations = Animations::stop_at; // the loop's clock ticks them
+    drive.go_on = [&] { return std::chrono::steady_clock::now() - start < slice; };
+    play_to_idle(program, drive);
 }
 
 // A key read: to the program, unless the terminal is too small to show it. True when the whole

@@ -27,6 +27,7 @@ import time
 MOST_PRESSES = 120
 MOST_SECONDS = 45 * 60
 SECONDS_A_CAPTION = 30
+SKIPPED = "(skipped) "
 END_OF_SCRIPT = "End of the script: the keyboard is yours"
 TMUX_KEYS = {"PgDn": "NPage", "PgUp": "PPage", "Home": "Home", "Space": "Space"}
 
@@ -131,6 +132,14 @@ def changed_screen(session, before, most_seconds=10):
         time.sleep(0.05)
 
 
+def shown_as(caption, row):
+    """Whether the caption row `row` shows `caption`: as it is, or as a goal skipped by PgDn marks
+    the caption that closes it ("(skipped) ...", cut at the screen's edge)."""
+    if row == caption:
+        return True
+    return row.startswith(SKIPPED) and len(row) > len(SKIPPED) and caption.startswith(row[len(SKIPPED):])
+
+
 def caption_row(screen):
     return screen.rstrip("\n").split("\n")[-1].strip()
 
@@ -230,7 +239,7 @@ def main():
             os.makedirs(screens_folder, exist_ok=True)
             with open(os.path.join(screens_folder, script + ".txt"), "w", encoding="utf-8") as out:
                 out.write("\n".join(shown))
-        unseen = [caption for caption in captions if caption not in seen]
+        unseen = [caption for caption in captions if not any(shown_as(caption, row) for row in seen)]
         print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "
               f"last caption row: {last_row}")
         if unseen:

@@ -1,6 +1,7 @@
 // When a caption ends (ReplayHooks::caption_ended, the moment --handout writes its page): once its
 // keys have played, so that the page shows what the caption says (issue 42 item 6).
 #include "apcs/lesson/handout.h"
+#include "apcs/input/play_to_idle.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session_files.h"
 
@@ -62,11 +63,7 @@ CaptionLog headless_captions(const KeyScript& script)
     Session session({}, files);
     CaptionLog log;
     ReplayDriver replay(session, script, "test.keys", ReplayPace{}, logging_hooks(log, session), ReplayAudience::headless);
-    while (replay.playing() && !session.finished()) {
-        replay.play_next();
-        while (session.busy())
-            session.work();
-    }
+    play_to_idle(replay);
     replay.finish();
     return log;
 }

@@ -20,7 +20,6 @@ using test::data_folder;
 using test::example_files;
 using test::message_line;
 using test::read_script;
-using test::run_until_idle;
 
 namespace {
 
@@ -47,7 +46,7 @@ struct Exercise {
     std::string press(KeyEvent key)
     {
         replay->handle(key);
-        run_until_idle(*replay);
+        play_to_idle(*replay);
         const std::string message = message_line(*replay);
         // The message line holds 79 columns: the feedback is never cut.
         INFO(message);
@@ -172,8 +171,7 @@ TEST_CASE("apcs.log gets a line for a goal the student leaves and the recording 
     MemoryFiles files = example_files("exercises");
     Session session({}, files);
     ReplayDriver recheck(session, again, "mine.keys", {}, {}, ReplayAudience::headless);
-    while (recheck.playing() && !session.finished())
-        recheck.play_next();
+    play_to_idle(recheck);
     recheck.finish();
     REQUIRE(recheck.goals());
     REQUIRE(recheck.goal_outcomes().size() == 1);
@@ -199,7 +197,7 @@ TEST_CASE("the help over a paced replay keeps its title and last line: no captio
     // line ("4, Left, 6, Right  the value one step left, righ key ENTER | caption 2 of 3").
     Exercise exercise("exercise-2-continuity.keys");
     exercise.replay->handle(KeyEvent::typed(U'?'));
-    run_until_idle(*exercise.replay);
+    play_to_idle(*exercise.replay);
     const SessionScreen help = exercise.replay->screen();
     REQUIRE_FALSE(help.graphics);
     CHECK(help.caption.empty());
@@ -210,7 +208,7 @@ TEST_CASE("the help over a paced replay keeps its title and last line: no captio
     CHECK(shown.text.row_text(shown.text.rows() - 1).starts_with("Any key closes this help."));
     // Closed, the task is on the caption row again and the goal on the message line.
     exercise.replay->handle(KeyEvent::typed(U'x'));
-    run_until_idle(*exercise.replay);
+    play_to_idle(*exercise.replay);
     CHECK(exercise.replay->screen().caption ==
           "Exercise 2: a corner at the middle point: CONTINUITY from -0.60 to -0.40");
     CHECK(message_line(*exercise.replay).starts_with("GOAL: "));

@@ -4,6 +4,7 @@
 #include "apcs/raster/replay_caption.h"
 #include "apcs/session/rewindable_files.h"
 
+#include "support/replay_deck.h"
 #include "support/replay_support.h"
 #include "support/temp_folder.h"
 
@@ -15,25 +16,18 @@
 #include <vector>
 
 using namespace apcs;
+using test::Deck;
 using test::data_folder;
 using test::example_files;
 using test::at_goal_feedback;
 using test::message_line;
-using test::run_until_idle;
 
 namespace {
-
-KeyScript parsed(const std::string& text)
-{
-    Expected<KeyScript> script = parse_captioned_key_script(text, "deck.keys");
-    REQUIRE(script);
-    return std::move(*script);
-}
 
 void press(ReplayDriver& replay, KeyEvent key)
 {
     replay.handle(key);
-    run_until_idle(replay);
+    play_to_idle(replay);
 }
 
 CellGrid cells_of(const SessionScreen& screen)
@@ -45,32 +39,6 @@ const KeyEvent space = KeyEvent::of(Key::space);
 const KeyEvent page_down = KeyEvent::of(Key::page_down);
 const KeyEvent page_up = KeyEvent::of(Key::page_up);
 const KeyEvent home = KeyEvent::of(Key::home);
-
-// A paced replay of `script` on the N to L example's files in memory (the "folder"), able to go
-// back as the program's is: through RewindableFiles.
-struct Deck {
-    MemoryFiles folder;
-    RewindableFiles files{folder};
-    Session session{{}, files};
-    std::vector<std::size_t> told;
-    std::unique_ptr<ReplayDriver> replay;
-
-    Deck(const KeyScript& script, const std::string& example)
-        : folder(example_files(example))
-    {
-        ReplayHooks hooks;
-        hooks.caption_reached = [this](std::size_t index, const SessionScreen&) { told.push_back(index); };
-        hooks.log = [this](const std::string& line) { files.log(line); };
-        hooks.session_as_started = [this] {
-            files.rewind();
-            return std::make_unique<Session>(SessionSettings{}, files);
-        };
-        hooks.caught_up = [this] { files.caught_up(); };
-        replay = std::make_unique<ReplayDriver>(session, script, "deck.keys", ReplayPace{ReplayPace::Kind::on_space, 0},
-                                                hooks, ReplayAudience::terminal);
-        run_until_idle(*replay);
-    }
-};
 
 const std::string n_to_l_deck = "ENTER ENTER\n"
                                 "TEXT 0 90 100\n"
@@ -91,14 +59,14 @@ TEST_CASE("START ends the preamble: its keys are one step, named START, and it s
           "first caption and goal",
           "[lesson][replay][keys]")
 {
-    const KeyScript script = parsed("ENTER ENTER\nTEXT 0 90\nSTART ; the lesson begins\n;; one\n8\n");
+    const KeyScript script = test::parsed_deck("ENTER ENTER\nTEXT 0 90\nSTART ; the lesson begins\n;; one\n8\n");
     REQUIRE(script.preamble_end == 6);
     REQUIRE(step_length(script, 0) == 6);
     REQUIRE(step_length(script, 2) == 4);
     REQUIRE(step_label(script, 0) == "START");
     REQUIRE(step_length(script, 6) == 1);
     REQUIRE(step_label(script, 6) == "8");
-    REQUIRE(parsed("ENTER\n;; one\n8\n").preamble_end == 0);
+    REQUIRE(test::parsed_deck("ENTER\n;; one\n8\n").preamble_end == 0);
     // The keys-only reader takes it too (a recording that keeps it replays).
     REQUIRE(parse_key_script("ENTER\nSTART\n8\n", "k.keys")->size() == 2);
     const auto refused = [](const std::string& text) {
@@ -113,14 +81,14 @@ TEST_CASE("START ends the preamble: its keys are one step, named START, and it s
     REQUIRE(refused("ENTER\nGOAL VALUE TENSION 0.40 0.60\nSTART\n").starts_with("deck.keys:3: START after a caption"));
     REQUIRE(refused("ENTER START\n").starts_with("deck.keys:1: START shares its line with keys; expected"));
     // In a TEXT line START is typed text.
-    REQUIRE(parsed("TEXT START\n").events.size() == 5);
+    REQUIRE(test::parsed_deck("TEXT START\n").events.size() == 5);
 }
 
 TEST_CASE("a paced lesson begins after its preamble, at its first caption, the badge saying START and caption 1 "
           "of N",
           "[lesson][replay][deck]")
 {
-    const KeyScript script = parsed(n_to_l_deck);
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
     REQUIRE(script.preamble_end == 21);
     Deck deck(script, "n-to-l");
     REQUIRE(deck.replay->handled().size() == 21);
@@ -139,7 +107,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
 {
     // A student at the first screen pressed 8, as the 8/2 choice on the message line invites, and
     // nothing happened, nothing said why.
-    const KeyScript script = parsed(n_to_l_deck);
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
     press(*deck.replay, KeyEvent::typed(U'8'));
     REQUIRE(deck.replay->handled().size() == 21); // not played: the keys are the script's
@@ -151,7 +119,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
     REQUIRE(deck.replay->handled().size() == 22);
     REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
     // A long step's label gives way to the keys: the badge still fits the 80-column top edge.
-    const KeyScript long_step = parsed("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+    const KeyScript long_step = test::parsed_deck("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
                                        ";; one\nTEXT my-first-path.dat\n;; two\n8\n");
     Deck typed(long_step, "n-to-l"); // the replay keeps a reference to its script
     press(*typed.replay, space);
@@ -165,7 +133,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
 TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next caption, past the last it tells the end",
           "[lesson][replay][deck]")
 {
-    const KeyScript script = parsed(n_to_l_deck);
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->handled().size() == script.captions[1].before_event);
@@ -189,7 +157,7 @@ TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next capti
 
 TEST_CASE("Space after the script's last step tells the end on the caption row", "[lesson][replay][deck]")
 {
-    const KeyScript script = parsed(n_to_l_deck);
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
     for (int step = 0; step < 5; ++step)
         press(*deck.replay, space);
@@ -219,7 +187,10 @@ TEST_CASE("PgUp and Home go back to a caption's screen, replayed in memory from 
     const std::size_t writes = deck.folder.writes.size();
     const std::size_t log_lines = deck.folder.log_lines.size();
     REQUIRE(writes > 0);
-    for (std::size_t caption = lesson->captions.size() - 1; caption-- > 0;) {
+    // The last caption has no keys: the last PgDn told the end, and PgUp from there goes to the
+    // last caption's screen (SPEC 3.2), then back one a press.
+    REQUIRE(deck.replay->screen().caption == end_of_script_caption);
+    for (std::size_t caption = lesson->captions.size(); caption-- > 0;) {
         press(*deck.replay, page_up);
         INFO("back to caption " << caption + 1 << ": " << lesson->captions[caption].text);
         REQUIRE(deck.replay->screen().caption == lesson->captions[caption].text);
@@ -248,21 +219,78 @@ TEST_CASE("PgUp and Home go back to a caption's screen, replayed in memory from 
     REQUIRE(deck.told.size() == lesson->captions.size());
 }
 
-TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the script's last",
+TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the script's last, and PgUp, PgDn and Home "
+          "give it back to the lesson (SPEC 3.2)",
           "[lesson][replay][deck]")
 {
-    const KeyScript script = parsed(n_to_l_deck);
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
+    const CellGrid at_one = cells_of(deck.replay->screen());
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->screen().caption == "two");
+    const CellGrid at_two = cells_of(deck.replay->screen());
     press(*deck.replay, KeyEvent::of(Key::escape));
     REQUIRE_FALSE(deck.replay->playing());
+    REQUIRE(deck.replay->state() == ReplayState::keyboard);
     REQUIRE(deck.replay->screen().caption == "two");
-    // The keyboard is the student's: the slide-deck keys are no longer the replay's.
+    REQUIRE(deck.replay->screen().badge_place == replay_keys_keyboard);
+    REQUIRE(with_played_key(CellGrid(80, 24), deck.replay->screen().badge, deck.replay->screen().badge_place)
+                .row_text(0)
+                .ends_with(" key ESC | your keyboard: PgUp/PgDn/Home return   "));
+    // The presenter's keys are the session's; the caption goes (it is no longer true of the screen),
+    // the badge stays.
     const std::size_t handled = deck.replay->handled().size();
-    press(*deck.replay, home);
-    REQUIRE(deck.replay->handled().size() == handled + 1);
+    press(*deck.replay, KeyEvent::typed(U'6'));
+    press(*deck.replay, KeyEvent::typed(U'6'));
+    REQUIRE(deck.replay->handled().size() == handled + 2);
     REQUIRE(deck.replay->screen().caption.empty());
+    REQUIRE(deck.replay->screen().badge_place == replay_keys_keyboard);
+    // PgUp: caption two's screen again, the presenter's keys undone; PgUp again: caption one.
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().caption == "two");
+    REQUIRE(deck.replay->screen().badge == "PGUP");
+    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+    REQUIRE(cells_of(deck.replay->screen()) == at_two);
+    REQUIRE(deck.replay->handled().size() == script.captions[1].before_event);
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().caption == "one");
+    REQUIRE(cells_of(deck.replay->screen()) == at_one);
+    // Esc, a key, PgDn: the next caption's screen; Esc, a key, Home: the first.
+    press(*deck.replay, KeyEvent::of(Key::escape));
+    press(*deck.replay, KeyEvent::typed(U'8'));
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == "two");
+    REQUIRE(deck.replay->screen().badge == "PGDN");
+    REQUIRE(cells_of(deck.replay->screen()) == at_two);
+    REQUIRE(deck.replay->playing());
+    press(*deck.replay, KeyEvent::of(Key::escape));
+    press(*deck.replay, KeyEvent::typed(U'6'));
+    press(*deck.replay, home);
+    REQUIRE(deck.replay->screen().caption == "one");
+    REQUIRE(deck.replay->screen().badge == "HOME");
+    REQUIRE(cells_of(deck.replay->screen()) == at_one);
+}
+
+TEST_CASE("PgUp at End of the script goes to the last caption's screen, caption N of N", "[lesson][replay][deck]")
+{
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down);
+    press(*deck.replay, page_down);
+    const CellGrid at_three = cells_of(deck.replay->screen());
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->state() == ReplayState::end);
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == end_of_script_caption);
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().caption == "three");
+    REQUIRE(deck.replay->screen().badge_place == "caption 3 of 3");
+    REQUIRE(cells_of(deck.replay->screen()) == at_three);
+    // From the end not yet told (caption 3 on the row, its keys played) PgUp is back a caption.
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->state() == ReplayState::end);
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
 }
 
 TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is not played and the closing caption "
@@ -283,7 +311,12 @@ TEST_CASE("PgDn at a goal skips it: apcs.log says goal skipped, its answer is no
     press(*deck.replay, page_down);
     REQUIRE(deck.folder.log_lines.back() == "goal skipped");
     REQUIRE(deck.replay->handled().size() == at_goal + 1);
-    REQUIRE(deck.replay->screen().caption == exercise->captions.back().text);
+    // Nothing on screen says the goal was reached (SPEC 3.2): how far it was, and the closing
+    // caption marked; both until the next key, the caption for as long as it is on the row.
+    REQUIRE(message_line(*deck.replay) == "GOAL skipped: tension +0.00, want +0.40 to +0.60");
+    REQUIRE(deck.replay->screen().caption == "(skipped) " + exercise->captions.back().text);
+    press(*deck.replay, KeyEvent::typed(U'x'));
+    REQUIRE_FALSE(message_line(*deck.replay).starts_with("GOAL"));
 }
 
 TEST_CASE("after PgUp the recording is the script up to the caption gone back to and what was typed from there "
@@ -292,7 +325,7 @@ TEST_CASE("after PgUp the recording is the script up to the caption gone back to
 {
     const std::string script = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
                                ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\n;; three\n4\n";
-    const KeyScript keys = parsed(script); // the replay keeps a reference to it
+    const KeyScript keys = test::parsed_deck(script); // the replay keeps a reference to it
     Deck deck(keys, "n-to-l");
     for (int step = 0; step < 10 && !at_goal_feedback(*deck.replay); ++step)
         press(*deck.replay, space);

@@ -19,7 +19,6 @@ using test::example_files;
 using test::at_goal_feedback;
 using test::message_line;
 using test::read_script;
-using test::run_until_idle;
 
 namespace {
 
@@ -76,7 +75,7 @@ TEST_CASE("lesson.keys paced a step per Space: every step once, each caption tol
                         ReplayAudience::terminal);
     std::size_t spaces = 0;
     while (replay.playing() && !replay.finished()) {
-        run_until_idle(replay);
+        play_to_idle(replay);
         if (!replay.playing())
             break;
         // A key other than Space is swallowed while the replay waits: nothing is played, and the
@@ -88,7 +87,7 @@ TEST_CASE("lesson.keys paced a step per Space: every step once, each caption tol
         const std::uint64_t revision = replay.screen_revision();
         replay.handle(space);
         ++spaces;
-        run_until_idle(replay);
+        play_to_idle(replay);
         REQUIRE(replay.screen_revision() > revision);
         const SessionScreen shown = replay.screen();
         const ScriptCaption* caption = caption_at(script, replay.handled().size());
@@ -119,10 +118,7 @@ TEST_CASE("a paced replay shows the screens the headless replay prints, caption 
         };
         ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::every, 100}, hooks, audience);
         if (audience == ReplayAudience::headless) {
-            while (replay.playing() && !session.finished()) {
-                replay.play_next();
-                run_until_idle(replay);
-            }
+            play_to_idle(replay);
             replay.finish();
         } else {
             // One step every 100 ms: the clock's ticks alone play it.
@@ -130,7 +126,7 @@ TEST_CASE("a paced replay shows the screens the headless replay prints, caption 
                 REQUIRE((replay.busy() || replay.animating()));
                 if (!replay.busy() && !session.animating())
                     REQUIRE(replay.delay_ms() == 100);
-                run_until_idle(replay);
+                play_to_idle(replay);
             }
         }
         return screens;
@@ -145,7 +141,7 @@ TEST_CASE("a paced replay shows the screens the headless replay prints, caption 
     }
 }
 
-TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays until a key is typed",
+TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays until a key is typed, the badge says so",
           "[lesson][replay]")
 {
     const KeyScript script = read_script(data_folder / "n-to-l" / "lesson.keys");
@@ -154,7 +150,7 @@ TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays unti
     ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
     for (int step = 0; step < 6; ++step) {
         replay.handle(space);
-        run_until_idle(replay);
+        play_to_idle(replay);
     }
     const std::vector<KeyEvent> played = replay.handled();
     REQUIRE_FALSE(replay.screen().caption.empty());
@@ -163,11 +159,13 @@ TEST_CASE("Esc hands the keyboard over: the script stops, the caption stays unti
     REQUIRE(replay.handled() == played);
     REQUIRE_FALSE(replay.screen().caption.empty());
     REQUIRE_FALSE(replay.screen().badge.empty());
-    // The keyboard's now: the key goes to the session, and the caption goes.
-    replay.handle(KeyEvent::typed(U'?'));
+    // The keyboard's now: the key goes to the session, and the caption goes (it would no longer be
+    // true of the screen); the badge says how to give the keyboard back (SPEC 3.2).
+    replay.handle(KeyEvent::typed(U'6'));
     REQUIRE(replay.handled().size() == played.size() + 1);
     REQUIRE(replay.screen().caption.empty());
-    REQUIRE(replay.screen().badge.empty());
+    REQUIRE(replay.screen().badge == "ESC");
+    REQUIRE(replay.screen().badge_place == replay_keys_keyboard);
 }
 
 TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, then goes on, and headless its answer "
@@ -185,7 +183,7 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
                             ReplayAudience::terminal);
         for (std::size_t step = 0; step < 20 && !at_goal_feedback(replay); ++step) {
             replay.handle(space);
-            run_until_idle(replay);
+            play_to_idle(replay);
         }
         REQUIRE(at_goal_feedback(replay));
         // The task stays on the caption row, the feedback under it on the message line.
@@ -218,8 +216,7 @@ TEST_CASE("an exercise on a terminal waits at its goal for the student's keys, t
             MemoryFiles files = example_files("exercises");
             Session session({}, files);
             ReplayDriver replay(session, keys, file.string(), {}, {}, ReplayAudience::headless);
-            while (replay.playing() && !session.finished())
-                replay.play_next();
+            play_to_idle(replay);
             replay.finish();
             return replay.goals();
         };
@@ -243,7 +240,7 @@ TEST_CASE("q at a goal asks to leave the exercise: N goes back to the goal, Y en
     ReplayDriver replay(session, script, exercise.string(), {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
     for (std::size_t step = 0; step < 20 && !at_goal_feedback(replay); ++step) {
         replay.handle(space);
-        run_until_idle(replay);
+        play_to_idle(replay);
     }
     const std::string goal_row = replay.screen().caption;
     REQUIRE(at_goal_feedback(replay));
@@ -293,7 +290,7 @@ TEST_CASE("keys typed while a replay plays at once are the session's once it has
     REQUIRE(replay.busy());
     replay.handle(KeyEvent::typed(U'0'));
     REQUIRE(replay.handled().empty());
-    run_until_idle(replay);
+    play_to_idle(replay);
     REQUIRE_FALSE(replay.playing());
     REQUIRE(replay.handled() ==
             std::vector<KeyEvent>{KeyEvent::of(Key::enter), KeyEvent::of(Key::enter), KeyEvent::typed(U'0')});
@@ -310,14 +307,14 @@ TEST_CASE("the terminal paints a screen only when its revision changes: once per
     const auto type = [&](std::u32string_view keys) {
         for (const char32_t key : keys)
             replay.handle(key == U'\n' ? KeyEvent::of(Key::enter) : key == U' ' ? space : KeyEvent::typed(key));
-        run_until_idle(replay);
+        play_to_idle(replay);
     };
     type(U"\n\n0 90 100\nway1.dat\n\n8");
     REQUIRE(session.phase() == SessionPhase::staff);
     const auto paints_of = [&](char32_t key) {
         const std::uint64_t before = replay.screen_revision();
         replay.handle(KeyEvent::typed(key));
-        run_until_idle(replay);
+        play_to_idle(replay);
         return replay.screen_revision() - before;
     };
     // Up the TENSION line to +1: every key moves the curve, and is one paint.

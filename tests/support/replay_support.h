@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/input/play_to_idle.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session_files.h"
 
@@ -44,16 +45,5 @@ inline std::string message_line(const ReplayDriver& replay)
 }
 
 inline bool at_goal_feedback(const ReplayDriver& replay) { return message_line(replay).starts_with("GOAL: "); }
-
-// What the terminal loop does while it waits for no key: the program's work, then its ticks.
-inline void run_until_idle(ReplayDriver& replay)
-{
-    while (!replay.finished() && (replay.busy() || replay.animating())) {
-        if (replay.busy())
-            replay.work();
-        else
-            replay.tick();
-    }
-}
 
 } // namespace apcs::test

@@ -6,6 +6,7 @@
 #include "apcs/input/interactive_program.h"
 #include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_hooks.h"
+#include "apcs/lesson/replay_rows.h"
 #include "apcs/session/session.h"
 
 #include <cstddef>
@@ -27,6 +28,10 @@ inline constexpr std::string_view end_of_script_caption = "End of the script: th
 // In the badge after a key a paced replay does not take: the keys it does.
 inline constexpr std::string_view replay_keys_on_space = "Space next step  PgDn next caption  Esc your keyboard";
 inline constexpr std::string_view replay_keys_timed = "PgDn next caption  PgUp back  Esc your keyboard";
+// In the badge once Esc (or a key typed after the end) gives the presenter the keyboard.
+inline constexpr std::string_view replay_keys_keyboard = "your keyboard: PgUp/PgDn/Home return";
+// Before a caption that closes a goal skipped by PgDn: it describes a goal that was not reached.
+inline constexpr std::string_view skipped_caption_prefix = "(skipped) ";
 
 // What became of a goal of the script (SPEC §3.1): apcs.log has a line for each, apcs grade a row.
 struct GoalOutcome {
@@ -44,45 +49,48 @@ struct GoalOutcome {
 // played.
 enum class ReplayAudience { terminal, headless };
 
-// A key script played into the session (SPEC §3, §3.1): its steps, captions and goals, its pace
-// and the step badge. The one replay of the program: the terminal drives it as any
-// InteractiveProgram (keys in, screens out), the headless replay a step at a time (play_next).
-// Every key the session handles passes through it, scripted or typed, and is kept (--record).
+// A key script played into the session (SPEC §3, §3.1, §3.2): its steps, captions and goals, its
+// pace and the step badge. The one replay of the program: the terminal drives it as any
+// InteractiveProgram (keys in, screens out), the headless replay and apcs grade through
+// play_to_idle. Every key the session handles passes through it, scripted or typed, and is kept
+// (--record). A key typed on the terminal meets the replay in a state (state()) and does what the
+// chart's row for that state and key says (replay_rows.h); the files beside this one keep the
+// goals (replay_goals.cpp), the recording (replay_recording.cpp) and going back (replay_rewind.cpp).
 class ReplayDriver final : public InteractiveProgram {
 public:
     // `session` and `script` outlive the driver; `script_name` names the script in a goal's
     // FILE:LINE. On a terminal the captions and goals at the script's start are reached at once
-    // (hooks told); headless, with the first play_next.
+    // (hooks told); headless, as the first key plays.
     ReplayDriver(Session& session, const KeyScript& script, std::string script_name, ReplayPace pace,
                  ReplayHooks hooks, ReplayAudience audience);
 
-    // A key typed on the terminal. While the replay waits for its pace, Space plays the next step
-    // (on_space), Esc ends the replay and other keys are dropped; a Space typed while the
-    // animation plays is the next step, held until it ends. At a goal, after the replay, or while
-    // the session splits or animates, the key is the session's. Paced, the slide-deck keys are
-    // the replay's (SPEC §3.1): PgDn (or ']') plays on to the next caption, or skips a goal;
-    // PgUp (or '[') goes back to the previous caption's screen, Home to the first; at a goal and
-    // at the script's end only PgDn, PgUp and Home, since '[' and ']' are the session's there.
+    // A key typed on the terminal: the row of the chart for the state it meets.
     void handle(const KeyEvent& key) override;
     void tick() override;
+    // Headless: the session's work, else the script's next key once the session is idle.
     void work() override;
     bool finished() const override { return m_session->finished(); }
     bool animating() const override;
     bool busy() const override;
     int delay_ms() const override;
     // The session's screen with the caption reached (or the goal's feedback) and, when paced, the
-    // step just played; neither once a key is typed after the replay.
+    // step just played.
     SessionScreen screen() const override;
     // The session's, advanced too when the caption or the badge changes: a key the replay swallows
     // leaves it.
     std::uint64_t screen_revision() const override { return m_session->screen_revision() + m_revision; }
 
-    // Whether script keys are left to play (Esc has not ended the replay).
-    bool playing() const { return !m_stopped && m_played < m_script.events.size(); }
+    // The state a key typed now meets (terminal).
+    ReplayState state() const;
+    // The action of the row the last key met; none before any key and after a written ignore. A
+    // name_keys is forgotten once the script plays its next step (the badge names the step again).
+    std::optional<ReplayAction> last_action() const { return m_last_action; }
+    // What the chart's guards are tested against now.
+    ReplayGuardFacts guard_facts() const;
+    // Whether script keys are left to play and the lesson has the keyboard.
+    bool playing() const;
     // The session the replay plays into: the one it was given until PgUp or Home replaced it.
     const Session& session() const { return *m_session; }
-    // Headless: the captions and goals before the next key reached, then that key played.
-    void play_next();
     // Headless: the captions left told and the goals left judged (the script's end).
     void finish();
     // Headless: ok, or the first goal not reached, as "FILE:LINE: goal not reached: …".
@@ -97,6 +105,17 @@ public:
     const std::vector<GoalOutcome>& goal_outcomes() const { return m_outcomes; }
 
 private:
+    // The replay's own part of the state; the rest is read off the session and the script's
+    // position (state()).
+    enum class Mode {
+        deck,            // the script plays at its pace
+        step_held,       // and a Space waits for the animation's end to be the next step
+        at_goal,         // m_next_goal does not hold yet
+        asking_to_leave, // q at that goal
+        keyboard,        // the presenter's, until PgUp, PgDn or Home
+        end_told,
+        left, // the replay is over: the keyboard is the session's
+    };
     // What the replay lays over the session's screen.
     struct Shown {
         std::string caption;
@@ -105,41 +124,35 @@ private:
         bool operator==(const Shown&) const = default;
     };
     Shown shown() const;
+    std::string place_in_badge(std::optional<std::size_t> caption) const;
     // `change` done, the revision advanced if what the replay shows changed.
     template <typename Change>
     void watching(Change change);
     void take(const KeyEvent& key);
+    void act(ReplayAction action, const KeyEvent& key);
     void take_tick();
     void take_work();
-    // Where the replay stands with the session: captions told, goals met or waited for.
+    void play_headless();
+
+    // replay_goals.cpp: where the replay stands with the session, captions told, goals met or
+    // waited for.
     void settle();
     void after_change();
     void tell_captions();
     void end_caption();
     void wait_at_goal();
-    // The goal waited at, checked again: its feedback on the message line, its answer skipped once
-    // it holds. Whether it holds.
+    // The goal m_next_goal checked again: its feedback on the message line. Whether it holds.
     bool check_waiting_goal();
     void judge_goals(std::size_t played);
     void judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress);
-    // The script's START, captions and GOAL lines before event `event` into `recording`.
-    void record_lines(KeyRecording& recording, std::size_t& lines_recorded, std::size_t event) const;
-    // The session neither splits nor animates: a scripted key may play, a caption be reached.
-    bool session_idle() const { return !m_session->busy() && !m_session->animating(); }
-    // The replay's next key may play now on a terminal: not at a goal, nor while the session
-    // works. Headless, only play_next plays a key.
-    bool script_ready() const
-    {
-        return m_audience == ReplayAudience::terminal && !at_goal() && playing() && session_idle();
-    }
-    // A terminal replay waits at a goal that does not hold yet, its feedback on the caption row.
-    bool at_goal() const { return !m_goal_said.empty(); }
-    // It plays without waiting for a key or the clock: at once, the rest of a TEXT line, or a
-    // Space held through the animation.
-    bool plays_unasked() const;
-    bool paced_every() const { return m_pace.kind == ReplayPace::Kind::every; }
-    bool mid_step() const { return m_played < m_step_end; }
-    void play_scripted();
+    void skip_goal();
+    void leave_exercise();
+    // The goal waited at (at_goal, asking_to_leave).
+    std::optional<std::size_t> waiting_goal() const;
+    // Whether caption `caption` closes a goal that PgDn skipped.
+    bool closes_skipped_goal(std::size_t caption) const;
+
+    // replay_recording.cpp
     void to_session(const KeyEvent& key);
     // The script's lines a recording keeps (START, captions, GOAL), by the event they stand before.
     struct ScriptLine {
@@ -148,20 +161,31 @@ private:
         std::size_t index = 0; // the caption's or the goal's
     };
     static std::vector<ScriptLine> script_lines(const KeyScript& script);
-    void stop();
-    void leave_exercise();
-    // The slide-deck keys (SPEC §3.1).
-    enum class Control { next, back, first };
-    std::optional<Control> control_of(const KeyEvent& key) const;
-    bool take_control(const KeyEvent& key);
+    // The script's START, captions and GOAL lines before event `event` into `recording`.
+    void record_lines(KeyRecording& recording, std::size_t& lines_recorded, std::size_t event) const;
+
+    // replay_rewind.cpp: PgUp, Home, and PgDn after Esc.
     void play_to_next_caption();
-    void skip_goal();
-    void go_back_to(std::size_t caption, std::string label);
+    void go_to_caption(std::size_t caption, std::string label);
+    void rewind_to(std::size_t events, std::string label);
     void catch_up(Session& session, std::size_t events);
+
+    // The session neither splits nor shows the frames: a scripted key may play, a caption be reached.
+    bool session_idle() const;
+    // The replay's next key may play now on a terminal: the lesson has the keyboard, not at a
+    // goal, the session idle. Headless, only play_headless plays a key.
+    bool script_ready() const;
+    // It plays without waiting for a key or the clock: at once, the rest of a step, a Space held
+    // through the animation, the preamble or PgDn's run.
+    bool plays_unasked() const;
+    bool paced() const { return m_pace.kind != ReplayPace::Kind::at_once; }
+    bool paced_every() const { return m_pace.kind == ReplayPace::Kind::every; }
+    bool mid_step() const { return m_played < m_step_end; }
+    bool lesson_has_keyboard() const { return m_mode == Mode::deck || m_mode == Mode::step_held; }
+    void play_scripted();
+    void stop();
     // The caption on the caption row (its index), none before the first.
     std::optional<std::size_t> caption_on_row() const;
-    bool paced() const { return m_pace.kind != ReplayPace::Kind::at_once; }
-    bool at_end() const { return !m_stopped && m_played == m_script.events.size(); }
 
     Session* m_session;
     std::unique_ptr<Session> m_session_gone_back; // the session PgUp or Home made, if any
@@ -170,33 +194,30 @@ private:
     ReplayPace m_pace;
     ReplayHooks m_hooks;
     ReplayAudience m_audience;
+    Mode m_mode = Mode::deck;
+    std::optional<ReplayAction> m_last_action;
+    // The keys handled when the keyboard was handed over: the caption stays until one more is typed
+    // (it would no longer be true of the screen).
+    std::size_t m_handed_over_at = 0;
     std::size_t m_played = 0;
     std::size_t m_step_end = 0;
     std::size_t m_run_to = 0; // keys before it play unasked: the preamble, PgDn's run
     std::string m_step_label;
-    bool m_end_told = false;
-    bool m_controls_told = false; // a key the paced replay does not take: the badge names those it does
     std::size_t m_captions_told = 0;
     std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;
-    std::string m_goal_said;
-    // The goal waited at and how far it was at the last check (what the log says if it is left).
-    std::optional<std::size_t> m_waiting_goal;
     std::size_t m_waiting_goal_line = 0; // its GOAL line among m_script_lines
+    // How far the goal waited at was at the last check, and the staff then (what the log says if
+    // it is left; why a key that changed the staff did not move the in-between).
     GoalProgress m_waiting_progress;
     std::optional<StaffValues> m_waiting_staff;
-    bool m_reached_said = false; // "GOAL REACHED: …" stays until the next key
     std::vector<GoalOutcome> m_outcomes;
     std::vector<ScriptLine> m_script_lines;
     KeyRecording m_recording;
     std::size_t m_lines_recorded = 0;
-    bool m_step_held = false;
-    bool m_stopped = false;
-    bool m_typed_after = false;
-    bool m_leave_asked = false; // q at a goal: the next key answers leave_exercise_question
     Expected<void> m_goals = ok;
     std::vector<KeyEvent> m_handled;
-    // Keys typed while the replay played unasked, the session's or the replay's once it stops.
+    // Keys typed while the replay played unasked, taken once it has.
     std::deque<KeyEvent> m_typed_meanwhile;
     std::uint64_t m_revision = 0;
 };

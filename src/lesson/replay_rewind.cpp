@@ -1,0 +1,78 @@
+#include "apcs/lesson/replay_driver.h"
+
+#include "apcs/input/play_to_idle.h"
+
+#include <algorithm>
+#include <utility>
+
+// The deck's moves (SPEC §3.1, §3.2): PgDn's run to the next caption, and going to a caption's
+// screen replayed in memory from the inputs as they were when the replay started.
+namespace apcs {
+
+// The rest of the caption's keys play unasked; the next caption stops them (or a goal, or the end).
+void ReplayDriver::play_to_next_caption()
+{
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    const auto next = std::find_if(captions.begin(), captions.end(),
+                                   [&](const ScriptCaption& caption) { return caption.before_event > m_played; });
+    m_run_to = next == captions.end() ? m_script.events.size() : next->before_event;
+    if (m_mode == Mode::step_held)
+        m_mode = Mode::deck;
+}
+
+// Caption `caption`'s screen (its keys not yet played); past the last caption, the script's end.
+void ReplayDriver::go_to_caption(std::size_t caption, std::string label)
+{
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    if (captions.empty())
+        rewind_to(m_script.preamble_end, std::move(label));
+    else if (caption < captions.size())
+        rewind_to(captions[caption].before_event, std::move(label));
+    else
+        rewind_to(m_script.events.size(), std::move(label));
+}
+
+// A new session on the inputs as they were when the replay started, the first `events` keys played
+// into it at once (writing nothing), and the lesson on from there with the keyboard.
+void ReplayDriver::rewind_to(std::size_t events, std::string label)
+{
+    if (!m_hooks.session_as_started)
+        return;
+    std::unique_ptr<Session> session = m_hooks.session_as_started();
+    m_recording = KeyRecording();
+    m_recording.add_inputs(m_script.inputs);
+    m_lines_recorded = 0;
+    catch_up(*session, events);
+    record_lines(m_recording, m_lines_recorded, events);
+    if (m_hooks.caught_up)
+        m_hooks.caught_up();
+    // The new session counts its screens from 0: the sum the terminal watches must still grow.
+    m_revision += m_session->screen_revision() + 1;
+    m_session_gone_back = std::move(session);
+    m_session = m_session_gone_back.get();
+    m_handled.assign(m_script.events.begin(), m_script.events.begin() + static_cast<std::ptrdiff_t>(events));
+    m_played = m_step_end = m_run_to = events;
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    m_next_goal = static_cast<std::size_t>(std::find_if(goals.begin(), goals.end(), [&](const ScriptGoal& goal) {
+                                               return goal.before_event >= events;
+                                           }) - goals.begin());
+    std::erase_if(m_outcomes, [&](const GoalOutcome& outcome) { return outcome.goal >= m_next_goal; });
+    m_mode = Mode::deck;
+    m_session->say_goal({});
+    m_typed_meanwhile.clear();
+    m_step_label = std::move(label);
+}
+
+// The first `events` keys of the script into `session`, each played to its end: the split, the
+// picture's refinement and the animation run through, as the headless replay plays them.
+void ReplayDriver::catch_up(Session& session, std::size_t events)
+{
+    for (std::size_t event = 0; event < events && !session.finished(); ++event) {
+        record_lines(m_recording, m_lines_recorded, event);
+        m_recording.add_key(m_script.events[event], session.takes_typed_text());
+        session.handle(m_script.events[event]);
+        play_to_idle(session);
+    }
+}
+
+} // namespace apcs
