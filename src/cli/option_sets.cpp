@@ -433,8 +433,8 @@ void add_draw_command_options(CLI::App& command, CommonOptions& options)
 void add_play_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes, bool& tree)
 {
     add_staff(command, options);
-    add_curve(command, options, slopes, "frames at the sample nearest each distance (the thesis, default) or "
-                                        "exactly on it; overrides the scene's SPACING line");
+    add_curve(command, options, slopes, "frames at the sample nearest each distance (the thesis) or exactly on "
+                                        "it; overrides the scene's SPACING line, default exact");
     add_surface(command, options);
     add_view(command, options);
     add_glyphs(command, options);

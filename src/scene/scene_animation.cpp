@@ -91,7 +91,7 @@ PathSettings scene_path_settings(const Scene& scene, const PathSettings& command
 {
     PathSettings settings = command;
     if (!spacing_given)
-        settings.spacing = scene.spacing.value_or(Spacing::nearest);
+        settings.spacing = scene.spacing.value_or(Spacing::exact);
     return settings;
 }
 

@@ -12,7 +12,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 using namespace apcs;
@@ -173,6 +175,38 @@ TEST_CASE("MOVE without TIMES spreads the path over FROM ... TO by its accelerat
     const Scene eased = scene_from("FRAMES 5\nOBJECT a\nSHAPE dot.dat\nMOVE fast.dat\n", files);
     const SceneAnimation eased_animation(eased, exact_settings());
     REQUIRE(std::abs(eased_animation.frame(1)[0].y - 10 * (1 - std::cos(std::numbers::pi / 10))) < 1e-6);
+}
+
+TEST_CASE("a scene without SPACING moves at even steps (exact): a MOVE along a 2-point road in 36 frames never "
+          "stands still - SPACING nearest does, every 9th frame, and --spacing overrides the line",
+          "[scene]")
+{
+    DatFiles files;
+    files.texts["dot.dat"] = "0 0 0\n";
+    files.texts["road.dat"] = "0 0 0\n0 10 0\n";
+    const auto steps = [&](const std::string& spacing_line, std::optional<Spacing> given) {
+        const Scene scene = scene_from("FRAMES 36\n" + spacing_line + "OBJECT car\nSHAPE dot.dat\nMOVE road.dat\n", files);
+        PathSettings command;
+        if (given)
+            command.spacing = *given;
+        const SceneAnimation animation(scene, scene_path_settings(scene, command, given.has_value()));
+        std::vector<double> step;
+        for (int f = 1; f <= 36; ++f)
+            step.push_back(animation.frame(f)[0].y - animation.frame(f - 1)[0].y);
+        return step;
+    };
+    for (const double step : steps("", std::nullopt))
+        REQUIRE(std::abs(step - 10.0 / 36) < 1e-9);
+    // Nearest on 32 samples a span: 1.125 samples a frame, so every 9th frame repeats its sample.
+    const std::vector<double> nearest = steps("SPACING nearest\n", std::nullopt);
+    std::vector<int> still;
+    for (std::size_t f = 0; f < nearest.size(); ++f)
+        if (nearest[f] == 0)
+            still.push_back(static_cast<int>(f) + 1);
+    REQUIRE(still == std::vector<int>{5, 14, 23, 32});
+    REQUIRE(steps("", Spacing::nearest) == nearest);
+    for (const double step : steps("SPACING nearest\n", Spacing::exact))
+        REQUIRE(std::abs(step - 10.0 / 36) < 1e-9);
 }
 
 TEST_CASE("a part without STAFF moves by its parent's four-line values, one with STAFF by its own (Ch. 3.3)",

@@ -397,12 +397,13 @@ TEST_CASE("a scene's SPACING line chooses its spacing and --spacing overrides it
         REQUIRE(run.status == 0);
         return run.out;
     };
-    const std::string nearest = play("plain.scn", {});
+    const std::string nearest = play("nearest.scn", {});
     const std::string exact = play("exact.scn", {});
     // 4 samples a segment: the nearest sample is far from the exact point.
     REQUIRE(nearest != exact);
-    CHECK(play("nearest.scn", {}) == nearest);
-    CHECK(play("plain.scn", {"--spacing", "exact"}) == exact);
+    // Without the line, exact (SPEC 8.1, turn 5).
+    CHECK(play("plain.scn", {}) == exact);
+    CHECK(play("plain.scn", {"--spacing", "nearest"}) == nearest);
     CHECK(play("exact.scn", {"--spacing", "nearest"}) == nearest);
     CHECK(play("exact.scn", {"--spacing", "exact"}) == exact);
     CHECK(play("nearest.scn", {"--spacing", "exact"}) == exact);

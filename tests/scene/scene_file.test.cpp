@@ -70,17 +70,18 @@ TEST_CASE("a scene's SPACING line, in any case, gives its spacing — without on
     REQUIRE(exact.spacing == Spacing::exact);
     const Scene nearest = scene_from("FRAMES 10\nSPACING nearest ; the thesis' samples\n" + objects, files);
     REQUIRE(nearest.spacing == Spacing::nearest);
-    // The settings the scene plays with: its line's spacing, unless --spacing was given.
+    // The settings the scene plays with: its line's spacing, exact without one (SPEC 8.1, turn 5),
+    // unless --spacing was given.
     PathSettings command;
     command.samples_per_segment = 8;
-    command.spacing = Spacing::exact;
-    REQUIRE(scene_path_settings(plain, command, false).spacing == Spacing::nearest);
+    command.spacing = Spacing::nearest; // the commands' default, not the scene's
+    REQUIRE(scene_path_settings(plain, command, false).spacing == Spacing::exact);
     REQUIRE(scene_path_settings(plain, command, false).samples_per_segment == 8);
     REQUIRE(scene_path_settings(exact, {}, false).spacing == Spacing::exact);
     REQUIRE(scene_path_settings(nearest, command, false).spacing == Spacing::nearest);
-    REQUIRE(scene_path_settings(nearest, command, true).spacing == Spacing::exact);
-    command.spacing = Spacing::nearest;
     REQUIRE(scene_path_settings(exact, command, true).spacing == Spacing::nearest);
+    command.spacing = Spacing::exact;
+    REQUIRE(scene_path_settings(nearest, command, true).spacing == Spacing::exact);
 }
 
 TEST_CASE("a part's own STAFF replaces its parent's — seven-column paths keep their own values", "[scene]")

@@ -141,7 +141,7 @@ struct Scene {
     int last_frame = 0;
     std::optional<ViewAngles> view; // VIEW THETA PHI
     // SPACING nearest|exact (SPEC §8.1): where the in-betweens of its MOVE and KEYS paths fall;
-    // unset, nearest, as every command. --spacing overrides it (scene_path_settings).
+    // unset, exact (a MOVE at even steps). --spacing overrides it (scene_path_settings).
     std::optional<Spacing> spacing;
     std::vector<SceneObject> objects;
 };
