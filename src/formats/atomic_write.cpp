@@ -77,6 +77,33 @@ fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
     return {}; // .bak and .b01 … .b99 are all inputs: there is nowhere to keep the old file
 }
 
+bool lies_within(const fs::path& file, const fs::path& folder)
+{
+    const fs::path relative = file.lexically_relative(folder);
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+Expected<void> check_link_stays_in_folder(const fs::path& output)
+{
+    struct stat status {};
+    if (::lstat(output.c_str(), &status) != 0 || !S_ISLNK(status.st_mode))
+        return ok;
+    // Followed to its end, so that a chain of links is judged by the file it reaches; the link's
+    // own folder is judged the same way, so that a folder reached through a link still counts.
+    std::error_code folder_error;
+    std::error_code file_error;
+    const fs::path folder = fs::weakly_canonical(output.has_parent_path() ? output.parent_path() : fs::path("."), folder_error);
+    const fs::path reached = fs::weakly_canonical(output, file_error);
+    if (!folder_error && !file_error && lies_within(reached, folder))
+        return ok;
+    std::error_code link_error;
+    const fs::path named = fs::read_symlink(output, link_error);
+    return Diagnostic{output.string(), 0,
+                      "is a symbolic link to " + (link_error ? std::string("a file") : named.string()) +
+                          ", which leads out of its folder (to " + (file_error ? std::string("a file elsewhere") : reached.string()) +
+                          "); APCS writes through a link only to a file in the link's folder or below it"};
+}
+
 namespace {
 
 // A file write_file_atomically may replace: the regular file `requested` names (through a
@@ -90,8 +117,10 @@ struct ReplaceableTarget {
 Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const std::string& shown)
 {
     // Only regular files are ever replaced. A symbolic link is written through to the file it
-    // names (replaced in its own folder; the link stays) when that is a regular file; a device, a
-    // FIFO, a socket or a directory, named or linked to, is refused and left as it is.
+    // names (replaced in its own folder; the link stays) when that is a regular file in the link's
+    // folder or below it; a device, a FIFO, a socket or a directory, named or linked to, and a
+    // file elsewhere (ln -s ../victim/passwd w/my.keys, worst as root) are refused and left as
+    // they are.
     ReplaceableTarget target{requested, false, {}};
     if (::lstat(requested.c_str(), &target.status) != 0)
         return target;
@@ -106,6 +135,8 @@ Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const 
         target.path = fs::canonical(requested, error);
         if (error)
             return Diagnostic{shown, 0, link_to + ", which cannot be followed: " + error.message()};
+        if (Expected<void> stays = check_link_stays_in_folder(requested); !stays)
+            return Diagnostic{shown, 0, stays.error().message};
     } else if (S_ISDIR(target.status.st_mode)) {
         return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
     } else if (!S_ISREG(target.status.st_mode)) {

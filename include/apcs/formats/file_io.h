@@ -67,8 +67,9 @@ enum class Durability { each_file, at_barrier };
 // differs is first kept as the same name with the extension .bak (way1.dat → way1.bak, replacing an
 // older .bak); identical content leaves the file untouched. A replaced file keeps its mode (and
 // its owner and group where the user may set them); a new one is 0644. Only regular files are
-// replaced: a symbolic link to a regular file is written through (the file it names is replaced in
-// its own folder, its .bak beside it, the link stays); a directory, a FIFO, a device, a socket, a
+// replaced: a symbolic link to a regular file in the link's folder or below it is written through
+// (the file it names is replaced in its own folder, its .bak beside it, the link stays), a link
+// that leads elsewhere is refused (check_link_stays_in_folder); a directory, a FIFO, a device, a socket, a
 // link to one or a dangling link is refused, and so is a read-only file (no write permission for
 // the user; for root, no write bit at all). A refusal, a missing folder, a full disk or a failed
 // rename is reported and leaves every file as it was. When NAME.bak is one of `inputs` (a key
@@ -110,6 +111,15 @@ Expected<void> check_replaceable(const std::filesystem::path& requested, const C
 // The barrier of Durability::at_barrier: every file written on the file system of `folder` is
 // flushed to the disk (syncfs), the folders' entries with them. The problem, if any.
 Expected<void> flush_file_system(const std::filesystem::path& folder);
+
+// Whether `file` is `folder` or lies below it; both canonical (no '.', '..' or link on the way).
+bool lies_within(const std::filesystem::path& file, const std::filesystem::path& folder);
+
+// ok unless `output` is a symbolic link (or the first of a chain) whose end lies outside the
+// link's own folder and the folders below it: "w/my.keys: is a symbolic link to ../victim/passwd,
+// which leads out of its folder (to /home/v/victim/passwd); APCS writes through a link only to a
+// file in the link's folder or below it". Every write of write_file_atomically checks it first.
+Expected<void> check_link_stays_in_folder(const std::filesystem::path& output);
 
 // NAME.ext → NAME.bak in the same folder; NAME.b01 … NAME.b99 when NAME.bak is one of `inputs`
 // (the first of those that is neither an input nor an existing file; NAME.b99 when all exist;

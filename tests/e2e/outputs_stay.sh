@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Outputs stay where they are put (issue 56), one case a run (each its own CTest test):
+#   links         an output that is a symbolic link leading out of its folder (--record, a chain of
+#                 links, a handout's pages and index, --png, play --out) is refused before anything
+#                 is written: the file it leads to stays as it was and gets no .bak beside it.
+# The files a test makes stand in for the victim's. Usage: outputs_stay.sh APCS DATA CASE
+set -uo pipefail
+apcs=$1
+data=$2
+case_name=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAILED: $*"; exit 1; }
+export LC_ALL=C.UTF-8
+
+# A session's folder w/ with the N-to-L keys and script, and a folder victim/ beside it holding
+# files a link could lead to.
+setup() {
+  mkdir -p "$work/w" "$work/victim"
+  cp "$data"/n-to-l/*.dat "$data"/n-to-l/session.keys "$data"/n-to-l/lesson.keys "$work/w/"
+  for name in passwd a b c pic frm; do echo "victim's $name" > "$work/victim/$name"; done
+}
+
+# The victim's files are as setup made them, and nothing was added beside them.
+victim_untouched() {
+  for name in passwd a b c pic frm; do
+    [ "$(cat "$work/victim/$name")" = "victim's $name" ] || fail "$1: victim/$name was replaced"
+  done
+  [ "$(ls -A "$work/victim" | wc -l)" -eq 6 ] || fail "$1: files added beside the victim's: $(ls -A "$work/victim")"
+}
+
+# Runs apcs ARGS... (stdin /dev/null); fails unless it exits 1 and stderr holds TEXT.
+refused_with() {
+  local text=$1
+  shift
+  "$apcs" "$@" < /dev/null > "$work/out" 2> "$work/err"; local status=$?
+  [ "$status" -eq 1 ] || fail "apcs $*: exit $status, not 1: $(cat "$work/err")"
+  grep -qF -- "$text" "$work/err" || fail "apcs $*: expected '$text' on stderr: $(cat "$work/err")"
+}
+
+links() {
+  setup
+  local leads="which leads out of its folder"
+  ln -s ../victim/passwd "$work/w/my.keys"
+  refused_with "w/my.keys: is a symbolic link to ../victim/passwd, $leads" \
+    --workdir "$work/w" --keys "$work/w/session.keys" --record "$work/w/my.keys" --glyphs ascii
+  victim_untouched "--record through a link"
+  ln -s hop.keys "$work/w/chain.keys"; ln -s ../victim/passwd "$work/w/hop.keys"
+  refused_with "w/chain.keys: is a symbolic link to hop.keys, $leads" \
+    --workdir "$work/w" --keys "$work/w/session.keys" --record "$work/w/chain.keys" --glyphs ascii
+  victim_untouched "--record through a chain of links"
+
+  # A handout folder whose index and first pages are links: refused before the first page.
+  mkdir "$work/h"
+  ln -s ../victim/a "$work/h/index.html"
+  ln -s ../victim/b "$work/h/01-w-opens-the-waypoint-editor-i.png"
+  ln -s ../victim/c "$work/h/01-w-opens-the-waypoint-editor-i.txt"
+  refused_with "$leads" --workdir "$work/w" --keys "$work/w/lesson.keys" --handout "$work/h" --glyphs ascii
+  victim_untouched "--handout through links"
+  [ "$(ls -A "$work/h" | wc -l)" -eq 3 ] || fail "the handout wrote pages: $(ls -A "$work/h")"
+
+  ln -s ../victim/pic "$work/w/pic.png"
+  refused_with "w/pic.png: is a symbolic link to ../victim/pic, $leads" path "$work/w/way1.dat" --png "$work/w/pic.png"
+  victim_untouched "--png through a link"
+  mkdir "$work/frames"
+  ln -s ../victim/frm "$work/frames/frm001.dat"
+  refused_with "frames/frm001.dat: is a symbolic link to ../victim/frm, $leads" \
+    play "$data/car/car.scn" --out "$work/frames"
+  victim_untouched "play --out through a link"
+  [ "$(ls -A "$work/frames" | wc -l)" -eq 1 ] || fail "play --out wrote frames: $(ls -A "$work/frames")"
+
+  # A link to a file in its own folder is written through, as before.
+  echo 'old' > "$work/w/kept.keys"
+  ln -s kept.keys "$work/w/inside.keys"
+  "$apcs" --workdir "$work/w" --keys "$work/w/session.keys" --record "$work/w/inside.keys" --glyphs ascii \
+    < /dev/null > /dev/null 2> "$work/err" || fail "--record through a link inside its folder: $(cat "$work/err")"
+  [ -L "$work/w/inside.keys" ] && [ "$(cat "$work/w/kept.bak")" = old ] || fail "the link inside its folder was not written through"
+}
+
+case "$case_name" in
+  links) links ;;
+  *) fail "unknown case $case_name" ;;
+esac
+echo "ok: $case_name"
