@@ -1,5 +1,7 @@
 #include "apcs/lesson/handout_index.h"
 
+#include "apcs/base/utf8.h"
+
 namespace apcs {
 
 namespace {
@@ -34,14 +36,16 @@ std::string html_escaped(std::string_view text)
 {
     std::string escaped;
     escaped.reserve(text.size());
-    for (const char character : text) {
+    // Decoded, so that a caption's invalid bytes reach the page as U+FFFD, as they reach the .txt
+    // page, not as bytes a browser guesses at.
+    for (const char32_t character : decode_utf8(text)) {
         switch (character) {
-        case '&': escaped += "&amp;"; break;
-        case '<': escaped += "&lt;"; break;
-        case '>': escaped += "&gt;"; break;
-        case '"': escaped += "&quot;"; break;
-        case '\'': escaped += "&#39;"; break;
-        default: escaped += character;
+        case U'&': escaped += "&amp;"; break;
+        case U'<': escaped += "&lt;"; break;
+        case U'>': escaped += "&gt;"; break;
+        case U'"': escaped += "&quot;"; break;
+        case U'\'': escaped += "&#39;"; break;
+        default: append_utf8(escaped, character);
         }
     }
     return escaped;

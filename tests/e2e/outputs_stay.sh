@@ -2,7 +2,9 @@
 # Outputs stay where they are put (issue 56), one case a run (each its own CTest test):
 #   links         an output that is a symbolic link leading out of its folder (--record, a chain of
 #                 links, a handout's pages and index, --png, play --out) is refused before anything
-#                 is written: the file it leads to stays as it was and gets no .bak beside it.
+#                 is written: the file it leads to stays as it was and gets no .bak beside it;
+#   names         a file name with ESC ] ... BEL in it reaches stderr and grade's CSV escaped
+#                 (\x1B ... \x07), for grade, path, draw, fit, play, --keys, --record, --workdir;
 # The files a test makes stand in for the victim's. Usage: outputs_stay.sh APCS DATA CASE
 set -uo pipefail
 apcs=$1
@@ -77,8 +79,59 @@ links() {
   [ -L "$work/w/inside.keys" ] && [ "$(cat "$work/w/kept.bak")" = old ] || fail "the link inside its folder was not written through"
 }
 
+# Fails when FILE holds a raw ESC or BEL; says what it holds.
+no_raw_controls() {
+  if LC_ALL=C grep -q $'[\x1B\x07]' "$2"; then
+    fail "$1: raw control characters reached it: $(od -c "$2" | head -5)"
+  fi
+}
+
+names() {
+  setup
+  local bad=$'esc\e]0;PWN2\a'
+  local shown='esc\x1B]0;PWN2\x07'
+  cp "$data/exercises/answers/exercise-1-tension-answer.keys" "$work/$bad.keys"
+  "$apcs" grade "$data/exercises/exercise-1-tension.keys" "$work/$bad.keys" "$work/${bad}-gone.keys" \
+    > "$work/grades.csv" 2> "$work/err"
+  no_raw_controls "grade's stderr" "$work/err"
+  no_raw_controls "grade's CSV" "$work/grades.csv"
+  grep -qF "$shown-gone.keys" "$work/err" || fail "grade: the missing recording is not named escaped: $(cat "$work/err")"
+  grep -qF "$shown.keys" "$work/grades.csv" || fail "grade: the CSV does not name the recording escaped: $(cat "$work/grades.csv")"
+
+  # Each command given the name where a file or a folder is expected: refused, the name escaped.
+  local missing="$work/$bad"
+  local dat="$work/w/way1.dat"
+  local -a commands=(
+    "path|$missing.dat"
+    "draw|$missing.dat|--png|$work/d.png"
+    "fit|$missing.dat|$dat|$dat|$dat|--out|$work/f"
+    "inbetween|$missing.dat|$dat|--out|$work/i"
+    "play|$missing.scn"
+    "play|$data/car/car.scn|--out|$missing/deep"
+    "--workdir|$missing"
+    "--workdir|$work/w|--keys|$missing-none.keys"
+    "--workdir|$work/w|--keys|$work/w/session.keys|--record|$missing/x.keys"
+    "--workdir|$work/w|--keys|$work/w/lesson.keys|--handout|$missing/deep"
+    "path|$dat|--png|$missing/x.png"
+  )
+  for command in "${commands[@]}"; do
+    IFS='|' read -r -a arguments <<< "$command"
+    "$apcs" "${arguments[@]}" < /dev/null > "$work/out" 2> "$work/err"
+    no_raw_controls "apcs ${arguments[*]}" "$work/err"
+    no_raw_controls "apcs ${arguments[*]} (stdout)" "$work/out"
+    grep -qF "$shown" "$work/err" || fail "apcs ${arguments[*]}: the name is not shown escaped: $(cat "$work/err")"
+  done
+
+  # A bidi override in a name is shown by its code, and one in a caption refuses the script.
+  "$apcs" path "$work/gpj"$'\u202e'".dat" > /dev/null 2> "$work/err"
+  grep -qF "gpjU+202E.dat" "$work/err" || fail "a bidi override in a name: $(cat "$work/err")"
+  printf ';; turn \u202eleft\nENTER\n' > "$work/w/bidi.keys"
+  refused_with "U+202E" --workdir "$work/w" --keys "$work/w/bidi.keys" --glyphs ascii
+}
+
 case "$case_name" in
   links) links ;;
+  names) names ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"

@@ -18,7 +18,7 @@ struct HandoutPage {
 };
 
 // `text` for HTML, as text or as an attribute's value: & < > " ' as character references, every
-// other byte as it is (the document is UTF-8).
+// other character as it is (the document is UTF-8), bytes that are not UTF-8 as U+FFFD.
 std::string html_escaped(std::string_view text);
 
 // The index of a handout titled `title` (the key script's name): a plain, self-contained HTML page
