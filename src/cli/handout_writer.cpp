@@ -5,11 +5,32 @@
 #include "apcs/lesson/handout.h"
 #include "apcs/raster/replay_caption.h"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 namespace apcs {
 
 namespace {
 
 constexpr std::string_view index_name = "index.html";
+
+// The pages are written one by one as the replay reaches their captions: a page that is a link
+// leading out of the folder is judged now, before the first page is written, not at its turn.
+Expected<void> check_links_stay(const std::filesystem::path& folder, const std::vector<std::string>& names)
+{
+    for (const std::string& name : names)
+        if (Expected<void> stays = check_link_stays_in_folder(folder / name); !stays)
+            return stays;
+    return ok;
+}
+
+std::vector<std::string> sorted_names_in(const std::filesystem::path& folder)
+{
+    std::vector<std::string> names = file_names_in(folder);
+    std::sort(names.begin(), names.end());
+    return names;
+}
 
 } // namespace
 
@@ -17,9 +38,17 @@ Expected<HandoutWriter> HandoutWriter::open(const std::filesystem::path& folder,
 {
     if (Expected<void> made = make_output_folder(folder, "the handout (--handout)"); !made)
         return made.error();
+    // Opened first: the pages go into the folder checked here, however it is renamed or replaced
+    // meanwhile.
+    Expected<OutputFolder> opened = OutputFolder::open(folder);
+    if (!opened)
+        return opened.error();
     if (Expected<void> writable = check_writable(folder / index_name, ReadOnlyTarget::left_to_the_write); !writable)
         return writable.error();
-    return HandoutWriter(folder, ink);
+    const std::vector<std::string> names = sorted_names_in(folder);
+    if (Expected<void> stays = check_links_stay(folder, names); !stays)
+        return stays.error();
+    return HandoutWriter(std::move(*opened), ink);
 }
 
 void HandoutWriter::write(int number, std::size_t count, std::string_view caption, const SessionScreen& screen,
@@ -36,8 +65,8 @@ void HandoutWriter::write(int number, std::size_t count, std::string_view captio
         return;
     }
     m_last_backup.clear();
-    write_file(picture, *png, inputs);
-    write_file(m_folder / (stem + ".txt"), screen_text(shown, glyphs), inputs);
+    write_file(stem + ".png", *png, inputs);
+    write_file(stem + ".txt", screen_text(shown, glyphs), inputs);
     if (m_outcome)
         m_pages[number] = HandoutPage{number, stem + ".png", std::string(caption)};
 }
@@ -48,22 +77,22 @@ void HandoutWriter::finish(std::string_view title, const KeyFileGuard& inputs)
     for (const auto& [number, page] : m_pages)
         pages.push_back(page);
     m_last_backup.clear();
-    write_file(m_folder / index_name, handout_index_html(title, pages), inputs);
+    write_file(std::string(index_name), handout_index_html(title, pages), inputs);
 }
 
-void HandoutWriter::write_file(const std::filesystem::path& target, std::string_view content, const KeyFileGuard& inputs)
+void HandoutWriter::write_file(const std::string& name, std::string_view content, const KeyFileGuard& inputs)
 {
     if (!m_outcome)
         return;
     KeyFileGuard kept = inputs;
     if (!m_last_backup.empty())
         kept.protect(m_last_backup);
-    const Expected<WriteResult> written = write_file_atomically(target, content, &kept);
+    const Expected<WriteResult> written = write_file_atomically(m_output, name, content, &kept);
     if (!written) {
         m_outcome = written.error();
         return;
     }
-    m_written.push_back(target);
+    m_written.push_back(m_folder / name);
     m_last_backup = written->backup;
 }
 

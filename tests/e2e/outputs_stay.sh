@@ -5,6 +5,9 @@
 #                 is written: the file it leads to stays as it was and gets no .bak beside it;
 #   names         a file name with ESC ] ... BEL in it reaches stderr and grade's CSV escaped
 #                 (\x1B ... \x07), for grade, path, draw, fit, play, --keys, --record, --workdir;
+#   swapped-folder play --out whose folder is renamed mid-run and replaced by a link to another
+#                 folder writes every frame into the folder it opened (now renamed), none into
+#                 the other folder.
 # The files a test makes stand in for the victim's. Usage: outputs_stay.sh APCS DATA CASE
 set -uo pipefail
 apcs=$1
@@ -129,9 +132,37 @@ names() {
   refused_with "U+202E" --workdir "$work/w" --keys "$work/w/bidi.keys" --glyphs ascii
 }
 
+swapped_folder() {
+  setup
+  # A scene of 30001 frames, written for long enough to swap its folder while it writes.
+  sed 's/^FRAMES 60$/FRAMES 30000/' "$data/car/car.scn" > "$work/w/car.scn"
+  cp "$data"/car/*.dat "$work/w/"
+  mkdir "$work/other" "$work/out"
+  "$apcs" play "$work/w/car.scn" --out "$work/out" < /dev/null > /dev/null 2> "$work/err" &
+  local pid=$!
+  local seen=
+  for _ in $(seq 1 6000); do
+    if [ -n "$(find "$work/out" -name 'frm*.dat' -print -quit 2>/dev/null)" ]; then
+      mv "$work/out" "$work/out.moved" && ln -s other "$work/out"
+      kill -0 "$pid" 2>/dev/null && seen=yes
+      break
+    fi
+    kill -0 "$pid" 2>/dev/null || break
+    sleep 0.005
+  done
+  wait "$pid"; local status=$?
+  [ -n "$seen" ] || fail "the folder was not swapped while play wrote (exit $status): $(cat "$work/err")"
+  local strays
+  strays=$(find "$work/other" -type f | wc -l)
+  [ "$strays" -eq 0 ] || fail "$strays files were written into the folder put in out's place (exit $status)"
+  [ "$status" -eq 0 ] || fail "exit $status: $(cat "$work/err")"
+  [ "$(find "$work/out.moved" -name 'frm*.dat' | wc -l)" -eq 30001 ] || fail "the moved folder misses frames"
+}
+
 case "$case_name" in
   links) links ;;
   names) names ;;
+  swapped-folder) swapped_folder ;;
   *) fail "unknown case $case_name" ;;
 esac
 echo "ok: $case_name"

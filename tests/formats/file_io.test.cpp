@@ -352,6 +352,33 @@ TEST_CASE("a symbolic link to a file in its own folder or below it is written th
     REQUIRE(read_all(folder / "w/pages/real.txt") == "new\n");
 }
 
+TEST_CASE("a file written through an opened folder goes into that folder after it is renamed and replaced by a link",
+          "[formats][files][special][links]")
+{
+    const TempFolder folder;
+    fs::create_directories(folder / "out");
+    fs::create_directories(folder / "other");
+    const Expected<OutputFolder> opened = OutputFolder::open(folder / "out");
+    REQUIRE(opened.has_value());
+    REQUIRE(write_file_atomically(*opened, "frm000.dat", std::string_view("0 0\n")).has_value());
+    fs::rename(folder / "out", folder / "out.moved");
+    fs::create_directory_symlink("other", folder / "out");
+
+    const Expected<WriteResult> written = write_file_atomically(*opened, "frm001.dat", std::string_view("1 1\n"));
+    REQUIRE(written.has_value());
+    REQUIRE(read_all(folder / "out.moved/frm001.dat") == "1 1\n");
+    REQUIRE(entries_in(folder / "other") == 0);
+    REQUIRE(entries_in(folder / "out.moved") == 2);
+    // Replaced there too, its old content kept beside it; messages name it as the folder was named.
+    const Expected<WriteResult> again = write_file_atomically(*opened, "frm001.dat", std::string_view("2 2\n"));
+    REQUIRE(again.has_value());
+    REQUIRE(read_all(folder / "out.moved/frm001.bak") == "1 1\n");
+    fs::create_directory(folder / "out.moved/frm002.dat");
+    const Expected<WriteResult> refused = write_file_atomically(*opened, "frm002.dat", std::string_view("3 3\n"));
+    REQUIRE_FALSE(refused.has_value());
+    REQUIRE(refused.error().to_string() == (folder / "out/frm002.dat").string() + ": is a directory; cannot write a file there");
+}
+
 TEST_CASE("a write through a symbolic link to a device or to nothing is refused", "[formats][files][special]")
 {
     const TempFolder folder;

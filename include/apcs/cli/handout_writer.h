@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/base/diagnostic.h"
+#include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/lesson/handout_index.h"
 #include "apcs/raster/glyph_mapper.h"
@@ -9,6 +10,7 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -23,7 +25,8 @@ public:
     // The writer of a handout into `folder`, its pictures in `ink`, made now when it is not there
     // (one level, as --out makes its folder: make_output_folder), so that a folder that cannot be
     // made, or an index.html there that cannot be replaced (a folder, a FIFO), stops the run before
-    // the session starts.
+    // the session starts. None of its entries may be a link that leads out of it
+    // (check_link_stays_in_folder); the pages are written into the folder opened here.
     [[nodiscard]] static Expected<HandoutWriter> open(const std::filesystem::path& folder, PngInk ink = PngInk::monitor);
 
     // Caption number `number` (1, 2, …) of `count` at the end of its keys: `screen` is the
@@ -46,9 +49,10 @@ public:
     const std::vector<std::filesystem::path>& written() const { return m_written; }
 
 private:
-    HandoutWriter(std::filesystem::path folder, PngInk ink) : m_folder(std::move(folder)), m_ink(ink) {}
-    void write_file(const std::filesystem::path& target, std::string_view content, const KeyFileGuard& inputs);
+    HandoutWriter(OutputFolder output, PngInk ink) : m_output(std::move(output)), m_folder(m_output.path()), m_ink(ink) {}
+    void write_file(const std::string& name, std::string_view content, const KeyFileGuard& inputs);
 
+    OutputFolder m_output;
     std::filesystem::path m_folder;
     PngInk m_ink;
     Expected<void> m_outcome = ok;

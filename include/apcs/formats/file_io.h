@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace apcs {
 
@@ -97,6 +98,46 @@ using ContentWriter = std::function<void(const ContentSink& sink)>;
 // write_file_atomically for content made chunk by chunk, never whole in memory: while it equals
 // the existing file it is only compared; the temporary file is made at the first difference.
 Expected<WriteResult> write_file_atomically(const std::filesystem::path& target, const ContentWriter& write_content,
+                                            const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+
+// A folder that a run of files is written into, opened once: every file written through it
+// (write_file_atomically below) is made, replaced and kept as .bak in the folder opened, wherever
+// it is renamed or moved meanwhile, and never in a folder or a link put in its place (mv out out2;
+// ln -s elsewhere out, issue 56). The files are reached through /proc/self/fd (Linux); where /proc
+// is not mounted (a bare chroot) they are reached by the folder's name, as before issue 56.
+class OutputFolder {
+public:
+    // `folder` opened, or why it cannot be.
+    [[nodiscard]] static Expected<OutputFolder> open(const std::filesystem::path& folder);
+    OutputFolder(OutputFolder&& other) noexcept;
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+    OutputFolder& operator=(OutputFolder&&) = delete;
+    ~OutputFolder();
+
+    // The folder as it was named, for messages.
+    const std::filesystem::path& path() const { return m_path; }
+    // `name` in the folder opened, as a path the kernel resolves through its descriptor.
+    std::filesystem::path reached(const std::string& name) const;
+
+private:
+    OutputFolder(std::filesystem::path path, int descriptor, bool reached_by_descriptor)
+        : m_path(std::move(path)), m_descriptor(descriptor), m_reached_by_descriptor(reached_by_descriptor)
+    {
+    }
+
+    std::filesystem::path m_path;
+    int m_descriptor;
+    bool m_reached_by_descriptor;
+};
+
+// write_file_atomically of the file `name` in `folder` (a name, not a path), its messages naming it
+// FOLDER/NAME as `folder` was named.
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name,
+                                            const ContentWriter& write_content, const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name, std::string_view content,
                                             const KeyFileGuard* inputs = nullptr,
                                             Durability durability = Durability::each_file);
 
