@@ -6,6 +6,7 @@
 #include "apcs/cli/report.h"
 #include "apcs/cli/script_options.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/text_fields.h"
@@ -527,7 +528,12 @@ ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOp
         return status;
     const std::string title = *options.keys == "-" ? std::string("standard input") : options.keys->filename().string();
     handout->finish(title, files_read(options, session, folder));
-    if (handout->outcome() || status == ExitStatus::stopped)
+    if (handout->outcome()) {
+        if (const std::optional<std::string> note = earlier_inbetweens_note(handout->earlier_pages()))
+            err << "apcs: " << *note << '\n';
+        return status;
+    }
+    if (status == ExitStatus::stopped)
         return status;
     err << "apcs: --handout: " << handout->outcome().error().to_string() << '\n';
     return ExitStatus::bad_input;

@@ -5,6 +5,9 @@
 #                 is written: the file it leads to stays as it was and gets no .bak beside it;
 #   names         a file name with ESC ] ... BEL in it reaches stderr and grade's CSV escaped
 #                 (\x1B ... \x07), for grade, path, draw, fit, play, --keys, --record, --workdir;
+#   handout-folder a handout goes only into a new or empty folder or an earlier handout's: a folder
+#                 of the user's (their index.html, index.bak) is refused and left as it was; an
+#                 earlier, longer handout's extra pages are named, not deleted;
 #   swapped-folder play --out whose folder is renamed mid-run and replaced by a link to another
 #                 folder writes every frame into the folder it opened (now renamed), none into
 #                 the other folder.
@@ -132,6 +135,35 @@ names() {
   refused_with "U+202E" --workdir "$work/w" --keys "$work/w/bidi.keys" --glyphs ascii
 }
 
+handout_folder() {
+  setup
+  local handout=(--workdir "$work/w" --keys "$work/w/lesson.keys" --glyphs ascii --handout)
+  # The user's course page and its older version: refused, both as they were.
+  mkdir "$work/mine"
+  echo '<html>my course page</html>' > "$work/mine/index.html"
+  echo 'my older course page' > "$work/mine/index.bak"
+  refused_with "mine: holds an index.html that is not a handout's" "${handout[@]}" "$work/mine"
+  [ "$(cat "$work/mine/index.html")" = '<html>my course page</html>' ] || fail "the user's index.html was replaced"
+  [ "$(cat "$work/mine/index.bak")" = 'my older course page' ] || fail "the user's index.bak was replaced"
+  [ "$(ls -A "$work/mine" | wc -l)" -eq 2 ] || fail "files were added to the user's folder: $(ls -A "$work/mine")"
+  mkdir "$work/notes"
+  echo 'mine' > "$work/notes/notes.txt"
+  refused_with "notes: holds notes.txt, and no handout's index.html" "${handout[@]}" "$work/notes"
+  [ "$(ls -A "$work/notes")" = notes.txt ] || fail "files were added to the user's folder: $(ls -A "$work/notes")"
+
+  # An earlier handout is APCS's: written over; a page of an earlier, longer lesson is named, kept.
+  "$apcs" "${handout[@]}" "$work/h" < /dev/null > /dev/null 2> "$work/err" || fail "first handout: $(cat "$work/err")"
+  cp "$work/h/01-w-opens-the-waypoint-editor-i.png" "$work/h/99-an-earlier-page.png"
+  echo 'older' > "$work/h/99-an-earlier-page.bak"
+  "$apcs" "${handout[@]}" "$work/h" < /dev/null > /dev/null 2> "$work/err" || fail "second handout: $(cat "$work/err")"
+  grep -qF "h/99-an-earlier-page.png is from an earlier run (not rewritten)" "$work/err" \
+    || fail "the earlier page is not named: $(cat "$work/err")"
+  [ -f "$work/h/99-an-earlier-page.png" ] || fail "the earlier page was deleted"
+  # A file of the user's put in it makes it theirs too.
+  echo 'mine' > "$work/h/notes.txt"
+  refused_with "h: holds notes.txt, which is not a file of a handout" "${handout[@]}" "$work/h"
+}
+
 swapped_folder() {
   setup
   # A scene of 30001 frames, written for long enough to swap its folder while it writes.
@@ -162,6 +194,7 @@ swapped_folder() {
 case "$case_name" in
   links) links ;;
   names) names ;;
+  handout-folder) handout_folder ;;
   swapped-folder) swapped_folder ;;
   *) fail "unknown case $case_name" ;;
 esac

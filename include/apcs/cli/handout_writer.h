@@ -25,8 +25,10 @@ public:
     // The writer of a handout into `folder`, its pictures in `ink`, made now when it is not there
     // (one level, as --out makes its folder: make_output_folder), so that a folder that cannot be
     // made, or an index.html there that cannot be replaced (a folder, a FIFO), stops the run before
-    // the session starts. None of its entries may be a link that leads out of it
-    // (check_link_stays_in_folder); the pages are written into the folder opened here.
+    // the session starts. The folder must be new, empty or an earlier handout's (recognised by its
+    // index.html, is_handout_index) holding only a handout's files (is_handout_file_name), and none
+    // of its entries a link that leads out of it (check_link_stays_in_folder); else the first file
+    // that is not is named and nothing is written.
     [[nodiscard]] static Expected<HandoutWriter> open(const std::filesystem::path& folder, PngInk ink = PngInk::monitor);
 
     // Caption number `number` (1, 2, …) of `count` at the end of its keys: `screen` is the
@@ -47,6 +49,9 @@ public:
     const Expected<void>& outcome() const { return m_outcome; }
     // The files written so far, in order.
     const std::vector<std::filesystem::path>& written() const { return m_written; }
+    // The pages in the folder that this handout did not write (an earlier, longer lesson's), as
+    // DIR/NAME in name order: named after the run, never deleted, as play --out names frames.
+    std::vector<std::string> earlier_pages() const;
 
 private:
     HandoutWriter(OutputFolder output, PngInk ink) : m_output(std::move(output)), m_folder(m_output.path()), m_ink(ink) {}

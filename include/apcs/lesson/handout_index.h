@@ -28,4 +28,8 @@ std::string html_escaped(std::string_view text);
 // picture.
 std::string handout_index_html(std::string_view title, const std::vector<HandoutPage>& pages);
 
+// Whether `html` is an index handout_index_html wrote (its head and its print rules): how an earlier
+// handout of APCS is recognised in a folder, and a page of the user's told from it.
+bool is_handout_index(std::string_view html);
+
 } // namespace apcs
