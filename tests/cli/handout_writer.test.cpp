@@ -258,7 +258,7 @@ TEST_CASE("a handout's pages (--handout) are replaced as pictures are: same cont
     REQUIRE(std::filesystem::last_write_time(folder / "handout/02-4-moves-it-left-one-step-1-of.png") == first_written);
 }
 
-TEST_CASE("a handout goes only into a new or empty folder or an earlier handout's; the user's files stay as they were",
+TEST_CASE("a handout goes only into a new or empty folder or an earlier handout's, and the user's files stay as they were",
           "[cli][handout][names]")
 {
     const test::TempFolder folder;
