@@ -1,6 +1,7 @@
 #include "apcs/base/utf8.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <locale.h>
 #include <wchar.h>
 
@@ -90,29 +91,78 @@ std::size_t sequence_length(std::string_view utf8, std::size_t at)
 
 } // namespace
 
-std::optional<std::string> first_control_character(std::string_view utf8)
+namespace {
+
+std::string hex_byte(unsigned value)
 {
     constexpr std::string_view digits = "0123456789ABCDEF";
-    const auto hex = [&](unsigned value) { return std::string(1, digits[value >> 4]) + digits[value & 0xF]; };
+    return std::string("\\x") + digits[(value >> 4) & 0xF] + digits[value & 0xF];
+}
+
+// How a message names `character` when a terminal would obey it rather than show it ("\x1B",
+// "U+009B"), or when it would reorder the text shown around it: a bidi control (U+202E makes
+// "txt.exe" of "exe.txt"); nullopt for a character that is shown as it is.
+std::optional<std::string> control_name(char32_t character)
+{
+    const auto code = static_cast<unsigned>(character);
+    if (character < 0x20 && character != U'\t')
+        return hex_byte(code);
+    if (character == 0x7F)
+        return hex_byte(code);
+    if (character >= 0x80 && character <= 0x9F)
+        return "U+00" + hex_byte(code).substr(2);
+    const bool bidi = character == 0x061C || character == 0x200E || character == 0x200F ||
+                      (character >= 0x202A && character <= 0x202E) || (character >= 0x2066 && character <= 0x2069);
+    if (!bidi)
+        return std::nullopt;
+    char name[8];
+    std::snprintf(name, sizeof name, "U+%04X", code);
+    return name;
+}
+
+char32_t character_at(std::string_view utf8, std::size_t at, std::size_t length)
+{
+    const std::u32string decoded = decode_utf8(utf8.substr(at, length));
+    return decoded.empty() ? U'\uFFFD' : decoded.front();
+}
+
+} // namespace
+
+std::optional<std::string> first_control_character(std::string_view utf8)
+{
     for (std::size_t at = 0; at < utf8.size();) {
         const std::size_t length = sequence_length(utf8, at);
         const auto byte = static_cast<unsigned char>(utf8[at]);
         // A stray byte 0x80-0x9F is a C1 control to a terminal in an 8-bit mode (0x9B: CSI).
         if (length == 0) {
             if (byte >= 0x80 && byte <= 0x9F)
-                return "\\x" + hex(byte);
+                return hex_byte(byte);
             ++at;
             continue;
         }
-        const std::u32string decoded = decode_utf8(utf8.substr(at, length));
-        const char32_t character = decoded.empty() ? U'\uFFFD' : decoded.front();
+        if (std::optional<std::string> name = control_name(character_at(utf8, at, length)))
+            return name;
         at += length;
-        if (character == U'\t' || (character >= 0x20 && character < 0x7F) || character > 0x9F)
-            continue;
-        const auto code = static_cast<unsigned>(character);
-        return (character < 0x80 ? "\\x" : "U+00") + hex(code);
     }
     return std::nullopt;
+}
+
+std::string escape_controls(std::string_view text)
+{
+    std::string shown;
+    shown.reserve(text.size());
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t length = sequence_length(text, at);
+        // Every stray byte, not only those a terminal obeys: what it shows for one is a guess.
+        if (length == 0) {
+            shown += hex_byte(static_cast<unsigned char>(text[at++]));
+            continue;
+        }
+        const std::optional<std::string> name = control_name(character_at(text, at, length));
+        shown += name ? std::string_view(*name) : text.substr(at, length);
+        at += length;
+    }
+    return shown;
 }
 
 } // namespace apcs

@@ -1,6 +1,7 @@
 #include "apcs/cli/command_line.h"
 
 #include "apcs/base/exit_status.h"
+#include "apcs/base/utf8.h"
 #include "apcs/cli/draw_command.h"
 #include "apcs/cli/figures_command.h"
 #include "apcs/cli/fit_command.h"
@@ -290,7 +291,7 @@ std::optional<std::string> standard_stream_clash(const CommonOptions& options,
 
 int usage_error(const std::string& line, const CLI::App* command, std::ostream& err)
 {
-    err << "apcs: " << line << "\nTry '" << command_name(command) << " --help' for more information.\n";
+    err << "apcs: " << escape_controls(line) << "\nTry '" << command_name(command) << " --help' for more information.\n";
     return to_int(ExitStatus::bad_usage);
 }
 

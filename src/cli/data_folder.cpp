@@ -1,5 +1,7 @@
 #include "apcs/cli/data_folder.h"
 
+#include "apcs/formats/file_io.h"
+
 #include <cstdlib>
 #include <string>
 #include <system_error>
@@ -7,14 +9,6 @@
 namespace apcs {
 
 namespace {
-
-bool is_inside(const std::filesystem::path& file, const std::filesystem::path& folder)
-{
-    if (folder.empty())
-        return false;
-    const std::filesystem::path relative = file.lexically_relative(folder);
-    return !relative.empty() && *relative.begin() != "..";
-}
 
 std::filesystem::path canonical_or_empty(const std::filesystem::path& path)
 {
@@ -41,7 +35,7 @@ Expected<std::filesystem::path> choose_data_folder(const DataFolderClues& clues,
             return installed;
         looked_in = installed.string();
     }
-    if (is_inside(clues.executable, clues.build_folder)) {
+    if (!clues.build_folder.empty() && lies_within(clues.executable, clues.build_folder)) {
         if (is_folder(clues.source_data))
             return clues.source_data;
         looked_in += (looked_in.empty() ? "" : " and ") + clues.source_data.string();

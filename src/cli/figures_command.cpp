@@ -1,6 +1,7 @@
 #include "apcs/cli/figures_command.h"
 
 #include "apcs/animation/surface_fit.h"
+#include "apcs/base/utf8.h"
 #include "apcs/cli/data_folder.h"
 #include "apcs/cli/path_command.h"
 #include "apcs/cli/report.h"
@@ -158,7 +159,7 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
         if (Expected<void> done = write_png_file(target / name, screen, PngShape::monitor, read_files_guard(options), out);
             !done)
             return report_bad_input(done.error(), err);
-        out << (target / name).string() << '\n';
+        out << escape_controls((target / name).string()) << '\n';
     }
     return ExitStatus::success;
 }

@@ -1,5 +1,6 @@
 #include "apcs/cli/grade_command.h"
 
+#include "apcs/base/utf8.h"
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/cli/script_options.h"
@@ -184,7 +185,8 @@ std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream&
 std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& recording,
                                       const CommonOptions& options, const fs::path& work, std::ostream& err)
 {
-    const GradeNames names{recording.string(), exercise.name};
+    // The CSV is read on the teacher's terminal too (cat grades.csv): names as messages print them.
+    const GradeNames names{escape_controls(recording.string()), escape_controls(exercise.name)};
     const std::optional<KeyScript> script = read_recording(recording, err);
     if (!script)
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);

@@ -1,5 +1,7 @@
 #include "apcs/cli/report.h"
 
+#include "apcs/base/utf8.h"
+
 #include <ostream>
 
 namespace apcs {
@@ -14,7 +16,7 @@ void warn_if_frames_freeze(const EvaluatedPath& path, const std::string& file, s
 {
     if (!path.frames_freeze())
         return;
-    err << "apcs: " << file << ": frames will freeze at " << describe_frozen_frames(path, 8);
+    err << "apcs: " << escape_controls(file) << ": frames will freeze at " << describe_frozen_frames(path, 8);
     const std::size_t intervals = path.curve.sample_count() - 1;
     if (path.inbetweens.size() > intervals)
         err << " (" << path.inbetweens.size() << " in-betweens, " << intervals << " curve samples)";

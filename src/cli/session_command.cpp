@@ -1,10 +1,12 @@
 #include "apcs/cli/session_command.h"
 
+#include "apcs/base/utf8.h"
 #include "apcs/cli/handout_writer.h"
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/cli/script_options.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/text_fields.h"
@@ -161,7 +163,7 @@ std::optional<ExitStatus> refuse_work_folder(const std::filesystem::path& folder
     std::error_code error;
     if (std::filesystem::is_directory(folder, error))
         return std::nullopt;
-    err << folder.string() << ": is not a folder; expected the folder to work in (--workdir)\n";
+    err << escape_controls(folder.string()) << ": is not a folder; expected the folder to work in (--workdir)\n";
     return ExitStatus::bad_input;
 }
 
@@ -188,7 +190,7 @@ std::optional<ExitStatus> refuse_changed_task(const KeyScript& script, const Com
     const std::optional<std::string> changed = changed_task_option(task, options);
     if (!changed)
         return std::nullopt;
-    err << "apcs: " << *changed << ": " << options.keys->string()
+    err << "apcs: " << *changed << ": " << escape_controls(options.keys->string())
         << " is an exercise (it has GOAL lines) and this changes its task: apcs grade would grade the recording "
            "'other'; expected the exercise's own (only --step, --delay, --theta and --phi may differ)\n";
     return ExitStatus::bad_usage;
@@ -347,7 +349,7 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
     const std::vector<std::string>& written = replay.session().written_files();
     out << (written.empty() ? "APCS is done. No file written.\n" : "APCS is done. Files written:\n");
     for (const std::string& name : written)
-        out << name << '\n';
+        out << escape_controls(name) << '\n';
     return status;
 }
 
@@ -511,7 +513,12 @@ ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOp
         return status;
     const std::string title = *options.keys == "-" ? std::string("standard input") : options.keys->filename().string();
     handout->finish(title, files_read(options, session, folder));
-    if (handout->outcome() || status == ExitStatus::stopped)
+    if (handout->outcome()) {
+        if (const std::optional<std::string> note = earlier_inbetweens_note(handout->earlier_pages()))
+            err << "apcs: " << *note << '\n';
+        return status;
+    }
+    if (status == ExitStatus::stopped)
         return status;
     err << "apcs: --handout: " << handout->outcome().error().to_string() << '\n';
     return ExitStatus::bad_input;
@@ -611,7 +618,7 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
         return status == ExitStatus::stopped ? status : *refused;
     // A student at a terminal sees where the keys went, the file to hand in.
     if (!start.headless && options.record && *options.record != "-")
-        out << "Keystrokes recorded in " << options.record->string() << '\n';
+        out << "Keystrokes recorded in " << escape_controls(options.record->string()) << '\n';
     return status;
 }
 

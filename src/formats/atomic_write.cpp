@@ -21,12 +21,13 @@ namespace {
 
 // NAME.bak is replaced by the old file only when it is a writable regular file or absent: a FIFO, a
 // link, a directory or a read-only file there is the user's, and is left as it is.
-Expected<void> check_backup_replaceable(const fs::path& backup, const std::string& shown)
+Expected<void> check_backup_replaceable(const fs::path& backup, const std::string& shown,
+                                        const std::string& shown_backup)
 {
     struct stat status {};
     if (backup.empty() || ::lstat(backup.c_str(), &status) != 0)
         return ok;
-    const std::string cannot = "cannot keep the old file as " + backup.string() + ": it ";
+    const std::string cannot = "cannot keep the old file as " + shown_backup + ": it ";
     if (S_ISLNK(status.st_mode))
         return Diagnostic{shown, 0, cannot + "is a symbolic link; a backup replaces only a regular file"};
     if (S_ISDIR(status.st_mode))
@@ -77,6 +78,33 @@ fs::path backup_path_for(const fs::path& target, const KeyFileGuard* inputs)
     return {}; // .bak and .b01 … .b99 are all inputs: there is nowhere to keep the old file
 }
 
+bool lies_within(const fs::path& file, const fs::path& folder)
+{
+    const fs::path relative = file.lexically_relative(folder);
+    return !relative.empty() && *relative.begin() != "..";
+}
+
+Expected<void> check_link_stays_in_folder(const fs::path& output)
+{
+    struct stat status {};
+    if (::lstat(output.c_str(), &status) != 0 || !S_ISLNK(status.st_mode))
+        return ok;
+    // Followed to its end, so that a chain of links is judged by the file it reaches; the link's
+    // own folder is judged the same way, so that a folder reached through a link still counts.
+    std::error_code folder_error;
+    std::error_code file_error;
+    const fs::path folder = fs::weakly_canonical(output.has_parent_path() ? output.parent_path() : fs::path("."), folder_error);
+    const fs::path reached = fs::weakly_canonical(output, file_error);
+    if (!folder_error && !file_error && lies_within(reached, folder))
+        return ok;
+    std::error_code link_error;
+    const fs::path named = fs::read_symlink(output, link_error);
+    return Diagnostic{output.string(), 0,
+                      "is a symbolic link to " + (link_error ? std::string("a file") : named.string()) +
+                          ", which leads out of its folder (to " + (file_error ? std::string("a file elsewhere") : reached.string()) +
+                          "); APCS writes through a link only to a file in the link's folder or below it"};
+}
+
 namespace {
 
 // A file write_file_atomically may replace: the regular file `requested` names (through a
@@ -90,8 +118,10 @@ struct ReplaceableTarget {
 Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const std::string& shown)
 {
     // Only regular files are ever replaced. A symbolic link is written through to the file it
-    // names (replaced in its own folder; the link stays) when that is a regular file; a device, a
-    // FIFO, a socket or a directory, named or linked to, is refused and left as it is.
+    // names (replaced in its own folder; the link stays) when that is a regular file in the link's
+    // folder or below it; a device, a FIFO, a socket or a directory, named or linked to, and a
+    // file elsewhere (ln -s ../victim/passwd w/my.keys, worst as root) are refused and left as
+    // they are.
     ReplaceableTarget target{requested, false, {}};
     if (::lstat(requested.c_str(), &target.status) != 0)
         return target;
@@ -106,6 +136,8 @@ Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const 
         target.path = fs::canonical(requested, error);
         if (error)
             return Diagnostic{shown, 0, link_to + ", which cannot be followed: " + error.message()};
+        if (Expected<void> stays = check_link_stays_in_folder(requested); !stays)
+            return Diagnostic{shown, 0, stays.error().message};
     } else if (S_ISDIR(target.status.st_mode)) {
         return Diagnostic{shown, 0, "is a directory; cannot write a file there"};
     } else if (!S_ISREG(target.status.st_mode)) {
@@ -121,9 +153,11 @@ Expected<ReplaceableTarget> replaceable_target(const fs::path& requested, const 
 // held in memory.
 class Replacement {
 public:
-    Replacement(const ReplaceableTarget& target, std::string shown, const KeyFileGuard* inputs)
+    // `shown_folder`: the target's folder as messages name it.
+    Replacement(const ReplaceableTarget& target, std::string shown, fs::path shown_folder, const KeyFileGuard* inputs)
         : m_target(target)
         , m_shown(std::move(shown))
+        , m_shown_folder(std::move(shown_folder))
         , m_inputs(inputs)
         , m_old(target.exists ? ::open(target.path.c_str(), O_RDONLY | O_CLOEXEC) : -1)
         , m_differs(!target.exists || m_old.get() < 0)
@@ -198,7 +232,8 @@ private:
         if (m_target.exists && is_read_only(m_target.path, m_target.status))
             return refuse("is read-only (mode " + octal_mode(m_target.status.st_mode) + "); not replaced");
         if (m_target.exists) {
-            m_outcome = check_backup_replaceable(backup_path_for(m_target.path, m_inputs), m_shown);
+            const fs::path backup = backup_path_for(m_target.path, m_inputs);
+            m_outcome = check_backup_replaceable(backup, m_shown, shown_beside(backup));
             if (!m_outcome)
                 return false;
         }
@@ -208,12 +243,12 @@ private:
         // removed, never left behind as .NAME.XXXXXX.
         m_folder.reset(::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
         if (m_folder.get() < 0)
-            return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
+            return refuse("cannot create a temporary file in " + shown_folder() + ": " + system_reason(errno));
         std::string temporary = temporary_name_for(folder, m_target.path.filename().string());
         // Known from its making until it is renamed or removed: a signal meanwhile removes it.
         const int descriptor = create_unfinished_file(m_folder.get(), temporary, m_unfinished);
         if (descriptor < 0)
-            return refuse("cannot create a temporary file in " + folder.string() + ": " + system_reason(errno));
+            return refuse("cannot create a temporary file in " + shown_folder() + ": " + system_reason(errno));
         m_file.reset(descriptor);
         m_temporary = std::move(temporary);
         return copy_same_part();
@@ -276,12 +311,15 @@ private:
             fs::copy_file(m_target.path, backup, fs::copy_options::overwrite_existing, error);
             if (error) {
                 errno = error.value();
-                return abandon("cannot keep the old file as " + backup.string());
+                return abandon("cannot keep the old file as " + shown_beside(backup));
             }
         }
         kept = backup;
         return true;
     }
+
+    std::string shown_beside(const fs::path& file) const { return (m_shown_folder / file.filename()).string(); }
+    std::string shown_folder() const { return m_shown_folder.empty() ? std::string(".") : m_shown_folder.string(); }
 
     bool refuse(const std::string& message)
     {
@@ -303,6 +341,7 @@ private:
 
     ReplaceableTarget m_target;
     std::string m_shown;
+    fs::path m_shown_folder;
     const KeyFileGuard* m_inputs;
     FileDescriptor m_old;
     std::uintmax_t m_same = 0; // bytes of the new content equal to the old file's first bytes
@@ -319,16 +358,73 @@ private:
 
 } // namespace
 
-Expected<WriteResult> write_file_atomically(const fs::path& requested, const ContentWriter& write_content,
-                                            const KeyFileGuard* inputs, Durability durability)
+namespace {
+
+// `requested` replaced by write_content's chunks; messages name it `shown`, and name its folder
+// `shown_folder` (empty: the folder of the file replaced, a link's target's).
+Expected<WriteResult> replace_file(const fs::path& requested, const std::string& shown, const fs::path& shown_folder,
+                                   const ContentWriter& write_content, const KeyFileGuard* inputs, Durability durability)
 {
-    const std::string shown = requested.string();
     const Expected<ReplaceableTarget> target = replaceable_target(requested, shown);
     if (!target)
         return target.error();
-    Replacement replacement(*target, shown, inputs);
+    Replacement replacement(*target, shown, shown_folder.empty() ? target->path.parent_path() : shown_folder, inputs);
     write_content([&replacement](std::string_view chunk) { return replacement.add(chunk); });
     return replacement.finish(durability);
+}
+
+} // namespace
+
+Expected<WriteResult> write_file_atomically(const fs::path& requested, const ContentWriter& write_content,
+                                            const KeyFileGuard* inputs, Durability durability)
+{
+    return replace_file(requested, requested.string(), {}, write_content, inputs, durability);
+}
+
+Expected<OutputFolder> OutputFolder::open(const fs::path& folder)
+{
+    const int descriptor = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (descriptor < 0)
+        return Diagnostic{folder.string(), 0, "cannot open the folder to write into it: " + system_reason(errno)};
+    const fs::path through = fs::path("/proc/self/fd") / std::to_string(descriptor);
+    return OutputFolder(folder, descriptor, ::access(through.c_str(), X_OK) == 0);
+}
+
+OutputFolder::OutputFolder(OutputFolder&& other) noexcept
+    : m_path(std::move(other.m_path))
+    , m_descriptor(std::exchange(other.m_descriptor, -1))
+    , m_reached_by_descriptor(other.m_reached_by_descriptor)
+{
+}
+
+OutputFolder::~OutputFolder()
+{
+    if (m_descriptor >= 0)
+        ::close(m_descriptor);
+}
+
+fs::path OutputFolder::reached(const std::string& name) const
+{
+    // The kernel resolves /proc/self/fd/N to the folder open as N, wherever it now is.
+    if (!m_reached_by_descriptor)
+        return m_path / name;
+    return fs::path("/proc/self/fd") / std::to_string(m_descriptor) / name;
+}
+
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name,
+                                            const ContentWriter& write_content, const KeyFileGuard* inputs,
+                                            Durability durability)
+{
+    const fs::path shown_folder = folder.path().empty() ? fs::path(".") : folder.path();
+    return replace_file(folder.reached(name), (folder.path() / name).string(), shown_folder, write_content, inputs,
+                        durability);
+}
+
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name, std::string_view content,
+                                            const KeyFileGuard* inputs, Durability durability)
+{
+    return write_file_atomically(
+        folder, name, [content](const ContentSink& sink) { sink(content); }, inputs, durability);
 }
 
 Expected<WriteResult> write_file_atomically(const fs::path& requested, std::string_view content,
@@ -403,7 +499,7 @@ Expected<void> check_replaceable(const fs::path& requested, const ContentWriter&
     else if (backup.empty())
         problem = Diagnostic{shown, 0, "cannot keep the old file: its .bak and .b01 … .b99 are all key files"};
     else
-        problem = check_backup_replaceable(backup, shown);
+        problem = check_backup_replaceable(backup, shown, backup.string());
     // Only a file whose content changes is replaced, and only then do these matter.
     if (problem || file_holds(target->path, static_cast<std::uintmax_t>(target->status.st_size), write_content))
         return ok;

@@ -1,5 +1,6 @@
 #include "apcs/formats/inbetween_files.h"
 
+#include "apcs/base/utf8.h"
 #include "apcs/formats/dat_file.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"
@@ -72,10 +73,11 @@ std::optional<std::string> earlier_inbetweens_note(std::span<const std::string> 
 {
     if (earlier.empty())
         return std::nullopt;
+    // Printed on stderr and in apcs.log: the folder's name in them is the user's, escaped.
     if (earlier.size() == 1)
-        return earlier.front() + " is from an earlier run (not rewritten)";
-    return earlier.front() + " to " + earlier.back() + " (" + std::to_string(earlier.size()) +
-           " files) are from an earlier run (not rewritten)";
+        return escape_controls(earlier.front()) + " is from an earlier run (not rewritten)";
+    return escape_controls(earlier.front()) + " to " + escape_controls(earlier.back()) + " (" +
+           std::to_string(earlier.size()) + " files) are from an earlier run (not rewritten)";
 }
 
 } // namespace apcs

@@ -139,6 +139,11 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
 {
     if (Expected<void> made = make_output_folder(folder, purpose); !made)
         return made.error();
+    // Opened before the checks: the files checked are those written, in this folder however it
+    // is renamed or replaced meanwhile (a run of 10^5 frames takes minutes).
+    const Expected<OutputFolder> opened = OutputFolder::open(folder);
+    if (!opened)
+        return opened.error();
     std::vector<std::filesystem::path> targets;
     targets.reserve(count);
     for (std::size_t index = 0; index < count; ++index) {
@@ -158,8 +163,8 @@ write_numbered_files(const std::filesystem::path& folder, std::size_t count,
     const std::size_t workers = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 8);
     for_each_index_in_parallel(count, workers, [&](std::size_t index) {
         const auto write_content = [&writer_of, index](const ContentSink& sink) { writer_of(index, sink); };
-        const Expected<WriteResult> result =
-            write_file_atomically(targets[index], write_content, &guard, Durability::at_barrier);
+        const Expected<WriteResult> result = write_file_atomically(*opened, targets[index].filename().string(),
+                                                                   write_content, &guard, Durability::at_barrier);
         if (!result)
             outcomes[index] = result.error();
         else

@@ -17,7 +17,65 @@ char name_character(char character)
     return kept ? character : '\0';
 }
 
+bool all_of_characters(std::string_view text, bool (*kept)(char))
+{
+    return !text.empty() && std::all_of(text.begin(), text.end(), kept);
+}
+
+bool is_digit(char character) { return character >= '0' && character <= '9'; }
+
+bool is_step_character(char character) { return character == '-' || name_character(character) == character; }
+
+// "NN-STEP" as handout_file_stem makes it: two digits or more, a '-', a short name.
+bool is_page_stem(std::string_view stem)
+{
+    const std::size_t dash = stem.find('-');
+    if (dash == std::string_view::npos || dash < 2)
+        return false;
+    const std::string_view step = stem.substr(dash + 1);
+    return all_of_characters(stem.substr(0, dash), is_digit) && step.size() <= max_step_name_length &&
+           all_of_characters(step, is_step_character);
+}
+
+// ".bak", or ".b01" ... ".b99" (backup_path_for's names when NAME.bak is an input).
+bool is_backup_extension(std::string_view extension)
+{
+    return extension == ".bak" ||
+           (extension.size() == 4 && extension.starts_with(".b") && all_of_characters(extension.substr(2), is_digit));
+}
+
+struct NameParts {
+    std::string_view stem;
+    std::string_view extension; // from the last '.', which it includes
+};
+
+NameParts parts_of(std::string_view name)
+{
+    const std::size_t dot = name.rfind('.');
+    if (dot == std::string_view::npos || dot == 0)
+        return {name, {}};
+    return {name.substr(0, dot), name.substr(dot)};
+}
+
 } // namespace
+
+bool is_handout_page_name(std::string_view name)
+{
+    const NameParts parts = parts_of(name);
+    return (parts.extension == ".png" || parts.extension == ".txt") && is_page_stem(parts.stem);
+}
+
+bool is_handout_file_name(std::string_view name)
+{
+    // write_file_atomically's temporary file: ".NAME.XXXXXX".
+    constexpr std::size_t unique_tail = 7;
+    if (name.starts_with('.') && name.size() > 1 + unique_tail)
+        return is_handout_file_name(name.substr(1, name.size() - 1 - unique_tail));
+    const NameParts parts = parts_of(name);
+    if (parts.stem == "index")
+        return parts.extension == ".html" || is_backup_extension(parts.extension);
+    return is_page_stem(parts.stem) && (is_handout_page_name(name) || is_backup_extension(parts.extension));
+}
 
 std::string handout_step_name(std::string_view caption)
 {

@@ -1,5 +1,7 @@
 #include "apcs/lesson/handout_index.h"
 
+#include "apcs/base/utf8.h"
+
 namespace apcs {
 
 namespace {
@@ -21,6 +23,8 @@ figcaption { font-size: 11pt; margin-top: 0.3em; }
 </style>
 )";
 
+constexpr std::string_view index_head = "<!DOCTYPE html>\n<html>\n<head>\n<meta charset=\"utf-8\">\n<title>";
+
 std::string figure_html(const HandoutPage& page)
 {
     const std::string caption = html_escaped(page.caption);
@@ -34,14 +38,16 @@ std::string html_escaped(std::string_view text)
 {
     std::string escaped;
     escaped.reserve(text.size());
-    for (const char character : text) {
+    // Decoded, so that a caption's invalid bytes reach the page as U+FFFD, as they reach the .txt
+    // page, not as bytes a browser guesses at.
+    for (const char32_t character : decode_utf8(text)) {
         switch (character) {
-        case '&': escaped += "&amp;"; break;
-        case '<': escaped += "&lt;"; break;
-        case '>': escaped += "&gt;"; break;
-        case '"': escaped += "&quot;"; break;
-        case '\'': escaped += "&#39;"; break;
-        default: escaped += character;
+        case U'&': escaped += "&amp;"; break;
+        case U'<': escaped += "&lt;"; break;
+        case U'>': escaped += "&gt;"; break;
+        case U'"': escaped += "&quot;"; break;
+        case U'\'': escaped += "&#39;"; break;
+        default: append_utf8(escaped, character);
         }
     }
     return escaped;
@@ -50,7 +56,7 @@ std::string html_escaped(std::string_view text)
 std::string handout_index_html(std::string_view title, const std::vector<HandoutPage>& pages)
 {
     const std::string heading = html_escaped(title);
-    std::string html = "<!DOCTYPE html>\n<html>\n<head>\n<meta charset=\"utf-8\">\n<title>" + heading + "</title>\n";
+    std::string html = std::string(index_head) + heading + "</title>\n";
     html += index_style;
     html += "</head>\n<body>\n<h1>" + heading + "</h1>\n";
     if (pages.empty())
@@ -59,6 +65,11 @@ std::string handout_index_html(std::string_view title, const std::vector<Handout
         html += figure_html(page);
     html += "</body>\n</html>\n";
     return html;
+}
+
+bool is_handout_index(std::string_view html)
+{
+    return html.starts_with(index_head) && html.find(index_style) != std::string_view::npos;
 }
 
 } // namespace apcs

@@ -69,8 +69,7 @@ bool FolderFiles::lies_in_folder(const std::string& name) const
     const std::filesystem::path file = std::filesystem::weakly_canonical(m_folder / name, error);
     if (error)
         return false;
-    const std::filesystem::path relative = file.lexically_relative(folder);
-    return !relative.empty() && *relative.begin() != "..";
+    return lies_within(file, folder);
 }
 
 std::string FolderFiles::name_read(const std::string& name) const

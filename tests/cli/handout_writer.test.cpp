@@ -257,3 +257,34 @@ TEST_CASE("a handout's pages (--handout) are replaced as pictures are: same cont
     REQUIRE(read_all(page.string() + ".txt").starts_with("+-----"));
     REQUIRE(std::filesystem::last_write_time(folder / "handout/02-4-moves-it-left-one-step-1-of.png") == first_written);
 }
+
+TEST_CASE("a handout goes only into a new or empty folder or an earlier handout's, and the user's files stay as they were",
+          "[cli][handout][names]")
+{
+    const test::TempFolder folder;
+    copy_n_to_l(folder);
+    std::filesystem::create_directories(folder / "mine");
+    std::ofstream(folder / "mine/index.html") << "<html>my course page</html>\n";
+    std::ofstream(folder / "mine/index.bak") << "my older course page\n";
+    const auto mine = lesson_handout(folder, folder / "mine");
+    REQUIRE(mine.status == 1);
+    REQUIRE(mine.err.starts_with((folder / "mine").string() + ": holds an index.html that is not a handout's; a handout is "
+                                                              "written only into a new or empty folder"));
+    REQUIRE(read_all(folder / "mine/index.bak") == "my older course page\n");
+    REQUIRE(file_names(folder / "mine") == std::vector<std::string>{"index.bak", "index.html"});
+    REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
+
+    REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
+    std::filesystem::copy_file(folder / "handout/01-w-opens-the-waypoint-editor-i.png", folder / "handout/98-older.png");
+    std::ofstream(folder / "handout/99-older.txt") << "an earlier, longer lesson's page\n";
+    const auto again = lesson_handout(folder, folder / "handout");
+    REQUIRE(again.status == 0);
+    REQUIRE(again.err.ends_with("\napcs: " + (folder / "handout/98-older.png").string() + " to " +
+                                (folder / "handout/99-older.txt").string() +
+                                " (2 files) are from an earlier run (not rewritten)\n"));
+    REQUIRE(std::filesystem::exists(folder / "handout/99-older.txt"));
+    std::ofstream(folder / "handout/notes.txt") << "mine\n";
+    const auto notes = lesson_handout(folder, folder / "handout");
+    REQUIRE(notes.status == 1);
+    REQUIRE(notes.err.starts_with((folder / "handout").string() + ": holds notes.txt, which is not a file of a handout; "));
+}

@@ -310,6 +310,75 @@ TEST_CASE("a write through a symbolic link replaces the regular file it names an
     REQUIRE(entries_in(folder / "real") == 2);
 }
 
+TEST_CASE("a write through a symbolic link, or a chain of them, that leads out of its folder is refused",
+          "[formats][files][special][links]")
+{
+    const TempFolder folder;
+    fs::create_directories(folder / "victim");
+    fs::create_directories(folder / "w");
+    const fs::path victim = folder.write("victim/passwd", "root:x:0:0\n");
+    const fs::path link = folder / "w/my.keys";
+    fs::create_symlink("../victim/passwd", link);
+    fs::create_symlink("hop.keys", folder / "w/chain.keys");
+    fs::create_symlink("../victim/passwd", folder / "w/hop.keys");
+
+    for (const fs::path& output : {link, folder / "w/chain.keys"}) {
+        const Expected<WriteResult> written = write_file_atomically(output, "KEY Enter\n");
+        REQUIRE_FALSE(written.has_value());
+        REQUIRE(written.error().file == output.string());
+        REQUIRE(written.error().message.ends_with(", which leads out of its folder (to " +
+                                                  fs::canonical(victim).string() +
+                                                  "); APCS writes through a link only to a file in the link's folder or below it"));
+        REQUIRE_FALSE(check_writable(output).has_value());
+    }
+    REQUIRE(write_file_atomically(link, "x").error().message.starts_with("is a symbolic link to ../victim/passwd, which"));
+    REQUIRE(read_all(victim) == "root:x:0:0\n");
+    REQUIRE(entries_in(folder / "victim") == 1); // no passwd.bak, no temporary file
+    REQUIRE(entries_in(folder / "w") == 3);
+}
+
+TEST_CASE("a symbolic link to a file in its own folder or below it is written through", "[formats][files][special][links]")
+{
+    const TempFolder folder;
+    fs::create_directories(folder / "w/pages");
+    folder.write("w/pages/real.txt", "old\n");
+    fs::create_symlink("pages/real.txt", folder / "w/below.txt");
+    folder.write("w/beside.txt", "old\n");
+    fs::create_symlink("beside.txt", folder / "w/same.txt");
+    REQUIRE(check_link_stays_in_folder(folder / "w/below.txt").has_value());
+    REQUIRE(check_link_stays_in_folder(folder / "w/same.txt").has_value());
+    REQUIRE(check_link_stays_in_folder(folder / "w/beside.txt").has_value()); // not a link
+    REQUIRE(write_file_atomically(folder / "w/below.txt", "new\n").has_value());
+    REQUIRE(read_all(folder / "w/pages/real.txt") == "new\n");
+}
+
+TEST_CASE("a file written through an opened folder goes into that folder after it is renamed and replaced by a link",
+          "[formats][files][special][links]")
+{
+    const TempFolder folder;
+    fs::create_directories(folder / "out");
+    fs::create_directories(folder / "other");
+    const Expected<OutputFolder> opened = OutputFolder::open(folder / "out");
+    REQUIRE(opened.has_value());
+    REQUIRE(write_file_atomically(*opened, "frm000.dat", std::string_view("0 0\n")).has_value());
+    fs::rename(folder / "out", folder / "out.moved");
+    fs::create_directory_symlink("other", folder / "out");
+
+    const Expected<WriteResult> written = write_file_atomically(*opened, "frm001.dat", std::string_view("1 1\n"));
+    REQUIRE(written.has_value());
+    REQUIRE(read_all(folder / "out.moved/frm001.dat") == "1 1\n");
+    REQUIRE(entries_in(folder / "other") == 0);
+    REQUIRE(entries_in(folder / "out.moved") == 2);
+    // Replaced there too, its old content kept beside it; messages name it as the folder was named.
+    const Expected<WriteResult> again = write_file_atomically(*opened, "frm001.dat", std::string_view("2 2\n"));
+    REQUIRE(again.has_value());
+    REQUIRE(read_all(folder / "out.moved/frm001.bak") == "1 1\n");
+    fs::create_directory(folder / "out.moved/frm002.dat");
+    const Expected<WriteResult> refused = write_file_atomically(*opened, "frm002.dat", std::string_view("3 3\n"));
+    REQUIRE_FALSE(refused.has_value());
+    REQUIRE(refused.error().to_string() == (folder / "out/frm002.dat").string() + ": is a directory; cannot write a file there");
+}
+
 TEST_CASE("a write through a symbolic link to a device or to nothing is refused", "[formats][files][special]")
 {
     const TempFolder folder;

@@ -39,6 +39,32 @@ TEST_CASE("a handout page's name is the caption's number from 01 and its short n
     REQUIRE(handout_file_stem(7, 9, "U") == "07-u");
 }
 
+TEST_CASE("a handout's folder holds its index, its pages and what was kept of them, nothing of the user's",
+          "[session][handout]")
+{
+    const auto [name, page, of_handout] = GENERATE(table<std::string, bool, bool>({
+        {"01-w-opens-the-waypoint-editor-i.png", true, true},
+        {"100-caption.txt", true, true},
+        {"01-caption.bak", false, true},
+        {"01-caption.b07", false, true},
+        {"index.html", false, true},
+        {"index.bak", false, true},
+        {"index.b01", false, true},
+        {".01-caption.png.a1B2c3", false, true},
+        {"index.htm", false, false},
+        {"notes.txt", false, false},
+        {"1-caption.png", false, false},
+        {"01-Caption.png", false, false},
+        {"01-caption.pdf", false, false},
+        {"01-.png", false, false},
+        {"01-caption.bak.bak", false, false},
+        {"index.b1x", false, false},
+    }));
+    CAPTURE(name);
+    CHECK(is_handout_page_name(name) == page);
+    CHECK(is_handout_file_name(name) == of_handout);
+}
+
 TEST_CASE("the text console's page is its rows drawn in the font, graphics mode's its picture", "[session][handout]")
 {
     SessionScreen console;

@@ -27,6 +27,14 @@ TEST_CASE("HTML escaping turns & < > \" ' into references and keeps UTF-8 as it 
     REQUIRE(html_escaped("").empty());
 }
 
+TEST_CASE("a caption's bytes that are not UTF-8 reach the index as U+FFFD, as they reach the .txt page", "[handout][names]")
+{
+    REQUIRE(html_escaped("bad \xFF\xC3 end") == "bad \uFFFD\uFFFD end");
+    const std::string html = handout_index_html("t", {HandoutPage{1, "01-x.png", "tension \xE9t\xE9"}});
+    REQUIRE(html.find("tension \uFFFDt\uFFFD") != std::string::npos);
+    REQUIRE(html.find('\xE9') == std::string::npos);
+}
+
 TEST_CASE("a handout's index holds each page's picture and escaped caption in order", "[handout]")
 {
     const std::vector<HandoutPage> pages = {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "apcs/base/utf8.h"
+
 #include <string>
 #include <utility>
 #include <variant>
@@ -13,12 +15,14 @@ struct Diagnostic {
     int line = 0;
     std::string message;
 
+    // Printed to a terminal or a report, so a name that carries control characters (a file named
+    // $'a\e]0;x\a.keys') shows them escaped ("a\x1B]0;x\x07.keys"), never obeyed (escape_controls).
     std::string to_string() const
     {
         std::string text = file;
         if (line > 0)
             text += ":" + std::to_string(line);
-        return text + ": " + message;
+        return escape_controls(text + ": " + message);
     }
 };
 

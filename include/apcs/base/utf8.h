@@ -21,8 +21,16 @@ int cell_width(char32_t code_point);
 int text_columns(std::string_view utf8);
 
 // The first character of `utf8` that a terminal would obey rather than show: a C0 control but tab,
-// DEL, or a C1 control (U+0080-U+009F), named for a message ("\x1B", "U+009B"); nullopt when
-// there is none. Text from shared files (captions, scene names) is refused with it, never echoed.
+// DEL, or a C1 control (U+0080-U+009F, or a stray byte 0x80-0x9F), or a bidi control that would
+// reorder what is shown around it (U+202A-U+202E, U+2066-U+2069, U+200E, U+200F, U+061C), named
+// for a message ("\x1B", "U+009B", "U+202E"); nullopt when there is none. Text from shared files
+// (captions, scene names) is refused with it, never echoed.
 std::optional<std::string> first_control_character(std::string_view utf8);
+
+// `text` as it may be printed to a terminal or a report: each character first_control_character
+// would name is written as that name ("esc\x1B]0;PWN\x07.keys"), every byte that is not part of
+// valid UTF-8 as \xNN, the rest as it is (tabs, accents, CJK). Every name of a file or a folder
+// that APCS prints (messages, lists of files written, grade's CSV) goes through it.
+std::string escape_controls(std::string_view text);
 
 } // namespace apcs

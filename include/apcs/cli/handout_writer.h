@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apcs/base/diagnostic.h"
+#include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/lesson/handout_index.h"
 #include "apcs/raster/glyph_mapper.h"
@@ -9,6 +10,7 @@
 
 #include <filesystem>
 #include <map>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -23,7 +25,10 @@ public:
     // The writer of a handout into `folder`, its pictures in `ink`, made now when it is not there
     // (one level, as --out makes its folder: make_output_folder), so that a folder that cannot be
     // made, or an index.html there that cannot be replaced (a folder, a FIFO), stops the run before
-    // the session starts.
+    // the session starts. The folder must be new, empty or an earlier handout's (recognised by its
+    // index.html, is_handout_index) holding only a handout's files (is_handout_file_name), and none
+    // of its entries a link that leads out of it (check_link_stays_in_folder); else the first file
+    // that is not is named and nothing is written.
     [[nodiscard]] static Expected<HandoutWriter> open(const std::filesystem::path& folder, PngInk ink = PngInk::monitor);
 
     // Caption number `number` (1, 2, …) of `count` at the end of its keys: `screen` is the
@@ -44,11 +49,15 @@ public:
     const Expected<void>& outcome() const { return m_outcome; }
     // The files written so far, in order.
     const std::vector<std::filesystem::path>& written() const { return m_written; }
+    // The pages in the folder that this handout did not write (an earlier, longer lesson's), as
+    // DIR/NAME in name order: named after the run, never deleted, as play --out names frames.
+    std::vector<std::string> earlier_pages() const;
 
 private:
-    HandoutWriter(std::filesystem::path folder, PngInk ink) : m_folder(std::move(folder)), m_ink(ink) {}
-    void write_file(const std::filesystem::path& target, std::string_view content, const KeyFileGuard& inputs);
+    HandoutWriter(OutputFolder output, PngInk ink) : m_output(std::move(output)), m_folder(m_output.path()), m_ink(ink) {}
+    void write_file(const std::string& name, std::string_view content, const KeyFileGuard& inputs);
 
+    OutputFolder m_output;
     std::filesystem::path m_folder;
     PngInk m_ink;
     Expected<void> m_outcome = ok;

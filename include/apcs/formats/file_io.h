@@ -9,6 +9,7 @@
 #include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 
 namespace apcs {
 
@@ -67,8 +68,9 @@ enum class Durability { each_file, at_barrier };
 // differs is first kept as the same name with the extension .bak (way1.dat → way1.bak, replacing an
 // older .bak); identical content leaves the file untouched. A replaced file keeps its mode (and
 // its owner and group where the user may set them); a new one is 0644. Only regular files are
-// replaced: a symbolic link to a regular file is written through (the file it names is replaced in
-// its own folder, its .bak beside it, the link stays); a directory, a FIFO, a device, a socket, a
+// replaced: a symbolic link to a regular file in the link's folder or below it is written through
+// (the file it names is replaced in its own folder, its .bak beside it, the link stays), a link
+// that leads elsewhere is refused (check_link_stays_in_folder); a directory, a FIFO, a device, a socket, a
 // link to one or a dangling link is refused, and so is a read-only file (no write permission for
 // the user; for root, no write bit at all). A refusal, a missing folder, a full disk or a failed
 // rename is reported and leaves every file as it was. When NAME.bak is one of `inputs` (a key
@@ -99,6 +101,46 @@ Expected<WriteResult> write_file_atomically(const std::filesystem::path& target,
                                             const KeyFileGuard* inputs = nullptr,
                                             Durability durability = Durability::each_file);
 
+// A folder that a run of files is written into, opened once: every file written through it
+// (write_file_atomically below) is made, replaced and kept as .bak in the folder opened, wherever
+// it is renamed or moved meanwhile, and never in a folder or a link put in its place (mv out out2;
+// ln -s elsewhere out, issue 56). The files are reached through /proc/self/fd (Linux); where /proc
+// is not mounted (a bare chroot) they are reached by the folder's name, as before issue 56.
+class OutputFolder {
+public:
+    // `folder` opened, or why it cannot be.
+    [[nodiscard]] static Expected<OutputFolder> open(const std::filesystem::path& folder);
+    OutputFolder(OutputFolder&& other) noexcept;
+    OutputFolder(const OutputFolder&) = delete;
+    OutputFolder& operator=(const OutputFolder&) = delete;
+    OutputFolder& operator=(OutputFolder&&) = delete;
+    ~OutputFolder();
+
+    // The folder as it was named, for messages.
+    const std::filesystem::path& path() const { return m_path; }
+    // `name` in the folder opened, as a path the kernel resolves through its descriptor.
+    std::filesystem::path reached(const std::string& name) const;
+
+private:
+    OutputFolder(std::filesystem::path path, int descriptor, bool reached_by_descriptor)
+        : m_path(std::move(path)), m_descriptor(descriptor), m_reached_by_descriptor(reached_by_descriptor)
+    {
+    }
+
+    std::filesystem::path m_path;
+    int m_descriptor;
+    bool m_reached_by_descriptor;
+};
+
+// write_file_atomically of the file `name` in `folder` (a name, not a path), its messages naming it
+// FOLDER/NAME as `folder` was named.
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name,
+                                            const ContentWriter& write_content, const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+Expected<WriteResult> write_file_atomically(const OutputFolder& folder, const std::string& name, std::string_view content,
+                                            const KeyFileGuard* inputs = nullptr,
+                                            Durability durability = Durability::each_file);
+
 // What write_file_atomically(requested, write_content, inputs) would refuse, found before anything
 // of a run is written (a run of files must not stop halfway, issue 45): check_writable's problems
 // and, for an existing file, its being read-only or a backup that cannot be kept (NAME.bak a
@@ -110,6 +152,15 @@ Expected<void> check_replaceable(const std::filesystem::path& requested, const C
 // The barrier of Durability::at_barrier: every file written on the file system of `folder` is
 // flushed to the disk (syncfs), the folders' entries with them. The problem, if any.
 Expected<void> flush_file_system(const std::filesystem::path& folder);
+
+// Whether `file` is `folder` or lies below it; both canonical (no '.', '..' or link on the way).
+bool lies_within(const std::filesystem::path& file, const std::filesystem::path& folder);
+
+// ok unless `output` is a symbolic link (or the first of a chain) whose end lies outside the
+// link's own folder and the folders below it: "w/my.keys: is a symbolic link to ../victim/passwd,
+// which leads out of its folder (to /home/v/victim/passwd); APCS writes through a link only to a
+// file in the link's folder or below it". Every write of write_file_atomically checks it first.
+Expected<void> check_link_stays_in_folder(const std::filesystem::path& output);
 
 // NAME.ext → NAME.bak in the same folder; NAME.b01 … NAME.b99 when NAME.bak is one of `inputs`
 // (the first of those that is neither an input nor an existing file; NAME.b99 when all exist;

@@ -28,6 +28,15 @@ std::string handout_step_name(std::string_view caption);
 // sort in their order by name (099 before 100).
 std::string handout_file_stem(int number, std::size_t count, std::string_view caption);
 
+// Whether `name` is a page of a handout: NN-STEP.png or NN-STEP.txt as handout_file_stem makes them.
+bool is_handout_page_name(std::string_view name);
+
+// Whether `name` is one of the files a handout's folder holds: index.html, a page, what was kept of
+// either when it was replaced (index.bak, NN-STEP.bak, .b01 ... .b99), or a hidden temporary file
+// of one (.NAME.XXXXXX) that a crash of the machine left. A handout is written only into a folder
+// that holds nothing else (HandoutWriter::open), so that no file of the user's is replaced.
+bool is_handout_file_name(std::string_view name);
+
 // The 80x24 screen as text, one line a row, trailing blanks removed, each line ending in a newline:
 // graphics mode mapped to characters in `glyphs`, the console as it is. What headless replays print
 // for each step and what the lessons' golden screens hold.

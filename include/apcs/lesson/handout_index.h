@@ -18,7 +18,7 @@ struct HandoutPage {
 };
 
 // `text` for HTML, as text or as an attribute's value: & < > " ' as character references, every
-// other byte as it is (the document is UTF-8).
+// other character as it is (the document is UTF-8), bytes that are not UTF-8 as U+FFFD.
 std::string html_escaped(std::string_view text);
 
 // The index of a handout titled `title` (the key script's name): a plain, self-contained HTML page
@@ -27,5 +27,9 @@ std::string html_escaped(std::string_view text);
 // its shape and fits half an A4 or US Letter sheet in portrait; a page break follows every second
 // picture.
 std::string handout_index_html(std::string_view title, const std::vector<HandoutPage>& pages);
+
+// Whether `html` is an index handout_index_html wrote (its head and its print rules): how an earlier
+// handout of APCS is recognised in a folder, and a page of the user's told from it.
+bool is_handout_index(std::string_view html);
 
 } // namespace apcs
