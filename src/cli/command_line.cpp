@@ -191,6 +191,23 @@ std::optional<std::string> wrong_value_count(const CLI::App& command, const CLI:
            option->get_type_name() + "); " + std::to_string(option->results().size()) + " given";
 }
 
+// CLI11 says "Could not convert: --paper = banana" of a flag given a value: say it takes none.
+std::optional<std::string> flag_given_a_value(const CLI::App& command, const CLI::ParseError& error)
+{
+    constexpr std::string_view prefix = "Could not convert: ";
+    const std::string what = error.what();
+    const std::size_t equals = what.find(" = ");
+    if (dynamic_cast<const CLI::ConversionError*>(&error) == nullptr || !what.starts_with(prefix) ||
+        equals == std::string::npos)
+        return std::nullopt;
+    const std::string name = what.substr(prefix.size(), equals - prefix.size());
+    const CLI::Option* option = command.get_option_no_throw(name);
+    if (option == nullptr || option->get_expected_max() != 0) // a flag expects no value
+        return std::nullopt;
+    return option->get_name() + " is a flag and takes no value ('" + what.substr(equals + 3) + "' given); write " +
+           option->get_name() + " alone";
+}
+
 // CLI11 says "FILES: At least 4 required but received 2": say what the command takes instead.
 std::optional<std::string> wrong_operand_count(const CLI::App& command, const CLI::ParseError& error,
                                                const char* operands)
@@ -214,6 +231,8 @@ std::string usage_error_text(const CLI::App& app, const CLI::App& command, std::
     if (auto line = foreign_option(app, arguments))
         return *std::move(line);
     if (auto line = wrong_value_count(command, error))
+        return *std::move(line);
+    if (auto line = flag_given_a_value(command, error))
         return *std::move(line);
     if (operands != nullptr) {
         if (auto line = wrong_operand_count(command, error, operands))

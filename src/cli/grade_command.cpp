@@ -52,8 +52,13 @@ public:
     {
         std::error_code error;
         const fs::path temporary = fs::temp_directory_path(error);
-        if (error)
-            return Diagnostic{"apcs", 0, "grade: no temporary folder: " + error.message()};
+        if (error) {
+            // The folder the environment names (std::filesystem reads TMPDIR first), said by name.
+            const char* named = std::getenv("TMPDIR");
+            const std::string which = named != nullptr ? "TMPDIR=" + escape_controls(named) : "the temporary folder";
+            return Diagnostic{"apcs", 0, "grade: " + which + " is not a folder to grade in (" + error.message() +
+                                             "); set TMPDIR to a folder, or unset it for /tmp"};
+        }
         m_parent = ::open(temporary.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
         std::string name = "apcs-grade-XXXXXX";
         if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0) {

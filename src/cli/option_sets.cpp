@@ -82,10 +82,18 @@ std::string alternatives(const std::vector<std::string>& names)
 // A picture's name ends in its format's extension (any case) or has none: PNG bytes in x.svg
 // would mislead.
 // `a_file` is "a PNG file", say; `wanted` its extension (".png"), `also` another one or none.
+// A file or folder named by an empty word ('') names nothing: refused before anything is read or
+// made (it said ": cannot be made", or "internal error" for --record '').
+const CLI::Validator a_name(
+    [](std::string& text) -> std::string { return text.empty() ? "an empty name; expected a file or folder's name" : ""; },
+    "");
+
 CLI::Validator picture_name(const std::string& a_file, const std::string& wanted, const std::string& also = {})
 {
     return CLI::Validator(
         [a_file, wanted, also](std::string& text) -> std::string {
+            if (text.empty())
+                return a_name(text);
             const std::string extension = std::filesystem::path(text).extension().string();
             if (extension.empty() || equals_ignoring_case(extension, wanted) ||
                 (!also.empty() && equals_ignoring_case(extension, also)))
@@ -259,7 +267,9 @@ void add_print(CLI::App& command, CommonOptions& options)
 
 void add_out(CLI::App& command, CommonOptions& options, const std::string& what)
 {
-    command.add_option("--out", options.out, "folder " + what + " go to, default the current one")->type_name("DIR");
+    command.add_option("--out", options.out, "folder " + what + " go to, default the current one")
+        ->check(a_name)
+        ->type_name("DIR");
 }
 
 void add_glyphs(CLI::App& command, CommonOptions& options)
@@ -334,12 +344,14 @@ void add_session_options(CLI::App& app, CommonOptions& options, std::vector<doub
     add_pixels(app, options);
     add_pictures(app, options, "the overlay of all frames");
     app.add_option("--workdir", options.workdir, "folder the session reads and writes, default the current one")
+        ->check(a_name)
         ->type_name("DIR");
-    app.add_option("--keys", options.keys, "replay the keystrokes of FILE")->type_name("FILE");
-    app.add_option("--record", options.record, "record the keystrokes to FILE")->type_name("FILE");
+    app.add_option("--keys", options.keys, "replay the keystrokes of FILE")->check(a_name)->type_name("FILE");
+    app.add_option("--record", options.record, "record the keystrokes to FILE")->check(a_name)->type_name("FILE");
     app.add_option("--handout", options.handout,
                    "write each ;; caption's screen of the --keys replay, once its keys have played, to DIR as "
                    "NN-STEP.png and NN-STEP.txt, and DIR/index.html to print them from a browser")
+        ->check(a_name)
         ->type_name("DIR");
     app.add_flag("--paper", options.paper, "draw the --handout pictures black on white, for printing");
     app.add_option_function<std::string>(
@@ -443,7 +455,9 @@ void add_play_command_options(CLI::App& command, CommonOptions& options, std::ve
     add_terminal_pictures(command, options, "all frames overlaid");
     add_animation(command, options);
     add_print(command, options);
-    command.add_option("--out", options.out, "folder to write the frames to as frm000.dat ...")->type_name("DIR");
+    command.add_option("--out", options.out, "folder to write the frames to as frm000.dat ...")
+        ->check(a_name)
+        ->type_name("DIR");
     command.add_flag("--tree", tree, "print the scene's data-structure tree (thesis fig. 3.3.2) and stop");
 }
 
@@ -453,6 +467,7 @@ void add_figures_command_options(CLI::App& command, CommonOptions& options, std:
     add_curve(command, options, slopes);
     add_inbetween_count(command, options);
     command.add_option("--workdir", options.workdir, "folder of the examples, default the installed ones")
+        ->check(a_name)
         ->type_name("DIR");
     add_out(command, options, "the pictures");
 }

@@ -145,6 +145,13 @@ Expected<void> check_frames_in_reach(const SceneAnimation& animation, const Scen
     if (!beyond)
         return ok;
     const SceneObject& object = scene.objects[beyond->object];
+    // A turn of its hub's travel / RADIUS radians that is no number (a radius of 1e-308): its ROLL.
+    if (std::isnan(beyond->magnitude) && object.roll && !(beyond->at_anchor && object.anchor))
+        return Diagnostic{scene_file.string(), object.roll->line,
+                          "object " + object.name + " reaches values that are not numbers at frame " +
+                              std::to_string(beyond->frame) + ": its ROLL turns it by its hub's travel / RADIUS " +
+                              significant_number(object.roll->radius, 3) +
+                              " radians, beyond a number; expected a wheel's radius"};
     const std::string reach = std::isnan(beyond->magnitude)
                                   ? "values that are not numbers"
                                   : "|value| " + magnitude_beyond(beyond->magnitude, max_dat_magnitude);

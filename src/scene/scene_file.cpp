@@ -518,6 +518,7 @@ Expected<void> SceneParser::parse_roll(const Fields& fields)
         return error("ROLL RADIUS " + quote_field(fields[1]) +
                      " is 0; expected the wheel's radius (above 0, or below 0 to roll the other way)");
     roll.radius = *radius;
+    roll.line = m_line;
     Clauses clauses(fields, 2);
     if (auto outcome = turn_clauses(clauses, "ROLL", roll.about, nullptr, &roll.axis); !outcome)
         return outcome.error();

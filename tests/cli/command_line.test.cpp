@@ -309,3 +309,42 @@ TEST_CASE("a headless replay prints each step's final screen and the captions wh
     REQUIRE(view != std::string::npos);
     REQUIRE(out.find("0 90 100_", view) != std::string::npos);
 }
+
+TEST_CASE("a flag given a value says it is a flag, not CLI11's Could not convert", "[cli]")
+{
+    const auto run = run_apcs({"--paper=banana", "--keys", "lesson.keys", "--handout", "h"});
+    REQUIRE(run.status == 2);
+    REQUIRE(run.err == "apcs: --paper is a flag and takes no value ('banana' given); write --paper alone\n"
+                       "Try 'apcs --help' for more information.\n");
+}
+
+TEST_CASE("a file or folder named by an empty word is refused as a usage error, naming its option", "[cli]")
+{
+    const auto refused = [](std::vector<std::string> arguments) {
+        const auto run = run_apcs(std::move(arguments));
+        CAPTURE(run.err);
+        REQUIRE(run.status == 2);
+        return run.err.substr(0, run.err.find('\n'));
+    };
+    // They said ": cannot be made: No such file or directory" and, for --record, "internal error".
+    REQUIRE(refused({"--keys", "lesson.keys", "--handout", ""}) == "apcs: --handout: an empty name; expected a file or folder's name");
+    REQUIRE(refused({"--keys", "lesson.keys", "--record", ""}) == "apcs: --record: an empty name; expected a file or folder's name");
+    REQUIRE(refused({"--keys", ""}) == "apcs: --keys: an empty name; expected a file or folder's name");
+    REQUIRE(refused({"--workdir", ""}) == "apcs: --workdir: an empty name; expected a file or folder's name");
+    REQUIRE(refused({"play", "car.scn", "--out", ""}) == "apcs: --out: an empty name; expected a file or folder's name");
+    REQUIRE(refused({"path", "ani1.dat", "--png", ""}) == "apcs: --png: an empty name; expected a file or folder's name");
+}
+
+TEST_CASE("a ROLL whose turn is no number is named at its own line, not at the OBJECT line", "[cli][scene]")
+{
+    const test::TempFolder folder;
+    folder.write("wheel.dat", "0 0 0\n0 0 1\n");
+    folder.write("road.dat", "0 0 0\n0 10 0\n");
+    folder.write("w.scn", "FRAMES 10\nOBJECT wheel\nSHAPE wheel.dat\nMOVE road.dat\nROLL 1e-308\n");
+    const auto run = run_apcs({"play", (folder / "w.scn").string(), "--print"});
+    REQUIRE(run.status == 1);
+    // It said "w.scn:2: ... (its MOVE, ROTATE and SCALE composed with its parents')".
+    REQUIRE(run.err == (folder / "w.scn").string() +
+                           ":5: object wheel reaches values that are not numbers at frame 1: its ROLL turns it by its "
+                           "hub's travel / RADIUS 1e-308 radians, beyond a number; expected a wheel's radius\n");
+}

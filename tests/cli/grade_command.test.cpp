@@ -92,6 +92,19 @@ private:
 
 } // namespace
 
+TEST_CASE("apcs grade under a TMPDIR that is no folder names it", "[cli][grade]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const TemporaryFolderSetting missing(folder / "missing");
+    const auto run = test::run_apcs({"grade", exercise_of(folder, 1, "tension"), exercise_of(folder, 1, "tension")});
+    REQUIRE(run.status != 0);
+    // It said "grade: no temporary folder: No such file or directory".
+    REQUIRE(run.err.find("grade: TMPDIR=" + (folder / "missing").string() +
+                         " is not a folder to grade in (No such file or directory); set TMPDIR to a folder, or unset "
+                         "it for /tmp") != std::string::npos);
+}
+
 TEST_CASE("apcs grade prints yes for each recording of the answer and no for the exercise itself",
           "[cli][grade][exercises]")
 {

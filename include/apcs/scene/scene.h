@@ -57,6 +57,7 @@ struct SceneRoll {
     double radius = 1.0; // ≠ 0
     Axis axis = Axis::x;
     std::optional<Vec3> about;
+    int line = 0; // the ROLL line
 };
 
 // SCALE: factor^(f − from) per axis of the scene about `about` (default: the object's centre);
