@@ -115,7 +115,8 @@ std::optional<std::string> control_name(char32_t character)
                       (character >= 0x202A && character <= 0x202E) || (character >= 0x2066 && character <= 0x2069);
     if (!bidi)
         return std::nullopt;
-    char name[8];
+    // Room for any unsigned value: GCC's -Wformat-truncation judges the type, not the range above.
+    char name[16];
     std::snprintf(name, sizeof name, "U+%04X", code);
     return name;
 }

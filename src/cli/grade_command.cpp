@@ -133,7 +133,9 @@ Expected<void> copy_writable(const fs::path& from, const fs::path& to)
 std::optional<ExitStatus> copy_inputs(Exercise& exercise, const fs::path& exercise_file, std::ostream& err)
 {
     const fs::path beside = exercise_file.has_parent_path() ? exercise_file.parent_path() : fs::path(".");
-    if (const Expected<void> checked = check_script_inputs(exercise.script.inputs, beside, exercise.name); !checked)
+    if (const Expected<void> checked =
+            check_script_inputs(exercise.script.inputs, beside, exercise.name, InputFolder::exercise);
+        !checked)
         return report_bad_input(checked.error(), err);
     std::error_code error;
     if (fs::create_directory(exercise.inputs, error); error)

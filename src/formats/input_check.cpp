@@ -11,7 +11,12 @@ using namespace posix_files;
 
 namespace {
 
-constexpr const char* copy_again = "copy the exercise's files into the work folder again";
+// What to do about an input that is not the exercise's, in the folder `role` names.
+std::string copy_again(InputFolder role)
+{
+    return role == InputFolder::work ? "copy the exercise's files into the work folder again"
+                                     : "put the exercise's files, as shipped, beside it again";
+}
 
 // The CRC-32 of the rest of an open file.
 Expected<std::uint32_t> crc32_of_descriptor(int descriptor)
@@ -32,8 +37,9 @@ Expected<std::uint32_t> crc32_of_descriptor(int descriptor)
 
 // The input's problem, if any, as "NAME what; expected …": the file's bytes checked against the
 // exercise's CRC-32.
-Expected<void> check_input(const ScriptInput& input, const std::filesystem::path& folder)
+Expected<void> check_input(const ScriptInput& input, const std::filesystem::path& folder, InputFolder role)
 {
+    const std::string where = role == InputFolder::work ? "the work folder " : "the exercise's folder ";
     // An input is looked for as the session will read it: a name in another case is the same file
     // (find_input_path, as DOS compared names).
     const Expected<std::filesystem::path> found = find_input_path(folder / input.name);
@@ -42,16 +48,16 @@ Expected<void> check_input(const ScriptInput& input, const std::filesystem::path
     struct stat status {};
     if (::lstat(found->c_str(), &status) != 0 && errno == ENOENT)
         return Diagnostic{"", 0,
-                          input.name + " is missing from the work folder " + folder.string() +
-                              "; expected the exercise's input: " + copy_again};
+                          input.name + " is missing from " + where + folder.string() +
+                              "; expected the exercise's input: " + copy_again(role)};
     const Expected<std::uint32_t> crc32 = file_crc32(*found);
     if (!crc32)
-        return Diagnostic{"", 0, input.name + " " + crc32.error().message + ": " + copy_again};
+        return Diagnostic{"", 0, input.name + " " + crc32.error().message + ": " + copy_again(role)};
     if (*crc32 != input.crc32)
         return Diagnostic{"", 0,
                           input.name + " differs from the exercise's (CRC-32 " + crc32_text(*crc32) + ", expected " +
                               crc32_text(input.crc32) + "): a session rewrote it, or it is another exercise's; " +
-                              copy_again};
+                              copy_again(role)};
     return ok;
 }
 
@@ -76,10 +82,10 @@ Expected<std::uint32_t> file_crc32(const std::filesystem::path& file)
 }
 
 Expected<void> check_script_inputs(const std::vector<ScriptInput>& inputs, const std::filesystem::path& folder,
-                                   const std::string& script_name)
+                                   const std::string& script_name, InputFolder role)
 {
     for (const ScriptInput& input : inputs)
-        if (const Expected<void> checked = check_input(input, folder); !checked)
+        if (const Expected<void> checked = check_input(input, folder, role); !checked)
             return Diagnostic{script_name, input.line_number, checked.error().message};
     return ok;
 }

@@ -214,7 +214,8 @@ TEST_CASE("apcs grade refuses with exit 1 an exercise whose input changed or is 
     SECTION("a missing input")
     {
         fs::remove(folder / "key2.dat");
-        expected = exercise + ":6: key2.dat is missing from the work folder " + folder.path().string();
+        // The folder beside the exercise, not a work folder: it said "missing from the work folder".
+        expected = exercise + ":6: key2.dat is missing from the exercise's folder " + folder.path().string();
     }
     const auto result = grade({exercise, answer_of(folder, 1, "tension")});
     REQUIRE(result.status == 1);

@@ -21,7 +21,11 @@ Expected<std::uint32_t> file_crc32(const std::filesystem::path& file);
 // exercise's files into the work folder again", or the same for a missing file, a link or a FIFO.
 // A symbolic link is refused even to the right content: the session rewrites an input when a path
 // is accepted, and would write through the link into the teacher's copy. Nothing is written.
+// `folder` is the session's work folder, or (apcs grade) the exercise's own: a message names it as
+// its user knows it.
+enum class InputFolder { work, exercise };
 [[nodiscard]] Expected<void> check_script_inputs(const std::vector<ScriptInput>& inputs,
-                                                 const std::filesystem::path& folder, const std::string& script_name);
+                                                 const std::filesystem::path& folder, const std::string& script_name,
+                                                 InputFolder role = InputFolder::work);
 
 } // namespace apcs
