@@ -219,14 +219,19 @@ def is_command(text):
 
 def main():
     apcs, source_tree = os.path.abspath(sys.argv[1]), sys.argv[2]
-    lines = [*from_readme(os.path.join(source_tree, "README.md")),
-             *from_manual(os.path.join(source_tree, "manual.txt")),
-             *from_man_page(os.path.join(source_tree, "man", "apcs.1")), *from_help(apcs)]
+    sources = {"README.md": list(from_readme(os.path.join(source_tree, "README.md"))),
+               "manual.txt": list(from_manual(os.path.join(source_tree, "manual.txt"))),
+               "man/apcs.1": list(from_man_page(os.path.join(source_tree, "man", "apcs.1"))),
+               "apcs --help": list(from_help(apcs))}
+    lines = [line for found in sources.values() for line in found]
     counts = {"ran": 0, "skipped": 0, "failed": 0}
+    ran_from = {source: 0 for source in sources}
     for line in filter(lambda line: is_command(line.text), lines):
         problem = check(apcs, source_tree, line)
         if problem is None:
             counts["ran"] += 1
+            for source, found in sources.items():
+                ran_from[source] += any(line is other for other in found)
             print(f"ok       {line.where}: {line.text}")
         elif problem.startswith("skipped"):
             counts["skipped"] += 1
@@ -236,7 +241,11 @@ def main():
             print(f"FAILED   {line.where}: {line.text}\n         {problem}")
     print(f"{counts['ran']} documented command lines ran as documented, {counts['skipped']} skipped, "
           f"{counts['failed']} failed")
-    sys.exit(1 if counts["failed"] else 0)
+    # A source that gave no command that ran would pass on nothing checked (its reader found none).
+    unchecked = [source for source, ran in ran_from.items() if ran == 0]
+    for source in unchecked:
+        print(f"FAILED   {source}: no documented command line ran from it; its reader found none")
+    sys.exit(1 if counts["failed"] or unchecked else 0)
 
 
 if __name__ == "__main__":
