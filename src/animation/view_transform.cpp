@@ -12,10 +12,12 @@ namespace {
 
 // Clamped far outside the raster so that the int conversion is always defined; rounded half away
 // from zero as std::lround does, but inline: lround is a library call, and drawing a long path
-// rounds millions of points (16 % of a keystroke on 10^5 control points).
+// rounds millions of points (16 % of a keystroke on 10^5 control points). The bound comes first in
+// each comparison: std::max(bound, NaN) is the bound (NaN compares false), so a NaN lands off the
+// raster instead of reaching the conversion, whose result for NaN is undefined.
 int rounded_half_away(double value)
 {
-    const double clamped = std::min(std::max(value, -1e6), 1e6);
+    const double clamped = std::min(1e6, std::max(-1e6, value));
     // Both computed, one chosen: no branch, so that a loop of them is done several at once.
     const double down = clamped - 0.5;
     const double up = clamped + 0.5;

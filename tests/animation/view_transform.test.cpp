@@ -134,3 +134,13 @@ TEST_CASE("to_pixels gives each point's to_device(point).rounded(), near and far
         }
     }
 }
+
+TEST_CASE("a point whose coordinates are not numbers rounds to a pixel far off the raster, defined", "[animation][view]")
+{
+    // Converting a NaN to int is undefined behaviour (UBSan's float-cast-overflow); on x86 it gave
+    // INT_MIN. Clamped first, it lands where clipping drops it.
+    const double not_a_number = std::nan("");
+    REQUIRE(DevicePoint{not_a_number, not_a_number}.rounded() == PixelPoint{-1000000, -1000000});
+    REQUIRE(DevicePoint{not_a_number, 3.4}.rounded() == PixelPoint{-1000000, 3});
+    REQUIRE(DevicePoint{1e300, -1e300}.rounded() == PixelPoint{1000000, -1000000});
+}
