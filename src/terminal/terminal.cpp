@@ -2,6 +2,7 @@
 
 #include "apcs/terminal/curses_keys.h"
 #include "stop_signals.h"
+#include "write_all.h"
 
 #include <curses.h>
 
@@ -49,14 +50,27 @@ attr_t attributes_of(CellStyle style)
     return A_NORMAL;
 }
 
-// Colour pair n + 1 for the role of index n after monitor (monitor is pair 0: the default colours).
-void start_role_colours()
+// Colour pair n + 1 for the role of index n after monitor (monitor is pair 0: the default colours),
+// in the terminal's own colours where terminfo says how to give them back (op or oc), on black
+// where it does not (use_default_colors fails, and a pair on -1 would then fail too, leaving the
+// roles in unmade pairs: black on black). A role in the terminal's own foreground (-1) is white
+// there. False when the pairs cannot be made: the roles are then told apart without colour, as
+// with --color never.
+bool start_role_colours()
 {
-    start_color();
-    use_default_colors();
-    for (const ColourRole role : colour_roles)
-        if (role != ColourRole::monitor)
-            init_pair(static_cast<short>(role), static_cast<short>(colour_number(role)), -1);
+    if (start_color() == ERR)
+        return false;
+    const bool own_colours = use_default_colors() == OK;
+    const short background = own_colours ? -1 : COLOR_BLACK;
+    for (const ColourRole role : colour_roles) {
+        if (role == ColourRole::monitor)
+            continue;
+        const int number = colour_number(role);
+        const short foreground = static_cast<short>(number >= 0 || own_colours ? number : COLOR_WHITE);
+        if (init_pair(static_cast<short>(role), foreground, background) == ERR)
+            return false;
+    }
+    return true;
 }
 
 bool colour_wanted(ColourChoice colour)
@@ -65,20 +79,6 @@ bool colour_wanted(ColourChoice colour)
         return false;
     // COLORS is known only after start_color: terminfo's count is asked instead.
     return colour == ColourChoice::always || tigetnum("colors") >= 8;
-}
-
-// Writes all of `bytes` to the terminal, again after a signal cut a write short.
-void write_all(std::string_view bytes)
-{
-    while (!bytes.empty()) {
-        const ssize_t written = ::write(STDOUT_FILENO, bytes.data(), bytes.size());
-        if (written < 0) {
-            if (errno == EINTR || errno == EAGAIN)
-                continue;
-            return; // the terminal is gone: read_key will say so
-        }
-        bytes.remove_prefix(static_cast<std::size_t>(written));
-    }
 }
 
 // The most bytes one question reads: a terminal answering garbage is not read for ever.
@@ -98,7 +98,7 @@ bool may_end_reply(char byte) { return byte == 'c' || byte == 'S' || byte == 't'
 template <typename Answered>
 TerminalReplies ask_terminal(std::string_view query, Answered answered)
 {
-    write_all(query);
+    write_all(STDOUT_FILENO, query);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(pixel_reply_limit_ms);
     std::string bytes;
     while (bytes.size() < most_reply_bytes) {
@@ -145,7 +145,7 @@ struct Terminal::State {
     bool colour = false;
     // A key code read while deciding what an Esc was, handed out next.
     std::optional<RawKey> pending;
-    // Installed once the terminal is taken over; destroyed after it is given back.
+    // Installed before the terminal is taken over; destroyed after it is given back.
     std::optional<StopSignals> stop;
     // The cell size the terminal answered to CSI 16 t (detect_pixels), for when TIOCGWINSZ has none.
     std::optional<CellPixels> answered_cell;
@@ -204,6 +204,10 @@ Expected<std::unique_ptr<Terminal>> Terminal::open(ColourChoice colour)
         return no_full_screen(term);
     std::unique_ptr<Terminal> terminal(new Terminal());
     State& state = *terminal->m_state;
+    // Before the terminal's modes change: a signal from here on is a stop that read_key reports
+    // and the destructor gives the terminal back after, never the batch commands' _exit, which
+    // would leave it raw (cbreak, noecho).
+    state.stop.emplace();
     state.screen = newterm(term, stdout, stdin);
     if (state.screen == nullptr)
         return terminal_problem(std::string("the terminal type '") + term +
@@ -224,10 +228,7 @@ Expected<std::unique_ptr<Terminal>> Terminal::open(ColourChoice colour)
     if (std::getenv("ESCDELAY") == nullptr)
         set_escdelay(default_escape_delay_ms);
     curs_set(0);
-    state.colour = colour_wanted(colour);
-    if (state.colour)
-        start_role_colours();
-    state.stop.emplace();
+    state.colour = colour_wanted(colour) && start_role_colours();
     return terminal;
 }
 
@@ -356,14 +357,14 @@ void Terminal::send_picture(int column, int row, std::string_view sequences)
     std::string bytes = "\x1b" "7\x1b[" + std::to_string(row + 1) + ";" + std::to_string(column + 1) + "H";
     bytes += sequences;
     bytes += "\x1b" "8";
-    write_all(bytes);
+    write_all(STDOUT_FILENO, bytes, [this] { return m_state->stop->requested(); });
 }
 
 void Terminal::remove_pictures(TerminalPictureProtocol protocol)
 {
     // Kitty: delete every placement and free its image (d=A).
     if (protocol == TerminalPictureProtocol::kitty)
-        write_all("\x1b_Ga=d,d=A,q=2\x1b\\");
+        write_all(STDOUT_FILENO, "\x1b_Ga=d,d=A,q=2\x1b\\");
 }
 
 bool Terminal::show(const CellGrid& grid)

@@ -5,6 +5,7 @@
 # SGR sequences.
 # Usage: tmux_colour.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
@@ -57,8 +58,29 @@ for glyphs in braille ascii; do
   [ -n "$plus" ] || fail_showing "$glyphs: no tangent arrow head on the screen" "colour-$glyphs"
   [ "$corner" = default ] || fail_showing "$glyphs: the boundary is in $corner, not the monitor's colour" "colour-$glyphs"
   case ",$plus," in *,default,*) fail_showing "$glyphs: a tangent arrow head is in the curve's colour ($plus)" "colour-$glyphs" ;; esac
+  heads_in_colour=$plus
   passed=$((passed + 1))
 done
+
+# A terminal whose terminfo gives colours but no way back to its own (no op, no oc): ncurses'
+# use_default_colors fails there, and the roles' pairs on the default background (-1) with it (the
+# arrows were then drawn in an unmade pair: black, on black). They keep their colour, on black.
+command -v tic >/dev/null || { echo "tic is not installed (ncurses-bin)"; exit 77; }
+mkdir "$work/terminfo"
+infocmp -1 -x xterm-256color | grep -vE '^\s*(op|oc)=' |
+  sed '1,/^xterm-256color|/s/^xterm-256color|.*/xterm-no-default|xterm-256color with no default colours,/' > "$work/no-default.src"
+tic -x -o "$work/terminfo" "$work/no-default.src"
+start_80x24 no-default "TERMINFO='$work/terminfo' TERM=xterm-no-default LANG=C.UTF-8 LC_ALL=C.UTF-8 '$apcs' --glyphs ascii --keys graphics.keys"
+sleep 1.5
+keys_to no-default 8
+keys_to no-default T
+wait_for no-default "DS "
+seen=$(colours_of no-default)
+plus=${seen%|*}
+[ -n "$plus" ] || fail_showing "no default colours: no tangent arrow head on the screen" no-default
+[ "$plus" = "$heads_in_colour" ] ||
+  fail_showing "no default colours: the tangent arrow heads are in $plus, not $heads_in_colour as in xterm-256color" no-default
+passed=$((passed + 1))
 
 for how in "NO_COLOR=1 '$apcs'" "'$apcs' --color never"; do
   name="mono-$passed"

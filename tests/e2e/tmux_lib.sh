@@ -14,6 +14,23 @@ tmux_test_folder() {
   trap 'tmux -L "$socket" kill-server 2>/dev/null || true; all_ended_in "$work"; rm -rf "$work"' EXIT
 }
 
+# A shell command for after the program in a pane: prints the terminal's echo and icanon modes
+# ("echo icanon MODES" once the terminal is given back; "-echo -icanon MODES" if left raw).
+report_terminal_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
+
+# Fails unless the pane of session $1, its program run as "PROGRAM; echo EXITED=$?;
+# $report_terminal_modes", reports exit 130 and a terminal with echo and icanon back (after $2).
+expect_restored() {
+  wait_for "$1" "EXITED=130"
+  wait_for "$1" "MODES"
+  modes=$(screen "$1" | grep "MODES$")
+  case "$modes" in
+    *-echo* | *-icanon*) echo "terminal not restored after $2: $modes"; exit 1 ;;
+    *echo* ) [[ "$modes" == *icanon* ]] || { echo "no icanon after $2: $modes"; exit 1; } ;;
+    *) echo "no echo after $2: $modes"; exit 1 ;;
+  esac
+}
+
 # The text on the screen of tmux session $1.
 screen() { tmux -L "$socket" capture-pane -p -t "$1"; }
 

@@ -3,6 +3,7 @@
 # ends the session with "apcs: out of memory" and exit 1, the terminal given back: echo and icanon
 # on. Usage: tmux_out_of_memory.sh APCS
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
@@ -25,9 +26,8 @@ awk 'BEGIN { n = 1000000; for (i = 0; i < n; ++i) printf "%d %d %.6f\n", i % 2, 
 # The ends exactly: KEY1's first point, KEY2's first point.
 sed -i '1s/.*/0 0 0/;$s/.*/0 0 10/' "$work/big.dat"
 
-report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
 tmux -L "$socket" new-session -d -s oom -x 80 -y 25 -c "$work" \
-  "ulimit -v $limit_kib; APCS_MEMORY_LIMIT=1T '$apcs' 2>err.txt; echo EXITED=\$?; $report_modes; sleep 60"
+  "ulimit -v $limit_kib; APCS_MEMORY_LIMIT=1T '$apcs' 2>err.txt; echo EXITED=\$?; $report_terminal_modes; sleep 60"
 wait_for oom "Please keyin the KEY1 filename!"
 tmux -L "$socket" send-keys -t oom Enter
 wait_for oom "Please keyin the KEY2 filename!"

@@ -2,6 +2,7 @@
 # End-to-end: signals leave the terminal sane; a small terminal is told its size; a resize redraws.
 # Usage: tmux_terminal_faults.sh APCS [DATA_FOLDER]
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=${2:-$(dirname "$0")/../../data/n-to-l}
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
@@ -9,26 +10,14 @@ command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 source "$(dirname "$0")/tmux_lib.sh"
 tmux_test_folder faults
 
-report_modes='stty -a | tr " ;" "\n\n" | grep -E "^-?(echo|icanon)$" | tr "\n" " "; echo MODES'
 
-# Fails unless the pane of session $1 reports exit 130 and a terminal with echo and icanon back.
-expect_restored() {
-  wait_for "$1" "EXITED=130"
-  wait_for "$1" "MODES"
-  modes=$(screen "$1" | grep "MODES$")
-  case "$modes" in
-    *-echo* | *-icanon*) echo "terminal not restored after $2: $modes"; exit 1 ;;
-    *echo* ) [[ "$modes" == *icanon* ]] || { echo "no icanon after $2: $modes"; exit 1; } ;;
-    *) echo "no echo after $2: $modes"; exit 1 ;;
-  esac
-}
 
 passed=0
 # PIPE: sent by another process to the interactive session, a stop like the others (issue 45).
 for signal in INT TERM HUP QUIT USR1 USR2 ALRM PIPE; do
   name="sig$signal"
   tmux -L "$socket" new-session -d -s "$name" -x 80 -y 25 -c "$work" \
-    "'$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
+    "'$apcs'; echo EXITED=\$?; $report_terminal_modes; sleep 60"
   wait_for "$name" "Please keyin the KEY1 filename!"
   pkill -"$signal" -f "^$apcs\$" || pkill -"$signal" -x apcs
   expect_restored "$name" "SIG$signal"
@@ -41,7 +30,7 @@ quit_work="$work/quit"
 mkdir "$quit_work"
 cp "$data"/key1.dat "$data"/key2.dat "$quit_work"/
 tmux -L "$socket" new-session -d -s ctrlquit -x 80 -y 25 -c "$quit_work" \
-  "ulimit -c 0; '$apcs'; echo EXITED=\$?; $report_modes; sleep 60"
+  "ulimit -c 0; '$apcs'; echo EXITED=\$?; $report_terminal_modes; sleep 60"
 wait_for ctrlquit "Please keyin the KEY1 filename!"
 tmux -L "$socket" send-keys -t ctrlquit Enter
 wait_for ctrlquit "Please keyin the KEY2 filename!"
@@ -64,7 +53,7 @@ tmux -L "$socket" send-keys -t suspend "PS1='$ '; '$apcs'" Enter
 wait_for suspend "Please keyin the KEY1 filename!"
 tmux -L "$socket" send-keys -t suspend C-z
 wait_for suspend "Stopped"
-tmux -L "$socket" send-keys -t suspend "$report_modes" Enter
+tmux -L "$socket" send-keys -t suspend "$report_terminal_modes" Enter
 wait_for suspend "MODES"
 modes=$(screen suspend | grep "MODES$" | tail -1)
 [[ " $modes " == *" echo "* && " $modes " == *" icanon "* ]] \
