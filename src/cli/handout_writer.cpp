@@ -102,9 +102,9 @@ void HandoutWriter::write(int number, std::size_t count, std::string_view captio
     const SessionScreen shown = with_caption(screen, caption);
     const std::string stem = handout_file_stem(number, count, caption);
     const std::filesystem::path picture = m_folder / (stem + ".png");
-    const std::optional<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor, m_ink);
+    const Expected<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor, m_ink);
     if (!png) {
-        m_outcome = Diagnostic{picture.string(), 0, "cannot encode the PNG image"};
+        m_outcome = Diagnostic{picture.string(), 0, "cannot encode the PNG image: " + png.error().to_string()};
         return;
     }
     m_last_backup.clear();

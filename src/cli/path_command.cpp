@@ -59,9 +59,9 @@ Expected<void> write_picture_bytes(const std::filesystem::path& target, const st
 Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
                               PngShape shape, const KeyFileGuard& inputs, std::ostream& out)
 {
-    const std::optional<std::string> png = encode_png(render_raster(screen), shape);
+    const Expected<std::string> png = encode_png(render_raster(screen), shape);
     if (!png)
-        return Diagnostic{target.string(), 0, "cannot encode the PNG image"};
+        return Diagnostic{target.string(), 0, "cannot encode the PNG image: " + png.error().to_string()};
     return write_picture_bytes(target, *png, inputs, out);
 }
 
@@ -75,11 +75,12 @@ Expected<void> write_terminal_picture_file(const std::filesystem::path& target, 
                                            TerminalPictureProtocol protocol, const KeyFileGuard& inputs,
                                            std::ostream& out)
 {
-    const std::optional<std::string> picture = encode_terminal_picture(render_raster(screen), protocol);
+    const Expected<std::string> picture = encode_terminal_picture(render_raster(screen), protocol);
     if (!picture)
         return Diagnostic{target.string(), 0,
-                          protocol == TerminalPictureProtocol::sixel ? "cannot encode the sixel picture"
-                                                                     : "cannot encode the kitty picture"};
+                          std::string(protocol == TerminalPictureProtocol::sixel ? "cannot encode the sixel picture: "
+                                                                                 : "cannot encode the kitty picture: ") +
+                              picture.error().to_string()};
     return write_picture_bytes(target, *picture, inputs, out);
 }
 

@@ -85,24 +85,29 @@ void mend_kitty_chunk_ends(std::string& sequences)
         sequences[at] = '8';
 }
 
+Diagnostic chafa_failure(std::string reason) { return Diagnostic{"libchafa", 0, std::move(reason)}; }
+
+std::string size_text(int width, int height) { return std::to_string(width) + "x" + std::to_string(height); }
+
 // `pixels` (opaque RGBA rows, `width` x `height`) as the escape sequences of `protocol`, on cells of
-// `cell` pixels; empty when libchafa fails.
-std::optional<std::string> encode_rgba(const std::vector<std::uint8_t>& pixels, int width, int height, CellPixels cell,
+// `cell` pixels; libchafa's failure named.
+Expected<std::string> encode_rgba(const std::vector<std::uint8_t>& pixels, int width, int height, CellPixels cell,
                                        TerminalPictureProtocol protocol,
                                        SixelRegisters registers = SixelRegisters::true_colour)
 {
     if (width <= 0 || height <= 0 || cell.width <= 0 || cell.height <= 0)
-        return std::nullopt;
+        return chafa_failure("no picture of " + size_text(width, height) + " pixels on cells of " +
+                             size_text(cell.width, cell.height));
     const auto config = exact_config(width, height, cell, protocol, registers);
     const std::unique_ptr<ChafaCanvas, CanvasRelease> canvas(chafa_canvas_new(config.get()));
     if (!canvas)
-        return std::nullopt;
+        return chafa_failure("cannot make a canvas of " + size_text(width, height) + " pixels");
     chafa_canvas_draw_all_pixels(canvas.get(), CHAFA_PIXEL_RGBA8_UNASSOCIATED, pixels.data(), width, height,
                                  width * bytes_per_pixel);
     // No terminal's description: libchafa's fallback holds the sixel and kitty sequences.
     GString* printed = chafa_canvas_print(canvas.get(), nullptr);
     if (printed == nullptr)
-        return std::nullopt;
+        return chafa_failure("printed nothing for a canvas of " + size_text(width, height) + " pixels");
     std::string sequences(printed->str, printed->len);
     g_string_free(printed, TRUE);
     if (protocol == TerminalPictureProtocol::kitty)
@@ -112,10 +117,10 @@ std::optional<std::string> encode_rgba(const std::vector<std::uint8_t>& pixels, 
 
 } // namespace
 
-std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol)
+Expected<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol)
 {
     const int height = png_rows(bitmap.height(), PngShape::monitor);
-    std::optional<std::string> sequences =
+    Expected<std::string> sequences =
         encode_rgba(monitor_rgba(bitmap, height, raster_row_of_monitor), bitmap.width(), height,
                     {terminal_picture_cell_width, terminal_picture_cell_height}, protocol);
     if (sequences)
@@ -123,12 +128,14 @@ std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, Termina
     return sequences;
 }
 
-std::optional<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
-                                               TerminalPictureProtocol protocol)
+Expected<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
+                                          TerminalPictureProtocol protocol)
 {
     if (cell.width <= 0 || cell.height <= 0 || band.first < 0 || band.end <= band.first ||
         band.end * cell.height > picture.height())
-        return std::nullopt;
+        return chafa_failure("cell rows " + std::to_string(band.first) + " to " + std::to_string(band.end) +
+                             " of cells " + size_text(cell.width, cell.height) + " are not within a picture of " +
+                             size_text(picture.width(), picture.height()) + " pixels");
     const int first_row = band.first * cell.height;
     const auto row_of = [first_row](int y) { return first_row + y; };
     const int height = (band.end - band.first) * cell.height;

@@ -7,9 +7,9 @@ namespace apcs {
 void write_picture(StepContext& context, const std::string& name, const GraphicsScreen& picture, PngShape shape,
                    const std::string& log_line)
 {
-    const std::optional<std::string> png = encode_png(render_raster(picture), shape);
+    const Expected<std::string> png = encode_png(render_raster(picture), shape);
     if (!png) {
-        context.notice = name + ": cannot encode the PNG image";
+        context.notice = name + ": cannot encode the PNG image: " + png.error().to_string();
         return;
     }
     store_picture(context, name, *png, log_line);

@@ -80,10 +80,10 @@ void TerminalPixels::show(const GraphicsScreen& screen, const PictureFrame& fram
         whole ? CellRowBand{0, placement.rows} : changed_band(m_sent, picture, placement.cell.height);
     if (!band)
         return;
-    const std::optional<std::string> sequences = encode_picture_band(picture, *band, placement.cell, *m_protocol);
+    const Expected<std::string> sequences = encode_picture_band(picture, *band, placement.cell, *m_protocol);
     if (!sequences) {
         // Characters from now on: the next screen repaints every cell over what was sent.
-        m_notice = std::string(encoding_failed_line);
+        m_notice = std::string(encoding_failed_line) + " (" + sequences.error().message + ")";
         m_terminal.remove_pictures(*m_protocol);
         m_protocol.reset();
         m_sent_placement.reset();

@@ -5,7 +5,13 @@
 
 #include <png.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
 #include <utility>
 #include <vector>
 
@@ -102,8 +108,8 @@ TEST_CASE("a PNG in paper ink is black on white: a lit pixel 0, an unlit one 255
 {
     Bitmap bitmap(16, 4);
     bitmap.set(3, 1, true);
-    const std::optional<std::string> monitor = encode_png(bitmap, PngShape::raw);
-    const std::optional<std::string> paper = encode_png(bitmap, PngShape::raw, PngInk::paper);
+    const Expected<std::string> monitor = encode_png(bitmap, PngShape::raw);
+    const Expected<std::string> paper = encode_png(bitmap, PngShape::raw, PngInk::paper);
     REQUIRE(monitor);
     REQUIRE(paper);
     const Decoded on_monitor = decode(*monitor);
@@ -119,4 +125,27 @@ TEST_CASE("a PNG in paper ink is black on white: a lit pixel 0, an unlit one 255
             REQUIRE(on_paper.pixels[at] == (lit ? 0 : 255));
         }
     }
+}
+
+TEST_CASE("libpng's refusal comes back as its reason, and nothing is printed over the screen", "[raster][png]")
+{
+    // What libpng writes on standard error (its default handler's "libpng error: …") goes to a file.
+    std::string caught = (std::filesystem::temp_directory_path() / "apcs-png-stderr-XXXXXX").string();
+    const int file = ::mkstemp(caught.data());
+    REQUIRE(file >= 0);
+    std::fflush(stderr);
+    const int saved = ::dup(STDERR_FILENO);
+    ::dup2(file, STDERR_FILENO);
+    const Expected<std::string> no_columns = encode_png(Bitmap(0, 4), PngShape::raw);
+    std::fflush(stderr);
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+    ::close(file);
+    std::stringstream printed;
+    printed << std::ifstream(caught).rdbuf();
+    std::filesystem::remove(caught);
+
+    REQUIRE_FALSE(no_columns);
+    CHECK(no_columns.error().to_string() == "libpng: Invalid IHDR data (Image width is zero in IHDR)");
+    CHECK(printed.str().empty());
 }

@@ -147,7 +147,7 @@ std::vector<std::uint8_t> kitty_payload(const std::vector<KittyCommand>& command
 // a newline.
 std::string encoded(const Bitmap& bitmap, TerminalPictureProtocol protocol)
 {
-    const std::optional<std::string> picture = encode_terminal_picture(bitmap, protocol);
+    const Expected<std::string> picture = encode_terminal_picture(bitmap, protocol);
     REQUIRE(picture);
     REQUIRE(picture->ends_with("\x1b\\\n"));
     return *picture;
@@ -217,7 +217,7 @@ TEST_CASE("a sixel band is the picture's cell rows of the band, unscaled, each p
 {
     const Bitmap picture = band_test_picture();
     const CellPixels cell{9, 15};
-    const std::optional<std::string> band = encode_picture_band(picture, {1, 2}, cell, TerminalPictureProtocol::sixel);
+    const Expected<std::string> band = encode_picture_band(picture, {1, 2}, cell, TerminalPictureProtocol::sixel);
     REQUIRE(band);
     REQUIRE(band->starts_with("\x1bP"));
     REQUIRE(band->ends_with("\x1b\\"));
@@ -246,8 +246,7 @@ TEST_CASE("a sixel band is the picture's cell rows of the band, unscaled, each p
 TEST_CASE("a kitty band decodes to the band's RGBA pixels, placed on the band's cells", "[raster][kitty][pixels]")
 {
     const Bitmap picture = band_test_picture();
-    const std::optional<std::string> band =
-        encode_picture_band(picture, {0, 2}, {9, 15}, TerminalPictureProtocol::kitty);
+    const Expected<std::string> band = encode_picture_band(picture, {0, 2}, {9, 15}, TerminalPictureProtocol::kitty);
     REQUIRE(band);
     const std::vector<KittyCommand> commands = kitty_commands(*band);
     REQUIRE_FALSE(commands.empty());
@@ -268,4 +267,10 @@ TEST_CASE("a band outside the picture, empty or of no cell height is refused", "
     CHECK_FALSE(encode_picture_band(picture, {1, 1}, {9, 15}, TerminalPictureProtocol::sixel));
     CHECK_FALSE(encode_picture_band(picture, {-1, 1}, {9, 15}, TerminalPictureProtocol::sixel));
     CHECK_FALSE(encode_picture_band(picture, {0, 1}, {9, 0}, TerminalPictureProtocol::kitty));
+    // The reason is kept for the notice the session shows when pixels go off.
+    const Expected<std::string> outside = encode_picture_band(picture, {1, 3}, {9, 15}, TerminalPictureProtocol::sixel);
+    REQUIRE_FALSE(outside);
+    CHECK(outside.error().to_string() ==
+          "libchafa: cell rows 1 to 3 of cells 9x15 are not within a picture of " +
+              std::to_string(picture.width()) + "x" + std::to_string(picture.height()) + " pixels");
 }

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/raster/bitmap.h"
 
-#include <optional>
 #include <string>
 
 namespace apcs {
@@ -33,7 +33,8 @@ int png_rows(int raster_rows, PngShape shape);
 int raster_row_of(int row, PngShape shape);
 
 // The bitmap as a PNG file's bytes (libpng): 8-bit greyscale, lit pixels white on black like the
-// monitor, or black on white for `PngInk::paper`. Empty on a libpng failure.
-std::optional<std::string> encode_png(const Bitmap& bitmap, PngShape shape, PngInk ink = PngInk::monitor);
+// monitor, or black on white for `PngInk::paper`. On a libpng failure, its reason: "libpng: …"
+// (never printed by libpng itself, which would write over the curses screen).
+Expected<std::string> encode_png(const Bitmap& bitmap, PngShape shape, PngInk ink = PngInk::monitor);
 
 } // namespace apcs

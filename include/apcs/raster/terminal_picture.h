@@ -1,9 +1,9 @@
 #pragma once
 
+#include "apcs/base/diagnostic.h"
 #include "apcs/raster/bitmap.h"
 #include "apcs/raster/pixel_picture.h"
 
-#include <optional>
 #include <string>
 
 namespace apcs {
@@ -27,8 +27,8 @@ inline constexpr int terminal_picture_cell_height = 18;
 // it leaves the prompt below the picture. Sixel: one DCS sequence, every pixel painted (black as a
 // colour, not transparent). Kitty: `a=T,f=32` (RGBA) in base64 chunks, placed on 80x29 cells. A
 // picture whose size is not a whole number of cells is scaled by libchafa to the cells that hold
-// it. Empty when libchafa fails.
-std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol);
+// it. When libchafa fails, why ("libchafa: …").
+Expected<std::string> encode_terminal_picture(const Bitmap& bitmap, TerminalPictureProtocol protocol);
 
 // Cell rows `band` of `picture` (whole cells of `cell` screen pixels: scale_to_picture), lit pixels
 // white and the others black, as the escape sequences that draw it at the cursor in `protocol`,
@@ -36,9 +36,9 @@ std::optional<std::string> encode_terminal_picture(const Bitmap& bitmap, Termina
 // in colour register 0 and black in 1 in every band alike (a VT340 shares its registers among the
 // pictures on the screen, so bands must not redefine each other's), as tall
 // as the next multiple of 6 pixels (sixels are six rows: the rows below the band are left
-// transparent); kitty, `a=T,f=32` placed on the band's cells. Empty when libchafa fails or the band
-// is not within the picture.
-std::optional<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
-                                               TerminalPictureProtocol protocol);
+// transparent); kitty, `a=T,f=32` placed on the band's cells. Why not, when libchafa fails or the
+// band is not within the picture.
+Expected<std::string> encode_picture_band(const Bitmap& picture, CellRowBand band, CellPixels cell,
+                                          TerminalPictureProtocol protocol);
 
 } // namespace apcs
