@@ -272,6 +272,8 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
 struct ReplayKept {
     KeyRecording recording;
     std::vector<GoalOutcome> goals;
+    // The KEY files of every session the replay played into (ReplayDriver::key_files_read).
+    std::vector<std::string> key_files;
 };
 
 // The settings of a session that `options` asks for, within the memory budget `limit`. On a
@@ -314,6 +316,7 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     }
     kept.recording = replay.recording();
     kept.goals = replay.goal_outcomes();
+    kept.key_files = replay.key_files_read();
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     if (!replay.goals())
@@ -328,14 +331,15 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
 // The session on the terminal, the script replayed first; the files it wrote listed on `out` at
 // its end.
 ExitStatus run_on_terminal(Session& session, const KeyScript& script, const CommonOptions& options, GlyphSet glyphs,
-                           const TerminalRunner& terminal, ReplayHooks hooks, KeyRecording& recorded,
+                           const TerminalRunner& terminal, ReplayHooks hooks, ReplayKept& kept,
                            std::ostream& out, std::ostream& err)
 {
     const ColourChoice colour = session_colour(options.colour, std::getenv("NO_COLOR"));
     const std::string script_name = options.keys ? options.keys->string() : std::string();
     ReplayDriver replay(session, script, script_name, options.pace, std::move(hooks), ReplayAudience::terminal);
     const Expected<ExitStatus> ran = terminal(replay, glyphs, colour, options.pixels);
-    recorded = replay.recording();
+    kept.recording = replay.recording();
+    kept.key_files = replay.key_files_read();
     if (!ran) {
         err << ran.error().to_string() << '\n';
         return ExitStatus::terminal_problem;
@@ -441,14 +445,14 @@ std::optional<ExitStatus> refuse_record_target(const CommonOptions& options, std
 
 // The files the session read that a recording (or its backup) must never replace: the key script
 // and the key frames as typed at the KEY prompts.
-KeyFileGuard files_read(const CommonOptions& options, const Session& session, const std::filesystem::path& folder)
+KeyFileGuard files_read(const CommonOptions& options, const std::vector<std::string>& key_files,
+                        const std::filesystem::path& folder)
 {
     KeyFileGuard read;
     if (options.keys && *options.keys != "-")
         read.protect(*options.keys);
-    for (const std::string& key : session.key_names())
-        if (!key.empty())
-            read.protect(folder / key);
+    for (const std::string& key : key_files)
+        read.protect(folder / key);
     return read;
 }
 
@@ -491,28 +495,29 @@ std::optional<ExitStatus> open_handout(const CommonOptions& options, std::option
 
 // The hooks of the replay: each caption's page of the handout, the screen at the end of its keys;
 // none without a handout.
-ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options, Session& session,
+ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOptions& options,
                          const KeyScript& script, GlyphSet glyphs, const std::filesystem::path& folder)
 {
     ReplayHooks hooks;
     if (handout)
-        hooks.caption_ended = [&handout, &options, &session, &script, glyphs, folder](std::size_t index,
-                                                                                     const SessionScreen& screen) {
+        hooks.caption_ended = [&handout, &options, &script, glyphs, folder](
+                                  std::size_t index, const SessionScreen& screen, const std::vector<std::string>& keys) {
             handout->write(static_cast<int>(index) + 1, script.captions.size(), script.captions[index].text, screen,
-                           glyphs, files_read(options, session, folder));
+                           glyphs, files_read(options, keys, folder));
         };
     return hooks;
 }
 
 // The handout's index.html written after its pages; a handout that could not be written is the
 // run's failure, unless a signal stopped it.
-ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOptions& options, const Session& session,
-                           const std::filesystem::path& folder, ExitStatus status, std::ostream& err)
+ExitStatus handout_outcome(std::optional<HandoutWriter>& handout, const CommonOptions& options,
+                           const std::vector<std::string>& key_files, const std::filesystem::path& folder,
+                           ExitStatus status, std::ostream& err)
 {
     if (!handout)
         return status;
     const std::string title = *options.keys == "-" ? std::string("standard input") : options.keys->filename().string();
-    handout->finish(title, files_read(options, session, folder));
+    handout->finish(title, files_read(options, key_files, folder));
     if (handout->outcome()) {
         if (const std::optional<std::string> note = earlier_inbetweens_note(handout->earlier_pages()))
             err << "apcs: " << *note << '\n';
@@ -595,7 +600,7 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
     // With --record -, standard output holds the keystrokes, not the headless screens.
     std::ostream no_screens(nullptr);
     std::ostream& screens = options.record == std::filesystem::path("-") ? no_screens : out;
-    ReplayHooks hooks = replay_hooks(start.handout, options, session, start.script, start.glyphs, folder);
+    ReplayHooks hooks = replay_hooks(start.handout, options, start.script, start.glyphs, folder);
     hooks.log = [&files](const std::string& line) { files.log(line); };
     if (can_go_back) {
         hooks.session_as_started = [&rewindable, &settings] {
@@ -604,17 +609,16 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
         };
         hooks.caught_up = [&rewindable] { rewindable.caught_up(); };
     }
-    const ExitStatus status = handout_outcome(
-        start.handout, options, session, folder,
+    const ExitStatus replayed =
         start.headless
             ? replay_headless(session, start.script, options.keys->string(), {&screens, start.glyphs}, hooks, kept, err)
-            : run_on_terminal(session, start.script, options, start.glyphs, terminal, hooks, kept.recording, out, err),
-        err);
+            : run_on_terminal(session, start.script, options, start.glyphs, terminal, hooks, kept, out, err);
+    const ExitStatus status = handout_outcome(start.handout, options, kept.key_files, folder, replayed, err);
     if (status == ExitStatus::terminal_problem)
         return status;
     // A recording that fails is reported; a session stopped by a signal still ends as stopped.
     if (const std::optional<ExitStatus> refused =
-            record_keys(options, files_read(options, session, folder), kept.recording, out, err))
+            record_keys(options, files_read(options, kept.key_files, folder), kept.recording, out, err))
         return status == ExitStatus::stopped ? status : *refused;
     // A student at a terminal sees where the keys went, the file to hand in.
     if (!start.headless && options.record && *options.record != "-")

@@ -57,7 +57,7 @@ void ReplayDriver::end_caption()
         return;
     m_captions_ended = m_captions_told;
     if (m_hooks.caption_ended)
-        m_hooks.caption_ended(m_captions_ended - 1, m_session->screen());
+        m_hooks.caption_ended(m_captions_ended - 1, m_session->screen(), key_files_read());
 }
 
 std::optional<std::size_t> ReplayDriver::waiting_goal() const

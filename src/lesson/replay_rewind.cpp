@@ -48,6 +48,9 @@ void ReplayDriver::rewind_to(std::size_t events, std::string label)
         m_hooks.caught_up();
     // The new session counts its screens from 0: the sum the terminal watches must still grow.
     m_revision += m_session->screen_revision() + 1;
+    for (const std::string& key : m_session->key_names())
+        if (!key.empty())
+            m_key_files_of_sessions_replaced.insert(key);
     m_session_gone_back = std::move(session);
     m_session = m_session_gone_back.get();
     m_handled.assign(m_script.events.begin(), m_script.events.begin() + static_cast<std::ptrdiff_t>(events));
@@ -61,6 +64,15 @@ void ReplayDriver::rewind_to(std::size_t events, std::string label)
     m_session->say_goal({});
     m_typed_meanwhile.clear();
     m_step_label = std::move(label);
+}
+
+std::vector<std::string> ReplayDriver::key_files_read() const
+{
+    std::set<std::string> read = m_key_files_of_sessions_replaced;
+    for (const std::string& key : m_session->key_names())
+        if (!key.empty())
+            read.insert(key);
+    return {read.begin(), read.end()};
 }
 
 // The first `events` keys of the script into `session`, each played to its end: the split, the

@@ -347,3 +347,27 @@ TEST_CASE("after PgUp the recording is the script up to the caption gone back to
     REQUIRE(deck.replay->recording().text() == "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n"
                                                 ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\nL\nL\nL\n;; three\n");
 }
+
+TEST_CASE("the KEY files read are those of every session the replay played into, the one Home replaced too, so "
+          "that a handout page or a recording never replaces a key file typed after going back",
+          "[lesson][replay][deck][record]")
+{
+    const KeyScript keys = test::parsed_deck(";; one\nENTER\n;; two\nENTER\n;; three\nTEXT 0 90 100\n");
+    MemoryFiles inputs = example_files("n-to-l");
+    inputs.files["other1.dat"] = inputs.files.at("key1.dat");
+    Deck deck(keys, std::move(inputs), ReplayPace{ReplayPace::Kind::on_space, 0}, Animations::play_through, {});
+    press(*deck.replay, space); // KEY1: key1.dat, the default
+    press(*deck.replay, space); // KEY2: key2.dat
+    REQUIRE(deck.replay->key_files_read() == std::vector<std::string>{"key1.dat", "key2.dat"});
+    // Home: caption one's screen again, its KEY1 prompt unanswered; the presenter takes the keyboard
+    // (Esc) and types another name.
+    press(*deck.replay, home);
+    REQUIRE(deck.replay->screen().caption == "one");
+    press(*deck.replay, KeyEvent::of(Key::escape));
+    for (const char32_t letter : std::u32string(U"other1.dat"))
+        press(*deck.replay, KeyEvent::typed(letter));
+    press(*deck.replay, KeyEvent::of(Key::enter));
+    REQUIRE(deck.replay->session().key_names()[0] == "other1.dat");
+    // The first session read key1.dat and key2.dat; the one Home made, other1.dat.
+    REQUIRE(deck.replay->key_files_read() == std::vector<std::string>{"key1.dat", "key2.dat", "other1.dat"});
+}

@@ -13,6 +13,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -103,6 +104,9 @@ public:
     // Each goal judged so far, in order: headless every goal once finish() has run; on a terminal
     // the goals reached, skipped or left, and the one waited at when the session ended.
     const std::vector<GoalOutcome>& goal_outcomes() const { return m_outcomes; }
+    // The KEY1 and KEY2 answers of every session the replay has played into, the one PgUp or Home
+    // replaced too (a key file read there is still a file the program read), each once, sorted.
+    std::vector<std::string> key_files_read() const;
 
 private:
     // The replay's own part of the state; the rest is read off the session and the script's
@@ -189,6 +193,7 @@ private:
 
     Session* m_session;
     std::unique_ptr<Session> m_session_gone_back; // the session PgUp or Home made, if any
+    std::set<std::string> m_key_files_of_sessions_replaced;
     const KeyScript& m_script;
     std::string m_script_name;
     ReplayPace m_pace;

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace apcs {
 
@@ -22,8 +23,11 @@ struct ReplayHooks {
     // Caption `index` has played its keys: `screen` is the session's screen (no caption laid on)
     // once they have, when the next caption is reached or the script's keys are all played (Esc
     // too), the session neither splitting nor animating. Called once per caption reached, in order,
-    // so each caption's screen shows what the caption says. --handout writes its pages here.
-    std::function<void(std::size_t index, const SessionScreen& screen)> caption_ended;
+    // so each caption's screen shows what the caption says. --handout writes its pages here;
+    // `key_files` are the KEY files the replay's sessions have read so far (key_files_read), which
+    // a page must not replace.
+    std::function<void(std::size_t index, const SessionScreen& screen, const std::vector<std::string>& key_files)>
+        caption_ended;
     // A line for apcs.log ("goal skipped").
     std::function<void(const std::string& line)> log;
     // PgUp and Home (SPEC §3.1): a new session on the inputs as they were when the replay started,
