@@ -15,7 +15,10 @@ std::size_t whole_huge_pages(std::size_t bytes)
 
 } // namespace
 
-void* allocate(std::size_t bytes, std::size_t alignment)
+// Advice only: where the kernel has no huge pages to give, the array is in 4 KB pages as before.
+void advise_huge_pages(void* storage, std::size_t bytes) { (void)madvise(storage, bytes, MADV_HUGEPAGE); }
+
+void* allocate(std::size_t bytes, std::size_t alignment, HugePageAdvice advise)
 {
     if (bytes < huge_page_bytes)
         return ::operator new(bytes, std::align_val_t{alignment});
@@ -25,8 +28,7 @@ void* allocate(std::size_t bytes, std::size_t alignment)
     void* storage = std::aligned_alloc(huge_page_bytes, whole);
     if (storage == nullptr)
         throw std::bad_alloc();
-    // Advice only: where the kernel has no huge pages to give, the array is in 4 KB pages as before.
-    (void)madvise(storage, whole, MADV_HUGEPAGE);
+    advise(storage, whole);
     return storage;
 }
 

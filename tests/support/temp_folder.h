@@ -12,10 +12,12 @@ namespace apcs::test {
 // A fresh folder under the system's temporary folder, removed with everything in it at the end.
 class TempFolder {
 public:
-    TempFolder()
+    TempFolder() : TempFolder(std::filesystem::temp_directory_path()) {}
+    // A new folder inside `base`.
+    explicit TempFolder(const std::filesystem::path& base)
     {
         std::random_device seed;
-        m_path = std::filesystem::temp_directory_path() / ("apcs-test-" + std::to_string(seed()) + std::to_string(seed()));
+        m_path = base / ("apcs-test-" + std::to_string(seed()) + std::to_string(seed()));
         std::filesystem::create_directories(m_path);
     }
     TempFolder(const TempFolder&) = delete;

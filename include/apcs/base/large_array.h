@@ -14,7 +14,12 @@ namespace large_array {
 // From this size on an array gets its own 2 MB-aligned storage, advised for huge pages.
 inline constexpr std::size_t huge_page_bytes = std::size_t{2} << 20;
 
-void* allocate(std::size_t bytes, std::size_t alignment);
+// What asks the kernel for huge pages on `bytes` at `storage` (madvise MADV_HUGEPAGE; a test gives
+// its own, to see the asking on a kernel that has no huge pages to give).
+using HugePageAdvice = void (*)(void* storage, std::size_t bytes);
+void advise_huge_pages(void* storage, std::size_t bytes);
+
+void* allocate(std::size_t bytes, std::size_t alignment, HugePageAdvice advise = advise_huge_pages);
 void deallocate(void* storage, std::size_t bytes, std::size_t alignment) noexcept;
 } // namespace large_array
 
