@@ -6,6 +6,8 @@
 # the Debian package needs (scripts/package.sh, tests/e2e/debian_package.sh): debhelper and its
 # bash-completion add-on, dpkg-dev, fakeroot, lintian, and man-db for `man apcs`.
 set -euo pipefail
+# CI (.ci/run) installs everything once, before its phases: their own runs of this have nothing to do.
+[ -n "${APCS_DEPENDENCIES_CHECKED:-}" ] && exit 0
 
 # libchafa-dev's pkg-config file asks for glib's (libglib2.0-dev), which Debian 12 does not bring with it.
 build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev libpng-dev zlib1g-dev libgif-dev libchafa-dev libglib2.0-dev

@@ -12,14 +12,16 @@ cmake --build --preset release -j"$(nproc)" --target apcs
 work=build/session-n-to-l
 mkdir -p "$work"
 cp data/n-to-l/*.dat "$work"/
-hint="Press Enter at each prompt for the thesis' example answers; answer way1.dat for the first
-path to see the staff bend it (README: your first session). ? shows the keys; Ctrl-C ends APCS
-at any step, q on a graphics screen (at a text prompt q is typed)."
+# Lines of at most 79 columns: an 80-column terminal wraps nothing mid-word.
+hint="Press Enter at each prompt for the thesis' example answers; answer way1.dat
+for the first path to see the staff bend it (README: your first session).
+? shows the keys; Ctrl-C ends APCS at any step, q on a graphics screen
+(at a text prompt q is typed)."
 # The session's full screen covers whatever was printed before it: on a terminal the hint waits
 # for Enter, and it is printed again after the session.
-echo "APCS works in $work. $hint"
+printf 'APCS works in %s.\n%s\n' "$work" "$hint"
 [ -t 0 ] && read -r -p "Press Enter to start APCS. " _
 status=0
 build/release/apcs --workdir "$work" "$@" || status=$?
-echo "APCS worked in $work (its key frames, paths and in-between files are there). $hint"
+printf 'APCS worked in %s:\nits key frames, paths and in-between files are there.\n%s\n' "$work" "$hint"
 exit "$status"

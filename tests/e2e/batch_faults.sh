@@ -8,6 +8,7 @@
 # full-disk may, and only where the user is not root: as root (CI) a tmpfs it cannot mount is a
 # failure. Usage: batch_faults.sh APCS streams|full-output|full-disk|signal|grade-signal
 set -uo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 case_name=$2
 work=$(mktemp -d)

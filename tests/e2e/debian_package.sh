@@ -20,6 +20,11 @@ fail() { echo "FAILED: $*"; exit 1; }
 bash "$source_tree/scripts/package.sh" "${package_options[@]}" "$work/deb" > "$work/build.log" 2>&1 ||
   fail "building the package: $(grep -E -A12 '(Failed|\*\*\*Exception|\*\*\*Timeout)' "$work/build.log" | tail -80; tail -30 "$work/build.log")"
 grep -E "tests passed|tests failed" "$work/build.log"
+# CI (APCS_REQUIRE_EVERY_TEST) has installed every tool the tests need: a skip there is a failure.
+if [ -n "${APCS_REQUIRE_EVERY_TEST:-}" ] && grep -q "^The following tests did not run:" "$work/build.log"; then
+  grep -A20 "^The following tests did not run:" "$work/build.log"
+  fail "tests reported a skip (above), and APCS_REQUIRE_EVERY_TEST requires every test to run"
+fi
 # The package is built without -Werror (a newer compiler's new warning must not break a Debian
 # build), so GCC's warnings are refused here: this is the only GCC build CI makes.
 gcc_warning='warning: .*\[-W[a-zA-Z0-9=+-]+\]'

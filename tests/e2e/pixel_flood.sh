@@ -4,6 +4,7 @@
 # quitting keys. 137 bytes overran curses' input queue and spun for good (issue 45, item 1).
 # Usage: pixel_flood.sh APCS DATA_FOLDER
 set -uo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 here=$(cd "$(dirname "$0")" && pwd)
 command -v python3 > /dev/null || { echo "skipped: no python3"; exit 77; }
 for mode in session play; do

@@ -10,6 +10,7 @@
 #            Ctrl-L sends the whole picture again, and so does a resize, at the new size.
 # Usage: pixels_pty.sh APCS DATA_FOLDER
 set -uo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 here=$(cd "$(dirname "$0")" && pwd)

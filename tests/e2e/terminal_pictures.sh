@@ -6,6 +6,7 @@
 # refused as --png refuses it, with the same message. Usage: terminal_pictures.sh APCS DATA_FOLDER
 # (skips, exit 77, without ImageMagick's convert or python3).
 set -uo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 here=$(cd "$(dirname "$0")" && pwd)

@@ -9,6 +9,7 @@
 # Usage: terminal_shows_picture.sh APCS DATA_FOLDER xterm|kitty (skips, exit 77, without Xvfb, the
 # terminal, xwd, ImageMagick's convert or python3, or where Xvfb cannot start).
 set -uo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 terminal_name=$3

@@ -4,6 +4,7 @@
 # the drawing area one row shorter and every text row shown (message, staff, key hint); each ends
 # cleanly. Usage: tmux_80x23.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

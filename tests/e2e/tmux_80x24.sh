@@ -6,6 +6,7 @@
 #   core           (default) what the terminal shell and the command line do
 #   help-and-quit  the help screen (? and F1) and the quit questions (q, Esc on an empty prompt)
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 part=${3:-core}

@@ -4,6 +4,7 @@
 # on the top edge, its letter on the curve) shown beside the live curve, and unpinned by C.
 # Usage: tmux_deck_200x60.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

@@ -5,6 +5,7 @@
 # of N; PgDn at exercise 1's goal says GOAL skipped.
 # Usage: tmux_deck_rows_80x23.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

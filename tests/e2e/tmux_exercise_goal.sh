@@ -6,6 +6,7 @@
 # tokens between the GOAL line and the closing caption, and the recording rechecks headless.
 # Usage: tmux_exercise_goal.sh APCS EXERCISES_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 exercises=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

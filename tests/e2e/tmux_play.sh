@@ -4,6 +4,7 @@
 # name that is taken, even by a dangling link); Esc stops; a key shows all frames overlaid; another
 # ends it; q quits at once. Usage: tmux_play.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

@@ -2,6 +2,7 @@
 # End-to-end: the real apcs in a real terminal (tmux, 80x25), a whole session typed key by key.
 # Usage: tmux_session.sh APCS DATA_FOLDER
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 data=$2
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }

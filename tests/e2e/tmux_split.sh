@@ -4,6 +4,7 @@
 # written is whole and no hidden temporary file is left.
 # Usage: tmux_split.sh APCS
 set -euo pipefail
+source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
 command -v tmux >/dev/null || { echo "tmux is not installed"; exit 77; }
 
