@@ -82,17 +82,86 @@ def distance_off_chord(points):
     return max(off(point) for point in points)
 
 
+def first_span_cubic(apcs, way1, slope):
+    """The first span's cubic P(u) = P0 + c1 u + c2 u^2 + c3 u^3, read off `apcs path --print`.
+
+    Not from a first sample step: at end slope 0 the span leaves its start as u^2 (9, -12, 10), so a
+    step of 1/2000 moves 2e-6, which the printed 6 decimals round to a wrong direction (60.9 degrees
+    where the span turns 56.3). Four samples a segment instead: way1.dat's integers put every sample
+    at a multiple of 1/64, printed exactly, and the span is one cubic, so its four forward differences
+    give its coefficients exactly (the fifth sample must agree: the fourth difference is 0)."""
+    curve, _ = path_print(apcs, way1, "--samples", "4", "--slopes", slope, "1")
+    span = curve[:5]
+    differences = [span]
+    while len(differences) < 5:
+        differences.append([minus(b, a) for a, b in zip(differences[-1], differences[-1][1:])])
+    if math.hypot(*differences[4][0]) > 1e-5:
+        raise SystemExit(f"the first span at end slope {slope} is no cubic: fourth difference {differences[4][0]}")
+    d1, d2, d3 = (differences[k][0] for k in (1, 2, 3))
+    # Newton's forward form in x = 4u: P = P0 + d1 x + d2 x(x-1)/2 + d3 x(x-1)(x-2)/6.
+    c1 = tuple(4 * (a - b / 2 + c / 3) for a, b, c in zip(d1, d2, d3))
+    c2 = tuple(16 * (b / 2 - c / 2) for b, c in zip(d2, d3))
+    c3 = tuple(64 * c / 6 for c in d3)
+    return c1, c2, c3
+
+
+def leading(*terms):
+    """The first term that is not zero: the direction a curve leaves along where its tangent is 0."""
+    return next(term for term in terms if math.hypot(*term) > 1e-9)
+
+
+def vector_text(v):
+    return "(" + ", ".join(f"{round(c, 6) + 0.0:g}" for c in v) + ")"
+
+
+def turning(c1, c2, c3, steps=20000):
+    """From start to end, and along the way, in degrees: the angle between the direction at the start
+    and at the end, and the turns between successive directions summed into runs, a new run where the
+    turning changes its sense (the span bends one way, then the other)."""
+    derivative = lambda u: tuple(a + 2 * b * u + 3 * c * u * u for a, b, c in zip(c1, c2, c3))
+    start = leading(c1, c2, c3)
+    directions = [start] + [derivative(i / steps) for i in range(1, steps + 1)]
+    runs, sense = [0.0], None
+    for a, b in zip(directions, directions[1:]):
+        normal = (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+        if math.hypot(*normal) > 1e-12:
+            if sense is not None and sum(x * y for x, y in zip(normal, sense)) < 0:
+                runs.append(0.0)
+            sense = normal
+        runs[-1] += angle(a, b)
+    return angle(start, directions[-1]), [run for run in runs if run >= 0.005]
+
+
 def end_slope_claim(apcs, way1):
-    """The first span's turn from its first sample step to its last, and its bulge, at end slopes 0 and 1."""
+    """The first span's directions at its ends, its turn from start to end and in all, and its bulge,
+    at end slopes 0 and 1."""
+    measured = {}
+    for slope in ("0", "1"):
+        c1, c2, c3 = first_span_cubic(apcs, way1, slope)
+        ends_along = leading(tuple(a + 2 * b + 3 * c for a, b, c in zip(c1, c2, c3)),
+                             tuple(b + 3 * c for b, c in zip(c2, c3)))
+        measured[slope] = (vector_text(leading(c1, c2, c3)), vector_text(ends_along), *turning(c1, c2, c3))
+
+    def turns(net, runs):
+        if len(runs) == 1:
+            return f"turns {net:.2f} degrees, all one way"
+        ways = ", then ".join(f"{run:.2f} {'one way' if i == 0 else 'the other'}" for i, run in enumerate(runs))
+        return f"turns {net:.2f} degrees from its start to its end but {sum(runs):.2f} in all ({ways})"
+
+    start0, end0, *turn0 = measured["0"]
+    start1, end1, *turn1 = measured["1"]
+    more = "more" if turn0[0] > turn1[0] else "less"
+    in_all = "though less in all" if sum(turn0[1]) < sum(turn1[1]) else "and more in all"
+    ends1 = "" if end1 == end0 else f", ends along {end1}"
+
     def first_span(slope):
         curve, _ = path_print(apcs, way1, "--samples", str(SAMPLES), "--slopes", slope, "1")
         return curve[:SAMPLES + 1]
-    rest, chord = first_span("0"), first_span("1")
-    turn = lambda span: angle(minus(span[1], span[0]), minus(span[-1], span[-2]))
-    bulge = {f"{distance_off_chord(span):.3f}" for span in (rest, chord)}
+    bulge = {f"{distance_off_chord(first_span(slope)):.3f}" for slope in ("0", "1")}
     off = " or ".join(sorted(bulge))  # one number when the slope changes nothing, as the manual says
-    return (f"with end slope 0 the first span turns {turn(rest):.1f} degrees from its start to its end, "
-            f"{turn(chord):.1f} with slope 1, and lies at most {off} off its chord with either slope")
+    return (f"On way1.dat end slope 0 makes the first span turn {more} from its start to its end, {in_all}: "
+            f"it starts along {start0}, ends along {end0} and {turns(*turn0)}; with slope 1 it starts along "
+            f"{start1}{ends1} and {turns(*turn1)}; with either slope it lies at most {off} off its chord")
 
 
 def scene_frames(apcs, scene_text, drawings):
