@@ -164,6 +164,79 @@ def end_slope_claim(apcs, way1):
             f"{start1}{ends1} and {turns(*turn1)}; with either slope it lies at most {off} off its chord")
 
 
+# KEY1, KEY2 and the view as offered; the first path: global control, tension +0.15, the other lines
+# kept, accepted (N); Y; the second path: global control, every line kept as it starts, accepted. The
+# script ends at step 6, having written both path files with their t c b a columns.
+SECOND_PATH_KEYS = """ENTER
+ENTER
+ENTER
+TEXT first.dat
+ENTER
+ENTER
+8
+6 6 6 ENTER
+ENTER ENTER ENTER
+N
+Y
+TEXT second.dat
+ENTER
+ENTER
+8
+ENTER ENTER ENTER ENTER
+N
+"""
+
+
+def second_path_staff(apcs, keys, first, second, *options):
+    """The staff values (t c b a) the second path's file is written with when the session's second path
+    is accepted as it starts, after the first path's tension was set to +0.15."""
+    with tempfile.TemporaryDirectory() as folder:
+        for name, text in {**keys, "first.dat": first, "second.dat": second, "s.keys": SECOND_PATH_KEYS}.items():
+            with open(os.path.join(folder, name), "w") as out:
+                out.write(text)
+        subprocess.run([apcs, "--keys", "s.keys", *options], cwd=folder, check=True, capture_output=True,
+                       stdin=subprocess.DEVNULL)
+        def staff_of(name):
+            with open(os.path.join(folder, name)) as written:
+                rows = [line.split() for line in written if line.strip() and line[0] not in ";#S"]
+            return tuple(float(value) for value in rows[0][3:7])
+        return staff_of("first.dat"), staff_of("second.dat")
+
+
+def second_path_claim(apcs, data):
+    """Step 5: whose staff values the second path starts at, for a closed graphic and for N to L."""
+    ring = {"key1.dat": "PART ring CLOSED\n0 0 0\n0 2 0\n0 2 2\n0 0 0\n",
+            "key2.dat": "PART ring CLOSED\n4 0 0\n4 3 0\n4 3 3\n4 0 0\n"}
+    ring_path = "0 0 0\n4 0 0\n"  # the ring's first point (and its last) from KEY1 to KEY2
+    n_to_l = {}
+    for name in ("key1.dat", "key2.dat", "way1.dat", "way4.dat"):
+        with open(os.path.join(data, "n-to-l", name)) as source:
+            n_to_l[name] = source.read()
+    keys = {name: n_to_l[name] for name in ("key1.dat", "key2.dat")}
+    options = ("--tension", "0.2", "--continuity", "0.1", "--bias", "-0.1", "--accel", "0.05")
+    given = tuple(float(value) for value in options[1::2])
+
+    def starts(first, second):  # the first path's tension is +0.15: never 0
+        if second == first:
+            return "those of the first"
+        return "0" if second == (0.0, 0.0, 0.0, 0.0) else f"{second}"
+    closed = starts(*second_path_staff(apcs, ring, ring_path, ring_path))
+    opened = starts(*second_path_staff(apcs, keys, n_to_l["way1.dat"], n_to_l["way4.dat"]))
+    first, second = second_path_staff(apcs, keys, n_to_l["way1.dat"], n_to_l["way4.dat"], *options)
+    when_given = "when given" if second == given and first != given else f"not as given: {second}"
+    # A second path file with its own columns: they come first, for a closed graphic too.
+    own = "0 0 0 -0.25 0.5 0 0\n4 0 0 -0.25 0.5 0 0\n"
+    _, closed_own = second_path_staff(apcs, ring, ring_path, own)
+    _, open_own = second_path_staff(apcs, keys, n_to_l["way1.dat"],
+                                    "".join(line.rstrip("\n") + " -0.25 0.5 0 0\n" for line in
+                                            n_to_l["way4.dat"].splitlines(True) if line.strip()
+                                            and not line.startswith(";")))
+    columns = "first either way" if closed_own == open_own == (-0.25, 0.5, 0.0, 0.0) else "second"
+    return (f"For a closed graphic only, the second path's staff values start at {closed}; an open graphic's "
+            f"second path (N to L) starts at {opened} (or at --tension, --continuity, --bias and --accel, "
+            f"{when_given}). A path file's own t c b a columns come {columns}")
+
+
 def scene_frames(apcs, scene_text, drawings):
     """`apcs play --print` of a scene written with its drawings into a fresh folder: each frame's points."""
     with tempfile.TemporaryDirectory() as folder:
@@ -228,6 +301,7 @@ def claims(apcs, data):
                f"the incoming chord and {angle(leaving, outgoing):.0f} off the outgoing")
 
     yield end_slope_claim(apcs, way1)
+    yield second_path_claim(apcs, data)
 
     curve, inbetweens = path_print(apcs, way1, "--tension", "0.15", "--accel", "0.15")
     along = [0.0]
