@@ -195,7 +195,8 @@ def second_path_staff(apcs, keys, first, second, *options):
         for name, text in {**keys, "first.dat": first, "second.dat": second, "s.keys": SECOND_PATH_KEYS}.items():
             with open(os.path.join(folder, name), "w") as out:
                 out.write(text)
-        subprocess.run([apcs, "--keys", "s.keys", *options], cwd=folder, check=True, capture_output=True,
+        program = os.path.abspath(apcs) if os.sep in apcs else apcs  # run in the folder: a relative name moves
+        subprocess.run([program, "--keys", "s.keys", *options], cwd=folder, check=True, capture_output=True,
                        stdin=subprocess.DEVNULL)
         def staff_of(name):
             with open(os.path.join(folder, name)) as written:
