@@ -31,7 +31,10 @@ namespace fs = std::filesystem;
 // A folder of this run's own, made as mkdtemp makes one (mode 0700: no other user reads a
 // student's replay or swaps a file in it) and removed with everything in it when the run ends,
 // whichever way: at the end, after an error, or by the handler of a signal that stops APCS
-// (unfinished_files.h), which finds it by its parent folder's descriptor.
+// (unfinished_files.h), which finds it by its parent folder's descriptor. Everything in it is
+// reached through its own descriptor (/proc/self/fd/N), never its name: in a TMPDIR others may
+// write, the name can be swapped for a link to another folder while grade runs, and what is made
+// and removed must stay in the folder made.
 class PrivateFolder {
 public:
     PrivateFolder() = default;
@@ -39,9 +42,14 @@ public:
     PrivateFolder& operator=(const PrivateFolder&) = delete;
     ~PrivateFolder()
     {
-        std::error_code ignored;
-        if (!m_path.empty())
-            fs::remove_all(m_path, ignored);
+        if (m_self >= 0) {
+            std::error_code ignored;
+            for (const fs::directory_entry& entry : fs::directory_iterator(m_path, ignored))
+                fs::remove_all(entry.path(), ignored);
+            // By the name only once empty: a link put in its place is not a folder, and stays.
+            ::unlinkat(m_parent, m_name.c_str(), AT_REMOVEDIR);
+            ::close(m_self);
+        }
         m_known.reset();
         if (m_parent >= 0)
             ::close(m_parent);
@@ -61,19 +69,24 @@ public:
         }
         m_parent = ::open(temporary.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
         std::string name = "apcs-grade-XXXXXX";
-        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0) {
+        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0 ||
+            (m_self = ::openat(m_parent, name.c_str(), O_PATH | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)) < 0) {
             const int reason = errno; // before the message's allocations
             return Diagnostic{"apcs", 0, "grade: cannot make a folder in " + temporary.string() + ": " +
                                              std::strerror(reason)};
         }
-        m_path = temporary / name;
+        m_name = name;
+        m_path = "/proc/self/fd/" + std::to_string(m_self);
         return ok;
     }
+    // The folder as its descriptor names it.
     const fs::path& path() const { return m_path; }
 
 private:
     int m_parent = -1;
+    int m_self = -1;
     std::optional<UnfinishedFolder> m_known;
+    std::string m_name;
     fs::path m_path;
 };
 
@@ -170,11 +183,12 @@ Expected<void> fresh_work_folder(const Exercise& exercise, const fs::path& work)
     return ok;
 }
 
-// The recording's script, or the reason it cannot be graded (FILE:LINE on `err`). Only a regular
-// file is read (read_text_file): a FIFO or a device is refused without being opened.
+// The recording's script, or the reason it cannot be graded (FILE:LINE on `err`): unreadable,
+// not a key script, or too long to replay (SPEC §3.2: beyond most_recording_keys keys). Only a
+// regular file is read (read_text_file): a FIFO or a device is refused without being opened.
 std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream& err)
 {
-    const Expected<std::string> text = read_text_file(recording, max_key_script_bytes);
+    const Expected<std::string> text = read_text_file(recording, most_recording_bytes);
     if (!text) {
         err << text.error().to_string() << '\n';
         return std::nullopt;
@@ -184,7 +198,25 @@ std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream&
         err << parsed.error().to_string() << '\n';
         return std::nullopt;
     }
+    if (parsed->events.size() > most_recording_keys) {
+        err << Diagnostic{recording.string(), 0,
+                          "too long: " + std::to_string(parsed->events.size()) + " keys, at most " +
+                              std::to_string(most_recording_keys) + " are graded"}
+                   .to_string()
+            << '\n';
+        return std::nullopt;
+    }
     return std::move(*parsed);
+}
+
+// Why a recording is another exercise's, on `err`: its first line that departs, or the option
+// that sets another task.
+void say_other(const fs::path& recording, const Exercise& exercise, const ScriptDeparture& departure, std::ostream& err)
+{
+    err << Diagnostic{recording.string(), departure.line,
+                      "not a recording of " + exercise.name + ": " + departure.what}
+               .to_string()
+        << '\n';
 }
 
 // One recording's rows: error when it cannot be read or replayed, other when it is another
@@ -197,8 +229,13 @@ std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& 
     const std::optional<KeyScript> script = read_recording(recording, err);
     if (!script)
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
-    if (!same_exercise(exercise.script, *script))
+    if (is_blank_recording(*script))
+        return blank_rows(names, exercise.script);
+    if (const std::optional<ScriptDeparture> departure =
+            departure_from_exercise(exercise.script, *script, exercise.name)) {
+        say_other(recording, exercise, *departure, err);
         return unreplayed_rows(names, exercise.script, GradeVerdict::other);
+    }
     // The student's staff step, in-between count ... as the recording's OPTIONS line has them; a
     // recording whose options set another task (another starting staff, in-between count ...) is
     // of another exercise, as one with other GOAL lines is.
@@ -207,18 +244,31 @@ std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& 
         err << taken.error().to_string() << '\n';
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     }
-    if (changed_task_option(exercise.options, replay_options))
+    if (const std::optional<std::string> changed = changed_task_option(exercise.options, replay_options)) {
+        say_other(recording, exercise, {script->options.line_number, "OPTIONS sets another task (" + *changed + ")"},
+                  err);
         return unreplayed_rows(names, exercise.script, GradeVerdict::other);
+    }
     if (const Expected<void> made = fresh_work_folder(exercise, work); !made) {
         err << made.error().to_string() << '\n';
         return unreplayed_rows(names, exercise.script, GradeVerdict::error);
     }
     // The report is the grade: a replay's "goal not reached" and the like are not shown.
     std::ostream unheard(nullptr);
-    const HeadlessReplay replayed = replay_in_folder(*script, recording.string(), replay_options, work, unheard);
+    const KeyScript answered = with_answers_to_next_goal(*script);
+    const HeadlessReplay replayed = replay_in_folder(answered, recording.string(), replay_options, work, unheard);
     std::error_code ignored;
     fs::remove_all(work, ignored);
-    return replayed_rows(names, *script, replayed.goals);
+    // A file the session could not write changed where the keys went: no verdict stands.
+    if (replayed.unwritten) {
+        err << recording.string() << ": not graded: " << replayed.unwritten->to_string() << '\n';
+        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
+    }
+    std::vector<GradeRow> rows = replayed_rows(names, answered, replayed.goals);
+    if (script->options.words != exercise.script.options.words)
+        for (GradeRow& row : rows)
+            row.options = script->options.words;
+    return rows;
 }
 
 } // namespace
@@ -240,13 +290,17 @@ ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& o
     exercise.inputs = folder.path() / "inputs";
     if (const std::optional<ExitStatus> refused = copy_inputs(exercise, request.exercise, err))
         return *refused;
-    out << grade_csv_header << '\n';
+    out << grade_csv_header << '\n' << std::flush;
     bool every_one_graded = true;
     for (const fs::path& recording : request.recordings) {
+        // A recording's rows go out together as soon as they are graded: a grade stopped by a
+        // signal has printed whole rows only, and every row it had graded.
+        std::string rows;
         for (const GradeRow& row : grade_recording(exercise, recording, options, folder.path() / "work", err)) {
-            out << grade_csv_line(row);
+            rows += grade_csv_line(row);
             every_one_graded = every_one_graded && row.reached != GradeVerdict::error;
         }
+        out << rows << std::flush;
     }
     return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;
 }

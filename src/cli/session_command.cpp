@@ -272,6 +272,7 @@ Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
 struct ReplayKept {
     KeyRecording recording;
     std::vector<GoalOutcome> goals;
+    std::optional<Diagnostic> unwritten; // the session's first write that failed
     // The KEY files of every session the replay played into (ReplayDriver::key_files_read).
     std::vector<std::string> key_files;
 };
@@ -317,6 +318,8 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     kept.recording = replay.recording();
     kept.goals = replay.goal_outcomes();
     kept.key_files = replay.key_files_read();
+    if (!session.writes())
+        kept.unwritten = session.writes().error();
     if (!session.finished())
         err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
     if (!replay.goals())
@@ -633,12 +636,12 @@ HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& scri
     CommonOptions options = command_line;
     if (const Expected<void> taken = take_script_options(script.options, script_name, options); !taken) {
         err << taken.error().to_string() << '\n';
-        return {ExitStatus::bad_input, {}};
+        return {ExitStatus::bad_input, {}, {}};
     }
     const Expected<std::uint64_t> limit = memory_limit(options);
     if (!limit) {
         err << limit.error().to_string() << '\n';
-        return {ExitStatus::bad_usage, {}};
+        return {ExitStatus::bad_usage, {}, {}};
     }
     FolderFiles files(folder);
     files.log("session started");
@@ -647,7 +650,7 @@ HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& scri
     hooks.log = [&files](const std::string& line) { files.log(line); };
     ReplayKept kept;
     const ExitStatus status = replay_headless(session, script, script_name, Transcript{}, std::move(hooks), kept, err);
-    return {status, std::move(kept.goals)};
+    return {status, std::move(kept.goals), std::move(kept.unwritten)};
 }
 
 ColourChoice session_colour(ColourChoice asked, const char* no_color)

@@ -22,11 +22,21 @@ std::string expected_token()
     return expected;
 }
 
-// The key a token names: a physical key's script name or a single printable character.
+// Whether `a` and `b` are the same word but for the case of ASCII letters.
+bool same_word(std::string_view a, std::string_view b)
+{
+    const auto upper = [](char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; };
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [&](char x, char y) {
+               return upper(x) == upper(y);
+           });
+}
+
+// The key a token names: a physical key's script name in any case (enter is ENTER: SPEC §3.2) or a
+// single printable character, whose case is the character's.
 std::optional<KeyEvent> key_of_token(std::string_view token)
 {
     for (const PhysicalKey& row : physical_keys)
-        if (token == row.script_name)
+        if (token.size() > 1 ? same_word(token, row.script_name) : token == row.script_name)
             return KeyEvent::of(row.key);
     const std::u32string characters = decode_utf8(token);
     if (characters.size() != 1 || !is_token_character(characters[0]))
@@ -223,6 +233,24 @@ Expected<bool> take_directive_line(std::string_view line, ScriptState& state, st
     return true;
 }
 
+// `line` with its first word in capitals and a tab after it a space, when that word is a keyword
+// (START, INPUT, OPTIONS, GOAL, TEXT) in any case: the case of keywords does not count (SPEC §3.2).
+// Any other line as it is.
+std::string_view keyword_in_capitals(std::string_view line, std::string& respelled)
+{
+    const std::size_t end = std::min(line.find_first_of(" \t;"), line.size());
+    const std::string_view first = line.substr(0, end);
+    for (const std::string_view keyword : {"START", "INPUT", "OPTIONS", "GOAL", "TEXT"}) {
+        if (!same_word(first, keyword) || (first == keyword && (end == line.size() || line[end] != '\t')))
+            continue;
+        respelled = std::string(keyword) + std::string(line.substr(end));
+        if (end < line.size() && line[end] == '\t')
+            respelled[end] = ' ';
+        return respelled;
+    }
+    return line;
+}
+
 // The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
 {
@@ -231,16 +259,27 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     events.reserve(text.size());
     if (Expected<void> ended = cut_at_end_of_file(text, file_name); !ended)
         return ended.error();
+    // A UTF-8 byte order mark, as Windows editors write one, is no key.
+    constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+    if (text.starts_with(byte_order_mark))
+        text.remove_prefix(byte_order_mark.size());
+    // Each event's line, kept with the captions.
+    const auto note_lines = [kept, &events](int line) {
+        if (kept != nullptr)
+            kept->event_lines.resize(events.size(), line);
+    };
     std::optional<Diagnostic> problem;
     int line_number = 0;
     ScriptState state;
     while (!text.empty()) {
         ++line_number;
-        std::string_view line = take_line(text);
+        std::string respelled;
+        std::string_view line = keyword_in_capitals(take_line(text), respelled);
         if (Expected<void> printable = printable_line(line, file_name, line_number); !printable)
             return printable.error();
         if (line.starts_with("TEXT ")) {
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
+            note_lines(line_number);
             continue;
         }
         const Expected<bool> directive = take_directive_line(line, state, events.size(), kept, file_name, line_number);
@@ -265,10 +304,12 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
+        note_lines(line_number);
         state.start.after_caption_or_goal = state.start.after_caption_or_goal || caption->has_value();
         if (*caption && kept != nullptr) {
             end_answers(*kept, state.open_goal, events.size());
             kept->captions.push_back({events.size(), **caption});
+            kept->caption_lines.push_back(line_number);
         }
     }
     if (kept != nullptr)

@@ -56,7 +56,105 @@ std::string text_token(const KeyScript& script, std::size_t first, std::size_t e
 
 GradeRow row_of(const GradeNames& names, const ScriptGoal& goal, GradeVerdict reached)
 {
-    return {names.recording, names.exercise, goal_line(goal), reached, {}, {}};
+    return {names.recording, names.exercise, goal_line(goal), reached, {}, {}, {}};
+}
+
+std::string line_of(const std::string& file, int line) { return file + ":" + std::to_string(line); }
+
+// What a departure says of the exercise's line `line`: "(ex.keys:12 has ENTER)" and the like.
+ScriptDeparture departure(int line, std::string what) { return {line, std::move(what)}; }
+
+// The line of event `event` in `script`, or of its last one past the end (0 when it has none).
+int event_line(const KeyScript& script, std::size_t event)
+{
+    if (script.event_lines.empty())
+        return 0;
+    return script.event_lines[std::min(event, script.event_lines.size() - 1)];
+}
+
+std::optional<ScriptDeparture> inputs_departure(const KeyScript& exercise, const KeyScript& recording,
+                                                const std::string& name)
+{
+    for (std::size_t k = 0; k < std::max(exercise.inputs.size(), recording.inputs.size()); ++k) {
+        if (k >= recording.inputs.size())
+            return departure(0, "no INPUT " + exercise.inputs[k].name + " line, as " +
+                                    line_of(name, exercise.inputs[k].line_number) + " has");
+        if (k >= exercise.inputs.size())
+            return departure(recording.inputs[k].line_number, "an INPUT line the exercise does not have");
+        if (!same_input(exercise.inputs[k], recording.inputs[k]))
+            return departure(recording.inputs[k].line_number,
+                             "INPUT " + recording.inputs[k].name + " where " +
+                                 line_of(name, exercise.inputs[k].line_number) + " has INPUT " + exercise.inputs[k].name +
+                                 " with its checksum");
+    }
+    return std::nullopt;
+}
+
+std::optional<ScriptDeparture> goals_departure(const KeyScript& exercise, const KeyScript& recording,
+                                               const std::string& name)
+{
+    for (std::size_t k = 0; k < std::max(exercise.goals.size(), recording.goals.size()); ++k) {
+        if (k >= recording.goals.size())
+            return departure(0, "no " + goal_line(exercise.goals[k]) + " line, as " +
+                                    line_of(name, exercise.goals[k].line_number) + " has");
+        const ScriptGoal& goal = recording.goals[k];
+        if (k >= exercise.goals.size())
+            return departure(goal.line_number, "a GOAL line the exercise does not have");
+        if (!same_goal(exercise.goals[k], goal) || exercise.goals[k].captions_before != goal.captions_before)
+            return departure(goal.line_number, goal_line(goal) + " where " +
+                                                   line_of(name, exercise.goals[k].line_number) + " has " +
+                                                   goal_line(exercise.goals[k]) + " after the same captions");
+    }
+    return std::nullopt;
+}
+
+std::string token_or_end(const KeyScript& script, std::size_t event, std::size_t end)
+{
+    return event < end ? "'" + key_token(script.events[event]) + "'" : "the GOAL line";
+}
+
+// The keys up to the first GOAL line, and where START stands among them.
+std::optional<ScriptDeparture> keys_departure(const KeyScript& exercise, const KeyScript& recording,
+                                              const std::string& name)
+{
+    const std::size_t exercise_end = exercise.goals.front().before_event;
+    const std::size_t recording_end = recording.goals.front().before_event;
+    for (std::size_t event = 0; event < std::max(exercise_end, recording_end); ++event) {
+        const bool same = event < exercise_end && event < recording_end &&
+                          exercise.events[event] == recording.events[event];
+        if (!same)
+            return departure(event < recording_end ? event_line(recording, event) : recording.goals.front().line_number,
+                             token_or_end(recording, event, recording_end) + " where " +
+                                 line_of(name, event < exercise_end ? event_line(exercise, event)
+                                                                    : exercise.goals.front().line_number) +
+                                 " has " + token_or_end(exercise, event, exercise_end) +
+                                 " (before the first GOAL line the keys are the exercise's)");
+    }
+    if (exercise.preamble_end != recording.preamble_end)
+        return departure(event_line(recording, recording.preamble_end),
+                         "START after " + std::to_string(recording.preamble_end) + " keys, where the exercise has it after " +
+                             std::to_string(exercise.preamble_end));
+    return std::nullopt;
+}
+
+// The captions: the same, in order; those before the first GOAL line after the same keys.
+std::optional<ScriptDeparture> captions_departure(const KeyScript& exercise, const KeyScript& recording,
+                                                  const std::string& name)
+{
+    const std::size_t pinned = exercise.goals.front().captions_before;
+    for (std::size_t k = 0; k < std::max(exercise.captions.size(), recording.captions.size()); ++k) {
+        if (k >= recording.captions.size())
+            return departure(0, "no caption ';; " + exercise.captions[k].text + "', as " +
+                                    line_of(name, exercise.caption_lines[k]) + " has");
+        const int line = recording.caption_lines[k];
+        if (k >= exercise.captions.size())
+            return departure(line, "a caption the exercise does not have");
+        if (exercise.captions[k].text != recording.captions[k].text)
+            return departure(line, "a caption that differs from " + line_of(name, exercise.caption_lines[k]) + "'s");
+        if (k < pinned && exercise.captions[k].before_event != recording.captions[k].before_event)
+            return departure(line, "the caption after other keys than at " + line_of(name, exercise.caption_lines[k]));
+    }
+    return std::nullopt;
 }
 
 // A number as a spreadsheet reads one: a sign, digits with at most one point, an exponent.
@@ -123,13 +221,49 @@ std::string csv_field(std::string_view text)
 std::string grade_csv_line(const GradeRow& row)
 {
     return csv_field(row.file) + ',' + csv_field(row.exercise) + ',' + csv_field(row.goal) + ',' +
-           std::string(verdict_name(row.reached)) + ',' + csv_field(row.value) + ',' + csv_field(row.keys) + '\n';
+           std::string(verdict_name(row.reached)) + ',' + csv_field(row.value) + ',' + csv_field(row.keys) + ',' +
+           csv_field(row.options) + '\n';
 }
 
-bool same_exercise(const KeyScript& exercise, const KeyScript& recording)
+std::optional<ScriptDeparture> departure_from_exercise(const KeyScript& exercise, const KeyScript& recording,
+                                                       const std::string& exercise_name)
 {
-    return std::ranges::equal(exercise.goals, recording.goals, same_goal) &&
-           std::ranges::equal(exercise.inputs, recording.inputs, same_input);
+    if (std::optional<ScriptDeparture> found = inputs_departure(exercise, recording, exercise_name))
+        return found;
+    if (std::optional<ScriptDeparture> found = goals_departure(exercise, recording, exercise_name))
+        return found;
+    if (exercise.goals.empty())
+        return std::nullopt;
+    if (std::optional<ScriptDeparture> found = keys_departure(exercise, recording, exercise_name))
+        return found;
+    return captions_departure(exercise, recording, exercise_name);
+}
+
+bool is_blank_recording(const KeyScript& recording)
+{
+    return recording.events.empty() && recording.captions.empty() && recording.goals.empty() &&
+           recording.inputs.empty() && recording.options.words.empty() && recording.preamble_end == 0;
+}
+
+KeyScript with_answers_to_next_goal(KeyScript recording)
+{
+    std::vector<ScriptGoal>& goals = recording.goals;
+    for (std::size_t k = 0; k < goals.size(); ++k)
+        goals[k].answer_end = k + 1 < goals.size() ? goals[k + 1].before_event : recording.events.size();
+    return recording;
+}
+
+std::string answer_field(const KeyScript& script, const ScriptGoal& goal)
+{
+    const std::string tokens = answer_tokens(script, goal);
+    const std::u32string characters = decode_utf8(tokens);
+    if (characters.size() <= most_answer_characters)
+        return tokens;
+    std::string cut;
+    for (std::size_t k = 0; k < most_answer_characters; ++k)
+        append_utf8(cut, characters[k]);
+    const std::size_t keys = std::min(goal.answer_end, script.events.size()) - goal.before_event;
+    return cut + "\u2026 (" + std::to_string(keys) + " keys)";
 }
 
 std::string answer_tokens(const KeyScript& script, const ScriptGoal& goal)
@@ -154,7 +288,7 @@ std::vector<GradeRow> replayed_rows(const GradeNames& names, const KeyScript& re
     for (std::size_t index = 0; index < recording.goals.size(); ++index) {
         const ScriptGoal& goal = recording.goals[index];
         GradeRow row = row_of(names, goal, GradeVerdict::no);
-        row.keys = answer_tokens(recording, goal);
+        row.keys = answer_field(recording, goal);
         const auto outcome = std::ranges::find(outcomes, index, &GoalOutcome::goal);
         if (outcome != outcomes.end()) {
             row.reached = outcome->verdict == GoalOutcome::Verdict::reached ? GradeVerdict::yes : GradeVerdict::no;
@@ -163,6 +297,11 @@ std::vector<GradeRow> replayed_rows(const GradeNames& names, const KeyScript& re
         rows.push_back(std::move(row));
     }
     return rows;
+}
+
+std::vector<GradeRow> blank_rows(const GradeNames& names, const KeyScript& exercise)
+{
+    return unreplayed_rows(names, exercise, GradeVerdict::no);
 }
 
 std::vector<GradeRow> unreplayed_rows(const GradeNames& names, const KeyScript& exercise, GradeVerdict verdict)

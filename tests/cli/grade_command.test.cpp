@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 const fs::path shipped = fs::path(APCS_SOURCE_DIR) / "data" / "exercises";
 
-const std::string header = "file,exercise,goal,reached,value,keys\n";
+const std::string header = "file,exercise,goal,reached,value,keys,options\n";
 
 // data/exercises as a teacher keeps it: the exercises and their inputs in `folder`, the answers
 // in `folder`/answers.
@@ -117,8 +117,8 @@ TEST_CASE("apcs grade prints yes for each recording of the answer and no for the
     REQUIRE(result.status == 0);
     REQUIRE(result.err.empty());
     const std::string goal = ",GOAL VALUE TENSION 0.4 0.6,";
-    REQUIRE(result.out == header + answer + "," + exercise + goal + "yes,+0.50,L L L 6\n" + answer + "," + exercise +
-                              goal + "yes,+0.50,L L L 6\n" + exercise + "," + exercise + goal + "no,+0.00,\n");
+    REQUIRE(result.out == header + answer + "," + exercise + goal + "yes,+0.50,L L L 6,\n" + answer + "," + exercise +
+                              goal + "yes,+0.50,L L L 6,\n" + exercise + "," + exercise + goal + "no,+0.00,,\n");
 }
 
 TEST_CASE("apcs grade grades every shipped answer yes against its own exercise", "[cli][grade][exercises]")
@@ -144,8 +144,10 @@ TEST_CASE("apcs grade says other for a recording of another exercise and does no
     const std::string answer = answer_of(folder, 2, "continuity");
     const auto result = grade({exercise, answer});
     REQUIRE(result.status == 0);
-    REQUIRE(result.err.empty());
-    REQUIRE(result.out == header + answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,\n");
+    // Its first departure: the INPUT lines are the same, its GOAL line is not.
+    REQUIRE(result.err.starts_with(answer + ":"));
+    REQUIRE(result.err.find(": not a recording of " + exercise + ": GOAL VALUE CONTINUITY") != std::string::npos);
+    REQUIRE(result.out == header + answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,,\n");
 }
 
 TEST_CASE("apcs grade says other for a recording whose INPUT lines differ from the exercise's", "[cli][grade][inputs]")
@@ -157,7 +159,7 @@ TEST_CASE("apcs grade says other for a recording whose INPUT lines differ from t
     const std::string other = folder.write("other-input.keys", recording).string();
     const auto result = grade({exercise_of(folder, 1, "tension"), other});
     REQUIRE(result.status == 0);
-    REQUIRE(result.out.ends_with(",other,,\n"));
+    REQUIRE(result.out.ends_with(",other,,,\n"));
 }
 
 TEST_CASE("apcs grade gives error rows for a recording that is missing or a FIFO or a folder or garbage",
@@ -177,9 +179,9 @@ TEST_CASE("apcs grade gives error rows for a recording that is missing or a FIFO
     // The FIFO has no writer: opening it to read would wait for ever.
     const auto result = grade({exercise, missing, fifo, folder_name, garbage, answer});
     REQUIRE(result.status == 1);
-    const std::string row_end = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,error,,\n";
+    const std::string row_end = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,error,,,\n";
     REQUIRE(result.out == header + missing + row_end + fifo + row_end + folder_name + row_end + garbage + row_end +
-                              answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6\n");
+                              answer + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6,\n");
     REQUIRE(result.err.find(missing + ": ") != std::string::npos);
     REQUIRE(result.err.find(fifo + ": is not a regular file (a FIFO)") != std::string::npos);
     REQUIRE(result.err.find(folder_name + ": ") != std::string::npos);
@@ -195,7 +197,7 @@ TEST_CASE("apcs grade follows a symbolic link to a recording and grades what it 
     fs::create_symlink(answer_of(folder, 1, "tension"), link);
     const auto result = grade({exercise_of(folder, 1, "tension"), link.string()});
     REQUIRE(result.status == 0);
-    REQUIRE(result.out.ends_with(",yes,+0.50,L L L 6\n"));
+    REQUIRE(result.out.ends_with(",yes,+0.50,L L L 6,\n"));
     REQUIRE(fs::is_symlink(fs::symlink_status(link)));
 }
 
@@ -263,7 +265,7 @@ TEST_CASE("apcs grade quotes a recording's name that holds a comma or a quote as
     const std::string exercise = exercise_of(folder, 1, "tension");
     const auto result = grade({exercise, recording});
     REQUIRE(result.status == 0);
-    REQUIRE(result.out == header + quoted + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6\n");
+    REQUIRE(result.out == header + quoted + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,L L L 6,\n");
 }
 
 TEST_CASE("apcs grade writes a field a spreadsheet would run as a formula after an apostrophe",
@@ -283,7 +285,7 @@ TEST_CASE("apcs grade writes a field a spreadsheet would run as a formula after 
     fs::current_path(here);
     INFO(result.err);
     REQUIRE(result.status == 0);
-    const std::string row = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,'= TEXT 0.5 ENTER\n";
+    const std::string row = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,yes,+0.50,'= TEXT 0.5 ENTER,\n";
     REQUIRE(result.out == header + "'=1+1.keys" + row + "'@jo.keys" + row);
 }
 
@@ -308,8 +310,8 @@ TEST_CASE("apcs grade replays a recording with the options on its OPTIONS line a
     const std::string exercise = exercise_of(folder, 1, "tension");
     const auto result = grade({exercise, recorded_step, default_step, pictures});
     const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
-    REQUIRE(result.out == header + recorded_step + goal + "yes,+0.50,6 6 6 6 6\n" + default_step + goal +
-                              "no,+0.25,6 6 6 6 6\n" + pictures + goal + "error,,\n");
+    REQUIRE(result.out == header + recorded_step + goal + "yes,+0.50,6 6 6 6 6,'--step 0.1\n" + default_step + goal +
+                              "no,+0.25,6 6 6 6 6,\n" + pictures + goal + "error,,,\n");
     REQUIRE(result.status == 1);
     REQUIRE(result.err.starts_with(pictures + ":" + options_line +
                                    ": OPTIONS --png: not an option a script carries; expected"));
@@ -328,7 +330,7 @@ TEST_CASE("apcs grade says other for a recording whose OPTIONS set another task 
     const std::string started = handed_in.write("started.keys", bare).string();
     const std::string exercise = exercise_of(folder, 1, "tension");
     REQUIRE(grade({exercise, started}).out ==
-            header + started + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,\n");
+            header + started + "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,other,,,\n");
 
     // An exercise that sets its in-between count: a recording made without it is another task.
     std::string six = test::read_all(exercise_of(folder, 5, "inbetween"));
@@ -386,4 +388,92 @@ TEST_CASE("apcs grade needs an exercise and at least one recording and its help 
     REQUIRE(help.status == 0);
     REQUIRE(help.out.find("apcs grade data/exercises/exercise-1-tension.keys "
                           "data/exercises/answers/exercise-1-tension-answer.keys") != std::string::npos);
+}
+
+TEST_CASE("apcs grade says other for an answer moved above the GOAL line or into the preamble, and names the line",
+          "[cli][grade][issue57]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const std::string text = test::read_all(exercise);
+    const test::TempFolder handed_in;
+    // sed 's/^8$/8 L L L/' exercise-1-tension.keys: the answer before the GOAL line.
+    std::string above = text;
+    above.replace(above.find("\n8\n"), 3, "\n8 L L L\n");
+    const std::string moved = handed_in.write("moved.keys", above).string();
+    // The answer among the opening prompts' keys, decoys after the GOAL.
+    std::string preamble = text;
+    preamble.replace(preamble.find("ENTER ENTER\nTEXT 0 90 100"), 25, "ENTER ENTER\nTEXT 0 90 100\nL L L");
+    preamble += "6 4\n";
+    const std::string decoy = handed_in.write("decoy.keys", preamble).string();
+    const auto result = grade({exercise, moved, decoy});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    REQUIRE(result.out == header + moved + goal + "other,,,\n" + decoy + goal + "other,,,\n");
+    const auto line_of = [](const std::string& script, const std::string& what) {
+        return std::to_string(std::count(script.begin(), script.begin() + static_cast<std::ptrdiff_t>(script.find(what)),
+                                         '\n') + 1);
+    };
+    REQUIRE(result.err.find(moved + ":" + line_of(above, "8 L L L") + ": not a recording of " + exercise + ": 'L' where " +
+                            exercise + ":") != std::string::npos);
+    REQUIRE(result.err.find(decoy + ":" + line_of(preamble, "L L L") + ": not a recording of " + exercise + ": 'L' where ") !=
+            std::string::npos);
+}
+
+TEST_CASE("apcs grade takes the keys after the closing caption as the answer, a BOM and tabs as any script has them, "
+          "and a blank recording as nothing done",
+          "[cli][grade][issue57]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const std::string text = test::read_all(exercise);
+    const test::TempFolder handed_in;
+    // As --record writes it once the replay moved on: the student's keys after the closing caption.
+    const std::string after = handed_in.write("after.keys", text + "L\nL\nL\n6\n").string();
+    std::string tabbed = "\xEF\xBB\xBF" + text + "L\tL L\t6\n";
+    tabbed.replace(tabbed.find("ENTER ENTER\nTEXT"), 11, "ENTER\tENTER");
+    const std::string bom = handed_in.write("bom.keys", tabbed).string();
+    const std::string blank = handed_in.write("blank.keys", "; handed in empty\n\n").string();
+    const std::string empty = handed_in.write("empty.keys", "").string();
+    const auto result = grade({exercise, after, bom, blank, empty});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    REQUIRE(result.out == header + after + goal + "yes,+0.50,L L L 6,\n" + bom + goal + "yes,+0.50,L L L 6,\n" + blank +
+                              goal + "no,,,\n" + empty + goal + "no,,,\n");
+}
+
+TEST_CASE("apcs grade gives a recording of more than 100,000 keys an error row, too long, and cuts a long answer's "
+          "keys at 200 characters",
+          "[cli][grade][issue57]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const std::string text = test::read_all(exercise);
+    const test::TempFolder handed_in;
+    // The exercise's 22 keys and 99,979 more: 100,001.
+    std::string many = text;
+    for (int key = 0; key < 99'979; ++key)
+        many += "L\n";
+    const std::string too_long = handed_in.write("too-long.keys", many).string();
+    // 300 keys: L and 6 in turn end where they began, then the answer's L L L 6.
+    std::string long_text = text;
+    for (int key = 0; key < 148; ++key)
+        long_text += key % 2 == 0 ? "L\n" : "J\n";
+    long_text += "L L L 6\n";
+    const std::string long_answer = handed_in.write("long.keys", long_text).string();
+    const auto result = grade({exercise, too_long, long_answer});
+    INFO(result.err);
+    REQUIRE(result.status == 1);
+    const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    REQUIRE(result.err.find(too_long + ": too long: 100001 keys, at most 100000 are graded") != std::string::npos);
+    std::string shown = "L";
+    for (int key = 1; key < 100; ++key)
+        shown += key % 2 == 0 ? " L" : " J";
+    REQUIRE(result.out == header + too_long + goal + "error,,,\n" + long_answer + goal + "yes,+0.50," + shown +
+                              " \u2026 (152 keys),\n");
 }

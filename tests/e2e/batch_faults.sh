@@ -3,10 +3,14 @@
 # clear exit 3, a FIFO is neither read nor replaced (streams); output lost on a full standard
 # output is exit 1 (full-output); a full disk leaves no partial file and keeps the old one
 # (full-disk); a signal while the in-betweens are written is exit 130 (SPEC §1) and leaves no
-# temporary file (signal); one while apcs grade replays leaves no private folder (grade-signal).
+# temporary file (signal); one while apcs grade replays leaves no private folder and whole rows
+# (grade-signal); grading on a full disk is an error row, exit 1 (grade-full-disk); a private
+# folder whose name is swapped for a link while grade runs is graded on, the link's target
+# untouched (grade-swapped-folder).
 # A case that cannot run here exits 77, which CTest reports as a skip (SKIP_RETURN_CODE); only
-# full-disk may, and only where the user is not root: as root (CI) a tmpfs it cannot mount is a
-# failure. Usage: batch_faults.sh APCS streams|full-output|full-disk|signal|grade-signal
+# the full-disk cases may, and only where the user is not root: as root (CI) a tmpfs it cannot
+# mount is a failure.
+# Usage: batch_faults.sh APCS streams|full-output|full-disk|signal|grade-signal|grade-full-disk|grade-swapped-folder
 set -uo pipefail
 source "$(dirname "$0")/one_at_a_time.sh"
 apcs=$1
@@ -147,8 +151,9 @@ stopping_signals() {
   done
 }
 
-# `apcs grade` of 400 recordings with TMPDIR=$work/grade/tmp, SIGNAL sent once its private folder
-# holds a work folder (a replay under way); prints the exit status, or "missed" when it ended first.
+# `apcs grade` of 400 recordings with TMPDIR=$work/grade/tmp, its CSV in $work/grade/out.csv,
+# SIGNAL sent once the CSV holds 2 KB (a dozen rows graded, a replay under way); prints the exit
+# status, or "missed" when it ended first.
 signal_while_grading() {
   local signal=$1 exercises
   exercises=$(dirname "$0")/../../data/exercises
@@ -156,8 +161,8 @@ signal_while_grading() {
   cp "$exercises"/*.keys "$exercises"/*.dat "$work/grade/ex/"
   for i in $(seq 400); do cp "$exercises/answers/exercise-1-tension-answer.keys" "$work/grade/in/$i.keys"; done
   TMPDIR=$work/grade/tmp "$apcs" grade "$work/grade/ex/exercise-1-tension.keys" "$work/grade/in"/*.keys \
-    > /dev/null 2>&1 &
-  signal_when_found $! "$signal" "$work/grade/tmp" -mindepth 2 -maxdepth 2 -name work
+    > "$work/grade/out.csv" 2>/dev/null &
+  signal_when_found $! "$signal" "$work/grade/out.csv" -size +2k
 }
 
 grading_signals() {
@@ -169,7 +174,64 @@ grading_signals() {
     [ "$status" -eq 130 ] || fail "SIG$name while grading: exit $status, SPEC §1 says 130"
     left=$(find "$work/grade/tmp" -mindepth 1 | head -5)
     [ -z "$left" ] || fail "SIG$name left in TMPDIR: $left"
+    # Every row it had graded, each whole: the CSV ends with a line end, each line of 7 fields.
+    [ "$(tail -c 1 "$work/grade/out.csv" | od -An -c | tr -d ' ')" = '\n' ] ||
+      fail "SIG$name cut the CSV inside a row: $(tail -c 80 "$work/grade/out.csv")"
+    cut=$(awk -F, 'NF != 7' "$work/grade/out.csv" | head -1)
+    [ -z "$cut" ] || fail "SIG$name left a row that is not whole: $cut"
+    rows=$(($(wc -l < "$work/grade/out.csv") - 1))
+    [ "$rows" -ge 10 ] || fail "SIG$name: only $rows rows of those graded were printed"
   done
+}
+
+grading_in_a_swapped_folder() {
+  # A TMPDIR others may write: while grade runs, its private folder's name is moved away and a
+  # link to another folder put in its place. Grade reaches its folder through its descriptor: it
+  # grades on, and nothing in the link's target is made or removed (by name, work/ there went).
+  local exercises private
+  exercises=$(dirname "$0")/../../data/exercises
+  mkdir -p "$work/shared" "$work/ex" "$work/in" "$work/victim/work"
+  echo precious > "$work/victim/work/keep"
+  cp "$exercises"/*.keys "$exercises"/*.dat "$work/ex/"
+  for i in $(seq 60); do cp "$exercises/answers/exercise-1-tension-answer.keys" "$work/in/$i.keys"; done
+  TMPDIR=$work/shared "$apcs" grade "$work/ex/exercise-1-tension.keys" "$work/in"/*.keys \
+    > "$work/out.csv" 2> "$work/err" &
+  local pid=$!
+  for _ in $(seq 2000); do
+    private=$(find "$work/shared" -mindepth 2 -maxdepth 2 -name work -printf '%h\n' 2>/dev/null | head -1)
+    [ -n "$private" ] && break
+    sleep 0.005
+  done
+  [ -n "$private" ] || { wait "$pid"; fail "apcs grade was never caught replaying"; }
+  mv "$private" "$work/shared/moved"
+  ln -s "$work/victim" "$private"
+  wait "$pid"; status=$?
+  [ "$(cat "$work/victim/work/keep" 2>/dev/null)" = precious ] ||
+    fail "the link's target lost work/keep: $(ls -la "$work/victim" "$work/victim/work" 2>&1)"
+  [ "$(find "$work/victim" -mindepth 1 | wc -l)" -eq 2 ] || fail "made in the link's target: $(find "$work/victim")"
+  [ "$status" -eq 0 ] || fail "exit $status: $(cat "$work/err")"
+  [ "$(grep -c ',yes,+0.50,L L L 6,$' "$work/out.csv")" -eq 60 ] || fail "not every row yes: $(cat "$work/out.csv")"
+  [ -L "$private" ] || fail "the link put in the folder's place was removed"
+}
+
+grading_on_a_full_disk() {
+  # TMPDIR on a 36 KiB tmpfs: the replay's session cannot write its files, so its keys go to other
+  # prompts than the student's did. The row is an error naming what could not be written, exit 1;
+  # never a verdict (it was 'no', exit 0, nothing said).
+  local exercises
+  exercises=$(dirname "$0")/../../data/exercises
+  mkdir -p "$work/small" "$work/ex"
+  if ! mount -t tmpfs -o size=36k tmpfs "$work/small" 2> "$work/err"; then
+    [ "$(id -u)" -eq 0 ] && fail "root cannot mount a tmpfs: $(cat "$work/err")"
+    skip "not root, so no tmpfs to fill: $(cat "$work/err")"
+  fi
+  cp "$exercises"/*.keys "$exercises"/*.dat "$work/ex/"
+  TMPDIR=$work/small "$apcs" grade "$work/ex/exercise-1-tension.keys" \
+    "$exercises/answers/exercise-1-tension-answer.keys" > "$work/out.csv" 2> "$work/err"; status=$?
+  [ "$status" -eq 1 ] || fail "exit $status grading on a full disk: $(cat "$work/out.csv" "$work/err")"
+  grep -q ",GOAL VALUE TENSION 0.4 0.6,error,,,$" "$work/out.csv" || fail "no error row: $(cat "$work/out.csv")"
+  grep -q "No space left on device" "$work/err" || fail "the reason is not named: $(cat "$work/err")"
+  [ -z "$(find "$work/small" -mindepth 1 | head -1)" ] || fail "left in TMPDIR: $(find "$work/small" | head)"
 }
 
 case $case_name in
@@ -178,6 +240,8 @@ case $case_name in
   full-disk) full_disk ;;
   signal) stopping_signals ;;
   grade-signal) grading_signals ;;
-  *) fail "no case '$case_name' (streams, full-output, full-disk, signal, grade-signal)" ;;
+  grade-full-disk) grading_on_a_full_disk ;;
+  grade-swapped-folder) grading_in_a_swapped_folder ;;
+  *) fail "no case '$case_name' (streams, full-output, full-disk, signal, grade-signal, grade-full-disk, grade-swapped-folder)" ;;
 esac
 echo "batch_faults $case_name: passed"

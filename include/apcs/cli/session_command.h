@@ -59,6 +59,8 @@ void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet
 struct HeadlessReplay {
     ExitStatus status = ExitStatus::success;
     std::vector<GoalOutcome> goals;
+    // The first file the session could not write (a full disk), if one.
+    std::optional<Diagnostic> unwritten;
 };
 
 // `script` (named `script_name` in messages) replayed headless in `folder` with `options`, as

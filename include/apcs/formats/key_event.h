@@ -68,7 +68,9 @@ struct ScriptOptions {
 // A script with its captions and its TEXT lines, in order.
 struct KeyScript {
     std::vector<KeyEvent> events;
+    std::vector<int> event_lines; // the line each event is on, for FILE:LINE (apcs grade)
     std::vector<ScriptCaption> captions;
+    std::vector<int> caption_lines; // the line of each caption
     std::vector<TypedLine> typed_lines;
     std::vector<ScriptGoal> goals; // GOAL lines (script_goal.h), in order
     std::vector<ScriptInput> inputs; // INPUT lines (script_input.h): the files an exercise is made for

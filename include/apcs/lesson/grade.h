@@ -3,6 +3,8 @@
 #include "apcs/formats/key_event.h"
 #include "apcs/lesson/replay_driver.h"
 
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -34,12 +36,23 @@ struct GradeRow {
     std::string goal;     // the goal's GOAL line as goal_line() writes it
     GradeVerdict reached = GradeVerdict::no;
     std::string value; // the goal's quantity when it was judged ("+0.45", "0.35"); empty for other, error
-    std::string keys;  // the answer's keys as script tokens ("L L L 6", "= TEXT 0.45 ENTER")
+    std::string keys;  // the answer's keys as script tokens ("L L L 6", "= TEXT 0.45 ENTER"), answer_field
+    std::string options; // the recording's OPTIONS words where they differ from the exercise's
     bool operator==(const GradeRow&) const = default;
 };
 
 // The report's first line, without its line end.
-inline constexpr std::string_view grade_csv_header = "file,exercise,goal,reached,value,keys";
+inline constexpr std::string_view grade_csv_header = "file,exercise,goal,reached,value,keys,options";
+
+// The most characters of keys a row shows (SPEC §3.2): a longer answer is cut there and ends
+// "… (N keys)", so that a 100,000-key answer stays a field every CSV reader takes.
+inline constexpr std::size_t most_answer_characters = 200;
+
+// The most keys a recording may hold (SPEC §3.2): a longer one is an error row, "too long".
+inline constexpr std::size_t most_recording_keys = 100'000;
+// The largest recording read, in bytes: 100,000 keys of the longest name (BACKSPACE) with room
+// for comments; a larger file is an error row before it is parsed, so its keys never take memory.
+inline constexpr std::uintmax_t most_recording_bytes = std::uintmax_t{4} << 20;
 
 // A CSV field as RFC 4180 writes it: in double quotes, each quote doubled, when it holds a comma,
 // a double quote, CR or LF; as it is otherwise. A field a spreadsheet would take for a formula
@@ -52,10 +65,33 @@ std::string csv_field(std::string_view text);
 // holds a line end is quoted, so records stay apart).
 std::string grade_csv_line(const GradeRow& row);
 
-// Whether `recording` is a recording of `exercise`: the same GOAL lines (kind, staff line, numbers,
-// in order) and the same INPUT lines (name and checksum, in order). Where the lines stand in each
-// file (line numbers, the keys around them) does not count: a recording holds the student's keys.
-bool same_exercise(const KeyScript& exercise, const KeyScript& recording);
+// Where a recording departs from its exercise: the recording's line (0: none to name) and what
+// differs, naming the exercise's line.
+struct ScriptDeparture {
+    int line = 0;
+    std::string what;
+};
+
+// Whether `recording` is a recording of `exercise` (SPEC §3.2), compared as parsed scripts (comments,
+// blank lines, layout, spacing, keyword case and the spelling of numbers do not count): the same
+// INPUT lines in order; the same keys before the first GOAL line, START at the same key; the same
+// GOAL lines and captions, in order, each on the same side of each GOAL line, and the captions up to
+// the first GOAL line after the same keys. The student's keys stand anywhere after the first GOAL
+// line. The first departure, or nullopt. `exercise_name` names the exercise's lines.
+std::optional<ScriptDeparture> departure_from_exercise(const KeyScript& exercise, const KeyScript& recording,
+                                                       const std::string& exercise_name);
+
+// Whether a recording holds nothing at all (no key, no line but comments): nothing done.
+bool is_blank_recording(const KeyScript& recording);
+
+// `recording` with each goal's answer running to the next GOAL line (or the end): the keys after
+// GOAL k and before GOAL k+1, captions included, answer goal k (SPEC §3.2), wherever --record put
+// the student's keys.
+KeyScript with_answers_to_next_goal(KeyScript recording);
+
+// The answer's tokens as a row shows them: at most most_answer_characters characters, then
+// "… (N keys)" with the answer's number of keys.
+std::string answer_field(const KeyScript& script, const ScriptGoal& goal);
 
 // The keys of goal `goal`'s answer in `script` (events [before_event, answer_end)), as script
 // tokens separated by single spaces: a physical key by its script name (ENTER, LEFT, …), a
@@ -67,6 +103,10 @@ std::string answer_tokens(const KeyScript& script, const ScriptGoal& goal);
 // order, its verdict and value from `outcomes` (a goal with no outcome grades no, its value empty).
 std::vector<GradeRow> replayed_rows(const GradeNames& names, const KeyScript& recording,
                                     const std::vector<GoalOutcome>& outcomes);
+
+// The rows of a recording that did nothing (is_blank_recording): each goal of the exercise not
+// reached, value and keys empty.
+std::vector<GradeRow> blank_rows(const GradeNames& names, const KeyScript& exercise);
 
 // The rows of a recording that was not replayed (GradeVerdict::other or ::error): one per goal of
 // the exercise, value and keys empty.
