@@ -341,6 +341,9 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
     const std::string script_name = options.keys ? options.keys->string() : std::string();
     ReplayDriver replay(session, script, script_name, options.pace, std::move(hooks), ReplayAudience::terminal);
     const Expected<ExitStatus> ran = terminal(replay, glyphs, colour, options.pixels);
+    // A goal still open when the session ended (or a signal ended it) is judged as it stood.
+    if (ran)
+        replay.finish();
     kept.recording = replay.recording();
     kept.key_files = replay.key_files_read();
     if (!ran) {

@@ -264,6 +264,18 @@ std::string ReplayDriver::place_in_badge(std::optional<std::size_t> caption) con
 
 void ReplayDriver::finish()
 {
+    if (m_audience == ReplayAudience::terminal) {
+        // The program ends (the session did, or a signal or a lost terminal ended it): a goal not
+        // judged yet is judged as it stands, as the headless recheck of the recording judges it.
+        if (!m_open)
+            return;
+        const bool waiting = waiting_goal().has_value();
+        follow_open_goal();
+        judge_open_goal(open_goal_as_it_stands());
+        if (waiting)
+            m_mode = Mode::left;
+        return;
+    }
     settle();
     judge_goals(m_script.events.size());
     end_caption();

@@ -29,10 +29,8 @@ void ReplayDriver::settle()
         tell_captions();
     wait_at_goal();
     // A session ended at a goal (quit): the goal was not reached, as far as it was then.
-    if (m_session->finished() && waiting_goal()) {
-        judged(m_next_goal, GoalOutcome::Verdict::not_reached, m_waiting_progress);
-        m_mode = Mode::left;
-    }
+    if (m_session->finished() && waiting_goal() && m_open)
+        goal_path_left();
     if (!playing() && session_idle() && !waiting_goal())
         end_caption();
     // A Space held through the script's last animation: the next step is the end.
@@ -70,34 +68,57 @@ std::optional<std::size_t> ReplayDriver::waiting_goal() const
 // A goal that does not hold yet keeps the replay there, its feedback on the message line ("GOAL:
 // tension +0.10, want …") under the task's caption and its point marked, while the student's keys
 // go to the session; a goal that holds is passed ("GOAL REACHED: …" until the next key), its
-// answer's keys skipped.
+// answer's keys skipped, and stays open until it is judged (follow_passed_goal). A goal whose path
+// is accepted before it holds ends the exercise there (goal_path_left).
 void ReplayDriver::wait_at_goal()
 {
+    if (!session_idle())
+        return;
+    follow_passed_goal();
     if (m_mode != Mode::at_goal && !lesson_has_keyboard())
         return;
-    if (mid_step() || !session_idle())
+    if (mid_step())
         return;
-    const std::vector<ScriptGoal>& goals = m_script.goals;
-    for (; m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played; ++m_next_goal) {
-        if (goals[m_next_goal].before_event < m_played)
-            continue;
-        if (!check_waiting_goal()) {
-            m_mode = Mode::at_goal; // a goal is the student's: a Space held before it is not its answer
-            m_waiting_goal_line = static_cast<std::size_t>(
-                std::find_if(m_script_lines.begin(), m_script_lines.end(), [&](const ScriptLine& line) {
-                    return line.kind == ScriptLine::Kind::goal && line.index == m_next_goal;
-                }) - m_script_lines.begin());
-            return;
+    if (m_mode == Mode::at_goal) {
+        switch (check_waiting_goal()) {
+        case GoalCheck::holds: pass_goal(); break;
+        case GoalCheck::waits: return;
+        case GoalCheck::path_left: goal_path_left(); return;
         }
-        m_mode = Mode::deck;
-        m_played = m_step_end = goals[m_next_goal].answer_end;
+    }
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    while (m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played) {
+        // The next GOAL line: a goal passed before it is judged as it stands (SPEC §3).
+        if (m_open)
+            judge_open_goal(open_goal_as_it_stands());
+        if (goals[m_next_goal].before_event < m_played) {
+            ++m_next_goal;
+            continue;
+        }
+        m_open = OpenGoal{m_next_goal, std::nullopt, {}, std::nullopt};
+        const GoalCheck check = check_waiting_goal();
+        if (check == GoalCheck::holds) {
+            pass_goal();
+            continue;
+        }
+        m_mode = Mode::at_goal; // a goal is the student's: a Space held before it is not its answer
+        m_waiting_goal_line = static_cast<std::size_t>(
+            std::find_if(m_script_lines.begin(), m_script_lines.end(), [&](const ScriptLine& line) {
+                return line.kind == ScriptLine::Kind::goal && line.index == m_next_goal;
+            }) - m_script_lines.begin());
+        if (check == GoalCheck::path_left)
+            goal_path_left();
+        return;
     }
 }
 
-bool ReplayDriver::check_waiting_goal()
+ReplayDriver::GoalCheck ReplayDriver::check_waiting_goal()
 {
     const ScriptGoal& goal = m_script.goals[m_next_goal];
-    GoalProgress progress = check_goal(goal, *m_session);
+    const GoalPath path = follow_open_goal();
+    if (path == GoalPath::left)
+        return GoalCheck::path_left;
+    GoalProgress progress = open_goal_as_it_stands();
     const PathEditor* editor = m_session->path_editor();
     const std::optional<StaffValues> staff = editor ? editor->region_staff() : std::nullopt;
     // A key that changed the staff but left the in-between where it was: say why.
@@ -106,31 +127,116 @@ bool ReplayDriver::check_waiting_goal()
         explain_unmoved(progress, goal, *m_session);
     m_session->say_goal(goal_feedback(progress), goal_feedback_briefly(progress));
     m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
-    if (progress.reached) {
-        judged(m_next_goal, GoalOutcome::Verdict::reached, progress);
-        return true;
-    }
+    const bool holds = progress.reached;
     m_waiting_progress = std::move(progress);
     m_waiting_staff = staff;
-    return false;
+    return holds ? GoalCheck::holds : GoalCheck::waits;
 }
 
-// Headless: each goal judged once `played` keys have played its answer (the first not reached is
-// the run's failure); the next goal's point marked from its GOAL line until then.
+// The goal waited at holds: passed as today, its answer's keys skipped and the replay on at its
+// pace; its verdict waits for its path to be accepted (follow_passed_goal).
+void ReplayDriver::pass_goal()
+{
+    m_mode = Mode::deck;
+    m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
+}
+
+// On a terminal, a goal passed (it held) until it is judged: when its path is left (accepted, or
+// the session quit there) or the session ends, as the path was then; at the next GOAL line, as it
+// stands there. A student who reaches the goal, moves away and accepts the path has not reached
+// it.
+void ReplayDriver::follow_passed_goal()
+{
+    if (!m_open || waiting_goal())
+        return;
+    const bool next_goal_line = m_open->goal + 1 < m_script.goals.size() && judging_end(m_open->goal) <= m_played;
+    if (follow_open_goal() == GoalPath::left || m_session->finished() || next_goal_line)
+        judge_open_goal(open_goal_as_it_stands());
+}
+
+// The goal waited at, its path left before the goal held: accepted (N at "Adjust the path again
+// ?") or the session ended there. It is not reached, as the path was then, and the exercise is
+// over: the keyboard is the student's in the session as it stands (as after q and Y), the message
+// line saying so until the next key. Another path cannot reach it.
+void ReplayDriver::goal_path_left()
+{
+    const GoalProgress standing = open_goal_as_it_stands();
+    stop();
+    m_mode = Mode::left;
+    m_session->mark_goal(std::nullopt);
+    m_session->say_goal(m_session->finished() ? std::string()
+                                              : "GOAL not reached on the path accepted: " + standing.said_briefly +
+                                                    ", " + standing.want);
+    judge_open_goal(standing);
+}
+
+// The open goal's path (SPEC §3.2): the one shaped when the replay reached its GOAL line, else the
+// next one shaped. Its standing is taken again while that path is shaped and its screen changed.
+ReplayDriver::GoalPath ReplayDriver::follow_open_goal()
+{
+    OpenGoal& open = *m_open;
+    const std::optional<int> shaped = m_session->shaped_path();
+    if (!open.path)
+        open.path = shaped;
+    if (!open.path)
+        return GoalPath::not_shaped_yet;
+    if (shaped != open.path)
+        return GoalPath::left;
+    if (open.looked_at != m_session->screen_revision()) {
+        open.standing = check_goal(m_script.goals[open.goal], *m_session);
+        open.looked_at = m_session->screen_revision();
+    }
+    return GoalPath::shaped;
+}
+
+// On its path, as it stood there when last looked at (as accepted, once the path is left); before
+// any path was shaped, as the session is ("no path is being shaped": not reached).
+GoalProgress ReplayDriver::open_goal_as_it_stands() const
+{
+    if (m_open->path)
+        return m_open->standing;
+    return check_goal(m_script.goals[m_open->goal], *m_session);
+}
+
+// The open goal's verdict, `progress` as it was judged: reached or not. Headless, the first goal
+// not reached is the run's failure.
+void ReplayDriver::judge_open_goal(const GoalProgress& progress)
+{
+    const std::size_t index = m_open->goal;
+    m_open.reset();
+    const ScriptGoal& goal = m_script.goals[index];
+    if (m_audience == ReplayAudience::headless && !progress.reached && m_goals)
+        m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + goal_distance_text(progress)};
+    judged(index, progress.reached ? GoalOutcome::Verdict::reached : GoalOutcome::Verdict::not_reached, progress);
+}
+
+// The keys before a goal's verdict at the latest: the next GOAL line's, or the script's end.
+std::size_t ReplayDriver::judging_end(std::size_t goal) const
+{
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    return goal + 1 < goals.size() ? goals[goal + 1].before_event : m_script.events.size();
+}
+
+// Headless, with `played` keys played: each goal opened at its GOAL line and judged on its path as
+// the student accepted it (the session left the path), else as it stands at the next GOAL line or
+// the script's end (SPEC §3, §3.2); the first not reached is the run's failure. The point of the
+// goal whose answer is playing is marked, from its GOAL line to its answer's end.
 void ReplayDriver::judge_goals(std::size_t played)
 {
     const std::vector<ScriptGoal>& goals = m_script.goals;
-    for (; m_next_goal < goals.size() && goals[m_next_goal].answer_end <= played; ++m_next_goal) {
-        const ScriptGoal& goal = goals[m_next_goal];
-        const GoalProgress progress = check_goal(goal, *m_session);
-        if (!progress.reached && m_goals)
-            m_goals = Diagnostic{m_script_name, goal.line_number, "goal not reached: " + goal_distance_text(progress)};
-        m_session->mark_goal(std::nullopt);
-        judged(m_next_goal, progress.reached ? GoalOutcome::Verdict::reached : GoalOutcome::Verdict::not_reached,
-               progress);
+    for (;;) {
+        if (!m_open) {
+            if (m_next_goal == goals.size() || goals[m_next_goal].before_event > played)
+                break;
+            m_open = OpenGoal{m_next_goal++, std::nullopt, {}, std::nullopt};
+        }
+        if (follow_open_goal() == GoalPath::left || judging_end(m_open->goal) <= played)
+            judge_open_goal(open_goal_as_it_stands());
+        else
+            break;
     }
-    if (m_next_goal < goals.size() && goals[m_next_goal].before_event <= played)
-        m_session->mark_goal(goal_point(goals[m_next_goal]));
+    const bool answering = m_next_goal > 0 && goals[m_next_goal - 1].answer_end > played;
+    m_session->mark_goal(answering ? goal_point(goals[m_next_goal - 1]) : std::nullopt);
 }
 
 // apcs.log's line for the goal: "goal reached: tension +0.45 at key 12", "goal not reached: tension
@@ -156,6 +262,7 @@ void ReplayDriver::skip_goal()
 {
     m_session->mark_goal(std::nullopt);
     m_session->say_goal("GOAL skipped: " + goal_distance_text(m_waiting_progress));
+    m_open.reset();
     judged(m_next_goal, GoalOutcome::Verdict::skipped, m_waiting_progress);
     m_mode = Mode::deck;
     m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
@@ -186,6 +293,7 @@ void ReplayDriver::leave_exercise()
     m_mode = Mode::left;
     m_session->mark_goal(std::nullopt);
     m_session->say_goal({});
+    m_open.reset();
     if (goal)
         judged(*goal, GoalOutcome::Verdict::not_reached, m_waiting_progress);
 }

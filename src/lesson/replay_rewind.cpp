@@ -60,6 +60,11 @@ void ReplayDriver::rewind_to(std::size_t events, std::string label)
                                                return goal.before_event >= events;
                                            }) - goals.begin());
     std::erase_if(m_outcomes, [&](const GoalOutcome& outcome) { return outcome.goal >= m_next_goal; });
+    // A goal passed before the caption gone back to stays open, on the new session's path.
+    if (m_open && m_open->goal >= m_next_goal)
+        m_open.reset();
+    else if (m_open)
+        m_open->looked_at.reset();
     m_mode = Mode::deck;
     m_session->say_goal({});
     m_typed_meanwhile.clear();

@@ -364,4 +364,10 @@ const PathEditor* Session::path_editor() const
     return shaping == nullptr ? nullptr : &shaping->editor;
 }
 
+std::optional<int> Session::shaped_path() const
+{
+    const auto* shaping = std::get_if<step::Shaping>(&m_step);
+    return shaping == nullptr ? std::nullopt : std::optional<int>(shaping->path);
+}
+
 } // namespace apcs

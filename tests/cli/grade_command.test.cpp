@@ -376,6 +376,39 @@ TEST_CASE("apcs grade says no for a goal that can never be met", "[cli][grade][e
     REQUIRE(result.out.find(",yes,") == std::string::npos);
 }
 
+TEST_CASE("apcs grade judges a goal on its path as the student accepted it: a value set on the second path, or "
+          "reached and left before the accept, grades no with the value accepted",
+          "[cli][grade][exercises][verdict]")
+{
+    // Issue 57 item 2 (SPEC 3.2). `at_goal` after the exercise's GOAL line, `afterwards` after its
+    // closing caption, where a student's keys typed once the replay went on stand.
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const test::TempFolder handed_in;
+    const auto recording = [&](int number, const std::string& topic, const std::string& at_goal,
+                               const std::string& afterwards) {
+        std::string text = test::read_all(exercise_of(folder, number, topic));
+        const std::size_t goal_line_end = text.find('\n', text.find("\nGOAL ") + 1);
+        text.insert(goal_line_end + 1, at_goal + "\n");
+        return handed_in.write(topic + ".keys", text + afterwards + "\n").string();
+    };
+    // A real exercise-3 session: way1.dat accepted unchanged, then BIAS +0.30 on ani4.dat.
+    const std::string bias = exercise_of(folder, 3, "bias");
+    const std::string other_path = recording(3, "bias", "ENTER ENTER N Y ENTER ENTER 8 ENTER ENTER L L", "");
+    const auto graded_bias = grade({bias, other_path});
+    INFO(graded_bias.err);
+    REQUIRE(graded_bias.status == 0);
+    CHECK(graded_bias.out == header + other_path + "," + bias +
+                                 ",GOAL VALUE BIAS 0.3 0.5,no,+0.00,ENTER ENTER N Y ENTER ENTER 8 ENTER ENTER L L,\n");
+    // Continuity -0.45 reached at the goal, then moved back to -0.15 and accepted.
+    const std::string continuity = exercise_of(folder, 2, "continuity");
+    const std::string left = recording(2, "continuity", "J J J", "L L ENTER ENTER ENTER N");
+    const auto graded_continuity = grade({continuity, left});
+    REQUIRE(graded_continuity.status == 0);
+    CHECK(graded_continuity.out.starts_with(header + left + "," + continuity +
+                                            ",GOAL VALUE CONTINUITY -0.6 -0.4,no,-0.15,"));
+}
+
 TEST_CASE("apcs grade needs an exercise and at least one recording and its help shows a runnable example",
           "[cli][grade]")
 {

@@ -87,8 +87,14 @@ TEST_CASE("at a goal the task stays on the caption row and the message line name
     // The closing caption describes the goal reached; the next key takes GOAL REACHED away.
     REQUIRE(exercise.replay->screen().caption == exercise.script.captions.back().text);
     REQUIRE_FALSE(exercise.press(U'4').starts_with("GOAL"));
-    REQUIRE(exercise.logged.back() == "goal reached: continuity -0.40 at key " +
-                                          std::to_string(exercise.replay->handled().size() - 1));
+    // The goal is judged on its path as the student accepts it (SPEC 3.2), continuity -0.45 now:
+    // apcs.log's line comes with the N that accepts the path.
+    REQUIRE(exercise.logged.empty());
+    for (int line = 0; line < 3; ++line)
+        exercise.press(enter);
+    exercise.press(U'N');
+    REQUIRE(exercise.logged == std::vector<std::string>{"goal reached: continuity -0.45 at key " +
+                                                        std::to_string(exercise.replay->handled().size())});
 }
 
 TEST_CASE("a NEAR goal names the region on the staff when no key there can move the span nearest its point",
@@ -176,7 +182,8 @@ TEST_CASE("apcs.log gets a line for a goal the student leaves and the recording 
     REQUIRE(recheck.goals());
     REQUIRE(recheck.goal_outcomes().size() == 1);
     REQUIRE(recheck.goal_outcomes()[0].verdict == GoalOutcome::Verdict::reached);
-    REQUIRE(recheck.goal_outcomes()[0].progress.value == "+0.45");
+    // As the path stood when the recording ended (SPEC 3.2): the 6 typed after the goal counts.
+    REQUIRE(recheck.goal_outcomes()[0].progress.value == "+0.50");
 }
 
 TEST_CASE("a goal's feedback in a few words says the quantity and what the goal wants", "[lesson][goal]")

@@ -18,8 +18,9 @@ namespace apcs {
 //   GOAL NEAR X Y Z D             the curve of the path being shaped passes within D of (X, Y, Z)
 //   GOAL INBETWEEN K X Y Z D      in-between K (1 … M) of that path within D of (X, Y, Z)
 // Its answer is the keys that follow it up to the next caption, GOAL line or the end of the
-// script: a headless replay plays them and then checks the goal; a replay on a terminal stops at
-// the goal, the student reaches it live, and the answer's keys are skipped.
+// script: a headless replay plays them (the goal is judged as replay_driver.h says: on its path as
+// accepted, else at the next GOAL line or the end); a replay on a terminal stops at the goal, the
+// student reaches it live, and the answer's keys are skipped.
 struct ScriptGoal {
     enum class Kind { value, near, inbetween };
     Kind kind = Kind::value;

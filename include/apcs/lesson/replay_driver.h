@@ -39,15 +39,20 @@ struct GoalOutcome {
     enum class Verdict { reached, not_reached, skipped };
     std::size_t goal = 0; // its index among the script's goals
     Verdict verdict = Verdict::not_reached;
-    GoalProgress progress; // when it was judged (reached, left, the session ended, the answer played)
+    // As it was judged (SPEC §3.2): on its path as the student accepted it, else as it stood at the
+    // next GOAL line or the end; how far it was when left with q or skipped.
+    GoalProgress progress;
     std::size_t at_key = 0; // the keys the session had handled then
 };
 
 // Who watches a replay. On a terminal a person does: the script plays at its pace (ReplayPace),
 // Esc hands the keyboard over, a goal waits for the student's keys until it holds (a goal that
 // already holds is passed, its answer's keys skipped). Headless nobody does: the script plays at
-// once, each goal's point is marked from its GOAL line and the goal judged once its answer is
-// played.
+// once and each goal's point is marked from its GOAL line to its answer's end. Either way a goal
+// is judged on the path being shaped at its GOAL line (else the next one shaped), as the student
+// accepted it - the moment the session leaves that path - or as it stands at the next GOAL line
+// or the end (SPEC §3, §3.2): reaching it and moving away before the accept is not reaching it,
+// and a value set on another path does not count.
 enum class ReplayAudience { terminal, headless };
 
 // A key script played into the session (SPEC §3, §3.1, §3.2): its steps, captions and goals, its
@@ -92,7 +97,9 @@ public:
     bool playing() const;
     // The session the replay plays into: the one it was given until PgUp or Home replaced it.
     const Session& session() const { return *m_session; }
-    // Headless: the captions left told and the goals left judged (the script's end).
+    // Headless: the captions left told and the goals left judged (the script's end). On a
+    // terminal, once the session has ended (or a signal ended it): a goal not judged yet is judged
+    // as it stands.
     void finish();
     // Headless: ok, or the first goal not reached, as "FILE:LINE: goal not reached: …".
     const Expected<void>& goals() const { return m_goals; }
@@ -102,7 +109,8 @@ public:
     // lines where the replay met them.
     KeyRecording recording() const;
     // Each goal judged so far, in order: headless every goal once finish() has run; on a terminal
-    // the goals reached, skipped or left, and the one waited at when the session ended.
+    // the goals whose paths were accepted, those skipped or left, and the one open when the
+    // session ended.
     const std::vector<GoalOutcome>& goal_outcomes() const { return m_outcomes; }
     // The KEY1 and KEY2 answers of every session the replay has played into, the one PgUp or Home
     // replaced too (a key file read there is still a file the program read), each once, sorted.
@@ -145,8 +153,19 @@ private:
     void tell_captions();
     void end_caption();
     void wait_at_goal();
-    // The goal m_next_goal checked again: its feedback on the message line. Whether it holds.
-    bool check_waiting_goal();
+    // The goal m_next_goal checked again: its feedback on the message line. Whether it holds, or
+    // its path was left before it did.
+    enum class GoalCheck { holds, waits, path_left };
+    GoalCheck check_waiting_goal();
+    void pass_goal();
+    void follow_passed_goal();
+    void goal_path_left();
+    // Where the session is with the open goal's path; bound to the path shaped if it had none.
+    enum class GoalPath { not_shaped_yet, shaped, left };
+    GoalPath follow_open_goal();
+    GoalProgress open_goal_as_it_stands() const;
+    void judge_open_goal(const GoalProgress& progress);
+    std::size_t judging_end(std::size_t goal) const;
     void judge_goals(std::size_t played);
     void judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress);
     void skip_goal();
@@ -212,6 +231,16 @@ private:
     std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;
     std::size_t m_waiting_goal_line = 0; // its GOAL line among m_script_lines
+    // A goal from its GOAL line until it is judged (SPEC §3.2; at most one at a time: the next GOAL
+    // line judges it): its path, 0 or 1 (Session::shaped_path), once one is shaped, and how it
+    // stood there when the replay last looked (the session's screen revision then).
+    struct OpenGoal {
+        std::size_t goal = 0;
+        std::optional<int> path;
+        GoalProgress standing;
+        std::optional<std::uint64_t> looked_at;
+    };
+    std::optional<OpenGoal> m_open;
     // How far the goal waited at was at the last check, and the staff then (what the log says if
     // it is left; why a key that changed the staff did not move the in-between).
     GoalProgress m_waiting_progress;

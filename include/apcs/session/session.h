@@ -55,6 +55,9 @@ public:
     const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
     // The path being shaped (steps 3 to 5 of one path), none at any other step.
     const PathEditor* path_editor() const;
+    // Which path path_editor() shapes: 0 the first graphic point's, 1 the last's (whatever file
+    // was typed for it); none at any other step. An exercise's goal belongs to one of them.
+    std::optional<int> shaped_path() const;
     // The last write that failed, if any did (the step that tried it was asked again).
     const Expected<void>& writes() const { return m_model.written.outcome(); }
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
