@@ -61,9 +61,6 @@ GradeRow row_of(const GradeNames& names, const ScriptGoal& goal, GradeVerdict re
 
 std::string line_of(const std::string& file, int line) { return file + ":" + std::to_string(line); }
 
-// What a departure says of the exercise's line `line`: "(ex.keys:12 has ENTER)" and the like.
-ScriptDeparture departure(int line, std::string what) { return {line, std::move(what)}; }
-
 // The line of event `event` in `script`, or of its last one past the end (0 when it has none).
 int event_line(const KeyScript& script, std::size_t event)
 {
@@ -77,15 +74,15 @@ std::optional<ScriptDeparture> inputs_departure(const KeyScript& exercise, const
 {
     for (std::size_t k = 0; k < std::max(exercise.inputs.size(), recording.inputs.size()); ++k) {
         if (k >= recording.inputs.size())
-            return departure(0, "no INPUT " + exercise.inputs[k].name + " line, as " +
-                                    line_of(name, exercise.inputs[k].line_number) + " has");
+            return ScriptDeparture{0, "no INPUT " + exercise.inputs[k].name + " line, as " +
+                                          line_of(name, exercise.inputs[k].line_number) + " has"};
         if (k >= exercise.inputs.size())
-            return departure(recording.inputs[k].line_number, "an INPUT line the exercise does not have");
+            return ScriptDeparture{recording.inputs[k].line_number, "an INPUT line the exercise does not have"};
         if (!same_input(exercise.inputs[k], recording.inputs[k]))
-            return departure(recording.inputs[k].line_number,
-                             "INPUT " + recording.inputs[k].name + " where " +
-                                 line_of(name, exercise.inputs[k].line_number) + " has INPUT " + exercise.inputs[k].name +
-                                 " with its checksum");
+            return ScriptDeparture{recording.inputs[k].line_number,
+                                   "INPUT " + recording.inputs[k].name + " where " +
+                                       line_of(name, exercise.inputs[k].line_number) + " has INPUT " +
+                                       exercise.inputs[k].name + " with its checksum"};
     }
     return std::nullopt;
 }
@@ -95,15 +92,15 @@ std::optional<ScriptDeparture> goals_departure(const KeyScript& exercise, const 
 {
     for (std::size_t k = 0; k < std::max(exercise.goals.size(), recording.goals.size()); ++k) {
         if (k >= recording.goals.size())
-            return departure(0, "no " + goal_line(exercise.goals[k]) + " line, as " +
-                                    line_of(name, exercise.goals[k].line_number) + " has");
+            return ScriptDeparture{0, "no " + goal_line(exercise.goals[k]) + " line, as " +
+                                          line_of(name, exercise.goals[k].line_number) + " has"};
         const ScriptGoal& goal = recording.goals[k];
         if (k >= exercise.goals.size())
-            return departure(goal.line_number, "a GOAL line the exercise does not have");
+            return ScriptDeparture{goal.line_number, "a GOAL line the exercise does not have"};
         if (!same_goal(exercise.goals[k], goal) || exercise.goals[k].captions_before != goal.captions_before)
-            return departure(goal.line_number, goal_line(goal) + " where " +
-                                                   line_of(name, exercise.goals[k].line_number) + " has " +
-                                                   goal_line(exercise.goals[k]) + " after the same captions");
+            return ScriptDeparture{goal.line_number, goal_line(goal) + " where " +
+                                                         line_of(name, exercise.goals[k].line_number) + " has " +
+                                                         goal_line(exercise.goals[k]) + " after the same captions"};
     }
     return std::nullopt;
 }
@@ -123,17 +120,18 @@ std::optional<ScriptDeparture> keys_departure(const KeyScript& exercise, const K
         const bool same = event < exercise_end && event < recording_end &&
                           exercise.events[event] == recording.events[event];
         if (!same)
-            return departure(event < recording_end ? event_line(recording, event) : recording.goals.front().line_number,
-                             token_or_end(recording, event, recording_end) + " where " +
-                                 line_of(name, event < exercise_end ? event_line(exercise, event)
-                                                                    : exercise.goals.front().line_number) +
-                                 " has " + token_or_end(exercise, event, exercise_end) +
-                                 " (before the first GOAL line the keys are the exercise's)");
+            return ScriptDeparture{event < recording_end ? event_line(recording, event)
+                                                         : recording.goals.front().line_number,
+                                   token_or_end(recording, event, recording_end) + " where " +
+                                       line_of(name, event < exercise_end ? event_line(exercise, event)
+                                                                          : exercise.goals.front().line_number) +
+                                       " has " + token_or_end(exercise, event, exercise_end) +
+                                       " (before the first GOAL line the keys are the exercise's)"};
     }
     if (exercise.preamble_end != recording.preamble_end)
-        return departure(event_line(recording, recording.preamble_end),
-                         "START after " + std::to_string(recording.preamble_end) + " keys, where the exercise has it after " +
-                             std::to_string(exercise.preamble_end));
+        return ScriptDeparture{event_line(recording, recording.preamble_end),
+                               "START after " + std::to_string(recording.preamble_end) +
+                                   " keys, where the exercise has it after " + std::to_string(exercise.preamble_end)};
     return std::nullopt;
 }
 
@@ -144,15 +142,17 @@ std::optional<ScriptDeparture> captions_departure(const KeyScript& exercise, con
     const std::size_t pinned = exercise.goals.front().captions_before;
     for (std::size_t k = 0; k < std::max(exercise.captions.size(), recording.captions.size()); ++k) {
         if (k >= recording.captions.size())
-            return departure(0, "no caption ';; " + exercise.captions[k].text + "', as " +
-                                    line_of(name, exercise.caption_lines[k]) + " has");
+            return ScriptDeparture{0, "no caption ';; " + exercise.captions[k].text + "', as " +
+                                          line_of(name, exercise.caption_lines[k]) + " has"};
         const int line = recording.caption_lines[k];
         if (k >= exercise.captions.size())
-            return departure(line, "a caption the exercise does not have");
+            return ScriptDeparture{line, "a caption the exercise does not have"};
         if (exercise.captions[k].text != recording.captions[k].text)
-            return departure(line, "a caption that differs from " + line_of(name, exercise.caption_lines[k]) + "'s");
+            return ScriptDeparture{line,
+                                   "a caption that differs from " + line_of(name, exercise.caption_lines[k]) + "'s"};
         if (k < pinned && exercise.captions[k].before_event != recording.captions[k].before_event)
-            return departure(line, "the caption after other keys than at " + line_of(name, exercise.caption_lines[k]));
+            return ScriptDeparture{line,
+                                   "the caption after other keys than at " + line_of(name, exercise.caption_lines[k])};
     }
     return std::nullopt;
 }
