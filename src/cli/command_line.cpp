@@ -325,6 +325,7 @@ struct ParsedLine {
     std::vector<std::filesystem::path> draw_files;
     PlayRequest play;
     GradeRequest grade;
+    GradeClassRequest grade_class;
 
     // The files the run reads: only the chosen command's are given, the others stay empty.
     std::vector<std::filesystem::path> inputs() const
@@ -441,19 +442,39 @@ constexpr std::array<Subcommand, 7> subcommands{{
      [](ParsedLine& line, const RunPlace& place) {
          return to_int(run_figures_command(line.options, place.out, place.err));
      }},
-    {"grade", "grade homework: replay each recording of an exercise, one CSV row per goal",
-     "an exercise EXERCISE.keys and one or more recordings RECORDING...",
-     "  apcs grade data/exercises/exercise-1-tension.keys data/exercises/answers/exercise-1-tension-answer.keys",
+    {"grade", "grade homework: replay each recording of an exercise, one CSV row per goal; or a class's "
+              "folders, one row per student",
+     "an exercise EXERCISE.keys and one or more recordings RECORDING...; with --class DIR, one or more exercises",
+     "  apcs grade data/exercises/exercise-1-tension.keys data/exercises/answers/exercise-1-tension-answer.keys\n"
+     "  apcs grade --class class --feedback returned exercise-1-tension.keys exercise-2-continuity.keys",
      "the source tree (data/exercises: the exercises, their inputs and answers/)",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("EXERCISE", line.grade.exercise, "the exercise (.keys), its INPUT files beside it")
              ->required()
              ->type_name("");
-         command.add_option("RECORDINGS", line.grade.recordings, "what --record kept of each student's keys (.keys)")
-             ->required()
+         command.add_option("RECORDINGS", line.grade.recordings,
+                            "what --record kept of each student's keys (.keys); with --class, more exercises")
              ->type_name("");
+         CLI::Option* in_class =
+             command.add_option("--class", line.grade_class.class_folder,
+                                "a gradebook: DIR holds a folder per student, each recording named as its exercise")
+                 ->type_name("DIR");
+         command.add_option("--feedback", line.grade_class.feedback,
+                            "with --class: write DIR2/STUDENT.txt, each goal reached or not, the value, what was wanted")
+             ->type_name("DIR2")
+             ->needs(in_class);
      },
      [](ParsedLine& line, const RunPlace& place) {
+         if (!line.grade_class.class_folder.empty()) {
+             line.grade_class.exercises = {line.grade.exercise};
+             line.grade_class.exercises.insert(line.grade_class.exercises.end(), line.grade.recordings.begin(),
+                                               line.grade.recordings.end());
+             return to_int(run_grade_class_command(line.grade_class, line.options, place.out, place.err));
+         }
+         if (line.grade.recordings.empty()) {
+             place.err << "apcs grade: expected one or more recordings after the exercise (or --class DIR)\n";
+             return to_int(ExitStatus::bad_usage);
+         }
          return to_int(run_grade_command(line.grade, line.options, place.out, place.err));
      }},
 }};

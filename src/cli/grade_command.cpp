@@ -1,26 +1,18 @@
 #include "apcs/cli/grade_command.h"
 
+#include "grade_run.h"
+
 #include "apcs/base/utf8.h"
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
-#include "apcs/cli/script_options.h"
-#include "apcs/cli/session_command.h"
 #include "apcs/formats/file_io.h"
-#include "apcs/formats/input_check.h"
-#include "apcs/formats/unfinished_files.h"
-#include "apcs/lesson/grade.h"
+#include "apcs/lesson/gradebook.h"
 
-#include <cerrno>
-#include <cstdlib>
-#include <cstring>
-#include <optional>
+#include <algorithm>
 #include <ostream>
 #include <string>
 #include <system_error>
 #include <vector>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 namespace apcs {
 
@@ -28,247 +20,87 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of this run's own, made as mkdtemp makes one (mode 0700: no other user reads a
-// student's replay or swaps a file in it) and removed with everything in it when the run ends,
-// whichever way: at the end, after an error, or by the handler of a signal that stops APCS
-// (unfinished_files.h), which finds it by its parent folder's descriptor. Everything in it is
-// reached through its own descriptor (/proc/self/fd/N), never its name: in a TMPDIR others may
-// write, the name can be swapped for a link to another folder while grade runs, and what is made
-// and removed must stay in the folder made.
-class PrivateFolder {
-public:
-    PrivateFolder() = default;
-    PrivateFolder(const PrivateFolder&) = delete;
-    PrivateFolder& operator=(const PrivateFolder&) = delete;
-    ~PrivateFolder()
-    {
-        if (m_self >= 0) {
-            std::error_code ignored;
-            for (const fs::directory_entry& entry : fs::directory_iterator(m_path, ignored))
-                fs::remove_all(entry.path(), ignored);
-            // By the name only once empty: a link put in its place is not a folder, and stays.
-            ::unlinkat(m_parent, m_name.c_str(), AT_REMOVEDIR);
-            ::close(m_self);
-        }
-        m_known.reset();
-        if (m_parent >= 0)
-            ::close(m_parent);
-    }
-
-    // The folder made under the system's temporary folder (TMPDIR, else /tmp); the problem if not.
-    Expected<void> make()
-    {
-        std::error_code error;
-        const fs::path temporary = fs::temp_directory_path(error);
-        if (error) {
-            // The folder the environment names (std::filesystem reads TMPDIR first), said by name.
-            const char* named = std::getenv("TMPDIR");
-            const std::string which = named != nullptr ? "TMPDIR=" + escape_controls(named) : "the temporary folder";
-            return Diagnostic{"apcs", 0, "grade: " + which + " is not a folder to grade in (" + error.message() +
-                                             "); set TMPDIR to a folder, or unset it for /tmp"};
-        }
-        m_parent = ::open(temporary.c_str(), O_PATH | O_DIRECTORY | O_CLOEXEC);
-        std::string name = "apcs-grade-XXXXXX";
-        if (m_parent < 0 || create_unfinished_folder(m_parent, name, m_known) != 0 ||
-            (m_self = ::openat(m_parent, name.c_str(), O_PATH | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC)) < 0) {
-            const int reason = errno; // before the message's allocations
-            return Diagnostic{"apcs", 0, "grade: cannot make a folder in " + temporary.string() + ": " +
-                                             std::strerror(reason)};
-        }
-        m_name = name;
-        m_path = "/proc/self/fd/" + std::to_string(m_self);
-        return ok;
-    }
-    // The folder as its descriptor names it.
-    const fs::path& path() const { return m_path; }
-
-private:
-    int m_parent = -1;
-    int m_self = -1;
-    std::optional<UnfinishedFolder> m_known;
-    std::string m_name;
-    fs::path m_path;
-};
-
-// What every recording is graded against: the exercise as read, its name as typed, and the
-// private copy of its inputs.
-struct Exercise {
-    KeyScript script;
-    CommonOptions options;           // apcs's defaults and the exercise's OPTIONS line: its task
-    std::string name;
-    fs::path inputs;                 // the folder of the checked copies, in the private folder
-    std::vector<fs::path> copies;    // each copy, named as beside the exercise
-};
-
-// EXERCISE.keys read and parsed as --keys reads a script, its OPTIONS taken over `options`; it
-// must have goals to grade and inputs to replay on. The problem on `err` and the exit status, or
-// nullopt.
-std::optional<ExitStatus> read_exercise(const fs::path& file, Exercise& exercise, const CommonOptions& options,
-                                        std::ostream& err)
+// The run's memory budget, or the refusal of an APCS_MEMORY_LIMIT that is no byte count.
+std::optional<std::uint64_t> run_memory(const CommonOptions& options, std::ostream& err)
 {
-    const Expected<std::string> text = read_text_file(file, max_key_script_bytes);
-    if (!text)
-        return report_bad_input(text.error(), err);
-    Expected<KeyScript> parsed = parse_captioned_key_script(*text, file.string());
-    if (!parsed)
-        return report_bad_input(parsed.error(), err);
-    if (parsed->goals.empty())
-        return report_bad_input({file.string(), 0, "has no GOAL line; apcs grade grades an exercise's goals"}, err);
-    if (parsed->inputs.empty())
-        return report_bad_input({file.string(), 0,
-                                 "names no input (INPUT NAME CRC32 XXXXXXXX lines); apcs grade replays each "
-                                 "recording on fresh copies of the exercise's inputs"},
-                                err);
-    exercise.options = options;
-    if (const Expected<void> taken = take_script_options(parsed->options, file.string(), exercise.options); !taken)
-        return report_bad_input(taken.error(), err);
-    exercise.script = std::move(*parsed);
+    const Expected<std::uint64_t> limit = memory_limit(options);
+    if (!limit) {
+        err << limit.error().to_string() << '\n';
+        return std::nullopt;
+    }
+    return *limit;
+}
+
+// The run started and every exercise made ready, or the problem on `err` and the exit status.
+std::optional<ExitStatus> prepare(GradeRun& run, const std::vector<fs::path>& exercises, const CommonOptions& options,
+                                  std::ostream& err)
+{
+    if (const Expected<void> made = run.start(); !made)
+        return report_bad_input(made.error(), err);
+    for (const fs::path& exercise : exercises)
+        if (const std::optional<ExitStatus> refused = run.add_exercise(exercise, options, err))
+            return refused;
     return std::nullopt;
 }
 
-// The file `from` copied as `to`, which the owner may write (the session rewrites an accepted
-// path file, as it does in a student's copy, whatever the teacher's file's mode).
-Expected<void> copy_writable(const fs::path& from, const fs::path& to)
+// The student folders of DIR, sorted by name: every folder in it (or link to one), hidden ones
+// (".name") left out. The problem if DIR cannot be read.
+Expected<std::vector<fs::path>> student_folders(const fs::path& class_folder)
 {
     std::error_code error;
-    fs::copy_file(from, to, fs::copy_options::overwrite_existing, error);
-    if (!error)
-        fs::permissions(to, fs::perms::owner_read | fs::perms::owner_write, fs::perm_options::add, error);
+    std::vector<fs::path> students;
+    for (fs::directory_iterator entry(class_folder, error), end; !error && entry != end; entry.increment(error)) {
+        const std::string name = entry->path().filename().string();
+        std::error_code kind;
+        if (!name.starts_with('.') && entry->is_directory(kind))
+            students.push_back(entry->path());
+    }
     if (error)
-        return Diagnostic{"apcs", 0, "grade: cannot copy " + from.string() + " to " + to.string() + ": " +
-                                         error.message()};
-    return ok;
+        return Diagnostic{class_folder.string(), 0, "cannot read the class folder: " + error.message()};
+    std::ranges::sort(students);
+    return students;
 }
 
-// The exercise's inputs beside it, checked, copied into the private folder and checked again
-// there, so that what the recordings are replayed on is what the exercise names even if the
-// teacher's files change meanwhile. The problem on `err` and the exit status, or nullopt.
-std::optional<ExitStatus> copy_inputs(Exercise& exercise, const fs::path& exercise_file, std::ostream& err)
+// The gradebook's column names: each exercise's file name without ".keys", and its goals.
+std::vector<GradebookExercise> gradebook_exercises(const GradeRun& run)
 {
-    const fs::path beside = exercise_file.has_parent_path() ? exercise_file.parent_path() : fs::path(".");
-    if (const Expected<void> checked =
-            check_script_inputs(exercise.script.inputs, beside, exercise.name, InputFolder::exercise);
-        !checked)
-        return report_bad_input(checked.error(), err);
-    std::error_code error;
-    if (fs::create_directory(exercise.inputs, error); error)
-        return report_bad_input({"apcs", 0, "grade: cannot make " + exercise.inputs.string() + ": " + error.message()},
-                                err);
-    for (const ScriptInput& input : exercise.script.inputs) {
-        // The file as the check found it: another case of its name is the same file (as DOS had it).
-        const fs::path found = resolve_input_path(beside / input.name);
-        exercise.copies.push_back(exercise.inputs / found.filename());
-        if (const Expected<void> copied = copy_writable(found, exercise.copies.back()); !copied)
-            return report_bad_input(copied.error(), err);
+    std::vector<GradebookExercise> exercises;
+    for (std::size_t index = 0; index < run.exercise_count(); ++index) {
+        const GradeExercise& exercise = run.exercise(index);
+        GradebookExercise column{escape_controls(fs::path(exercise.name).stem().string()), {}};
+        for (const ScriptGoal& goal : exercise.script.goals)
+            column.goals.push_back(goal_text(goal));
+        exercises.push_back(std::move(column));
     }
-    if (const Expected<void> checked = check_script_inputs(exercise.script.inputs, exercise.inputs, exercise.name);
-        !checked)
-        return report_bad_input(checked.error(), err);
-    return std::nullopt;
+    return exercises;
 }
 
-// A work folder holding nothing but fresh copies of the checked inputs, as a student's copy of the
-// exercise is before the session.
-Expected<void> fresh_work_folder(const Exercise& exercise, const fs::path& work)
+// The first line of a grade's messages (FILE:LINE: why), for the student's feedback.
+std::string first_reason(const std::string& messages)
+{
+    return escape_controls(messages.substr(0, messages.find('\n')));
+}
+
+// Each student's feedback written as FEEDBACK/STUDENT.txt; false after the first that could not be
+// (the problem on `err`).
+bool write_feedback(const fs::path& folder, const std::vector<StudentWork>& students,
+                    const std::vector<fs::path>& student_paths, const std::vector<GradebookExercise>& exercises,
+                    std::ostream& err)
 {
     std::error_code error;
-    fs::remove_all(work, error);
-    if (!error)
-        fs::create_directory(work, error);
-    if (error)
-        return Diagnostic{"apcs", 0, "grade: cannot make " + work.string() + ": " + error.message()};
-    for (const fs::path& copy : exercise.copies)
-        if (const Expected<void> copied = copy_writable(copy, work / copy.filename()); !copied)
-            return copied;
-    return ok;
-}
-
-// The recording's script, or the reason it cannot be graded (FILE:LINE on `err`): unreadable,
-// not a key script, or too long to replay (SPEC §3.2: beyond most_recording_keys keys). Only a
-// regular file is read (read_text_file): a FIFO or a device is refused without being opened.
-std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream& err)
-{
-    const Expected<std::string> text = read_text_file(recording, most_recording_bytes);
-    if (!text) {
-        err << text.error().to_string() << '\n';
-        return std::nullopt;
+    fs::create_directories(folder, error);
+    if (error) {
+        err << folder.string() << ": cannot make the feedback folder: " << error.message() << '\n';
+        return false;
     }
-    Expected<KeyScript> parsed = parse_captioned_key_script(*text, recording.string());
-    if (!parsed) {
-        err << parsed.error().to_string() << '\n';
-        return std::nullopt;
+    for (std::size_t index = 0; index < students.size(); ++index) {
+        const fs::path target = folder / (student_paths[index].filename().string() + ".txt");
+        if (const auto written = write_file_atomically(target, feedback_text(students[index], exercises)); !written) {
+            err << written.error().to_string() << '\n';
+            return false;
+        }
     }
-    if (parsed->events.size() > most_recording_keys) {
-        err << Diagnostic{recording.string(), 0,
-                          "too long: " + std::to_string(parsed->events.size()) + " keys, at most " +
-                              std::to_string(most_recording_keys) + " are graded"}
-                   .to_string()
-            << '\n';
-        return std::nullopt;
-    }
-    return std::move(*parsed);
-}
-
-// Why a recording is another exercise's, on `err`: its first line that departs, or the option
-// that sets another task.
-void say_other(const fs::path& recording, const Exercise& exercise, const ScriptDeparture& departure, std::ostream& err)
-{
-    err << Diagnostic{recording.string(), departure.line,
-                      "not a recording of " + exercise.name + ": " + departure.what}
-               .to_string()
-        << '\n';
-}
-
-// One recording's rows: error when it cannot be read or replayed, other when it is another
-// exercise's, else each goal as its replay in `work` left it. `work` is removed after the replay.
-std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& recording,
-                                      const CommonOptions& options, const fs::path& work, std::ostream& err)
-{
-    // The CSV is read on the teacher's terminal too (cat grades.csv): names as messages print them.
-    const GradeNames names{escape_controls(recording.string()), escape_controls(exercise.name)};
-    const std::optional<KeyScript> script = read_recording(recording, err);
-    if (!script)
-        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
-    if (is_blank_recording(*script))
-        return blank_rows(names, exercise.script);
-    if (const std::optional<ScriptDeparture> departure =
-            departure_from_exercise(exercise.script, *script, exercise.name)) {
-        say_other(recording, exercise, *departure, err);
-        return unreplayed_rows(names, exercise.script, GradeVerdict::other);
-    }
-    // The student's staff step, in-between count ... as the recording's OPTIONS line has them; a
-    // recording whose options set another task (another starting staff, in-between count ...) is
-    // of another exercise, as one with other GOAL lines is.
-    CommonOptions replay_options = options;
-    if (const Expected<void> taken = take_script_options(script->options, recording.string(), replay_options); !taken) {
-        err << taken.error().to_string() << '\n';
-        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
-    }
-    if (const std::optional<std::string> changed = changed_task_option(exercise.options, replay_options)) {
-        say_other(recording, exercise, {script->options.line_number, "OPTIONS sets another task (" + *changed + ")"},
-                  err);
-        return unreplayed_rows(names, exercise.script, GradeVerdict::other);
-    }
-    if (const Expected<void> made = fresh_work_folder(exercise, work); !made) {
-        err << made.error().to_string() << '\n';
-        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
-    }
-    // The report is the grade: a replay's "goal not reached" and the like are not shown.
-    std::ostream unheard(nullptr);
-    const KeyScript answered = with_answers_to_next_goal(*script);
-    const HeadlessReplay replayed = replay_in_folder(answered, recording.string(), replay_options, work, unheard);
-    std::error_code ignored;
-    fs::remove_all(work, ignored);
-    // A file the session could not write changed where the keys went: no verdict stands.
-    if (replayed.unwritten) {
-        err << recording.string() << ": not graded: " << replayed.unwritten->to_string() << '\n';
-        return unreplayed_rows(names, exercise.script, GradeVerdict::error);
-    }
-    std::vector<GradeRow> rows = replayed_rows(names, answered, replayed.goals);
-    if (script->options.words != exercise.script.options.words)
-        for (GradeRow& row : rows)
-            row.options = script->options.words;
-    return rows;
+    return true;
 }
 
 } // namespace
@@ -276,32 +108,70 @@ std::vector<GradeRow> grade_recording(const Exercise& exercise, const fs::path& 
 ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& options, std::ostream& out,
                              std::ostream& err)
 {
-    if (const Expected<std::uint64_t> limit = memory_limit(options); !limit) {
-        err << limit.error().to_string() << '\n';
+    const std::optional<std::uint64_t> limit = run_memory(options, err);
+    if (!limit)
         return ExitStatus::bad_usage;
-    }
-    Exercise exercise;
-    exercise.name = request.exercise.string();
-    if (const std::optional<ExitStatus> refused = read_exercise(request.exercise, exercise, options, err))
+    GradeRun run(*limit, request.work_budget);
+    if (const std::optional<ExitStatus> refused = prepare(run, {request.exercise}, options, err))
         return *refused;
-    PrivateFolder folder;
-    if (const Expected<void> made = folder.make(); !made)
-        return report_bad_input(made.error(), err);
-    exercise.inputs = folder.path() / "inputs";
-    if (const std::optional<ExitStatus> refused = copy_inputs(exercise, request.exercise, err))
-        return *refused;
+    std::vector<GradeTask> tasks;
+    for (const fs::path& recording : request.recordings)
+        tasks.push_back({0, recording});
     out << grade_csv_header << '\n' << std::flush;
     bool every_one_graded = true;
-    for (const fs::path& recording : request.recordings) {
-        // A recording's rows go out together as soon as they are graded: a grade stopped by a
-        // signal has printed whole rows only, and every row it had graded.
+    run.grade(tasks, options, [&](std::size_t, RecordingGrade grade) {
+        // A recording's rows go out together as soon as they and those before are graded: a grade
+        // stopped by a signal has printed whole rows only, and every row it had told.
         std::string rows;
-        for (const GradeRow& row : grade_recording(exercise, recording, options, folder.path() / "work", err)) {
+        for (const GradeRow& row : grade.rows)
             rows += grade_csv_line(row);
-            every_one_graded = every_one_graded && row.reached != GradeVerdict::error;
-        }
+        err << grade.messages << std::flush;
         out << rows << std::flush;
+        every_one_graded = every_one_graded && !grade.error;
+    });
+    return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;
+}
+
+ExitStatus run_grade_class_command(const GradeClassRequest& request, const CommonOptions& options, std::ostream& out,
+                                   std::ostream& err)
+{
+    const std::optional<std::uint64_t> limit = run_memory(options, err);
+    if (!limit)
+        return ExitStatus::bad_usage;
+    const Expected<std::vector<fs::path>> students = student_folders(request.class_folder);
+    if (!students)
+        return report_bad_input(students.error(), err);
+    GradeRun run(*limit, request.work_budget);
+    if (const std::optional<ExitStatus> refused = prepare(run, request.exercises, options, err))
+        return *refused;
+    std::vector<GradeTask> tasks;
+    std::vector<StudentWork> work;
+    for (const fs::path& student : *students) {
+        work.push_back({escape_controls(student.filename().string()), {}});
+        for (std::size_t exercise = 0; exercise < run.exercise_count(); ++exercise) {
+            // Each recording named as its exercise; a name that is not there is missing (not an error).
+            const fs::path recording = student / fs::path(run.exercise(exercise).name).filename();
+            std::error_code error;
+            const bool handed_in = fs::exists(fs::symlink_status(recording, error));
+            tasks.push_back({exercise, handed_in ? std::optional<fs::path>(recording) : std::nullopt});
+        }
     }
+    bool every_one_graded = true;
+    run.grade(tasks, options, [&](std::size_t index, RecordingGrade grade) {
+        StudentExercise handed{!tasks[index].recording, std::move(grade.rows), std::move(grade.answer_keys),
+                               first_reason(grade.messages)};
+        work[index / run.exercise_count()].exercises.push_back(std::move(handed));
+        err << grade.messages << std::flush;
+        every_one_graded = every_one_graded && !grade.error;
+    });
+    const std::vector<GradebookExercise> exercises = gradebook_exercises(run);
+    const std::vector<std::string> alike = same_as(work);
+    std::string book = gradebook_header(exercises) + '\n';
+    for (std::size_t student = 0; student < work.size(); ++student)
+        book += gradebook_line(work[student], exercises, alike[student]);
+    out << book << std::flush;
+    if (request.feedback && !write_feedback(*request.feedback, work, *students, exercises, err))
+        return ExitStatus::bad_input;
     return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;
 }
 

@@ -20,6 +20,7 @@
 #include <cstdlib>
 #include <langinfo.h>
 #include <memory>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string_view>
@@ -275,6 +276,7 @@ struct ReplayKept {
     std::optional<Diagnostic> unwritten; // the session's first write that failed
     // The KEY files of every session the replay played into (ReplayDriver::key_files_read).
     std::vector<std::string> key_files;
+    std::uint64_t work_done = 0; // the operations the replay cost (ReplayDriver::work_done)
 };
 
 // The settings of a session that `options` asks for, within the memory budget `limit`. On a
@@ -294,6 +296,9 @@ SessionSettings replay_settings(const CommonOptions& options, std::uint64_t limi
 struct Transcript {
     std::ostream* out = nullptr;
     GlyphSet glyphs = GlyphSet::ascii;
+    // Without a transcript: the operations the replay may cost (ReplayDriver::work_done); it
+    // stops once its keys have cost more, the rest unplayed and no goal judged.
+    std::uint64_t work_budget = std::numeric_limits<std::uint64_t>::max();
 };
 
 // The script replayed at once, its transcript as `transcript` says. Nobody watched the screen: a
@@ -312,7 +317,12 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     if (transcript.out != nullptr)
         run_headless_session(replay, session, transcript.glyphs, *transcript.out);
     else {
-        play_to_idle(replay);
+        IdleDrive within_budget;
+        within_budget.go_on = [&replay, &transcript] { return replay.work_done() <= transcript.work_budget; };
+        play_to_idle(replay, within_budget);
+        kept.work_done = replay.work_done();
+        if (kept.work_done > transcript.work_budget)
+            return ExitStatus::bad_input;
         replay.finish();
     }
     kept.recording = replay.recording();
@@ -634,26 +644,30 @@ ExitStatus run_session_command(const CommonOptions& command_line, const Terminal
 
 HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name,
                                 const CommonOptions& command_line, const std::filesystem::path& folder,
-                                std::ostream& err)
+                                std::ostream& err, std::uint64_t work_budget)
 {
     CommonOptions options = command_line;
     if (const Expected<void> taken = take_script_options(script.options, script_name, options); !taken) {
         err << taken.error().to_string() << '\n';
-        return {ExitStatus::bad_input, {}, {}};
+        return {ExitStatus::bad_input, {}, {}, 0, false};
     }
     const Expected<std::uint64_t> limit = memory_limit(options);
     if (!limit) {
         err << limit.error().to_string() << '\n';
-        return {ExitStatus::bad_usage, {}, {}};
+        return {ExitStatus::bad_usage, {}, {}, 0, false};
     }
     FolderFiles files(folder);
     files.log("session started");
-    Session session(replay_settings(options, *limit, ReplayAudience::headless), files);
+    SessionSettings settings = replay_settings(options, *limit, ReplayAudience::headless);
+    settings.pictures_seen = false; // nobody sees this replay's screens
+    Session session(settings, files);
     ReplayHooks hooks;
     hooks.log = [&files](const std::string& line) { files.log(line); };
     ReplayKept kept;
-    const ExitStatus status = replay_headless(session, script, script_name, Transcript{}, std::move(hooks), kept, err);
-    return {status, std::move(kept.goals), std::move(kept.unwritten)};
+    const ExitStatus status = replay_headless(session, script, script_name, Transcript{.work_budget = work_budget},
+                                              std::move(hooks), kept, err);
+    return {status, std::move(kept.goals), std::move(kept.unwritten), kept.work_done,
+            kept.work_done > work_budget};
 }
 
 ColourChoice session_colour(ColourChoice asked, const char* no_color)

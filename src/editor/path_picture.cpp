@@ -19,6 +19,10 @@ PathPicture::PathPicture(const PathDocument& document, const PathSettings& setti
 
 void PathPicture::refresh(const PathChange& change, PointsBack back)
 {
+    if (!m_refinement.seen) {
+        remake(change);
+        return;
+    }
     if (m_curve.drawn()) {
         m_ghost = m_curve.pixels();
         m_ghost_back = std::move(back);
@@ -51,7 +55,7 @@ void PathPicture::remake(const PathChange& change)
     const Refinement when = quick ? Refinement::at_once : m_refinement.when;
     m_curve.splice(reevaluate_path(points(), m_settings, m_evaluated, change, when));
     refine_if_quick();
-    if (!m_view)
+    if (!m_view || !m_refinement.seen)
         return;
     draw_curve();
     if (change.what != PathChange::What::positions)
@@ -70,6 +74,8 @@ void PathPicture::refine_if_quick()
 
 bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || curve_left(); }
 
+bool PathPicture::curve_left() const { return m_view && m_refinement.seen && !m_curve.drawn(); }
+
 // The segments first, and the blocks they complete drawn; then the rest of the curve (the
 // picture); then the arc lengths.
 void PathPicture::refine_step()
@@ -77,7 +83,7 @@ void PathPicture::refine_step()
     ++m_revision;
     if (!m_evaluated.segments_unmade.empty()) {
         refine_path(points(), m_settings, m_evaluated, m_refinement.segments_made_a_step);
-        if (m_view)
+        if (m_view && m_refinement.seen)
             draw_curve();
     } else if (curve_left()) {
         draw_curve();
@@ -119,6 +125,8 @@ void PathPicture::set_view(const ViewTransform& view)
 {
     ++m_revision;
     m_view = view;
+    if (!m_refinement.seen)
+        return;
     m_point_runs = control_point_runs(points(), *m_view);
     m_point_marks = control_point_marks(m_point_runs, m_region);
     draw_curve();
@@ -155,6 +163,8 @@ void PathPicture::pin_reference(std::string label)
 {
     ++m_revision;
     m_reference = Reference{points(), std::move(label), {}};
+    if (!m_refinement.seen)
+        return;
     // Pinned, the reference is the curve: its pixels are the curve's once drawn whole, and need not
     // be evaluated again (a second on 10^6 points).
     if (m_view && m_curve.drawn() && m_evaluated.segments_unmade.empty())
@@ -172,7 +182,7 @@ void PathPicture::unpin_reference()
 
 void PathPicture::draw_reference()
 {
-    if (m_reference)
+    if (m_reference && m_refinement.seen)
         m_reference->pixels = curve_pixels(m_reference->points, m_settings, *m_view);
 }
 
@@ -190,7 +200,8 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
         return;
     ++m_revision;
     m_region = region;
-    m_point_marks = control_point_marks(m_point_runs, m_region);
+    if (m_refinement.seen)
+        m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
 void PathPicture::draw_curve()

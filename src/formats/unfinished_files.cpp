@@ -1,5 +1,7 @@
 #include "apcs/formats/unfinished_files.h"
 
+#include <functional>
+
 #include <array>
 #include <atomic>
 #include <climits>
@@ -209,6 +211,37 @@ int create_unfinished_folder(int parent, std::string& pattern, std::optional<Unf
 {
     const int made = create_known(parent, pattern, make_folder, [&] { known.emplace(parent, pattern); });
     return made < 0 ? -1 : 0;
+}
+
+bool make_unless_stopping(const std::function<void()>& make)
+{
+    // As create_known: with every signal blocked here, a stop's handler runs on another thread
+    // and waits for `make` to end before it removes anything.
+    struct Blocked {
+        sigset_t previous;
+        Blocked()
+        {
+            sigset_t all;
+            sigfillset(&all);
+            pthread_sigmask(SIG_BLOCK, &all, &previous);
+            being_made.fetch_add(1);
+        }
+        ~Blocked()
+        {
+            being_made.fetch_sub(1);
+            const int reason = errno;
+            pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+            errno = reason;
+        }
+        Blocked(const Blocked&) = delete;
+        Blocked& operator=(const Blocked&) = delete;
+    } blocked;
+    if (stopping.load()) {
+        errno = EINTR;
+        return false;
+    }
+    make();
+    return true;
 }
 
 int create_unfinished_file(int folder, std::string& pattern, std::optional<UnfinishedFile>& known) noexcept

@@ -56,7 +56,7 @@ std::string text_token(const KeyScript& script, std::size_t first, std::size_t e
 
 GradeRow row_of(const GradeNames& names, const ScriptGoal& goal, GradeVerdict reached)
 {
-    return {names.recording, names.exercise, goal_line(goal), reached, {}, {}, {}};
+    return {names.recording, names.exercise, goal_line(goal), reached, {}, {}, {}, goal_text(goal), {}};
 }
 
 std::string line_of(const std::string& file, int line) { return file + ":" + std::to_string(line); }
@@ -281,6 +281,15 @@ std::string answer_tokens(const KeyScript& script, const ScriptGoal& goal)
     return tokens;
 }
 
+std::string keys_after_goals(const KeyScript& recording)
+{
+    if (recording.goals.empty())
+        return {};
+    ScriptGoal all_answers = recording.goals.front();
+    all_answers.answer_end = recording.events.size();
+    return answer_tokens(recording, all_answers);
+}
+
 std::vector<GradeRow> replayed_rows(const GradeNames& names, const KeyScript& recording,
                                     const std::vector<GoalOutcome>& outcomes)
 {
@@ -293,6 +302,7 @@ std::vector<GradeRow> replayed_rows(const GradeNames& names, const KeyScript& re
         if (outcome != outcomes.end()) {
             row.reached = outcome->verdict == GoalOutcome::Verdict::reached ? GradeVerdict::yes : GradeVerdict::no;
             row.value = outcome->progress.value;
+            row.said = outcome->progress.said;
         }
         rows.push_back(std::move(row));
     }

@@ -170,8 +170,10 @@ void ReplayDriver::act(ReplayAction action, const KeyEvent& key)
 
 void ReplayDriver::take_tick()
 {
-    if (m_session->animating())
+    if (m_session->animating()) {
+        m_work_done += m_session->key_work(); // a frame moves every point, as a key may
         m_session->tick();
+    }
     else if (script_ready() && paced_every())
         play_scripted();
     after_change();

@@ -11,6 +11,7 @@ void ReplayDriver::to_session(const KeyEvent& key)
     record_lines(m_recording, m_lines_recorded, m_played);
     m_recording.add_key(key, m_session->takes_typed_text());
     m_handled.push_back(key);
+    m_work_done += m_session->key_work();
     m_session->handle(key);
 }
 

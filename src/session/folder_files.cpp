@@ -1,6 +1,7 @@
 #include "apcs/session/session_files.h"
 
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/unfinished_files.h"
 #include "apcs/formats/inbetween_files.h"
 
 #include <algorithm>
@@ -128,16 +129,19 @@ void FolderFiles::log(const std::string& line)
 {
     // The log is the session's own record, appended line by line so that it survives a stop. Only
     // a regular file is appended to: a FIFO there would block the session, a link lead outside.
-    const int log = ::open((m_folder / "apcs.log").c_str(),
-                           O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
-    if (log < 0)
-        return;
-    struct stat status {};
-    if (::fstat(log, &status) == 0 && S_ISREG(status.st_mode)) {
-        const std::string text = line + '\n';
-        [[maybe_unused]] const ssize_t written = ::write(log, text.data(), text.size());
-    }
-    ::close(log);
+    // Not once a stop has begun: apcs grade's replays log in a folder the stop is removing.
+    const std::string text = line + '\n';
+    make_unless_stopping([&] {
+        const int log = ::open((m_folder / "apcs.log").c_str(),
+                               O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0644);
+        if (log < 0)
+            return;
+        struct stat status {};
+        if (::fstat(log, &status) == 0 && S_ISREG(status.st_mode)) {
+            [[maybe_unused]] const ssize_t written = ::write(log, text.data(), text.size());
+        }
+        ::close(log);
+    });
 }
 
 } // namespace apcs

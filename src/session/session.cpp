@@ -364,6 +364,16 @@ const PathEditor* Session::path_editor() const
     return shaping == nullptr ? nullptr : &shaping->editor;
 }
 
+std::uint64_t Session::key_work() const
+{
+    std::size_t largest = 0;
+    for (const SessionPath& path : m_model.paths)
+        largest = std::max(largest, path.points.size());
+    if (const PathEditor* editor = path_editor())
+        largest = std::max(largest, editor->points().size());
+    return 1 + std::uint64_t{largest};
+}
+
 std::optional<int> Session::shaped_path() const
 {
     const auto* shaping = std::get_if<step::Shaping>(&m_step);

@@ -47,7 +47,8 @@ Shaping Shaping::after(const SlopesPrompt& slopes, StepContext& context)
     return {slopes.path,
             PathEditor(PathEditor::Setup{path.name, std::move(path.points), context.path_settings(slopes.path), model.view_angles,
                                          std::move(key_frames), context.settings.step,
-                                         PictureRefinement{.when = context.settings.refinement}},
+                                         PictureRefinement{.when = context.settings.refinement,
+                                                           .seen = context.settings.pictures_seen}},
                        context.files)};
 }
 

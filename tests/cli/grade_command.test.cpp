@@ -1,3 +1,6 @@
+#include "apcs/cli/grade_command.h"
+#include "apcs/cli/session_command.h"
+#include "apcs/lesson/grade.h"
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"
 
@@ -509,4 +512,217 @@ TEST_CASE("apcs grade gives a recording of more than 100,000 keys an error row, 
         shown += key % 2 == 0 ? " L" : " J";
     REQUIRE(result.out == header + too_long + goal + "error,,,\n" + long_answer + goal + "yes,+0.50," + shown +
                               " \u2026 (152 keys),\n");
+}
+
+namespace {
+
+// The exercise's text with `answer` after it: a recording whose keys after the GOAL line are `answer`.
+std::string recording_of(const std::string& exercise, const std::string& answer)
+{
+    return test::read_all(exercise) + answer;
+}
+
+// `count` staff keys that end where they began (6 then 4), one a line.
+std::string staff_keys(int count)
+{
+    std::string keys;
+    for (int key = 0; key < count; ++key)
+        keys += key % 2 == 0 ? "6\n" : "4\n";
+    return keys;
+}
+
+// Exercise 1 as shipped in a folder of its own, its answer, and a folder for what students hand in.
+struct TensionExercise {
+    test::TempFolder folder;
+    std::string exercise;
+    std::string right;
+    test::TempFolder handed_in;
+    std::string goal;
+    TensionExercise()
+    {
+        copy_shipped_exercises(folder);
+        exercise = exercise_of(folder, 1, "tension");
+        right = answer_of(folder, 1, "tension");
+        goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    }
+    // A recording handed in as `name`, the exercise with `answer` after it.
+    std::string hand_in(const std::string& name, const std::string& answer) const
+    {
+        return handed_in.write(name, recording_of(exercise, answer)).string();
+    }
+};
+
+// A run of run_grade_command as the command line would make it, with `request` as given.
+test::CommandRun grade_request(const GradeRequest& request, const CommonOptions& options = {})
+{
+    std::ostringstream out;
+    std::ostringstream err;
+    const ExitStatus status = run_grade_command(request, options, out, err);
+    return {static_cast<int>(status), out.str(), err.str()};
+}
+
+} // namespace
+
+TEST_CASE("A replay's work is one operation a key and one more for each control point of the largest path",
+          "[cli][grade][issue57]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string exercise = exercise_of(folder, 1, "tension");
+    const auto work_of = [&](const std::string& answer) {
+        const test::TempFolder work;
+        for (const char* input : {"key1.dat", "key2.dat", "way1.dat"})
+            fs::copy_file(folder / input, work / input);
+        const Expected<KeyScript> script = parse_captioned_key_script(recording_of(exercise, answer), "r.keys");
+        REQUIRE(script);
+        std::ostream unheard(nullptr);
+        return replay_in_folder(*script, "r.keys", {}, work.path(), unheard).work_done;
+    };
+    // On the staff of way1.dat (3 control points) each key costs 1 + 3.
+    const std::uint64_t answered = work_of("L L L 6\n");
+    REQUIRE(work_of(staff_keys(100) + "L L L 6\n") == answered + 100 * 4);
+    // Each point inserted makes every later key cost one more: I on 3 points costs 4, then Enter
+    // leaves the waypoint editor (on 4 points: 5) and the 8 and the answer's 4 keys cost 5 each.
+    const std::string shape_again = "ENTER ENTER ENTER ENTER Y W ";
+    const std::uint64_t unchanged = work_of(shape_again + "ENTER 8 L L L 6\n");
+    REQUIRE(work_of(shape_again + "I ENTER 8 L L L 6\n") == unchanged + 4 + 6 * 1);
+}
+
+TEST_CASE("apcs grade stops a replay past its work budget: an error row, too long, and grades the recordings after it",
+          "[cli][grade][issue57]")
+{
+    const TensionExercise one;
+    const std::string busy = one.hand_in("busy.keys", staff_keys(600) + "L L L 6\n");
+    GradeRequest request{one.exercise, {busy, one.right}};
+    request.work_budget = 2'000; // the 600 staff keys alone cost 2,400; the answer costs less than 200
+    const auto result = grade_request(request);
+    INFO(result.err);
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out == header + busy + one.goal + "error,,,\n" + one.right + one.goal + "yes,+0.50,L L L 6,\n");
+    REQUIRE(result.err == busy + ": too long: its keys cost more than 2000 operations, the work budget of a replay\n");
+    // The budget as shipped lets it through.
+    request.work_budget = most_replay_operations;
+    REQUIRE(grade_request(request).status == 0);
+}
+
+TEST_CASE("apcs grade replays no recording that would need more memory than APCS_MEMORY_LIMIT leaves for replays",
+          "[cli][grade][issue57]")
+{
+    const TensionExercise one;
+    // 4 MiB a replay and 384 bytes a key: 5,026 keys (the exercise's and 5,004) need 5.8 MiB; the
+    // answer's 50 keys 4 MiB.
+    const std::string busy = one.hand_in("busy.keys", staff_keys(5'000) + "L L L 6\n");
+    CommonOptions options;
+    options.memory_limit = grade_own_bytes + (std::uint64_t{5} << 20);
+    const auto result = grade_request({one.exercise, {busy, one.right}}, options);
+    INFO(result.err);
+    REQUIRE(result.status == 1);
+    REQUIRE(result.out == header + busy + one.goal + "error,,,\n" + one.right + one.goal + "yes,+0.50,L L L 6,\n");
+    REQUIRE(result.err.starts_with(busy + ": too long: its 5"));
+    REQUIRE(result.err.ends_with(" keys need about 5.8 MiB to replay, and apcs grade has 5 MiB for replays "
+                                 "(100 MB, or APCS_MEMORY_LIMIT when lower, less 24 MiB for itself)\n"));
+    // A limit below what grade keeps for itself leaves nothing for replays: every row an error.
+    options.memory_limit = grade_own_bytes;
+    REQUIRE(grade_request({one.exercise, {one.right}}, options).out == header + one.right + one.goal + "error,,,\n");
+}
+
+TEST_CASE("apcs grade prints the rows in the order given whichever replay ends first", "[cli][grade][issue57]")
+{
+    const TensionExercise one;
+    std::vector<std::string> files{one.exercise};
+    std::string expected = header;
+    for (int index = 0; index < 12; ++index) {
+        // Every third a long replay (2,000 keys before the answer), the others at once.
+        const bool slow = index % 3 == 0;
+        const bool right = index % 2 == 0;
+        const std::string answer = (slow ? staff_keys(2'000) : std::string()) + (right ? "L L L 6\n" : "6\n");
+        files.push_back(one.hand_in("r" + std::to_string(index) + ".keys", answer));
+        std::string keys = right ? "L L L 6" : "6";
+        if (slow) {
+            // The answer's first 100 keys (6 4 6 4 …, 199 characters), then how many in all.
+            keys = "6";
+            for (int key = 1; key < 100; ++key)
+                keys += key % 2 == 0 ? " 6" : " 4";
+            keys += right ? " \u2026 (2004 keys)" : " \u2026 (2001 keys)";
+        }
+        expected += files.back() + one.goal + (right ? "yes,+0.50," : "no,+0.05,") + keys + ",\n";
+    }
+    const auto result = grade(files);
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out == expected);
+}
+
+TEST_CASE("apcs grade --class prints a gradebook, a row per student folder, and --feedback writes each student's "
+          "sheet",
+          "[cli][grade][issue57]")
+{
+    const test::TempFolder folder;
+    copy_shipped_exercises(folder);
+    const std::string tension = exercise_of(folder, 1, "tension");
+    const std::string continuity = exercise_of(folder, 2, "continuity");
+    const test::TempFolder room;
+    const fs::path class_folder = room / "class";
+    for (const char* student : {"alice", "bob", "carol", "dave", ".hidden"})
+        fs::create_directories(class_folder / student);
+    room.write("class/notes.txt", "not a student");
+    // alice hands in both answers; bob the same keys (comments and layout aside); carol the tension
+    // exercise untouched and the tension answer under the continuity exercise's name; dave nothing.
+    fs::copy_file(answer_of(folder, 1, "tension"), class_folder / "alice" / "exercise-1-tension.keys");
+    fs::copy_file(answer_of(folder, 2, "continuity"), class_folder / "alice" / "exercise-2-continuity.keys");
+    room.write("class/bob/exercise-1-tension.keys", recording_of(tension, "; mine\nL\nL  L\n6\n"));
+    room.write("class/bob/exercise-2-continuity.keys", test::read_all(class_folder / "alice" / "exercise-2-continuity.keys"));
+    fs::copy_file(tension, class_folder / "carol" / "exercise-1-tension.keys");
+    fs::copy_file(answer_of(folder, 1, "tension"), class_folder / "carol" / "exercise-2-continuity.keys");
+    const fs::path returned = room / "returned";
+    const auto result = test::run_apcs({"grade", "--class", class_folder.string(), "--feedback", returned.string(),
+                                        tension, continuity});
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    REQUIRE(result.out == "student,exercise-1-tension:1,exercise-2-continuity:1,reached,of,same_as\n"
+                          "alice,yes,yes,2,2,bob\n"
+                          "bob,yes,yes,2,2,alice\n"
+                          "carol,no,other,0,2,\n"
+                          "dave,missing,missing,0,2,\n");
+    const std::string carol_other = (class_folder / "carol" / "exercise-2-continuity.keys").string();
+    REQUIRE(result.err.starts_with(carol_other + ":20: not a recording of " + continuity + ": GOAL VALUE TENSION"));
+    std::vector<std::string> sheets;
+    for (const fs::directory_entry& entry : fs::directory_iterator(returned))
+        sheets.push_back(entry.path().filename().string());
+    std::ranges::sort(sheets);
+    REQUIRE(sheets == std::vector<std::string>{"alice.txt", "bob.txt", "carol.txt", "dave.txt"});
+    REQUIRE(test::read_all(returned / "alice.txt") ==
+            "Feedback for alice: 2 of 2 goals reached.\n"
+            "\nexercise-1-tension\n"
+            "  goal 1: reached, tension +0.50 (wanted: tension within +0.40 to +0.60)\n"
+            "\nexercise-2-continuity\n"
+            "  goal 1: reached, continuity -0.50 (wanted: continuity within -0.60 to -0.40)\n");
+    const std::string carol = test::read_all(returned / "carol.txt");
+    REQUIRE(carol.starts_with("Feedback for carol: 0 of 2 goals reached.\n"
+                              "\nexercise-1-tension\n"
+                              "  goal 1: not reached, tension +0.00 (wanted: tension within +0.40 to +0.60)\n"
+                              "\nexercise-2-continuity\n  " +
+                              carol_other + ":20: not a recording of " + continuity));
+    REQUIRE(carol.ends_with("  goal 1: not graded: the recording is not of this exercise "
+                            "(wanted: continuity within -0.60 to -0.40)\n"));
+    REQUIRE(test::read_all(returned / "dave.txt") ==
+            "Feedback for dave: 0 of 2 goals reached.\n"
+            "\nexercise-1-tension: no recording handed in\n"
+            "  goal 1: not handed in (wanted: tension within +0.40 to +0.60)\n"
+            "\nexercise-2-continuity: no recording handed in\n"
+            "  goal 1: not handed in (wanted: continuity within -0.60 to -0.40)\n");
+}
+
+TEST_CASE("apcs grade --class refuses a class folder it cannot read, and --feedback without --class",
+          "[cli][grade][issue57]")
+{
+    const std::string tension = (shipped / "exercise-1-tension.keys").string();
+    const test::TempFolder room;
+    const auto missing = test::run_apcs({"grade", "--class", (room / "nobody").string(), tension});
+    REQUIRE(missing.status == 1);
+    REQUIRE(missing.out.empty());
+    REQUIRE(missing.err.starts_with((room / "nobody").string() + ": cannot read the class folder: "));
+    const auto alone = test::run_apcs({"grade", "--feedback", room.path().string(), tension, tension});
+    REQUIRE(alone.status == 2);
+    REQUIRE(alone.out.empty());
 }

@@ -190,15 +190,16 @@ grading_in_a_swapped_folder() {
   # grades on, and nothing in the link's target is made or removed (by name, work/ there went).
   local exercises private
   exercises=$(dirname "$0")/../../data/exercises
-  mkdir -p "$work/shared" "$work/ex" "$work/in" "$work/victim/work"
-  echo precious > "$work/victim/work/keep"
+  mkdir -p "$work/shared" "$work/ex" "$work/in"
+  # The work folders of the replays are work-0 … work-59: the target holds one of each name.
+  for i in $(seq 0 59); do mkdir -p "$work/victim/work-$i" && echo precious > "$work/victim/work-$i/keep"; done
   cp "$exercises"/*.keys "$exercises"/*.dat "$work/ex/"
   for i in $(seq 60); do cp "$exercises/answers/exercise-1-tension-answer.keys" "$work/in/$i.keys"; done
   TMPDIR=$work/shared "$apcs" grade "$work/ex/exercise-1-tension.keys" "$work/in"/*.keys \
     > "$work/out.csv" 2> "$work/err" &
   local pid=$!
   for _ in $(seq 2000); do
-    private=$(find "$work/shared" -mindepth 2 -maxdepth 2 -name work -printf '%h\n' 2>/dev/null | head -1)
+    private=$(find "$work/shared" -mindepth 2 -maxdepth 2 -name 'work-*' -printf '%h\n' 2>/dev/null | head -1)
     [ -n "$private" ] && break
     sleep 0.005
   done
@@ -206,9 +207,9 @@ grading_in_a_swapped_folder() {
   mv "$private" "$work/shared/moved"
   ln -s "$work/victim" "$private"
   wait "$pid"; status=$?
-  [ "$(cat "$work/victim/work/keep" 2>/dev/null)" = precious ] ||
-    fail "the link's target lost work/keep: $(ls -la "$work/victim" "$work/victim/work" 2>&1)"
-  [ "$(find "$work/victim" -mindepth 1 | wc -l)" -eq 2 ] || fail "made in the link's target: $(find "$work/victim")"
+  [ "$(cat "$work"/victim/work-*/keep 2>/dev/null | grep -c precious)" -eq 60 ] ||
+    fail "the link's target lost a work-N/keep: $(ls -la "$work/victim" 2>&1)"
+  [ "$(find "$work/victim" -mindepth 1 | wc -l)" -eq 120 ] || fail "made in the link's target: $(find "$work/victim")"
   [ "$status" -eq 0 ] || fail "exit $status: $(cat "$work/err")"
   [ "$(grep -c ',yes,+0.50,L L L 6,$' "$work/out.csv")" -eq 60 ] || fail "not every row yes: $(cat "$work/out.csv")"
   [ -L "$private" ] || fail "the link put in the folder's place was removed"

@@ -65,7 +65,7 @@ TEST_CASE("a CSV field a spreadsheet would run as a formula begins with an apost
 TEST_CASE("a grade row is one CSV record in the header's order", "[lesson][grade]")
 {
     const GradeRow row{"a,b.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::yes, "+0.45", "L L L 6",
-                       "--step 0.2"};
+                       "--step 0.2", "tension within +0.40 to +0.60", "tension +0.45"};
     REQUIRE(grade_csv_header == "file,exercise,goal,reached,value,keys,options");
     REQUIRE(grade_csv_line(row) ==
             "\"a,b.keys\",ex.keys,GOAL VALUE TENSION 0.4 0.6,yes,+0.45,L L L 6,'--step 0.2\n");
@@ -169,21 +169,29 @@ TEST_CASE("a replayed recording's rows take each goal's verdict and value from i
     GoalProgress reached;
     reached.reached = true;
     reached.value = "+0.45";
+    reached.said = "tension +0.45";
     GoalProgress far;
     far.value = "0.35";
+    far.said = "the curve passes 0.35 from (0.00, 1.00, 2.00)";
     const std::vector<GoalOutcome> outcomes{{0, GoalOutcome::Verdict::reached, reached, 2},
                                             {1, GoalOutcome::Verdict::not_reached, far, 3}};
     const GradeNames names{"mine.keys", "ex.keys"};
+    // Each row says what its goal wants, for the student's feedback (goal_text).
+    const std::string tension = "tension within +0.40 to +0.60";
+    const std::string near = "the curve within 0.10 of (0.00, 1.00, 2.00)";
+    const std::string bias = "bias within -1.00 to +1.00";
     const std::vector<GradeRow> rows = replayed_rows(names, recording, outcomes);
     REQUIRE(rows == std::vector<GradeRow>{
-                        {"mine.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::yes, "+0.45", "L L", ""},
-                        {"mine.keys", "ex.keys", "GOAL NEAR 0 1 2 0.1", GradeVerdict::no, "0.35", "4", ""},
-                        {"mine.keys", "ex.keys", "GOAL VALUE BIAS -1 1", GradeVerdict::no, "", "", ""},
+                        {"mine.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::yes, "+0.45", "L L", "",
+                         tension, "tension +0.45"},
+                        {"mine.keys", "ex.keys", "GOAL NEAR 0 1 2 0.1", GradeVerdict::no, "0.35", "4", "", near,
+                         "the curve passes 0.35 from (0.00, 1.00, 2.00)"},
+                        {"mine.keys", "ex.keys", "GOAL VALUE BIAS -1 1", GradeVerdict::no, "", "", "", bias, ""},
                     });
     REQUIRE(unreplayed_rows(names, recording, GradeVerdict::other) ==
             std::vector<GradeRow>{
-                {"mine.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::other, "", "", ""},
-                {"mine.keys", "ex.keys", "GOAL NEAR 0 1 2 0.1", GradeVerdict::other, "", "", ""},
-                {"mine.keys", "ex.keys", "GOAL VALUE BIAS -1 1", GradeVerdict::other, "", "", ""},
+                {"mine.keys", "ex.keys", "GOAL VALUE TENSION 0.4 0.6", GradeVerdict::other, "", "", "", tension, ""},
+                {"mine.keys", "ex.keys", "GOAL NEAR 0 1 2 0.1", GradeVerdict::other, "", "", "", near, ""},
+                {"mine.keys", "ex.keys", "GOAL VALUE BIAS -1 1", GradeVerdict::other, "", "", "", bias, ""},
             });
 }

@@ -2,9 +2,11 @@
 
 #include "apcs/base/exit_status.h"
 #include "apcs/cli/options.h"
+#include "apcs/lesson/grade.h"
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <vector>
 
 namespace apcs {
@@ -13,6 +15,16 @@ namespace apcs {
 struct GradeRequest {
     std::filesystem::path exercise;
     std::vector<std::filesystem::path> recordings;
+    // The operations a replay may cost (lesson/grade.h); not an option: tests make it small.
+    std::uint64_t work_budget = most_replay_operations;
+};
+
+// What `apcs grade --class DIR EXERCISE.keys…` was given (SPEC §3.2).
+struct GradeClassRequest {
+    std::filesystem::path class_folder; // one folder a student, each recording named as its exercise
+    std::vector<std::filesystem::path> exercises;
+    std::optional<std::filesystem::path> feedback; // --feedback DIR2: DIR2/STUDENT.txt for each
+    std::uint64_t work_budget = most_replay_operations;
 };
 
 // `apcs grade`: each recording replayed headless, as `apcs --keys RECORDING --workdir COPY
@@ -35,7 +47,23 @@ struct GradeRequest {
 // row per goal, not replayed; else it is replayed with its OPTIONS. The replays' screens and
 // messages are not shown. Exit 0 when every recording was graded (yes, no or other), 1 when one was
 // an error, 2 for an APCS_MEMORY_LIMIT that is no byte count.
+// Recordings are graded on every core, as many replays at once as the memory allows (SPEC §3.2:
+// under 100 MB in all, or APCS_MEMORY_LIMIT when lower; lesson/grade.h's figures); the rows are
+// printed in the order given, each recording's as soon as it and those before it are graded. A
+// replay whose keys cost more than most_replay_operations, or that would need more memory than the
+// run has for replays, is an error row, "too long".
 ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& options, std::ostream& out,
                              std::ostream& err);
+
+// `apcs grade --class`: every student folder of DIR (each folder in it, sorted by name; hidden ones
+// left out) graded against every exercise as run_grade_command grades one recording, its recording
+// being DIR/STUDENT/EXERCISE's file name; the gradebook on `out` (lesson/gradebook.h: a row per
+// student, cells yes, no, other, error or missing, the goals reached, of how many, same_as), once
+// all are graded. With `feedback`, DIR2/STUDENT.txt for each (the folder made if missing; an
+// earlier file kept as .bak). Exit 0 when every recording handed in was graded (missing ones
+// included), 1 when one was an error or a feedback file could not be written, 2 for an
+// APCS_MEMORY_LIMIT that is no byte count.
+ExitStatus run_grade_class_command(const GradeClassRequest& request, const CommonOptions& options, std::ostream& out,
+                                   std::ostream& err);
 
 } // namespace apcs

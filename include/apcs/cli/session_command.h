@@ -9,6 +9,7 @@
 #include "apcs/session/session.h"
 
 #include <filesystem>
+#include <limits>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -61,6 +62,10 @@ struct HeadlessReplay {
     std::vector<GoalOutcome> goals;
     // The first file the session could not write (a full disk), if one.
     std::optional<Diagnostic> unwritten;
+    // The operations its keys cost (ReplayDriver::work_done), and whether they went past the
+    // budget: then the replay stopped there and judged no goal.
+    std::uint64_t work_done = 0;
+    bool over_budget = false;
 };
 
 // `script` (named `script_name` in messages) replayed headless in `folder` with `options`, as
@@ -69,8 +74,11 @@ struct HeadlessReplay {
 // drawing them is most of a replay's time). The script's OPTIONS line gives what `options` does
 // not (script_options.h). Its problems go to `err`. The script's INPUT lines are not checked
 // here: the caller did, or made the folder from them (apcs grade).
+// Its keys may cost `work_budget` operations (ReplayDriver::work_done); past it the replay stops
+// (HeadlessReplay::over_budget).
 HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& script_name, const CommonOptions& options,
-                                const std::filesystem::path& folder, std::ostream& err);
+                                const std::filesystem::path& folder, std::ostream& err,
+                                std::uint64_t work_budget = std::numeric_limits<std::uint64_t>::max());
 
 // `apcs` with no command: the interactive session in --workdir (default: the current folder).
 // With a terminal the session runs there (--keys typed first) in the glyphs of terminal_glyphs,

@@ -29,6 +29,11 @@ struct PictureRefinement {
     std::size_t drawing_a_step = std::size_t{1} << 20;
     // Segments made a step, about 10 ms: each costs far less than its arc length.
     std::size_t segments_made_a_step = std::size_t{1} << 17;
+    // Whether anyone sees the picture. Nobody sees a graded replay's (apcs grade): then the path
+    // is evaluated as ever (the goals and the files read it), but the curve, the ghost, the
+    // reference and the marks are never drawn — drawing them was most of each key's work — and
+    // draw() shows the view with none of them.
+    bool seen = true;
 };
 
 // The picture of a path being edited (a PathDocument, which it reads and never changes) for a still view:
@@ -105,7 +110,7 @@ public:
 
 private:
     // The view set and its curve not yet drawn whole: a first picture's blocks are still being drawn.
-    bool curve_left() const { return m_view && !m_curve.drawn(); }
+    bool curve_left() const;
     void remake(const PathChange& change);
     void draw_curve();
     void draw_ghost();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -47,6 +48,12 @@ private:
 // replaced; mode 0700), the folder made known in `known` before any signal can end the program:
 // 0, or -1 with errno (EINTR once remove_unfinished_files has begun).
 int create_unfinished_folder(int parent, std::string& pattern, std::optional<UnfinishedFolder>& known) noexcept;
+
+// `make` run unless a stop has begun, with this thread's signals blocked meanwhile: what it makes
+// (a folder inside the unfinished folder, a log line's file) is made before a stop's removal
+// begins, and removed by it, or not at all, while other threads go on until the program ends.
+// False, errno EINTR and `make` not run once a stop has begun. `make` must be short: a stop waits.
+bool make_unless_stopping(const std::function<void()>& make);
 
 // Removes every temporary file being written now and the unfinished folder with all it holds,
 // first waiting for any being made on another thread, and makes no more from then on (the

@@ -38,6 +38,11 @@ struct GradeRow {
     std::string value; // the goal's quantity when it was judged ("+0.45", "0.35"); empty for other, error
     std::string keys;  // the answer's keys as script tokens ("L L L 6", "= TEXT 0.45 ENTER"), answer_field
     std::string options; // the recording's OPTIONS words where they differ from the exercise's
+    // Not columns of the CSV; the words of a student's feedback (--feedback): the goal as it was
+    // wanted ("tension within +0.40 to +0.60", goal_text) and, when it was judged, what the
+    // student's path showed ("tension +0.50").
+    std::string wanted;
+    std::string said;
     bool operator==(const GradeRow&) const = default;
 };
 
@@ -53,6 +58,25 @@ inline constexpr std::size_t most_recording_keys = 100'000;
 // The largest recording read, in bytes: 100,000 keys of the longest name (BACKSPACE) with room
 // for comments; a larger file is an error row before it is parsed, so its keys never take memory.
 inline constexpr std::uintmax_t most_recording_bytes = std::uintmax_t{4} << 20;
+
+// The work a replay may cost, in the operations of Session::key_work (SPEC §3.2): a key counts
+// one, and one more for each control point of the largest path the session holds. 5·10^7 is about
+// 10 s on a 2-core machine where it costs most (staff keys on a path of 10^4 points); past it a
+// recording is an error row, "too long", whatever the machine.
+inline constexpr std::uint64_t most_replay_operations = 50'000'000;
+
+// Memory (SPEC §3.2: under 100 MB in all). apcs grade keeps grade_own_bytes for itself (the
+// program, the exercises' copies, the recordings being read) and replays at once as many recordings
+// as the rest holds, each counted at replay_bytes of its keys; APCS_MEMORY_LIMIT, when lower than
+// most_grade_bytes, is the whole instead.
+inline constexpr std::uint64_t most_grade_bytes = 100'000'000;
+inline constexpr std::uint64_t grade_own_bytes = std::uint64_t{24} << 20;
+// A replay's session, its paths (at most about 10^4 control points within the work budget) and
+// its screens' state, then each key: the script's copy, the keys handled, the recording and the
+// undo history (measured about 280 bytes a key).
+inline constexpr std::uint64_t replay_base_bytes = std::uint64_t{4} << 20;
+inline constexpr std::uint64_t bytes_per_replayed_key = 384;
+inline constexpr std::uint64_t replay_bytes(std::size_t keys) { return replay_base_bytes + keys * bytes_per_replayed_key; }
 
 // A CSV field as RFC 4180 writes it: in double quotes, each quote doubled, when it holds a comma,
 // a double quote, CR or LF; as it is otherwise. A field a spreadsheet would take for a formula
@@ -88,6 +112,11 @@ bool is_blank_recording(const KeyScript& recording);
 // GOAL k and before GOAL k+1, captions included, answer goal k (SPEC §3.2), wherever --record put
 // the student's keys.
 KeyScript with_answers_to_next_goal(KeyScript recording);
+
+// The keys after the first GOAL line (the student's, wherever they stand among the GOAL lines and
+// captions), as script tokens separated by single spaces: what `--class` compares for same_as
+// (comments and layout do not count). Empty when there are none, or no GOAL line.
+std::string keys_after_goals(const KeyScript& recording);
 
 // The answer's tokens as a row shows them: at most most_answer_characters characters, then
 // "… (N keys)" with the answer's number of keys.

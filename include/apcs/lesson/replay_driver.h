@@ -105,6 +105,9 @@ public:
     const Expected<void>& goals() const { return m_goals; }
     // Every key the session handled, in order.
     const std::vector<KeyEvent>& handled() const { return m_handled; }
+    // The operations the session's keys and animation frames have cost so far (Session::key_work
+    // of each, counted as it was handled): apcs grade's work budget.
+    std::uint64_t work_done() const { return m_work_done; }
     // The same keys as --record writes them, with the script's INPUT, START, caption and GOAL
     // lines where the replay met them.
     KeyRecording recording() const;
@@ -251,6 +254,7 @@ private:
     std::size_t m_lines_recorded = 0;
     Expected<void> m_goals = ok;
     std::vector<KeyEvent> m_handled;
+    std::uint64_t m_work_done = 0;
     // Keys typed while the replay played unasked, taken once it has.
     std::deque<KeyEvent> m_typed_meanwhile;
     std::uint64_t m_revision = 0;

@@ -58,6 +58,12 @@ public:
     // Which path path_editor() shapes: 0 the first graphic point's, 1 the last's (whatever file
     // was typed for it); none at any other step. An exercise's goal belongs to one of them.
     std::optional<int> shaped_path() const;
+    // What a key may cost now, in the operations of a replay's work budget (SPEC §3.2): one, and
+    // one more for each control point of the largest path the session holds (the one being shaped
+    // included): a key re-evaluates, re-spaces or fits at most that many segments, each a bounded
+    // number of samples. The count is the same on every machine; apcs grade stops a replay whose
+    // keys have cost more than its budget.
+    std::uint64_t key_work() const;
     // The last write that failed, if any did (the step that tried it was asked again).
     const Expected<void>& writes() const { return m_model.written.outcome(); }
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.

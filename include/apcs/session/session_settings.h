@@ -39,6 +39,9 @@ struct SessionSettings {
     // The terminal draws a long path's first picture after a key and refines it while no key waits
     // (path_picture.h); scripts and tests take every key's work at once.
     Refinement refinement = Refinement::at_once;
+    // False when nobody will see a screen of the session (apcs grade's replays): the path editor
+    // then evaluates paths but draws no curve (PictureRefinement::seen).
+    bool pictures_seen = true;
 };
 
 } // namespace apcs

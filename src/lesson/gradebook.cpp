@@ -1,0 +1,123 @@
+#include "apcs/lesson/gradebook.h"
+
+#include <map>
+
+namespace apcs {
+
+namespace {
+
+// The cell of goal `goal` of `exercise`: "missing", or the row's verdict.
+std::string cell(const StudentExercise& exercise, std::size_t goal)
+{
+    if (exercise.missing || goal >= exercise.rows.size())
+        return "missing";
+    return std::string(verdict_name(exercise.rows[goal].reached));
+}
+
+std::size_t goals_reached(const StudentWork& student)
+{
+    std::size_t reached = 0;
+    for (const StudentExercise& exercise : student.exercises)
+        for (const GradeRow& row : exercise.rows)
+            reached += row.reached == GradeVerdict::yes ? 1 : 0;
+    return reached;
+}
+
+std::size_t goal_count(const std::vector<GradebookExercise>& exercises)
+{
+    std::size_t count = 0;
+    for (const GradebookExercise& exercise : exercises)
+        count += exercise.goals.size();
+    return count;
+}
+
+// The keys after the GOAL lines of every exercise, one exercise a line; nullopt when all are empty.
+std::optional<std::string> all_answer_keys(const StudentWork& student)
+{
+    std::string keys;
+    bool any = false;
+    for (const StudentExercise& exercise : student.exercises) {
+        keys += exercise.answer_keys + '\n';
+        any = any || !exercise.answer_keys.empty();
+    }
+    return any ? std::optional<std::string>(std::move(keys)) : std::nullopt;
+}
+
+// One goal's line of the feedback.
+std::string goal_feedback_line(const StudentExercise& exercise, std::size_t goal, const std::string& wanted)
+{
+    std::string line = "  goal " + std::to_string(goal + 1) + ": ";
+    if (exercise.missing || goal >= exercise.rows.size())
+        return line + "not handed in (wanted: " + wanted + ")\n";
+    const GradeRow& row = exercise.rows[goal];
+    switch (row.reached) {
+    case GradeVerdict::yes: line += "reached"; break;
+    case GradeVerdict::no: line += "not reached"; break;
+    case GradeVerdict::other: line += "not graded: the recording is not of this exercise"; break;
+    case GradeVerdict::error: line += "not graded: the recording could not be replayed"; break;
+    }
+    if (!row.said.empty())
+        line += ", " + row.said;
+    else if (row.reached == GradeVerdict::no)
+        line += ", nothing done";
+    return line + " (wanted: " + wanted + ")\n";
+}
+
+} // namespace
+
+std::string gradebook_header(const std::vector<GradebookExercise>& exercises)
+{
+    std::string header = "student";
+    for (const GradebookExercise& exercise : exercises)
+        for (std::size_t goal = 0; goal < exercise.goals.size(); ++goal)
+            header += ',' + csv_field(exercise.name + ':' + std::to_string(goal + 1));
+    return header + ",reached,of,same_as";
+}
+
+std::vector<std::string> same_as(const std::vector<StudentWork>& students)
+{
+    std::map<std::string, std::vector<std::size_t>> by_keys;
+    std::vector<std::optional<std::string>> keys;
+    for (std::size_t index = 0; index < students.size(); ++index) {
+        keys.push_back(all_answer_keys(students[index]));
+        if (keys.back())
+            by_keys[*keys.back()].push_back(index);
+    }
+    std::vector<std::string> alike(students.size());
+    for (std::size_t index = 0; index < students.size(); ++index) {
+        if (!keys[index])
+            continue;
+        for (const std::size_t other : by_keys[*keys[index]])
+            if (other != index)
+                alike[index] += (alike[index].empty() ? "" : " ") + students[other].name;
+    }
+    return alike;
+}
+
+std::string gradebook_line(const StudentWork& student, const std::vector<GradebookExercise>& exercises,
+                           const std::string& alike)
+{
+    std::string line = csv_field(student.name);
+    for (std::size_t exercise = 0; exercise < exercises.size(); ++exercise)
+        for (std::size_t goal = 0; goal < exercises[exercise].goals.size(); ++goal)
+            line += ',' + cell(student.exercises[exercise], goal);
+    line += ',' + std::to_string(goals_reached(student)) + ',' + std::to_string(goal_count(exercises));
+    return line + ',' + csv_field(alike) + '\n';
+}
+
+std::string feedback_text(const StudentWork& student, const std::vector<GradebookExercise>& exercises)
+{
+    std::string text = "Feedback for " + student.name + ": " + std::to_string(goals_reached(student)) + " of " +
+                       std::to_string(goal_count(exercises)) + " goals reached.\n";
+    for (std::size_t index = 0; index < exercises.size(); ++index) {
+        const StudentExercise& exercise = student.exercises[index];
+        text += '\n' + exercises[index].name + (exercise.missing ? ": no recording handed in\n" : "\n");
+        if (!exercise.why.empty())
+            text += "  " + exercise.why + '\n';
+        for (std::size_t goal = 0; goal < exercises[index].goals.size(); ++goal)
+            text += goal_feedback_line(exercise, goal, exercises[index].goals[goal]);
+    }
+    return text;
+}
+
+} // namespace apcs
