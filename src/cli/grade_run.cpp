@@ -242,17 +242,10 @@ std::optional<KeyScript> read_recording(const fs::path& recording, std::ostream&
         err << text.error().to_string() << '\n';
         return std::nullopt;
     }
-    Expected<KeyScript> parsed = parse_captioned_key_script(*text, recording.string());
+    // Read no further than the most keys graded: a longer recording never takes their memory.
+    Expected<KeyScript> parsed = parse_captioned_key_script(*text, recording.string(), most_recording_keys);
     if (!parsed) {
         err << parsed.error().to_string() << '\n';
-        return std::nullopt;
-    }
-    if (parsed->events.size() > most_recording_keys) {
-        err << Diagnostic{recording.string(), 0,
-                          "too long: " + std::to_string(parsed->events.size()) + " keys, at most " +
-                              std::to_string(most_recording_keys) + " are graded"}
-                   .to_string()
-            << '\n';
         return std::nullopt;
     }
     return std::move(*parsed);

@@ -663,6 +663,7 @@ HeadlessReplay replay_in_folder(const KeyScript& script, const std::string& scri
     Session session(settings, files);
     ReplayHooks hooks;
     hooks.log = [&files](const std::string& line) { files.log(line); };
+    hooks.keeps_recording = false;
     ReplayKept kept;
     const ExitStatus status = replay_headless(session, script, script_name, Transcript{.work_budget = work_budget},
                                               std::move(hooks), kept, err);

@@ -6,6 +6,7 @@
 #include "apcs/formats/text_lines.h"
 
 #include <algorithm>
+#include <limits>
 #include <utility>
 
 namespace apcs {
@@ -252,11 +253,12 @@ std::string_view keyword_in_capitals(std::string_view line, std::string& respell
 }
 
 // The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
-Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept)
+Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept,
+                                             std::size_t most_keys = std::numeric_limits<std::size_t>::max())
 {
     // Every event takes at least one byte of the script: one allocation, never a doubling.
     std::vector<KeyEvent> events;
-    events.reserve(text.size());
+    events.reserve(std::min(text.size(), most_keys));
     if (Expected<void> ended = cut_at_end_of_file(text, file_name); !ended)
         return ended.error();
     // A UTF-8 byte order mark, as Windows editors write one, is no key.
@@ -267,6 +269,11 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     const auto note_lines = [kept, &events](int line) {
         if (kept != nullptr)
             kept->event_lines.resize(events.size(), line);
+    };
+    const auto too_many_keys = [&](int line) {
+        return Diagnostic{file_name, line,
+                          "too long: more than " + std::to_string(most_keys) + " keys, at most " +
+                              std::to_string(most_keys) + " are taken"};
     };
     std::optional<Diagnostic> problem;
     int line_number = 0;
@@ -279,6 +286,8 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
             return printable.error();
         if (line.starts_with("TEXT ")) {
             type_line(line.substr(5), events, kept == nullptr ? nullptr : &kept->typed_lines);
+            if (events.size() > most_keys)
+                return too_many_keys(line_number);
             note_lines(line_number);
             continue;
         }
@@ -304,6 +313,8 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
         });
         if (problem)
             return *problem;
+        if (events.size() > most_keys)
+            return too_many_keys(line_number);
         note_lines(line_number);
         state.start.after_caption_or_goal = state.start.after_caption_or_goal || caption->has_value();
         if (*caption && kept != nullptr) {
@@ -336,10 +347,11 @@ Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const st
     return parse_script(text, file_name, nullptr);
 }
 
-Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name)
+Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name,
+                                               std::size_t most_keys)
 {
     KeyScript script;
-    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script);
+    Expected<std::vector<KeyEvent>> events = parse_script(text, file_name, &script, most_keys);
     if (!events)
         return events.error();
     script.events = std::move(*events);

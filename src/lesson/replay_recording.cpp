@@ -8,8 +8,10 @@ namespace apcs {
 
 void ReplayDriver::to_session(const KeyEvent& key)
 {
-    record_lines(m_recording, m_lines_recorded, m_played);
-    m_recording.add_key(key, m_session->takes_typed_text());
+    if (m_hooks.keeps_recording) {
+        record_lines(m_recording, m_lines_recorded, m_played);
+        m_recording.add_key(key, m_session->takes_typed_text());
+    }
     m_handled.push_back(key);
     m_work_done += m_session->key_work();
     m_session->handle(key);

@@ -6,6 +6,7 @@
 #include "apcs/formats/script_input.h"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -81,8 +82,11 @@ struct KeyScript {
 };
 
 // parse_key_script, keeping the captions (each at most max_caption_columns wide, or FILE:LINE:
-// the problem) and the TEXT lines.
-[[nodiscard]] Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std::string& file_name);
+// the problem) and the TEXT lines. A script of more than `most_keys` keys is refused at the line
+// that passes it ("too long: more than N keys, at most N are taken"), never held whole (apcs grade).
+[[nodiscard]] Expected<KeyScript> parse_captioned_key_script(
+    std::string_view text, const std::string& file_name,
+    std::size_t most_keys = std::numeric_limits<std::size_t>::max());
 
 // The caption shown once `played` keys of `script` are played: the last one reached, or none.
 const ScriptCaption* caption_at(const KeyScript& script, std::size_t played);

@@ -60,10 +60,12 @@ inline constexpr std::size_t most_recording_keys = 100'000;
 inline constexpr std::uintmax_t most_recording_bytes = std::uintmax_t{4} << 20;
 
 // The work a replay may cost, in the operations of Session::key_work (SPEC §3.2): a key counts
-// one, and one more for each control point of the largest path the session holds. 5·10^7 is about
-// 10 s on a 2-core machine where it costs most (staff keys on a path of 10^4 points); past it a
-// recording is an error row, "too long", whatever the machine.
-inline constexpr std::uint64_t most_replay_operations = 50'000'000;
+// one, and one more for each control point of the largest path the session holds. 1.2·10^7 is at
+// most about 7 s of one replay on a 2-core machine where an operation costs most (staff keys on a
+// path of 1,000 to 3,000 control points: 0.5 µs each), 1.7 s where a recording inserts points
+// until it is stopped (16,000 asked for, about 4,900 made); past it a recording is an error row,
+// "too long", whatever the machine: the same verdict on every one.
+inline constexpr std::uint64_t most_replay_operations = 12'000'000;
 
 // Memory (SPEC §3.2: under 100 MB in all). apcs grade keeps grade_own_bytes for itself (the
 // program, the exercises' copies, the recordings being read) and replays at once as many recordings
@@ -72,10 +74,11 @@ inline constexpr std::uint64_t most_replay_operations = 50'000'000;
 inline constexpr std::uint64_t most_grade_bytes = 100'000'000;
 inline constexpr std::uint64_t grade_own_bytes = std::uint64_t{24} << 20;
 // A replay's session, its paths (at most about 10^4 control points within the work budget) and
-// its screens' state, then each key: the script's copy, the keys handled, the recording and the
-// undo history (measured about 280 bytes a key).
+// its screens' state, then each key: the script and its copy with the answers moved (24 bytes),
+// the keys handled (8) and the undo history (a staff key's change; measured: a replay of 100,000
+// staff keys peaks at 20 MB, 203 bytes a key in all). Two replays of 100,000 keys fit at once.
 inline constexpr std::uint64_t replay_base_bytes = std::uint64_t{4} << 20;
-inline constexpr std::uint64_t bytes_per_replayed_key = 384;
+inline constexpr std::uint64_t bytes_per_replayed_key = 320;
 inline constexpr std::uint64_t replay_bytes(std::size_t keys) { return replay_base_bytes + keys * bytes_per_replayed_key; }
 
 // A CSV field as RFC 4180 writes it: in double quotes, each quote doubled, when it holds a comma,

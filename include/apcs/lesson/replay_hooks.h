@@ -35,6 +35,9 @@ struct ReplayHooks {
     // played into it at once). Without it the replay cannot go back.
     std::function<std::unique_ptr<Session>()> session_as_started;
     std::function<void()> caught_up;
+    // False when nobody will ask for recording() (apcs grade's replays): the keys are then not
+    // kept a second time, as --record would write them (about 80 bytes a key).
+    bool keeps_recording = true;
 };
 
 } // namespace apcs
