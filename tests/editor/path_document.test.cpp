@@ -1,5 +1,6 @@
 #include "apcs/editor/path_document.h"
 #include "apcs/editor/path_picture.h"
+#include "apcs/animation/view_transform.h"
 
 #include <catch2/catch.hpp>
 
@@ -117,4 +118,38 @@ TEST_CASE("a path picture reads its document: refreshed after a change it is the
         REQUIRE((kept.start == made.start && kept.end == made.end && kept.start_tangent == made.start_tangent &&
                  kept.end_tangent == made.end_tangent));
     }
+}
+
+TEST_CASE("a picture nobody sees evaluates the path as one that is seen, and draws no curve, ghost or reference",
+          "[editor][document][issue57]")
+{
+    PathDocument seen_document(three_points());
+    PathDocument unseen_document(three_points());
+    const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
+    PathPicture seen(seen_document, settings);
+    PathPicture unseen(unseen_document, settings, PictureRefinement{.seen = false});
+    const std::vector<Vec3> scene{{-5, -5, -5}, {5, 5, 5}};
+    const ViewTransform view = ViewTransform::fit({30, 40}, scene, {0, 0, 720, 348});
+    seen.set_view(view);
+    unseen.set_view(view);
+    WaypointChange move;
+    move.kind = WaypointChange::Kind::move;
+    move.index = 1;
+    move.offset = {0, 2, 0};
+    make_waypoint_edit(seen_document, seen, move);
+    make_waypoint_edit(unseen_document, unseen, move);
+    unseen.pin_reference("A");
+    const auto& kept = unseen.evaluated().curve;
+    const auto& shown = seen.evaluated().curve;
+    REQUIRE(kept.segments.size() == shown.segments.size());
+    for (std::size_t k = 0; k < kept.segments.size(); ++k)
+        REQUIRE((kept.segments[k].start == shown.segments[k].start && kept.segments[k].end == shown.segments[k].end &&
+                 kept.segments[k].start_tangent == shown.segments[k].start_tangent &&
+                 kept.segments[k].end_tangent == shown.segments[k].end_tangent));
+    REQUIRE(unseen.evaluated().inbetweens.size() == seen.evaluated().inbetweens.size());
+    // The seen picture keeps the curve before the move as its ghost; the unseen one drew nothing
+    // to keep, and is never left refining.
+    REQUIRE(seen.has_ghost());
+    REQUIRE_FALSE(unseen.has_ghost());
+    REQUIRE_FALSE(unseen.refining());
 }
