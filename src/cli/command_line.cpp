@@ -446,7 +446,7 @@ constexpr std::array<Subcommand, 7> subcommands{{
               "folders, one row per student",
      "an exercise EXERCISE.keys and one or more recordings RECORDING...; with --class DIR, one or more exercises",
      "  apcs grade data/exercises/exercise-1-tension.keys data/exercises/answers/exercise-1-tension-answer.keys\n"
-     "  apcs grade --class class --feedback returned exercise-1-tension.keys exercise-2-continuity.keys",
+     "  apcs grade --class CLASS --feedback RETURNED data/exercises/exercise-*.keys   (CLASS/STUDENT/EXERCISE.keys)",
      "the source tree (data/exercises: the exercises, their inputs and answers/)",
      [](CLI::App& command, ParsedLine& line) {
          command.add_option("EXERCISE", line.grade.exercise, "the exercise (.keys), its INPUT files beside it")
