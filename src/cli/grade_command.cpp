@@ -6,6 +6,7 @@
 #include "apcs/cli/memory_limit.h"
 #include "apcs/cli/report.h"
 #include "apcs/formats/file_io.h"
+#include "apcs/formats/unfinished_files.h"
 #include "apcs/lesson/gradebook.h"
 
 #include <algorithm>
@@ -43,22 +44,70 @@ std::optional<ExitStatus> prepare(GradeRun& run, const std::vector<fs::path>& ex
     return std::nullopt;
 }
 
-// The student folders of DIR, sorted by name: every folder in it (or link to one), hidden ones
-// (".name") left out. The problem if DIR cannot be read.
-Expected<std::vector<fs::path>> student_folders(const fs::path& class_folder)
+// A student of the class: the folder, and whether it could be reached (a link to nothing could not).
+struct StudentFolder {
+    fs::path path;
+    bool reached = true;
+};
+
+// The student folders of DIR, sorted by name: every folder in it, and every link in it to a folder
+// or to nothing (each recording of a link to nothing is an error row: a student is never left out
+// unsaid); hidden ones (".name") and files left out. The problem if DIR cannot be read.
+Expected<std::vector<StudentFolder>> student_folders(const fs::path& class_folder)
 {
     std::error_code error;
-    std::vector<fs::path> students;
+    std::vector<StudentFolder> students;
     for (fs::directory_iterator entry(class_folder, error), end; !error && entry != end; entry.increment(error)) {
-        const std::string name = entry->path().filename().string();
-        std::error_code kind;
-        if (!name.starts_with('.') && entry->is_directory(kind))
-            students.push_back(entry->path());
+        if (entry->path().filename().string().starts_with('.'))
+            continue;
+        std::error_code unreached;
+        const bool folder = fs::is_directory(entry->path(), unreached);
+        std::error_code not_a_link;
+        if (folder || (unreached && entry->is_symlink(not_a_link)))
+            students.push_back({entry->path(), !unreached});
     }
     if (error)
         return Diagnostic{class_folder.string(), 0, "cannot read the class folder: " + error.message()};
-    std::ranges::sort(students);
+    std::ranges::sort(students, {}, &StudentFolder::path);
     return students;
+}
+
+// Whether the student handed in `recording`: a name that is not there is missing; one that cannot
+// be looked at (a folder the teacher may not read) is handed in, so that reading it gives the reason.
+bool handed_in(const fs::path& recording)
+{
+    std::error_code error;
+    const fs::file_status status = fs::symlink_status(recording, error);
+    return fs::exists(status) || (error && error != std::errc::no_such_file_or_directory);
+}
+
+// Two exercises of one file name would name the same recording in each student's folder.
+std::optional<std::string> same_file_names(const std::vector<fs::path>& exercises)
+{
+    for (std::size_t first = 0; first < exercises.size(); ++first)
+        for (std::size_t second = first + 1; second < exercises.size(); ++second)
+            if (exercises[first].filename() == exercises[second].filename())
+                return exercises[first].string() + " and " + exercises[second].string();
+    return std::nullopt;
+}
+
+// Whether `inner` is `outer` or lies inside it, as the file system resolves both.
+bool inside(const fs::path& inner, const fs::path& outer)
+{
+    std::error_code error;
+    const fs::path resolved_outer = fs::weakly_canonical(outer, error);
+    const fs::path resolved_inner = fs::weakly_canonical(inner, error);
+    const auto [end, unused] = std::mismatch(resolved_outer.begin(), resolved_outer.end(), resolved_inner.begin(),
+                                             resolved_inner.end());
+    return !error && end == resolved_outer.end();
+}
+
+// `text` on `stream`, unless a stop has begun: a stop on another thread waits for it to be written
+// whole (make_unless_stopping), so a grade stopped by a signal never leaves a row cut short.
+void tell_whole(std::ostream& stream, const std::string& text)
+{
+    if (!text.empty())
+        make_unless_stopping([&] { stream << text << std::flush; });
 }
 
 // The gradebook's column names: each exercise's file name without ".keys", and its goals.
@@ -81,10 +130,10 @@ std::string first_reason(const std::string& messages)
     return escape_controls(messages.substr(0, messages.find('\n')));
 }
 
-// Each student's feedback written as FEEDBACK/STUDENT.txt; false after the first that could not be
-// (the problem on `err`).
+// Each student's feedback written as FEEDBACK/STUDENT.txt; false when one could not be (each
+// problem on `err`; the others are written).
 bool write_feedback(const fs::path& folder, const std::vector<StudentWork>& students,
-                    const std::vector<fs::path>& student_paths, const std::vector<GradebookExercise>& exercises,
+                    const std::vector<StudentFolder>& student_folders, const std::vector<GradebookExercise>& exercises,
                     std::ostream& err)
 {
     std::error_code error;
@@ -93,14 +142,15 @@ bool write_feedback(const fs::path& folder, const std::vector<StudentWork>& stud
         err << folder.string() << ": cannot make the feedback folder: " << error.message() << '\n';
         return false;
     }
+    bool every_one = true;
     for (std::size_t index = 0; index < students.size(); ++index) {
-        const fs::path target = folder / (student_paths[index].filename().string() + ".txt");
+        const fs::path target = folder / (student_folders[index].path.filename().string() + ".txt");
         if (const auto written = write_file_atomically(target, feedback_text(students[index], exercises)); !written) {
-            err << written.error().to_string() << '\n';
-            return false;
+            err << escape_controls(written.error().to_string()) << '\n';
+            every_one = false;
         }
     }
-    return true;
+    return every_one;
 }
 
 } // namespace
@@ -125,8 +175,8 @@ ExitStatus run_grade_command(const GradeRequest& request, const CommonOptions& o
         std::string rows;
         for (const GradeRow& row : grade.rows)
             rows += grade_csv_line(row);
-        err << grade.messages << std::flush;
-        out << rows << std::flush;
+        tell_whole(err, grade.messages);
+        tell_whole(out, rows);
         every_one_graded = every_one_graded && !grade.error;
     });
     return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;
@@ -138,7 +188,19 @@ ExitStatus run_grade_class_command(const GradeClassRequest& request, const Commo
     const std::optional<std::uint64_t> limit = run_memory(options, err);
     if (!limit)
         return ExitStatus::bad_usage;
-    const Expected<std::vector<fs::path>> students = student_folders(request.class_folder);
+    if (const std::optional<std::string> both = same_file_names(request.exercises)) {
+        err << "apcs grade --class: " << escape_controls(*both)
+            << " have one file name; expected exercises of different names, since each student's recording is "
+               "named as its exercise\n";
+        return ExitStatus::bad_usage;
+    }
+    if (request.feedback && inside(*request.feedback, request.class_folder)) {
+        err << "apcs grade --class: --feedback " << escape_controls(request.feedback->string())
+            << " is inside the class folder; expected a folder outside it (a folder in the class folder is a "
+               "student)\n";
+        return ExitStatus::bad_usage;
+    }
+    const Expected<std::vector<StudentFolder>> students = student_folders(request.class_folder);
     if (!students)
         return report_bad_input(students.error(), err);
     GradeRun run(*limit, request.work_budget);
@@ -146,22 +208,23 @@ ExitStatus run_grade_class_command(const GradeClassRequest& request, const Commo
         return *refused;
     std::vector<GradeTask> tasks;
     std::vector<StudentWork> work;
-    for (const fs::path& student : *students) {
-        work.push_back({escape_controls(student.filename().string()), {}});
+    for (const StudentFolder& student : *students) {
+        work.push_back({escape_controls(student.path.filename().string()), {}});
+        if (!student.reached)
+            err << escape_controls(student.path.string()) << ": a link to no folder; its recordings are errors\n";
         for (std::size_t exercise = 0; exercise < run.exercise_count(); ++exercise) {
             // Each recording named as its exercise; a name that is not there is missing (not an error).
-            const fs::path recording = student / fs::path(run.exercise(exercise).name).filename();
-            std::error_code error;
-            const bool handed_in = fs::exists(fs::symlink_status(recording, error));
-            tasks.push_back({exercise, handed_in ? std::optional<fs::path>(recording) : std::nullopt});
+            const fs::path recording = student.path / fs::path(run.exercise(exercise).name).filename();
+            const bool given = !student.reached || handed_in(recording);
+            tasks.push_back({exercise, given ? std::optional<fs::path>(recording) : std::nullopt});
         }
     }
     bool every_one_graded = true;
     run.grade(tasks, options, [&](std::size_t index, RecordingGrade grade) {
-        StudentExercise handed{!tasks[index].recording, std::move(grade.rows), std::move(grade.answer_keys),
+        StudentExercise handed{!tasks[index].recording, std::move(grade.rows), grade.answer_digest,
                                first_reason(grade.messages)};
         work[index / run.exercise_count()].exercises.push_back(std::move(handed));
-        err << grade.messages << std::flush;
+        tell_whole(err, grade.messages);
         every_one_graded = every_one_graded && !grade.error;
     });
     const std::vector<GradebookExercise> exercises = gradebook_exercises(run);
@@ -169,7 +232,7 @@ ExitStatus run_grade_class_command(const GradeClassRequest& request, const Commo
     std::string book = gradebook_header(exercises) + '\n';
     for (std::size_t student = 0; student < work.size(); ++student)
         book += gradebook_line(work[student], exercises, alike[student]);
-    out << book << std::flush;
+    tell_whole(out, book);
     if (request.feedback && !write_feedback(*request.feedback, work, *students, exercises, err))
         return ExitStatus::bad_input;
     return every_one_graded ? ExitStatus::success : ExitStatus::bad_input;

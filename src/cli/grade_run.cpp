@@ -44,9 +44,12 @@ public:
     ~PrivateFolder()
     {
         if (m_self >= 0) {
+            // Never a throw in a destructor: each step's error is taken, not thrown.
             std::error_code ignored;
-            for (const fs::directory_entry& entry : fs::directory_iterator(m_path, ignored))
-                fs::remove_all(entry.path(), ignored);
+            for (fs::directory_iterator entry(m_path, ignored), end; !ignored && entry != end; entry.increment(ignored)) {
+                std::error_code each;
+                fs::remove_all(entry->path(), each);
+            }
             // By the name only once empty: a link put in its place is not a folder, and stays.
             ::unlinkat(m_parent, m_name.c_str(), AT_REMOVEDIR);
             ::close(m_self);
@@ -316,6 +319,10 @@ std::optional<ExitStatus> GradeRun::add_exercise(const fs::path& file, const Com
     exercise.inputs = m_folder->path() / ("inputs-" + std::to_string(m_exercises.size()));
     if (const std::optional<ExitStatus> refused = copy_inputs(exercise, file, err))
         return refused;
+    for (const fs::path& copy : exercise.copies) {
+        std::error_code unsized;
+        exercise.replay_bytes += bytes_per_input_byte * fs::file_size(copy, unsized);
+    }
     m_exercises.push_back(std::move(exercise));
     return std::nullopt;
 }
@@ -338,10 +345,17 @@ RecordingGrade GradeRun::grade_task(const GradeTask& task, std::size_t index, co
         grade.error = verdict == GradeVerdict::error;
         return std::move(grade);
     };
+    // The gate is entered before the recording is read: its text and keys take memory too. What
+    // it is counted at comes from its size (a key takes a byte at least), then from its keys.
+    std::error_code unsized;
+    const std::uintmax_t size = std::min<std::uintmax_t>(fs::file_size(recording, unsized), most_recording_bytes);
+    const std::uint64_t at_most = unsized ? replay_bytes(0) : size + replay_bytes(std::min<std::uintmax_t>(size, most_recording_keys));
+    const GateEntry entry(*m_gate, std::min(at_most + exercise.replay_bytes, m_replay_bytes));
     const std::optional<KeyScript> script = read_recording(recording, err);
     if (!script)
         return unreplayed(GradeVerdict::error);
-    grade.answer_keys = keys_after_goals(*script);
+    if (const std::string keys = keys_after_goals(*script); !keys.empty())
+        grade.answer_digest = std::hash<std::string>{}(keys) | 1; // never 0, which is "no keys"
     if (is_blank_recording(*script)) {
         grade.rows = blank_rows(names, exercise.script);
         return grade;
@@ -354,7 +368,7 @@ RecordingGrade GradeRun::grade_task(const GradeTask& task, std::size_t index, co
     std::optional<CommonOptions> taken = replay_options(exercise, *script, recording, options, refused, err);
     if (!taken)
         return unreplayed(refused);
-    const std::uint64_t bytes = replay_bytes(script->events.size());
+    const std::uint64_t bytes = replay_bytes(script->events.size()) + exercise.replay_bytes;
     if (bytes > m_replay_bytes) {
         err << recording.string() << ": too long: its " << script->events.size() << " keys need about "
             << memory::byte_count_text(bytes) << " to replay, and apcs grade has "
@@ -370,14 +384,12 @@ RecordingGrade GradeRun::grade_task(const GradeTask& task, std::size_t index, co
         return unreplayed(GradeVerdict::error);
     }
     const KeyScript answered = with_answers_to_next_goal(*script);
-    HeadlessReplay replayed;
-    {
-        const GateEntry entry(*m_gate, bytes);
-        taken->memory_limit = bytes;
-        // The report is the grade: a replay's "goal not reached" and the like are not shown.
-        std::ostream unheard(nullptr);
-        replayed = replay_in_folder(answered, recording.string(), *taken, work, unheard, m_work_budget);
-    }
+    // The session's own checks (a path or the frames too large) against the replays' whole
+    // budget: the same for every recording of the exercise, however many keys it has.
+    taken->memory_limit = m_replay_bytes;
+    // The report is the grade: a replay's "goal not reached" and the like are not shown.
+    std::ostream unheard(nullptr);
+    const HeadlessReplay replayed = replay_in_folder(answered, recording.string(), *taken, work, unheard, m_work_budget);
     std::error_code ignored;
     fs::remove_all(work, ignored);
     if (replayed.over_budget) {

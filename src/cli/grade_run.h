@@ -29,6 +29,8 @@ struct GradeExercise {
     std::string name;             // as typed
     std::filesystem::path inputs; // the folder of the checked copies, in the private folder
     std::vector<std::filesystem::path> copies; // each copy, named as beside the exercise
+    // What its inputs add to each replay's memory (bytes_per_input_byte of their text).
+    std::uint64_t replay_bytes = 0;
 };
 
 // One recording to grade: of which exercise, and where (none: the student handed in nothing).
@@ -41,7 +43,7 @@ struct GradeTask {
 struct RecordingGrade {
     std::vector<GradeRow> rows; // one per goal of its exercise; none for a task without a recording
     std::string messages;       // for standard error, each line ended
-    std::string answer_keys;    // keys_after_goals of the recording, for same_as
+    std::size_t answer_digest = 0; // a hash of keys_after_goals, for same_as; 0: no keys
     bool error = false;         // a row is an error
 };
 

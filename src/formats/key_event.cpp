@@ -273,7 +273,7 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
     const auto too_many_keys = [&](int line) {
         return Diagnostic{file_name, line,
                           "too long: more than " + std::to_string(most_keys) + " keys, at most " +
-                              std::to_string(most_keys) + " are taken"};
+                              std::to_string(most_keys) + " are read"};
     };
     std::optional<Diagnostic> problem;
     int line_number = 0;

@@ -31,16 +31,17 @@ std::size_t goal_count(const std::vector<GradebookExercise>& exercises)
     return count;
 }
 
-// The keys after the GOAL lines of every exercise, one exercise a line; nullopt when all are empty.
-std::optional<std::string> all_answer_keys(const StudentWork& student)
+// The digests of the keys after the GOAL lines of every exercise, in order; nullopt when no
+// exercise has any.
+std::optional<std::vector<std::size_t>> all_answer_keys(const StudentWork& student)
 {
-    std::string keys;
+    std::vector<std::size_t> digests;
     bool any = false;
     for (const StudentExercise& exercise : student.exercises) {
-        keys += exercise.answer_keys + '\n';
-        any = any || !exercise.answer_keys.empty();
+        digests.push_back(exercise.answer_digest);
+        any = any || exercise.answer_digest != 0;
     }
-    return any ? std::optional<std::string>(std::move(keys)) : std::nullopt;
+    return any ? std::optional<std::vector<std::size_t>>(std::move(digests)) : std::nullopt;
 }
 
 // One goal's line of the feedback.
@@ -76,8 +77,8 @@ std::string gradebook_header(const std::vector<GradebookExercise>& exercises)
 
 std::vector<std::string> same_as(const std::vector<StudentWork>& students)
 {
-    std::map<std::string, std::vector<std::size_t>> by_keys;
-    std::vector<std::optional<std::string>> keys;
+    std::map<std::vector<std::size_t>, std::vector<std::size_t>> by_keys;
+    std::vector<std::optional<std::vector<std::size_t>>> keys;
     for (std::size_t index = 0; index < students.size(); ++index) {
         keys.push_back(all_answer_keys(students[index]));
         if (keys.back())
@@ -89,7 +90,7 @@ std::vector<std::string> same_as(const std::vector<StudentWork>& students)
             continue;
         for (const std::size_t other : by_keys[*keys[index]])
             if (other != index)
-                alike[index] += (alike[index].empty() ? "" : " ") + students[other].name;
+                alike[index] += (alike[index].empty() ? "" : "; ") + students[other].name;
     }
     return alike;
 }

@@ -171,7 +171,9 @@ void ReplayDriver::act(ReplayAction action, const KeyEvent& key)
 void ReplayDriver::take_tick()
 {
     if (m_session->animating()) {
-        m_work_done += m_session->key_work(); // a frame moves every point, as a key may
+        // A frame counts as a key: its points are the teacher's key frames' (fixed by the exercise),
+        // and frames come only from keys that start an animation.
+        m_work_done += m_session->key_work();
         m_session->tick();
     }
     else if (script_ready() && paced_every())

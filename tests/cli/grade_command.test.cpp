@@ -508,7 +508,7 @@ TEST_CASE("apcs grade gives a recording of more than 100,000 keys an error row, 
     const std::string goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
     // Refused at the line of its 100,001st key, read no further.
     const auto last_line = std::to_string(std::count(text.begin(), text.end(), '\n') + 99'979);
-    REQUIRE(result.err.find(too_long + ":" + last_line + ": too long: more than 100000 keys, at most 100000 are taken") !=
+    REQUIRE(result.err.find(too_long + ":" + last_line + ": too long: more than 100000 keys, at most 100000 are read") !=
             std::string::npos);
     std::string shown = "L";
     for (int key = 1; key < 100; ++key)
@@ -728,4 +728,37 @@ TEST_CASE("apcs grade --class refuses a class folder it cannot read, and --feedb
     const auto alone = test::run_apcs({"grade", "--feedback", room.path().string(), tension, tension});
     REQUIRE(alone.status == 2);
     REQUIRE(alone.out.empty());
+    // Two exercises of one file name would read the same recording of each student.
+    fs::create_directories(room / "class" / "jo");
+    const test::TempFolder other;
+    fs::copy_file(tension, other / "exercise-1-tension.keys");
+    const auto twice = test::run_apcs({"grade", "--class", (room / "class").string(), tension,
+                                       (other / "exercise-1-tension.keys").string()});
+    REQUIRE(twice.status == 2);
+    REQUIRE(twice.out.empty());
+    REQUIRE(twice.err.find("have one file name") != std::string::npos);
+    // Sheets written into the class folder would be a student at the next grade.
+    const auto within = test::run_apcs(
+        {"grade", "--class", (room / "class").string(), "--feedback", (room / "class" / "returned").string(), tension});
+    REQUIRE(within.status == 2);
+    REQUIRE(within.err.find("is inside the class folder") != std::string::npos);
+    REQUIRE_FALSE(fs::exists(room / "class" / "returned"));
+}
+
+TEST_CASE("apcs grade --class gives a student whose folder is a link to nothing error cells, and an empty class a "
+          "header",
+          "[cli][grade][issue57]")
+{
+    const std::string tension = (shipped / "exercise-1-tension.keys").string();
+    const test::TempFolder room;
+    fs::create_directories(room / "empty");
+    const auto empty = test::run_apcs({"grade", "--class", (room / "empty").string(), tension});
+    REQUIRE(empty.status == 0);
+    REQUIRE(empty.out == "student,exercise-1-tension:1,reached,of,same_as\n");
+    fs::create_directories(room / "class");
+    fs::create_directory_symlink(room / "nowhere", room / "class" / "dave");
+    const auto dangling = test::run_apcs({"grade", "--class", (room / "class").string(), tension});
+    REQUIRE(dangling.status == 1);
+    REQUIRE(dangling.out == "student,exercise-1-tension:1,reached,of,same_as\ndave,error,0,1,\n");
+    REQUIRE(dangling.err.starts_with((room / "class" / "dave").string() + ": a link to no folder"));
 }

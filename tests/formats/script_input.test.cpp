@@ -134,8 +134,8 @@ TEST_CASE("A script of more keys than the reader takes is refused at the line th
     REQUIRE(parse_captioned_key_script("6 6\n6\n", "s.keys", 3));
     const auto tokens = parse_captioned_key_script("6 6\n; a comment\n6 6\n6\n", "s.keys", 3);
     REQUIRE(!tokens);
-    REQUIRE(tokens.error().to_string() == "s.keys:3: too long: more than 3 keys, at most 3 are taken");
+    REQUIRE(tokens.error().to_string() == "s.keys:3: too long: more than 3 keys, at most 3 are read");
     const auto typed = parse_captioned_key_script("6\nTEXT way1.dat\n", "s.keys", 3);
     REQUIRE(!typed);
-    REQUIRE(typed.error().to_string() == "s.keys:2: too long: more than 3 keys, at most 3 are taken");
+    REQUIRE(typed.error().to_string() == "s.keys:2: too long: more than 3 keys, at most 3 are read");
 }

@@ -6,13 +6,13 @@ using namespace apcs;
 
 namespace {
 
-// A student's work on one exercise of one goal: its verdict and keys.
-StudentExercise handed(GradeVerdict verdict, std::string keys, std::string said = {})
+// A student's work on one exercise of one goal: its verdict and keys (as grade digests them).
+StudentExercise handed(GradeVerdict verdict, const std::string& keys, std::string said = {})
 {
     GradeRow row;
     row.reached = verdict;
     row.said = std::move(said);
-    return {false, {row}, std::move(keys), {}};
+    return {false, {row}, keys.empty() ? 0 : std::hash<std::string>{}(keys) | 1, {}};
 }
 
 const std::vector<GradebookExercise> two_exercises{{"ex-1", {"tension within +0.40 to +0.60"}},
@@ -32,10 +32,8 @@ TEST_CASE("A student's row counts the goals reached of all, missing ones include
     StudentWork work{"Smith, Ann", {handed(GradeVerdict::yes, "L"), {}}};
     work.exercises[1].missing = true;
     REQUIRE(gradebook_line(work, two_exercises, "bob") == "\"Smith, Ann\",yes,missing,missing,1,3,bob\n");
-    StudentExercise two_goals{false, {}, "6", {}};
-    two_goals.rows.resize(2);
-    two_goals.rows[0].reached = GradeVerdict::other;
-    two_goals.rows[1].reached = GradeVerdict::other;
+    StudentExercise two_goals = handed(GradeVerdict::other, "6");
+    two_goals.rows.push_back(two_goals.rows.front());
     REQUIRE(gradebook_line({"x", {handed(GradeVerdict::error, {}), two_goals}}, two_exercises, {}) ==
             "x,error,other,other,0,3,\n");
 }
@@ -53,17 +51,23 @@ TEST_CASE("same_as names the students whose keys after the GOAL lines are the sa
         {"fay", {handed(GradeVerdict::no, ""), handed(GradeVerdict::no, "")}},
         // The same keys under the other exercise are not the same work.
         {"gus", {handed(GradeVerdict::yes, "6 6"), handed(GradeVerdict::yes, "L L L 6")}},
+        // Nor are the same keys split otherwise between the exercises.
+        {"hal", {handed(GradeVerdict::yes, "L L L 6 6"), handed(GradeVerdict::yes, "6")}},
+        // A name with a space, a comma or a quote stays whole.
+        {"jo, \"j\" lee", {handed(GradeVerdict::yes, "6 6"), handed(GradeVerdict::yes, "L L L 6")}},
     };
-    REQUIRE(same_as(students) == std::vector<std::string>{"bob dee", "ann dee", "", "ann bob", "", "", ""});
+    REQUIRE(same_as(students) ==
+            std::vector<std::string>{"bob; dee", "ann; dee", "", "ann; bob", "", "", "jo, \"j\" lee", "", "gus"});
+    REQUIRE(gradebook_line(students[6], two_exercises, same_as(students)[6]) ==
+            "gus,yes,yes,missing,2,3,\"jo, \"\"j\"\" lee\"\n");
 }
 
 TEST_CASE("A student's feedback names each goal reached or not, the value shown and what was wanted",
           "[lesson][gradebook]")
 {
-    StudentExercise second{false, {}, "6", "r.keys:3: not a recording of ex-2.keys: 'L' where ex-2.keys:3 has 'ENTER'"};
-    second.rows.resize(2);
-    second.rows[0].reached = GradeVerdict::other;
-    second.rows[1].reached = GradeVerdict::other;
+    StudentExercise second = handed(GradeVerdict::other, "6");
+    second.rows.push_back(second.rows.front());
+    second.why = "r.keys:3: not a recording of ex-2.keys: 'L' where ex-2.keys:3 has 'ENTER'";
     const StudentWork work{"ann", {handed(GradeVerdict::no, "6", "tension +0.05"), second}};
     REQUIRE(feedback_text(work, two_exercises) ==
             "Feedback for ann: 0 of 3 goals reached.\n"

@@ -83,7 +83,7 @@ struct KeyScript {
 
 // parse_key_script, keeping the captions (each at most max_caption_columns wide, or FILE:LINE:
 // the problem) and the TEXT lines. A script of more than `most_keys` keys is refused at the line
-// that passes it ("too long: more than N keys, at most N are taken"), never held whole (apcs grade).
+// that passes it ("too long: more than N keys, at most N are read"), never held whole (apcs grade).
 [[nodiscard]] Expected<KeyScript> parse_captioned_key_script(
     std::string_view text, const std::string& file_name,
     std::size_t most_keys = std::numeric_limits<std::size_t>::max());

@@ -80,6 +80,10 @@ inline constexpr std::uint64_t grade_own_bytes = std::uint64_t{24} << 20;
 inline constexpr std::uint64_t replay_base_bytes = std::uint64_t{4} << 20;
 inline constexpr std::uint64_t bytes_per_replayed_key = 320;
 inline constexpr std::uint64_t replay_bytes(std::size_t keys) { return replay_base_bytes + keys * bytes_per_replayed_key; }
+// And what the exercise's inputs add to each replay, for each byte of their text: the key frames
+// read, equalised and held as the in-betweens' frames (14 frames of 24 bytes a point, for a point
+// of about 25 bytes of text), the paths and their curves.
+inline constexpr std::uint64_t bytes_per_input_byte = 32;
 
 // A CSV field as RFC 4180 writes it: in double quotes, each quote doubled, when it holds a comma,
 // a double quote, CR or LF; as it is otherwise. A field a spreadsheet would take for a formula

@@ -23,7 +23,7 @@ struct GradebookExercise {
 struct StudentExercise {
     bool missing = true;          // no recording named as the exercise in the student's folder
     std::vector<GradeRow> rows;   // one per goal of the exercise when not missing
-    std::string answer_keys;      // keys_after_goals of the recording ("" when unreadable)
+    std::size_t answer_digest = 0; // a hash of keys_after_goals of the recording; 0: no keys
     std::string why;              // for other and error: the first reason grade gave
 };
 
@@ -37,7 +37,7 @@ std::string gradebook_header(const std::vector<GradebookExercise>& exercises);
 
 // For each student, the other students whose keys after the GOAL lines are the same in every
 // exercise (and not all empty: students who did nothing are not alike), their names separated by
-// spaces in the order given; "" for none.
+// "; " in the order given; "" for none.
 std::vector<std::string> same_as(const std::vector<StudentWork>& students);
 
 // A student's row: the name, a cell per goal of each exercise (yes, no, other, error or missing),
