@@ -44,12 +44,14 @@ std::optional<std::vector<std::size_t>> all_answer_keys(const StudentWork& stude
     return any ? std::optional<std::vector<std::size_t>>(std::move(digests)) : std::nullopt;
 }
 
-// One goal's line of the feedback.
+// One goal's lines of the feedback: the verdict, then what was wanted on a line of its own, so that
+// a sheet reads in 80 columns.
 std::string goal_feedback_line(const StudentExercise& exercise, std::size_t goal, const std::string& wanted)
 {
     std::string line = "  goal " + std::to_string(goal + 1) + ": ";
+    const std::string wanted_line = "    wanted: " + wanted + "\n";
     if (exercise.missing || goal >= exercise.rows.size())
-        return line + "not handed in (wanted: " + wanted + ")\n";
+        return line + "not handed in\n" + wanted_line;
     const GradeRow& row = exercise.rows[goal];
     switch (row.reached) {
     case GradeVerdict::yes: line += "reached"; break;
@@ -61,7 +63,31 @@ std::string goal_feedback_line(const StudentExercise& exercise, std::size_t goal
         line += ", " + row.said;
     else if (row.reached == GradeVerdict::no)
         line += ", nothing done";
-    return line + " (wanted: " + wanted + ")\n";
+    return line + "\n" + wanted_line;
+}
+
+// `text` as lines of at most 79 columns where it has spaces to break at: the first after `first`,
+// the rest after `rest` (a word longer than a line stays whole: a file's path).
+std::string wrapped(const std::string& text, const std::string& first, const std::string& rest)
+{
+    constexpr std::size_t columns = 79;
+    std::string lines = first;
+    std::size_t line_start = 0;
+    std::size_t word = 0;
+    while (word < text.size()) {
+        const std::size_t end = std::min(text.find(' ', word), text.size());
+        const bool line_empty = lines.size() - line_start == (line_start == 0 ? first.size() : rest.size());
+        if (!line_empty && lines.size() - line_start + 1 + (end - word) > columns) {
+            lines += '\n';
+            line_start = lines.size();
+            lines += rest;
+        } else if (!line_empty) {
+            lines += ' ';
+        }
+        lines += text.substr(word, end - word);
+        word = end + 1;
+    }
+    return lines + '\n';
 }
 
 } // namespace
@@ -114,7 +140,7 @@ std::string feedback_text(const StudentWork& student, const std::vector<Gradeboo
         const StudentExercise& exercise = student.exercises[index];
         text += '\n' + exercises[index].name + (exercise.missing ? ": no recording handed in\n" : "\n");
         if (!exercise.why.empty())
-            text += "  " + exercise.why + '\n';
+            text += wrapped(exercise.why, "  ", "    ");
         for (std::size_t goal = 0; goal < exercises[index].goals.size(); ++goal)
             text += goal_feedback_line(exercise, goal, exercises[index].goals[goal]);
     }

@@ -62,6 +62,23 @@ TEST_CASE("same_as names the students whose keys after the GOAL lines are the sa
             "gus,yes,yes,missing,2,3,\"jo, \"\"j\"\" lee\"\n");
 }
 
+TEST_CASE("A reason too long for a line of the feedback wraps at 79 columns between words", "[lesson][gradebook]")
+{
+    StudentExercise other = handed(GradeVerdict::other, "6");
+    other.why = "class/lee/exercise-2-continuity.keys:20: not a recording of exercise-2-continuity.keys: GOAL VALUE "
+                "TENSION 0.4 0.6 where exercise-2-continuity.keys:17 has GOAL VALUE CONTINUITY -0.6 -0.4 after the "
+                "same captions";
+    const std::string text = feedback_text({"lee", {other}}, {{"ex-2", {"x"}}});
+    REQUIRE(text == "Feedback for lee: 0 of 1 goals reached.\n"
+                    "\nex-2\n"
+                    "  class/lee/exercise-2-continuity.keys:20: not a recording of\n"
+                    "    exercise-2-continuity.keys: GOAL VALUE TENSION 0.4 0.6 where\n"
+                    "    exercise-2-continuity.keys:17 has GOAL VALUE CONTINUITY -0.6 -0.4 after the\n"
+                    "    same captions\n"
+                    "  goal 1: not graded: the recording is not of this exercise\n"
+                    "    wanted: x\n");
+}
+
 TEST_CASE("A student's feedback names each goal reached or not, the value shown and what was wanted",
           "[lesson][gradebook]")
 {
@@ -72,9 +89,9 @@ TEST_CASE("A student's feedback names each goal reached or not, the value shown 
     REQUIRE(feedback_text(work, two_exercises) ==
             "Feedback for ann: 0 of 3 goals reached.\n"
             "\nex-1\n"
-            "  goal 1: not reached, tension +0.05 (wanted: tension within +0.40 to +0.60)\n"
+            "  goal 1: not reached, tension +0.05\n    wanted: tension within +0.40 to +0.60\n"
             "\nex-2\n"
             "  r.keys:3: not a recording of ex-2.keys: 'L' where ex-2.keys:3 has 'ENTER'\n"
-            "  goal 1: not graded: the recording is not of this exercise (wanted: bias within +0.20 to +0.40)\n"
-            "  goal 2: not graded: the recording is not of this exercise (wanted: the curve within 0.10)\n");
+            "  goal 1: not graded: the recording is not of this exercise\n    wanted: bias within +0.20 to +0.40\n"
+            "  goal 2: not graded: the recording is not of this exercise\n    wanted: the curve within 0.10\n");
 }
