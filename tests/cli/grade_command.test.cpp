@@ -93,6 +93,52 @@ private:
     std::optional<std::string> m_old;
 };
 
+// The exercise's text with `answer` after it: a recording whose keys after the GOAL line are `answer`.
+std::string recording_of(const std::string& exercise, const std::string& answer)
+{
+    return test::read_all(exercise) + answer;
+}
+
+// `count` staff keys that end where they began (6 then 4), one a line.
+std::string staff_keys(int count)
+{
+    std::string keys;
+    for (int key = 0; key < count; ++key)
+        keys += key % 2 == 0 ? "6\n" : "4\n";
+    return keys;
+}
+
+// Exercise 1 as shipped in a folder of its own, its answer, and a folder for what students hand in.
+struct TensionExercise {
+    test::TempFolder folder;
+    std::string exercise;
+    std::string right;
+    test::TempFolder handed_in;
+    std::string goal;
+    TensionExercise()
+    {
+        copy_shipped_exercises(folder);
+        exercise = exercise_of(folder, 1, "tension");
+        right = answer_of(folder, 1, "tension");
+        goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
+    }
+    // A recording handed in as `name`, the exercise with `answer` after it.
+    std::string hand_in(const std::string& name, const std::string& answer) const
+    {
+        return handed_in.write(name, recording_of(exercise, answer)).string();
+    }
+};
+
+// A run of run_grade_command as the command line would make it, with `request` as given.
+test::CommandRun grade_request(const GradeRequest& request, const CommonOptions& options = {})
+{
+    std::ostringstream out;
+    std::ostringstream err;
+    const ExitStatus status = run_grade_command(request, options, out, err);
+    return {static_cast<int>(status), out.str(), err.str()};
+}
+
+
 } // namespace
 
 TEST_CASE("apcs grade under a TMPDIR that is no folder names it", "[cli][grade]")
@@ -429,11 +475,10 @@ TEST_CASE("apcs grade needs an exercise and at least one recording and its help 
 TEST_CASE("apcs grade says other for an answer moved above the GOAL line or into the preamble, and names the line",
           "[cli][grade][issue57]")
 {
-    const test::TempFolder folder;
-    copy_shipped_exercises(folder);
-    const std::string exercise = exercise_of(folder, 1, "tension");
+    const TensionExercise one;
+    const std::string& exercise = one.exercise;
     const std::string text = test::read_all(exercise);
-    const test::TempFolder handed_in;
+    const test::TempFolder& handed_in = one.handed_in;
     // sed 's/^8$/8 L L L/' exercise-1-tension.keys: the answer before the GOAL line.
     std::string above = text;
     above.replace(above.find("\n8\n"), 3, "\n8 L L L\n");
@@ -462,11 +507,10 @@ TEST_CASE("apcs grade takes the keys after the closing caption as the answer, a 
           "and a blank recording as nothing done",
           "[cli][grade][issue57]")
 {
-    const test::TempFolder folder;
-    copy_shipped_exercises(folder);
-    const std::string exercise = exercise_of(folder, 1, "tension");
+    const TensionExercise one;
+    const std::string& exercise = one.exercise;
     const std::string text = test::read_all(exercise);
-    const test::TempFolder handed_in;
+    const test::TempFolder& handed_in = one.handed_in;
     // As --record writes it once the replay moved on: the student's keys after the closing caption.
     const std::string after = handed_in.write("after.keys", text + "L\nL\nL\n6\n").string();
     std::string tabbed = "\xEF\xBB\xBF" + text + "L\tL L\t6\n";
@@ -486,11 +530,10 @@ TEST_CASE("apcs grade gives a recording of more than 100,000 keys an error row, 
           "keys at 200 characters",
           "[cli][grade][issue57]")
 {
-    const test::TempFolder folder;
-    copy_shipped_exercises(folder);
-    const std::string exercise = exercise_of(folder, 1, "tension");
+    const TensionExercise one;
+    const std::string& exercise = one.exercise;
     const std::string text = test::read_all(exercise);
-    const test::TempFolder handed_in;
+    const test::TempFolder& handed_in = one.handed_in;
     // The exercise's 22 keys and 99,979 more: 100,001.
     std::string many = text;
     for (int key = 0; key < 99'979; ++key)
@@ -517,54 +560,6 @@ TEST_CASE("apcs grade gives a recording of more than 100,000 keys an error row, 
                               " \u2026 (152 keys),\n");
 }
 
-namespace {
-
-// The exercise's text with `answer` after it: a recording whose keys after the GOAL line are `answer`.
-std::string recording_of(const std::string& exercise, const std::string& answer)
-{
-    return test::read_all(exercise) + answer;
-}
-
-// `count` staff keys that end where they began (6 then 4), one a line.
-std::string staff_keys(int count)
-{
-    std::string keys;
-    for (int key = 0; key < count; ++key)
-        keys += key % 2 == 0 ? "6\n" : "4\n";
-    return keys;
-}
-
-// Exercise 1 as shipped in a folder of its own, its answer, and a folder for what students hand in.
-struct TensionExercise {
-    test::TempFolder folder;
-    std::string exercise;
-    std::string right;
-    test::TempFolder handed_in;
-    std::string goal;
-    TensionExercise()
-    {
-        copy_shipped_exercises(folder);
-        exercise = exercise_of(folder, 1, "tension");
-        right = answer_of(folder, 1, "tension");
-        goal = "," + exercise + ",GOAL VALUE TENSION 0.4 0.6,";
-    }
-    // A recording handed in as `name`, the exercise with `answer` after it.
-    std::string hand_in(const std::string& name, const std::string& answer) const
-    {
-        return handed_in.write(name, recording_of(exercise, answer)).string();
-    }
-};
-
-// A run of run_grade_command as the command line would make it, with `request` as given.
-test::CommandRun grade_request(const GradeRequest& request, const CommonOptions& options = {})
-{
-    std::ostringstream out;
-    std::ostringstream err;
-    const ExitStatus status = run_grade_command(request, options, out, err);
-    return {static_cast<int>(status), out.str(), err.str()};
-}
-
-} // namespace
 
 TEST_CASE("A replay's work is one operation a key and one more for each control point of the largest path",
           "[cli][grade][issue57]")
