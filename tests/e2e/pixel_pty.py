@@ -62,12 +62,16 @@ attributes = {"sixel": b"\x1b[?63;1;2;4;6;9;15;22c", "silent": None, "nopixel": 
               "nocell": b"\x1b[?63;1;2;4;6;9;15;22c"}[mode]
 
 
-def read_until_quiet(quiet=0.4, limit=20.0):
-    """What the session writes until it has been quiet `quiet` seconds, answering its questions."""
+def read_until_quiet(quiet=0.4, limit=20.0, until=b""):
+    """What the session writes until it has written something containing `until` and then been
+    quiet `quiet` seconds, answering its questions. A loaded machine (CI builds beside the tests)
+    can hold the session back longer than `quiet` before its first byte or between two screens of
+    one replay, so the wait for those is `limit`, not `quiet`."""
     got = b""
     end = time.monotonic() + limit
     while time.monotonic() < end:
-        ready, _, _ = select.select([master], [], [], quiet)
+        answered = got and until in got
+        ready, _, _ = select.select([master], [], [], quiet if answered else max(0.0, end - time.monotonic()))
         if not ready:
             return got
         try:
@@ -99,7 +103,7 @@ def fail(reason):
     sys.exit(1)
 
 
-first = read_until_quiet()
+first = read_until_quiet(until=b"TENSION")
 first_ms = round((time.monotonic() - started) * 1000)
 print(f"first-screen {len(first)} {picture_bytes(first)} {first_ms}")
 # Each picture of the first screens: the whole one, then the bands of the replay's last keys.
