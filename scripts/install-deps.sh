@@ -18,9 +18,10 @@ build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev lib
 # decodes the sixel files), xvfb, xterm, kitty, x11-apps and xfonts-base (terminal_shows_picture.sh shows
 # the sixel file in xterm -ti vt340 -fn 9x15 and the kitty file in kitty on a virtual X server, and takes
 # a screenshot with xwd), locales (localedef and its sources: locale_numbers.sh makes a German locale),
-# and chromium and poppler-utils (handout_print.sh prints a handout's index.html to PDF and counts its pictures).
+# chromium and poppler-utils (handout_print.sh prints a handout's index.html to PDF and counts its pictures),
+# and synfig (sif_renders.sh renders `apcs export --sif` documents with Synfig's own renderer).
 testing=(catch2 tmux procps groff-base python3 bsdutils mount librsvg2-bin imagemagick xvfb xterm kitty x11-apps
-         xfonts-base locales chromium poppler-utils)
+         xfonts-base locales chromium poppler-utils synfig)
 case "${1:-}" in
   --run) testing=(); shift ;;
   --packaging) testing+=(debhelper dpkg-dev fakeroot bash-completion lintian man-db); shift ;;

@@ -326,6 +326,7 @@ struct ParsedLine {
     PlayRequest play;
     GradeRequest grade;
     GradeClassRequest grade_class;
+    ExportRequest export_request;
 
     // The files the run reads: only the chosen command's are given, the others stay empty.
     std::vector<std::filesystem::path> inputs() const
@@ -333,6 +334,7 @@ struct ParsedLine {
         std::vector<std::filesystem::path> files = key_files;
         files.insert(files.end(), fit_files.begin(), fit_files.end());
         files.insert(files.end(), draw_files.begin(), draw_files.end());
+        files.insert(files.end(), export_request.files.begin(), export_request.files.end());
         files.push_back(path_file);
         files.push_back(play.scene);
         return files;
@@ -363,7 +365,7 @@ struct Subcommand {
 // Where most commands' --help examples run: the files they name are that example's.
 constexpr const char* n_to_l_copy = "a copy of data/n-to-l";
 
-constexpr std::array<Subcommand, 7> subcommands{{
+constexpr std::array<Subcommand, 8> subcommands{{
     {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
      "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
      "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png\n"
@@ -406,6 +408,26 @@ constexpr std::array<Subcommand, 7> subcommands{{
      [](ParsedLine& line, const RunPlace& place) {
          const std::vector<std::filesystem::path>& files = line.fit_files;
          return to_int(run_fit_command({files[0], files[1], files[2], files[3]}, line.options, place.out, place.err));
+     }},
+    {"export", "a path or a whole animation as a Synfig document (.sif), its TCB waypoints or APCS's frames",
+     "one path file FILE.dat, or four files KEY1 KEY2 PATH_FIRST PATH_LAST",
+     "  apcs export way1.dat --sif way1.sif\n"
+     "  apcs export way1.dat --sif way1-frames.sif --sif-motion frames\n"
+     "  apcs export key1.dat key2.dat way1.dat way4.dat --sif n-to-l.sif",
+     n_to_l_copy,
+     [](CLI::App& command, ParsedLine& line) {
+         command.add_option("FILES", line.export_request.files, "FILE.dat, or KEY1 KEY2 PATH_FIRST PATH_LAST (.dat)")
+             ->required()
+             ->type_name("");
+         add_export_command_options(command, line.options, line.slopes, line.export_request);
+     },
+     [](ParsedLine& line, const RunPlace& place) {
+         const std::size_t count = line.export_request.files.size();
+         if (count != 1 && count != 4)
+             return usage_error("apcs export takes one path file, or four files KEY1 KEY2 PATH_FIRST PATH_LAST; " +
+                                    std::to_string(count) + " given",
+                                &place.command, place.err);
+         return to_int(run_export_command(line.export_request, line.options, place.out, place.err));
      }},
     {"draw", "draw key frames and in-between files overlaid as a picture", "one or more .dat files",
      "  apcs draw key1.dat key2.dat --png keys.png",

@@ -16,6 +16,8 @@
 #include <optional>
 #include <string>
 #include <ostream>
+#include <utility>
+#include <variant>
 
 namespace apcs {
 
@@ -28,10 +30,10 @@ bool all_frames_needed(const CommonOptions& options) { return options.print || p
 // keys, and both edge paths while it fits.
 std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, const ControlPoints& first,
                                                     const ControlPoints& last, const CommonOptions& options,
-                                                    std::ostream& err)
+                                                    bool all_frames, std::ostream& err)
 {
     const std::size_t frames_held =
-        all_frames_needed(options) ? static_cast<std::size_t>(options.path.inbetween_count) + 2 : 2;
+        all_frames ? static_cast<std::size_t>(options.path.inbetween_count) + 2 : 2;
     const memory::FramesRequest frames{frames_held, keys.key1.point_count(), options.print};
     const auto path = [&options](const ControlPoints& points) {
         return memory::path_bytes({points.size(), options.path.samples_per_segment, options.path.inbetween_count, false});
@@ -39,7 +41,7 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
     const std::uint64_t needed = memory::saturating_sum(memory::frames_bytes(frames),
                                                         memory::saturating_sum(path(first), path(last)));
     const std::string inbetweens = "(--inbetweens " + std::to_string(options.path.inbetween_count) + ")";
-    const std::string asked = all_frames_needed(options)
+    const std::string asked = all_frames
                                   ? memory::describe(frames) + " " + inbetweens + " and their paths"
                                   : "the key frames (" + memory::describe(frames) +
                                         "), the in-betweens made one at a time " + inbetweens + ", and their paths";
@@ -47,9 +49,22 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
                               err);
 }
 
+// Both edge paths evaluated, with the "frames will freeze" warning of each that is used.
+std::pair<EvaluatedPath, EvaluatedPath> evaluate_both_paths(const FitInputs& inputs, const FitFiles& files,
+                                                            std::ostream& err)
+{
+    EvaluatedPath first_path = evaluate_path(inputs.first, inputs.first_settings);
+    EvaluatedPath last_path = evaluate_path(inputs.last, inputs.last_settings);
+    warn_if_frames_freeze(first_path, files.path_first.string(), err);
+    if (!inputs.keys.key1.is_closed())
+        warn_if_frames_freeze(last_path, files.path_last.string(), err);
+    return {std::move(first_path), std::move(last_path)};
+}
+
 } // namespace
 
-ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
+std::variant<FitInputs, ExitStatus> read_fit_inputs(const FitFiles& files, const CommonOptions& options,
+                                                    std::ostream& err)
 {
     // The keys are read side by side, one per core: for large keys reading is much of the work.
     std::future<Expected<Graphic>> reading_key2 = std::async(std::launch::async, read_key_frame, files.key2);
@@ -59,46 +74,68 @@ ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, 
         return report_bad_input(key1.error(), err);
     if (!key2)
         return report_bad_input(key2.error(), err);
-    const EqualisedKeys keys = equalise_key_frames(std::move(*key1), std::move(*key2));
+    EqualisedKeys keys = equalise_key_frames(std::move(*key1), std::move(*key2));
 
-    const Expected<DatFile> first_file = read_dat_file(files.path_first);
+    Expected<DatFile> first_file = read_dat_file(files.path_first);
     if (!first_file)
         return report_bad_input(first_file.error(), err);
-    const Expected<ControlPoints> first =
+    Expected<ControlPoints> first =
         point_path_from(*first_file, files.path_first.string(), PathEnd::first, keys, options.staff);
     if (!first)
         return report_bad_input(first.error(), err);
-    const Expected<DatFile> last_file = read_dat_file(files.path_last);
+    Expected<DatFile> last_file = read_dat_file(files.path_last);
     if (!last_file)
         return report_bad_input(last_file.error(), err);
     // A closed graphic needs one path only: the second is read but not used.
-    const Expected<ControlPoints> last =
+    Expected<ControlPoints> last =
         keys.key1.is_closed()
             ? Expected<ControlPoints>(control_points_from(*last_file, options.staff))
             : point_path_from(*last_file, files.path_last.string(), PathEnd::last, keys, options.staff);
     if (!last)
         return report_bad_input(last.error(), err);
+    return FitInputs{std::move(keys), std::move(*first), std::move(*last), settings_of_path(*first_file, options),
+                     settings_of_path(*last_file, options)};
+}
 
-    if (const auto refused = refuse_over_budget_of_fit(keys, *first, *last, options, err))
+std::variant<FittedAnimation, ExitStatus> fit_all_frames(const FitFiles& files, const CommonOptions& options,
+                                                         std::ostream& err)
+{
+    std::variant<FitInputs, ExitStatus> read = read_fit_inputs(files, options, err);
+    if (const ExitStatus* failed = std::get_if<ExitStatus>(&read))
+        return *failed;
+    FitInputs& inputs = std::get<FitInputs>(read);
+    if (const auto refused = refuse_over_budget_of_fit(inputs.keys, inputs.first, inputs.last, options, true, err))
         return *refused;
-    const EvaluatedPath first_path = evaluate_path(*first, settings_of_path(*first_file, options));
-    const EvaluatedPath last_path = evaluate_path(*last, settings_of_path(*last_file, options));
-    warn_if_frames_freeze(first_path, files.path_first.string(), err);
-    if (!keys.key1.is_closed())
-        warn_if_frames_freeze(last_path, files.path_last.string(), err);
+    const auto [first_path, last_path] = evaluate_both_paths(inputs, files, err);
+    FrameSequence frames = fit_key_frames(inputs.keys, first_path, last_path, options.surface);
+    return FittedAnimation{std::move(inputs.keys), std::move(frames)};
+}
+
+ExitStatus run_fit_command(const FitFiles& files, const CommonOptions& options, std::ostream& out, std::ostream& err)
+{
     const std::array<std::filesystem::path, 2> key_files{files.key1, files.key2};
-    if (!all_frames_needed(options)) {
-        // Each in-between is made, formatted and written a chunk at a time, a file per core.
-        std::array<std::vector<Vec3>, 2> storage;
-        const SurfaceFitter fitter = key_frames_fitter(keys, first_path, last_path, storage, options.surface);
-        return deliver_inbetween_files(
-            [&](const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress) {
-                return write_inbetween_files(fitter, keys.key1, folder, guard, progress);
-            },
-            options, key_files, err);
+    if (all_frames_needed(options)) {
+        std::variant<FittedAnimation, ExitStatus> fitted = fit_all_frames(files, options, err);
+        if (const ExitStatus* failed = std::get_if<ExitStatus>(&fitted))
+            return *failed;
+        const FittedAnimation& animation = std::get<FittedAnimation>(fitted);
+        return deliver_frames(animation.frames, animation.keys.key1, options, key_files, out, err);
     }
-    const FrameSequence frames = fit_key_frames(keys, first_path, last_path, options.surface);
-    return deliver_frames(frames, keys.key1, options, key_files, out, err);
+    std::variant<FitInputs, ExitStatus> read = read_fit_inputs(files, options, err);
+    if (const ExitStatus* failed = std::get_if<ExitStatus>(&read))
+        return *failed;
+    const FitInputs& inputs = std::get<FitInputs>(read);
+    if (const auto refused = refuse_over_budget_of_fit(inputs.keys, inputs.first, inputs.last, options, false, err))
+        return *refused;
+    const auto [first_path, last_path] = evaluate_both_paths(inputs, files, err);
+    // Each in-between is made, formatted and written a chunk at a time, a file per core.
+    std::array<std::vector<Vec3>, 2> storage;
+    const SurfaceFitter fitter = key_frames_fitter(inputs.keys, first_path, last_path, storage, options.surface);
+    return deliver_inbetween_files(
+        [&](const std::filesystem::path& folder, const KeyFileGuard& guard, const WriteProgress& progress) {
+            return write_inbetween_files(fitter, inputs.keys.key1, folder, guard, progress);
+        },
+        options, key_files, err);
 }
 
 } // namespace apcs

@@ -405,6 +405,40 @@ void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vec
     add_out(command, options, "the in-between files");
 }
 
+void add_export_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes,
+                                ExportRequest& request)
+{
+    command.add_option("--sif", request.sif, "the Synfig document to write (.sif); - for standard output")
+        ->required()
+        ->check(a_name)
+        ->type_name("OUT.sif");
+    const std::vector<std::string> motions{"tcb", "frames"};
+    command
+        .add_option_function<std::string>(
+            "--sif-motion",
+            [&request](const std::string& name) { request.motion = name == "frames" ? SifMotion::frames : SifMotion::tcb; },
+            "one path: the circle moves through TCB waypoints at the control points (default), or through "
+            "APCS's own frames, one linear waypoint a frame (acceleration and end slopes kept)")
+        ->check(one_of(motions))
+        ->type_name(alternatives(motions));
+    command
+        .add_option("--frames-per-span", request.timing.frames_per_span,
+                    "one path, tcb: Synfig frames from a control point's waypoint to the next, " +
+                        whole_range_text(limits::sif_frames_per_span) + ", default 12")
+        ->check(whole_number_in(limits::sif_frames_per_span))
+        ->type_name("K");
+    command
+        .add_option("--fps", request.timing.fps,
+                    "the document's frames per second, " + range_text(limits::sif_fps) + ", default 24")
+        ->check(number_in(limits::sif_fps))
+        ->type_name("F");
+    add_staff(command, options);
+    add_curve(command, options, slopes);
+    add_surface(command, options);
+    add_inbetween_count(command, options);
+    add_view(command, options);
+}
+
 void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings)
 {
     add_inbetween_count(command, options);

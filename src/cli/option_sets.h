@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/cli/export_command.h"
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 
@@ -30,6 +31,8 @@ void add_carried_options(CLI::App& app, CommonOptions& options, std::vector<doub
 void add_path_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
 void add_fit_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);
 void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings);
+void add_export_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes,
+                                ExportRequest& request);
 void add_draw_command_options(CLI::App& command, CommonOptions& options);
 void add_play_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes, bool& tree);
 void add_figures_command_options(CLI::App& command, CommonOptions& options, std::vector<double>& slopes);

@@ -1,0 +1,111 @@
+#include "apcs/cli/export_command.h"
+
+#include "apcs/animation/memory_budget.h"
+#include "apcs/cli/fit_command.h"
+#include "apcs/cli/memory_limit.h"
+#include "apcs/cli/path_command.h"
+#include "apcs/cli/report.h"
+#include "apcs/formats/file_io.h"
+#include "apcs/formats/path_files.h"
+
+#include <algorithm>
+#include <ostream>
+#include <string>
+#include <variant>
+
+namespace apcs {
+
+ViewAngles export_view(const CommonOptions& options, bool all_z_zero)
+{
+    if (options.given.theta || options.given.phi || !all_z_zero)
+        return options.view;
+    for (const ViewPreset& preset : view_presets)
+        if (std::string_view(preset.name) == "top")
+            return preset.angles;
+    return options.view;
+}
+
+namespace {
+
+bool z_all_zero(std::span<const Vec3> points)
+{
+    return std::ranges::all_of(points, [](const Vec3& point) { return point.z == 0.0; });
+}
+
+ExitStatus write_document(const std::string& document, const ExportRequest& request, const CommonOptions& options,
+                          std::ostream& out, std::ostream& err)
+{
+    if (Expected<void> written = write_picture_bytes(request.sif, document, read_files_guard(options), out); !written)
+        return report_bad_input(written.error(), err);
+    return ExitStatus::success;
+}
+
+// The frames a --sif-motion frames document moves through: KEY1, the in-betweens, KEY2.
+std::vector<Vec3> path_frames(const ControlPoints& points, const EvaluatedPath& path)
+{
+    std::vector<Vec3> frames{points.front().position};
+    for (const Inbetween& inbetween : path.inbetweens)
+        frames.push_back(inbetween.position);
+    frames.push_back(points.back().position);
+    return frames;
+}
+
+ExitStatus export_path(const ExportRequest& request, const CommonOptions& options, std::ostream& out,
+                       std::ostream& err)
+{
+    const std::filesystem::path& file = request.files.front();
+    const Expected<DatFile> dat = read_dat_file(file);
+    if (!dat)
+        return report_bad_input(dat.error(), err);
+    const ControlPoints points = control_points_from(*dat, options.staff);
+    const bool frames = request.motion == SifMotion::frames;
+    const memory::PathRequest budget{points.size(), options.path.samples_per_segment,
+                                     frames ? options.path.inbetween_count : 0, false};
+    if (const auto refused = refuse_over_budget(memory::describe(budget), memory::path_bytes(budget), options,
+                                                "lower --samples or --inbetweens", err))
+        return *refused;
+    const PathSettings settings = settings_of_path(*dat, options);
+    std::vector<Vec3> frame_positions;
+    if (frames) {
+        const EvaluatedPath path = evaluate_path(points, settings);
+        warn_if_frames_freeze(path, file.string(), err);
+        frame_positions = path_frames(points, path);
+    }
+    std::vector<Vec3> positions(points.size());
+    std::ranges::transform(points, positions.begin(), [](const ControlPoint& point) { return point.position; });
+    const SifPathRequest document{points,  settings.slopes, export_view(options, z_all_zero(positions)),
+                                  request.timing, request.motion, frame_positions, file.filename().string()};
+    if (!frames)
+        for (const std::string& sentence : sif_left_out(points, settings.slopes))
+            err << "apcs: " << file.string() << ": not carried to Synfig: " << sentence
+                << " (--sif-motion frames keeps it)\n";
+    return write_document(sif_path_document(document), request, options, out, err);
+}
+
+ExitStatus export_animation(const ExportRequest& request, const CommonOptions& options, std::ostream& out,
+                            std::ostream& err)
+{
+    const FitFiles files{request.files[0], request.files[1], request.files[2], request.files[3]};
+    std::variant<FittedAnimation, ExitStatus> fitted = fit_all_frames(files, options, err);
+    if (const ExitStatus* failed = std::get_if<ExitStatus>(&fitted))
+        return *failed;
+    const FittedAnimation& animation = std::get<FittedAnimation>(fitted);
+    bool flat = true;
+    for (std::size_t f = 0; f < animation.frames.frame_count() && flat; ++f)
+        flat = z_all_zero(animation.frames.frame(f));
+    const SifAnimationRequest document{animation.keys.key1, animation.frames, export_view(options, flat),
+                                       request.timing.fps, files.key1.filename().string() + " to " +
+                                                               files.key2.filename().string()};
+    return write_document(sif_animation_document(document), request, options, out, err);
+}
+
+} // namespace
+
+ExitStatus run_export_command(const ExportRequest& request, const CommonOptions& options, std::ostream& out,
+                              std::ostream& err)
+{
+    return request.files.size() == 1 ? export_path(request, options, out, err)
+                                     : export_animation(request, options, out, err);
+}
+
+} // namespace apcs

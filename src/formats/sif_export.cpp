@@ -1,0 +1,399 @@
+#include "apcs/formats/sif_export.h"
+
+#include "apcs/animation/kochanek_bartels.h"
+#include "apcs/animation/motion_path.h"
+#include "apcs/formats/number_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace apcs {
+
+ParallelView::ParallelView(ViewAngles angles)
+{
+    constexpr double radians_per_degree = std::numbers::pi / 180.0;
+    m_sin_theta = std::sin(angles.theta_degrees * radians_per_degree);
+    m_cos_theta = std::cos(angles.theta_degrees * radians_per_degree);
+    m_sin_phi = std::sin(angles.phi_degrees * radians_per_degree);
+    m_cos_phi = std::cos(angles.phi_degrees * radians_per_degree);
+}
+
+PlanePoint ParallelView::operator()(const Vec3& world) const
+{
+    return {-world.x * m_sin_theta + world.y * m_cos_theta,
+            -world.x * m_cos_theta * m_cos_phi - world.y * m_sin_theta * m_cos_phi + world.z * m_sin_phi};
+}
+
+std::vector<std::string> sif_left_out(std::span<const ControlPoint> points, EndSlopes slopes)
+{
+    std::vector<std::string> left_out;
+    if (slopes.start != 1.0 || slopes.end != 1.0)
+        left_out.push_back("the end slopes " + shortest_number(slopes.start) + " " + shortest_number(slopes.end) +
+                           ": Synfig's TCB leaves the first waypoint along P1 - P0 and reaches the last along "
+                           "Pn - Pn-1 (slopes 1 1)");
+    for (const AccelerationSpan& span : acceleration_spans(points))
+        if (span.acceleration != 0.0 && span.first_point != span.last_point)
+            left_out.push_back("the acceleration " + shortest_number(span.acceleration) + " of the span from control point " +
+                               std::to_string(span.first_point + 1) + " to " + std::to_string(span.last_point + 1) +
+                               ": Synfig moves between waypoints at the spline's own pace");
+    return left_out;
+}
+
+namespace {
+
+// The part of the view plane a document shows: its points' extent, a tenth more on every side.
+struct PlaneBox {
+    double left = 0.0;
+    double right = 0.0;
+    double bottom = 0.0;
+    double top = 0.0;
+    bool empty = true;
+
+    void add(PlanePoint point)
+    {
+        if (empty) {
+            left = right = point.x;
+            bottom = top = point.y;
+            empty = false;
+            return;
+        }
+        left = std::min(left, point.x);
+        right = std::max(right, point.x);
+        bottom = std::min(bottom, point.y);
+        top = std::max(top, point.y);
+    }
+    // The larger side; 1 for a box of no size, so that a path of one point still has a canvas.
+    double size() const
+    {
+        const double larger = std::max(right - left, top - bottom);
+        return larger > 0.0 ? larger : 1.0;
+    }
+};
+
+constexpr int longer_side_pixels = 480;
+constexpr int shorter_side_least_pixels = 120;
+
+void append_number(std::string& text, double value) { append_shortest(text, value); }
+
+void append_escaped(std::string& text, std::string_view raw)
+{
+    for (const char c : raw) {
+        switch (c) {
+        case '&': text += "&amp;"; break;
+        case '<': text += "&lt;"; break;
+        case '>': text += "&gt;"; break;
+        case '"': text += "&quot;"; break;
+        default: text += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+        }
+    }
+}
+
+void append_vector(std::string& text, PlanePoint point)
+{
+    text += "<vector><x>";
+    append_number(text, point.x);
+    text += "</x><y>";
+    append_number(text, point.y);
+    text += "</y></vector>";
+}
+
+void append_frame_time(std::string& text, long long frame)
+{
+    text += std::to_string(frame);
+    text += 'f';
+}
+
+void append_real_param(std::string& text, std::string_view name, double value)
+{
+    text += "    <param name=\"";
+    text += name;
+    text += "\"><real value=\"";
+    append_number(text, value);
+    text += "\"/></param>\n";
+}
+
+void append_colour_param(std::string& text, double red, double green, double blue)
+{
+    text += "    <param name=\"color\"><color><r>";
+    append_number(text, red);
+    text += "</r><g>";
+    append_number(text, green);
+    text += "</g><b>";
+    append_number(text, blue);
+    text += "</b><a>1</a></color></param>\n";
+}
+
+// The canvas element's opening: the box and its margin, the longer side 480 pixels.
+void append_canvas_start(std::string& text, const PlaneBox& shown, double fps, long long end_frame,
+                         std::string_view name)
+{
+    const double margin = shown.size() / 10.0;
+    const double width = (shown.right - shown.left) + 2.0 * margin;
+    const double height = (shown.top - shown.bottom) + 2.0 * margin;
+    const double units_per_pixel = std::max(width, height) / longer_side_pixels;
+    // A thin path's canvas is widened around it, never stretched: a unit is as many pixels both ways.
+    const auto pixels = [units_per_pixel](double extent) {
+        return std::max(shorter_side_least_pixels, static_cast<int>(std::lround(extent / units_per_pixel)));
+    };
+    const int width_pixels = pixels(width);
+    const int height_pixels = pixels(height);
+    const double middle_x = (shown.left + shown.right) / 2.0;
+    const double middle_y = (shown.bottom + shown.top) / 2.0;
+    text += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<canvas version=\"1.2\" width=\"" +
+            std::to_string(width_pixels) + "\" height=\"" + std::to_string(height_pixels) +
+            "\" xres=\"2834.645669\" yres=\"2834.645669\" gamma-r=\"1\" gamma-g=\"1\" gamma-b=\"1\" view-box=\"";
+    append_number(text, middle_x - units_per_pixel * width_pixels / 2.0);
+    text += ' ';
+    append_number(text, middle_y + units_per_pixel * height_pixels / 2.0);
+    text += ' ';
+    append_number(text, middle_x + units_per_pixel * width_pixels / 2.0);
+    text += ' ';
+    append_number(text, middle_y - units_per_pixel * height_pixels / 2.0);
+    text += "\" antialias=\"1\" fps=\"";
+    append_number(text, fps);
+    text += "\" begin-time=\"0f\" end-time=\"";
+    append_frame_time(text, end_frame);
+    text += "\" bgcolor=\"1 1 1 1\">\n  <name>";
+    append_escaped(text, name);
+    text += "</name>\n";
+}
+
+void append_layer_start(std::string& text, std::string_view type, std::string_view description)
+{
+    text += "  <layer type=\"";
+    text += type;
+    text += "\" active=\"true\" exclude_from_rendering=\"false\" version=\"0.2\" desc=\"";
+    append_escaped(text, description);
+    text += "\">\n";
+    append_real_param(text, "z_depth", 0.0);
+    append_real_param(text, "amount", 1.0);
+    text += "    <param name=\"blend_method\"><integer value=\"0\"/></param>\n";
+}
+
+// A vertex of an outline: its point (a vector or an animated one, already written), and its
+// tangents in (t1, arriving) and out (t2, leaving), which Synfig takes as Hermite tangents.
+void append_bline_vertex(std::string& text, std::string_view point, PlanePoint arriving, PlanePoint leaving)
+{
+    text += "      <entry><composite type=\"bline_point\"><point>";
+    text += point;
+    text += "</point><width><real value=\"1\"/></width><origin><real value=\"0.5\"/></origin>"
+            "<split><bool value=\"true\"/></split><t1>";
+    append_vector(text, arriving);
+    text += "</t1><t2>";
+    append_vector(text, leaving);
+    text += "</t2><split_radius><bool value=\"true\"/></split_radius>"
+            "<split_angle><bool value=\"true\"/></split_angle></composite></entry>\n";
+}
+
+void append_outline_end(std::string& text, double width, double grey)
+{
+    text += "    </bline></param>\n";
+    append_real_param(text, "width", width);
+    append_real_param(text, "expand", 0.0);
+    append_colour_param(text, grey, grey, grey);
+    text += "    <param name=\"origin\"><vector><x>0</x><y>0</y></vector></param>\n"
+            "    <param name=\"invert\"><bool value=\"false\"/></param>\n"
+            "    <param name=\"antialias\"><bool value=\"true\"/></param>\n"
+            "    <param name=\"feather\"><real value=\"0\"/></param>\n"
+            "    <param name=\"sharp_cusps\"><bool value=\"true\"/></param>\n"
+            "    <param name=\"round_tip[0]\"><bool value=\"true\"/></param>\n"
+            "    <param name=\"round_tip[1]\"><bool value=\"true\"/></param>\n"
+            "    <param name=\"homogeneous\"><bool value=\"false\"/></param>\n"
+            "  </layer>\n";
+}
+
+void append_outline_start(std::string& text, std::string_view description, bool loop)
+{
+    append_layer_start(text, "outline", description);
+    text += "    <param name=\"bline\"><bline type=\"bline_point\" loop=\"";
+    text += loop ? "true" : "false";
+    text += "\">\n";
+}
+
+PlanePoint projected_tangent(const ParallelView& view, const Vec3& tangent)
+{
+    // The projection is linear (no translation), so a tangent projects as a point does.
+    return view(tangent);
+}
+
+// The path's curve, exactly: one vertex per control point, the KB tangents as its Hermite tangents.
+void append_path_outline(std::string& text, const SifPathRequest& request, const ParallelView& view, double width)
+{
+    append_outline_start(text, "the path", false);
+    const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
+    for (std::size_t k = 0; k < request.points.size(); ++k) {
+        const PointTangents tangents = tangents_at(segments, k);
+        std::string point;
+        append_vector(point, view(request.points[k].position));
+        const PlanePoint arriving = tangents.incoming ? projected_tangent(view, *tangents.incoming) : PlanePoint{};
+        const PlanePoint leaving = tangents.outgoing ? projected_tangent(view, *tangents.outgoing) : arriving;
+        append_bline_vertex(text, point, tangents.incoming ? arriving : leaving, leaving);
+    }
+    append_outline_end(text, width, 0.6);
+}
+
+void append_circle(std::string& text, std::string_view description, double radius, std::string_view origin,
+                   double red, double grey)
+{
+    append_layer_start(text, "circle", description);
+    append_colour_param(text, red, grey, grey);
+    append_real_param(text, "radius", radius);
+    append_real_param(text, "feather", 0.0);
+    text += "    <param name=\"origin\">";
+    text += origin;
+    text += "</param>\n    <param name=\"invert\"><bool value=\"false\"/></param>\n  </layer>\n";
+}
+
+void append_control_point_marks(std::string& text, const SifPathRequest& request, const ParallelView& view,
+                                double radius)
+{
+    if (request.points.size() > most_marked_control_points) {
+        text += "  <!-- The control points are not marked: there are more than " +
+                std::to_string(most_marked_control_points) + " of them. -->\n";
+        return;
+    }
+    for (std::size_t k = 0; k < request.points.size(); ++k) {
+        std::string origin;
+        append_vector(origin, view(request.points[k].position));
+        append_circle(text, "control point " + std::to_string(k + 1), radius, origin, 0.25, 0.25);
+    }
+}
+
+void append_tcb_waypoint(std::string& text, long long frame, const ControlPoint& point, const ParallelView& view)
+{
+    text += "      <waypoint time=\"";
+    append_frame_time(text, frame);
+    text += "\" before=\"auto\" after=\"auto\" tension=\"";
+    append_number(text, point.staff.tension);
+    text += "\" continuity=\"";
+    append_number(text, point.staff.continuity);
+    text += "\" bias=\"";
+    append_number(text, point.staff.bias);
+    text += "\" temporal-tension=\"0\">";
+    append_vector(text, view(point.position));
+    text += "</waypoint>\n";
+}
+
+void append_linear_waypoint(std::string& text, long long frame, PlanePoint position, std::string_view indent)
+{
+    text += indent;
+    text += "<waypoint time=\"";
+    append_frame_time(text, frame);
+    text += "\" before=\"linear\" after=\"linear\">";
+    append_vector(text, position);
+    text += "</waypoint>\n";
+}
+
+std::string moving_origin(const SifPathRequest& request, const ParallelView& view)
+{
+    std::string origin = "\n      <animated type=\"vector\">\n";
+    if (request.motion == SifMotion::tcb) {
+        for (std::size_t k = 0; k < request.points.size(); ++k)
+            append_tcb_waypoint(origin, static_cast<long long>(k) * request.timing.frames_per_span, request.points[k],
+                                view);
+    } else {
+        for (std::size_t f = 0; f < request.frames.size(); ++f)
+            append_linear_waypoint(origin, static_cast<long long>(f), view(request.frames[f]), "      ");
+    }
+    origin += "      </animated>\n    ";
+    return origin;
+}
+
+void append_left_out_comment(std::string& text, const SifPathRequest& request)
+{
+    if (request.motion == SifMotion::frames) {
+        text += "  <!-- The circle moves through APCS's own frames (KEY1, the in-betweens, KEY2), one linear "
+                "waypoint a frame: acceleration and end slopes are kept; between frames it moves along chords. -->\n";
+        return;
+    }
+    const std::vector<std::string> left_out = sif_left_out(request.points, request.slopes);
+    if (left_out.empty())
+        return;
+    text += "  <!-- Not carried by Synfig's TCB waypoints (apcs export --sif-motion frames keeps them):\n";
+    for (const std::string& sentence : left_out) {
+        text += "       ";
+        append_escaped(text, sentence);
+        text += ".\n";
+    }
+    text += "  -->\n";
+}
+
+long long last_frame_of(const SifPathRequest& request)
+{
+    if (request.motion == SifMotion::frames)
+        return request.frames.empty() ? 0 : static_cast<long long>(request.frames.size()) - 1;
+    return static_cast<long long>(request.points.size() - 1) * request.timing.frames_per_span;
+}
+
+PlaneBox path_box(const SifPathRequest& request, const ParallelView& view)
+{
+    PlaneBox box;
+    const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
+    // The curve's extremes lie between samples: 16 a segment are close enough for a margin of 10 %.
+    constexpr int samples = 16;
+    for (const HermiteSegment& segment : segments)
+        for (int j = 0; j <= samples; ++j)
+            box.add(view(segment.point_at(static_cast<double>(j) / samples)));
+    for (const ControlPoint& point : request.points)
+        box.add(view(point.position));
+    for (const Vec3& frame : request.frames)
+        box.add(view(frame));
+    return box;
+}
+
+} // namespace
+
+std::string sif_path_document(const SifPathRequest& request)
+{
+    const ParallelView view(request.view);
+    const PlaneBox box = path_box(request, view);
+    std::string text;
+    text.reserve(request.points.size() * 700 + request.frames.size() * 120 + 2048);
+    append_canvas_start(text, box, request.timing.fps, last_frame_of(request), request.name);
+    append_left_out_comment(text, request);
+    const double size = box.size();
+    append_path_outline(text, request, view, size / 200.0);
+    append_control_point_marks(text, request, view, size / 120.0);
+    append_circle(text, "the point", size / 60.0, moving_origin(request, view), 1.0, 0.0);
+    text += "</canvas>\n";
+    return text;
+}
+
+std::string sif_animation_document(const SifAnimationRequest& request)
+{
+    const ParallelView view(request.view);
+    PlaneBox box;
+    for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
+        for (const Vec3& point : request.frames.frame(f))
+            box.add(view(point));
+    std::string text;
+    const long long last_frame =
+        request.frames.frame_count() == 0 ? 0 : static_cast<long long>(request.frames.frame_count()) - 1;
+    append_canvas_start(text, box, request.fps, last_frame, request.name);
+    text += "  <!-- APCS's frames: frame 0 is KEY1, the last KEY2; each part's vertices move through the "
+            "in-betweens, one linear waypoint a frame. -->\n";
+    // Each frame's polylines, part by part: a closed part ends back at its first point.
+    std::vector<std::vector<std::vector<Vec3>>> polylines;
+    polylines.reserve(request.frames.frame_count());
+    for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
+        polylines.push_back(request.structure.polylines(request.frames.frame(f)));
+    const std::size_t part_count = polylines.empty() ? 0 : polylines.front().size();
+    for (std::size_t part = 0; part < part_count; ++part) {
+        append_outline_start(text, request.structure.parts[part].name.empty() ? "part " + std::to_string(part + 1)
+                                                                               : request.structure.parts[part].name,
+                             false);
+        for (std::size_t vertex = 0; vertex < polylines.front()[part].size(); ++vertex) {
+            std::string point = "<animated type=\"vector\">\n";
+            for (std::size_t f = 0; f < polylines.size(); ++f)
+                append_linear_waypoint(point, static_cast<long long>(f), view(polylines[f][part][vertex]), "        ");
+            point += "      </animated>";
+            append_bline_vertex(text, point, {}, {});
+        }
+        append_outline_end(text, box.size() / 150.0, 0.0);
+    }
+    text += "</canvas>\n";
+    return text;
+}
+
+} // namespace apcs
