@@ -217,6 +217,10 @@ std::optional<std::string> wrong_operand_count(const CLI::App& command, const CL
     const bool too_many = dynamic_cast<const CLI::ExtrasError*>(&error) != nullptr;
     if (!too_few && !too_many)
         return std::nullopt;
+    // A required option missing (export's --sif) is CLI11's own line, not a count of files.
+    for (const CLI::Option* option : command.get_options())
+        if (option->get_required() && !option->get_positional() && option->count() == 0)
+            return std::nullopt;
     std::size_t given = command.remaining_size();
     for (const CLI::Option* option : command.get_options())
         if (option->get_positional())

@@ -104,6 +104,9 @@ ExitStatus export_animation(const ExportRequest& request, const CommonOptions& o
 ExitStatus run_export_command(const ExportRequest& request, const CommonOptions& options, std::ostream& out,
                               std::ostream& err)
 {
+    if (request.sif != standard_stream_name && read_files_guard(options).guards(request.sif))
+        return report_bad_input(
+            Diagnostic{request.sif.string(), 0, "is an input of this run; --sif never writes over an input"}, err);
     return request.files.size() == 1 ? export_path(request, options, out, err)
                                      : export_animation(request, options, out, err);
 }

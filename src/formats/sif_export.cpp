@@ -5,18 +5,36 @@
 #include "apcs/formats/number_text.h"
 
 #include <algorithm>
+#include <array>
+#include <tuple>
+#include <utility>
 #include <cmath>
 #include <numbers>
 
 namespace apcs {
 
+namespace {
+
+// sin and cos of an angle in degrees, exactly 0 and ±1 at multiples of 90 degrees: the named views
+// then give (x, y) as they are, not 4 + 2·6e-17, in the document and on the way back.
+std::pair<double, double> sine_and_cosine(double degrees)
+{
+    const double quarters = degrees / 90.0;
+    if (quarters == std::round(quarters) && std::abs(quarters) < 1e9) {
+        constexpr std::array<std::pair<double, double>, 4> exact{{{0.0, 1.0}, {1.0, 0.0}, {0.0, -1.0}, {-1.0, 0.0}}};
+        const auto quarter = static_cast<long long>(quarters);
+        return exact[static_cast<std::size_t>(((quarter % 4) + 4) % 4)];
+    }
+    constexpr double radians_per_degree = std::numbers::pi / 180.0;
+    return {std::sin(degrees * radians_per_degree), std::cos(degrees * radians_per_degree)};
+}
+
+} // namespace
+
 ParallelView::ParallelView(ViewAngles angles)
 {
-    constexpr double radians_per_degree = std::numbers::pi / 180.0;
-    m_sin_theta = std::sin(angles.theta_degrees * radians_per_degree);
-    m_cos_theta = std::cos(angles.theta_degrees * radians_per_degree);
-    m_sin_phi = std::sin(angles.phi_degrees * radians_per_degree);
-    m_cos_phi = std::cos(angles.phi_degrees * radians_per_degree);
+    std::tie(m_sin_theta, m_cos_theta) = sine_and_cosine(angles.theta_degrees);
+    std::tie(m_sin_phi, m_cos_phi) = sine_and_cosine(angles.phi_degrees);
 }
 
 PlanePoint ParallelView::operator()(const Vec3& world) const
