@@ -1,6 +1,7 @@
 #include "apcs/cli/export_command.h"
 
 #include "support/run_apcs.h"
+#include "support/small_example.h"
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
@@ -15,14 +16,6 @@ using test::run_apcs;
 using test::TempFolder;
 
 namespace {
-
-void write_example(const TempFolder& folder)
-{
-    folder.write("key1.dat", "0 0 0\n0 0 10\n0 6 0\n0 6 10\n");
-    folder.write("key2.dat", "0 0 10\n0 0 0\n0 5 0\n");
-    folder.write("way1.dat", "0 0 0\n3 -4 5\n0 0 10\n");
-    folder.write("way4.dat", "0 6 10\n-3 10 5\n0 5 0\n");
-}
 
 std::string text_of(const std::filesystem::path& file)
 {
@@ -60,7 +53,7 @@ TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point; 2-D dat
 TEST_CASE("apcs export names what TCB leaves out on stderr; --sif-motion frames keeps it", "[cli][sif]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const std::string way1 = (folder / "way1.dat").string();
     const auto tcb = run_apcs({"export", way1, "--sif", "-", "--slopes", "0.5", "1", "--accel", "0.3"});
     REQUIRE(tcb.status == 0);
@@ -82,7 +75,7 @@ TEST_CASE("apcs export names what TCB leaves out on stderr; --sif-motion frames 
 TEST_CASE("apcs export with fit's four files: every part's vertices move through every frame", "[cli][sif]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const auto result = run_apcs({"export", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                   (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--sif",
                                   (folder / "n.sif").string(), "--inbetweens", "3"});
@@ -97,7 +90,7 @@ TEST_CASE("apcs export with fit's four files: every part's vertices move through
 TEST_CASE("apcs export refuses: wrong file counts, no --sif, an input as the document", "[cli][sif]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const std::string way1 = (folder / "way1.dat").string();
     const auto two = run_apcs({"export", way1, way1, "--sif", (folder / "x.sif").string()});
     CHECK(two.status == 2);

@@ -3,6 +3,7 @@
 
 #include "support/png_pixels.h"
 #include "support/run_apcs.h"
+#include "support/small_example.h"
 #include "support/temp_folder.h"
 
 #include <catch2/catch.hpp>
@@ -15,22 +16,10 @@ using namespace apcs;
 using test::run_apcs;
 using test::TempFolder;
 
-namespace {
-
-void write_example(const TempFolder& folder)
-{
-    folder.write("key1.dat", "0 0 0\n0 0 10\n0 6 0\n0 6 10\n");
-    folder.write("key2.dat", "0 0 10\n0 0 0\n0 5 0\n");
-    folder.write("way1.dat", "0 0 0\n3 -4 5\n0 0 10\n");
-    folder.write("way4.dat", "0 6 10\n-3 10 5\n0 5 0\n");
-}
-
-} // namespace
-
 TEST_CASE("apcs fit --print writes frames 0 to M+1: padded KEY1, the in-betweens, KEY2", "[cli][fit]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                   (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens", "2",
                                   "--samples", "2", "--print"});
@@ -58,7 +47,7 @@ TEST_CASE("apcs fit --print writes frames 0 to M+1: padded KEY1, the in-betweens
 TEST_CASE("apcs fit writes inb001.dat … with the whole graphic and its parts", "[cli][fit]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                   (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens", "3",
                                   "--out", folder.path().string()});
@@ -75,7 +64,7 @@ TEST_CASE("apcs fit writes inb001.dat … with the whole graphic and its parts",
 TEST_CASE("apcs fit streams the in-betweens it writes alone: the same files as with all frames held", "[cli][fit]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     std::filesystem::create_directory(folder / "streamed");
     std::filesystem::create_directory(folder / "held");
     const std::vector<std::string> inputs{(folder / "key1.dat").string(), (folder / "key2.dat").string(),
@@ -113,7 +102,7 @@ TEST_CASE("apcs fit streams the in-betweens it writes alone: the same files as w
 TEST_CASE("a path that does not start at the graphic point is refused with the expected point", "[cli][fit]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     folder.write("bad.dat", "; wrong start\n0 1 0\n0 0 10\n");
     const auto result = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                   (folder / "bad.dat").string(), (folder / "way4.dat").string(), "--print"});
@@ -130,7 +119,7 @@ TEST_CASE("a path that does not start at the graphic point is refused with the e
 TEST_CASE("apcs fit --out makes a missing folder, one level — a missing parent fails and writes nothing", "[cli][fit]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const std::vector<std::string> files{"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                          (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--out"};
     std::vector<std::string> made = files;
@@ -207,7 +196,7 @@ TEST_CASE("a run with fewer in-betweens says on stderr which older ones it left,
 TEST_CASE("apcs fit --png draws all frames overlaid and writes no in-between file unless --out asks", "[cli][fit][png]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const auto pictured = run_apcs({"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                     (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--inbetweens",
                                     "3", "--png", (folder / "all.png").string(), "--png-raw",
@@ -284,7 +273,7 @@ TEST_CASE("apcs fit takes each path file's SLOPES — an explicit --slopes overr
 TEST_CASE("apcs fit --surface ferguson: the end points follow their paths, the option is checked", "[cli][fit][ferguson]")
 {
     const TempFolder folder;
-    write_example(folder);
+    test::write_small_example(folder);
     const std::vector<std::string> files{"fit", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
                                          (folder / "way1.dat").string(), (folder / "way4.dat").string()};
     std::vector<std::string> blend = files;
