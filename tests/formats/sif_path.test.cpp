@@ -336,6 +336,24 @@ TEST_CASE("a waypoint that is not a literal vector is refused on its line", "[fo
                                       "<waypoint time=\"12f\"><vector><x>1</x></vector></waypoint>\n")) ==
               "walk.sif:7: the vector has no <y>; expected <x> and <y>");
     }
+    SECTION("a second value after the vector")
+    {
+        CHECK(rejection(path_document("<waypoint time=\"0f\"><vector><x>0</x><y>0</y></vector>\n"
+                                      "<vector><x>1</x><y>1</y></vector></waypoint>\n")) ==
+              "walk.sif:7: a second value in the waypoint, <vector>; expected one <vector>");
+    }
+    SECTION("a vector with a z")
+    {
+        const std::string waypoint_with_z =
+            "<waypoint time=\"0f\"><vector><x>0</x><y>0</y><z>0</z></vector></waypoint>\n";
+        CHECK(rejection(path_document(waypoint_with_z)) ==
+              "walk.sif:6: expected <x> or <y> in the vector, found <z>");
+    }
+    SECTION("a number longer than any Synfig writes")
+    {
+        CHECK(rejection(path_document(waypoint("0f", std::string(300, '1'), "0"))) ==
+              "walk.sif:6: the number in <x> is longer than 256 characters");
+    }
     SECTION("an element inside a coordinate")
     {
         CHECK(rejection(path_document(waypoint("0f", "<real value=\"1\"/>", "0"))) ==
