@@ -10,7 +10,7 @@ set -euo pipefail
 [ -n "${APCS_DEPENDENCIES_CHECKED:-}" ] && exit 0
 
 # libchafa-dev's pkg-config file asks for glib's (libglib2.0-dev), which Debian 12 does not bring with it.
-build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev libpng-dev zlib1g-dev libgif-dev libchafa-dev libglib2.0-dev
+build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev libpng-dev zlib1g-dev libgif-dev libexpat1-dev libchafa-dev libglib2.0-dev
                libncurses-dev console-setup-linux)
 # Tests also need: python3 (the reference models in tests/reference), bsdutils (util-linux's
 # `script`, a terminal for keys_from_pipe.sh), mount (the full-disk case of batch_faults.sh), and
