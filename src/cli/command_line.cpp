@@ -331,6 +331,7 @@ struct ParsedLine {
     GradeRequest grade;
     GradeClassRequest grade_class;
     ExportRequest export_request;
+    std::string sif_param = "origin"; // apcs path FILE.sif --sif-param
 
     // The files the run reads: only the chosen command's are given, the others stay empty.
     std::vector<std::filesystem::path> inputs() const
@@ -370,17 +371,24 @@ struct Subcommand {
 constexpr const char* n_to_l_copy = "a copy of data/n-to-l";
 
 constexpr std::array<Subcommand, 8> subcommands{{
-    {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat",
+    {"path", "one point's path: print its numbers or draw it", "one path file FILE.dat (or FILE.sif)",
      "  apcs path way1.dat --print --samples 4 --inbetweens 3\n"
      "  apcs path way1.dat --tension 0.5 --accel 0.3 --png way1.png\n"
      "  apcs path way1.dat --sixel -         (the picture in xterm -ti vt340, not through tmux)",
      n_to_l_copy,
      [](CLI::App& command, ParsedLine& line) {
-         command.add_option("FILE", line.path_file, "the path file (.dat)")->required()->type_name("");
+         command.add_option("FILE", line.path_file, "the path file (.dat), or a Synfig document (.sif)")
+             ->required()
+             ->type_name("");
          add_path_command_options(command, line.options, line.slopes);
+         command
+             .add_option("--sif-param", line.sif_param,
+                         "FILE.sif: the animated vector read as the path, default origin (the first layer's that is "
+                         "animated)")
+             ->type_name("NAME");
      },
      [](ParsedLine& line, const RunPlace& place) {
-         return to_int(run_path_command(line.path_file, line.options, place.out, place.err));
+         return to_int(run_path_command(line.path_file, line.options, line.sif_param, place.out, place.err));
      }},
     {"inbetween", "in-between frames by an interpolation law and a padding", "two key files KEY1 KEY2",
      "  apcs inbetween key1.dat key2.dat --law ease-in --print\n"

@@ -7,6 +7,7 @@
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/print_format.h"
+#include "apcs/formats/sif_path.h"
 #include "apcs/raster/png_encoder.h"
 #include "apcs/raster/svg_encoder.h"
 #include "apcs/screens/path_screen.h"
@@ -138,10 +139,27 @@ PathSettings settings_of_path(const DatFile& file, const CommonOptions& options)
     return settings;
 }
 
-ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,
-                            std::ostream& err)
+Expected<DatFile> read_path_input(const std::filesystem::path& file, const CommonOptions& options,
+                                  const std::string& sif_param, std::ostream& err)
 {
-    const Expected<DatFile> dat = read_dat_file(file);
+    if (!is_sif_name(file.string()))
+        return read_dat_file(file);
+    const Expected<std::string> text = read_text_file(file);
+    if (!text)
+        return text.error();
+    Expected<SifPath> read = parse_sif_path(
+        *text, file.string(), {sif_param, sif_plane_of(options.view.theta_degrees, options.view.phi_degrees)});
+    if (!read)
+        return read.error();
+    for (const std::string& warning : read->warnings)
+        err << "apcs: warning: " << warning << '\n';
+    return std::move(read->file);
+}
+
+ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options,
+                            const std::string& sif_param, std::ostream& out, std::ostream& err)
+{
+    const Expected<DatFile> dat = read_path_input(file, options, sif_param, err);
     if (!dat)
         return report_bad_input(dat.error(), err);
     const ControlPoints points = control_points_from(*dat, options.staff);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <climits>
 #include <cmath>
 #include <cstdint>
@@ -799,6 +800,27 @@ std::optional<std::string> SifReader::temporal_tension_warning() const
 Expected<SifPath> parse_sif_path(std::string_view text, const std::string& file_name, const SifReading& reading)
 {
     return SifReader(file_name, reading).read(text);
+}
+
+bool is_sif_name(std::string_view name)
+{
+    constexpr std::string_view extension = ".sif";
+    if (name.size() < extension.size())
+        return false;
+    const std::string_view tail = name.substr(name.size() - extension.size());
+    return std::equal(tail.begin(), tail.end(), extension.begin(), [](char a, char b) {
+        return std::tolower(static_cast<unsigned char>(a)) == b;
+    });
+}
+
+SifPlane sif_plane_of(double theta_degrees, double phi_degrees)
+{
+    const auto same = [](double a, double b) { return std::fmod(a - b, 360.0) == 0.0; };
+    if (same(theta_degrees, 0.0) && same(phi_degrees, 90.0))
+        return SifPlane::front;
+    if (same(theta_degrees, -90.0) && same(phi_degrees, 90.0))
+        return SifPlane::side;
+    return SifPlane::top;
 }
 
 } // namespace apcs

@@ -5,6 +5,7 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
+#include "apcs/formats/sif_path.h"
 #include "apcs/session/session_budget.h"
 #include "apcs/screens/session_text.h"
 
@@ -138,13 +139,36 @@ std::string PathPrompt::default_answer(const StepContext& context) const
     return path_file_name(path == 0 ? 1 : context.model.point_count);
 }
 
+namespace {
+
+// A Synfig document's path (SPEC §7.5), read into the plane the answered view looks at. It is only
+// read: there is no text to rewrite, and its warnings go to the log.
+Expected<DatText> read_synfig_path(StepContext& context, const std::string& name)
+{
+    Expected<std::string> text = context.files.read_text(name);
+    if (!text)
+        return text.error();
+    const ViewAngles& view = context.model.view_angles;
+    Expected<SifPath> read =
+        parse_sif_path(*text, name, {"origin", sif_plane_of(view.theta_degrees, view.phi_degrees)});
+    if (!read)
+        return read.error();
+    for (const std::string& warning : read->warnings)
+        context.files.log("warning: " + warning);
+    return DatText{std::move(read->file), std::string()};
+}
+
+} // namespace
+
 StepResult PathPrompt::submit(StepContext& context, const std::string& name)
 {
-    // The path file is rewritten after adjusting: it must lie in the session's folder.
-    if (!context.files.lies_in_folder(name))
+    const bool synfig = is_sif_name(name);
+    // The path file is rewritten after adjusting: it must lie in the session's folder. A Synfig
+    // document is only read; its adjusted path goes to aniK.dat.
+    if (!synfig && !context.files.lies_in_folder(name))
         return StepResult::refused(name + ": expected a file in the session's folder (no leading '/', no '..', no "
                                           "link out of it), since APCS rewrites it");
-    Expected<DatText> read = context.files.read_dat_text(name, 2);
+    Expected<DatText> read = synfig ? read_synfig_path(context, name) : context.files.read_dat_text(name, 2);
     if (!read)
         return StepResult::refused(read.error().to_string());
     SessionModel& model = context.model;
@@ -159,8 +183,9 @@ StepResult PathPrompt::submit(StepContext& context, const std::string& name)
     if (const Expected<void> fits = check_path_fits(points->size(), context.settings); !fits)
         return StepResult::refused(name + ": " + fits.error().message);
     SessionPath& shaped = model.paths[static_cast<std::size_t>(path)];
-    // Accepting rewrites the file that was read, whatever case the name was typed in.
-    shaped.name = context.files.name_read(name);
+    // Accepting rewrites the file that was read, whatever case the name was typed in; a Synfig
+    // document's path is written as the prompt's own file, aniK.dat.
+    shaped.name = synfig ? default_answer(context) : context.files.name_read(name);
     shaped.text = std::move(read->text);
     shaped.points = std::move(*points);
     shaped.file_slopes = read->file.slopes;

@@ -77,7 +77,7 @@ TEST_CASE("a usage error says what was expected", "[cli]")
         {{"path", "a.dat", "--samples", "0"}, "apcs: --samples: expected a whole number in [1, 100000], found 0"},
         {{"path", "a.dat", "--spacing", "wobbly"}, "apcs: --spacing: expected one of nearest, exact, found 'wobbly'"},
         {{"--frobnicate"}, "apcs: unknown option --frobnicate"},
-        {{"dance", "robot.scn"}, "apcs: unknown command 'dance' (the commands: path, inbetween, fit, draw, play, figures, grade)"},
+        {{"dance", "robot.scn"}, "apcs: unknown command 'dance' (the commands: path, inbetween, fit, export, draw, play, figures, grade)"},
         {{"play", "robot.scn", "--inbetweens", "3"}, "apcs: --inbetweens is not an option of 'apcs play' (it is one of 'apcs', 'apcs path', 'apcs inbetween', 'apcs fit', 'apcs figures')"},
         {{"fit", "a", "b", "c", "d", "--keys", "x.keys"}, "apcs: --keys is not an option of 'apcs fit' (it is one of 'apcs')"},
         {{"--glyphs", "ascii", "path", "a.dat"}, "apcs: --glyphs is not an option of 'apcs path' (it is one of 'apcs', 'apcs play')"},

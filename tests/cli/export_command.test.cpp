@@ -108,3 +108,48 @@ TEST_CASE("apcs export refuses: wrong file counts, no --sif, an input as the doc
     const auto span = run_apcs({"export", way1, "--sif", "-", "--frames-per-span", "10001"});
     CHECK(span.status == 2);
 }
+
+TEST_CASE("apcs path FILE.sif reads an exported path back: the same --print in each named view's plane", "[cli][sif]")
+{
+    const TempFolder folder;
+    struct Case {
+        const char* view;
+        const char* points; // in the view's plane
+    };
+    for (const Case& each : {Case{"top", "0 0 0 0.5 0 0 0\n2 3 0 -0.5 0.3 0.2 0\n5 1 0 0 -0.5 0.5 0\n9 0 0 0 0 0 0\n"},
+                             Case{"front", "0 0 0 0.2 0 0 0\n0 3 4 0 0.4 0 0\n0 5 0 0 0 -0.3 0\n"},
+                             Case{"side", "0 0 0 0 0 0 0\n3 0 -4 0.7 -0.1 0.1 0\n5 0 1 0 0 0 0\n"}}) {
+        INFO(each.view);
+        const auto dat = folder.write(std::string(each.view) + ".dat", each.points);
+        const std::string sif = (folder / (std::string(each.view) + ".sif")).string();
+        REQUIRE(run_apcs({"export", dat.string(), "--sif", sif, "--view", each.view}).status == 0);
+        const auto original = run_apcs({"path", dat.string(), "--view", each.view, "--print"});
+        const auto again = run_apcs({"path", sif, "--view", each.view, "--print"});
+        REQUIRE(again.status == 0);
+        CHECK(again.err.empty());
+        CHECK(again.out == original.out);
+    }
+    const auto missing = run_apcs({"path", (folder / "top.sif").string(), "--sif-param", "offset"});
+    CHECK(missing.status == 1);
+    CHECK(missing.err.find("no layer has an animated vector `offset`") != std::string::npos);
+}
+
+TEST_CASE("The session's path prompt reads a Synfig document and writes the adjusted path to aniK.dat",
+          "[cli][sif][session]")
+{
+    const TempFolder folder;
+    test::write_small_example(folder);
+    // way1.dat seen from the front: (y, z) = (0, 0), (−4, 5), (0, 10), read back as (0, y, z).
+    REQUIRE(run_apcs({"export", (folder / "way1.dat").string(), "--sif", (folder / "way1.sif").string(), "--view",
+                      "front"})
+                .status == 0);
+    const auto script = folder.write("sif.keys", "ENTER\nENTER\nTEXT 0 90 200\nENTER\nTEXT way1.sif\nENTER\nENTER\n8\n"
+                                                 "6\nENTER\nENTER\nENTER\nENTER\nTEXT n\nENTER\n");
+    const auto result = run_apcs({"--keys", script.string(), "--workdir", folder.path().string(), "--glyphs", "ascii"});
+    INFO(result.out << result.err);
+    REQUIRE(std::filesystem::exists(folder / "ani1.dat"));
+    const std::string adjusted = text_of(folder / "ani1.dat");
+    // Tension 0.05 (one 6) on each control point of (0, 0, 0), (0, −4, 5), (0, 0, 10).
+    CHECK(adjusted.find("0 -4 5 0.05 0 0 0") != std::string::npos);
+    CHECK(text_of(folder / "way1.sif").starts_with("<?xml"));
+}

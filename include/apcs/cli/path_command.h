@@ -70,8 +70,13 @@ Expected<void> write_pictures(const GraphicsScreen& screen, const CommonOptions&
 // first control point's values.
 GraphicsScreen draw_path_file_screen(const ControlPoints& points, const EvaluatedPath& path, ViewAngles angles);
 
+// A path file: a .dat file, or a Synfig document (.sif) whose animated vector `sif_param` is read
+// into the plane of options.view (SPEC §7.5), its warnings written to `err`.
+Expected<DatFile> read_path_input(const std::filesystem::path& file, const CommonOptions& options,
+                                  const std::string& sif_param, std::ostream& err);
+
 // `apcs path FILE`: prints (--print, the default) or draws (--png) one point's path.
-ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options, std::ostream& out,
-                            std::ostream& err);
+ExitStatus run_path_command(const std::filesystem::path& file, const CommonOptions& options,
+                            const std::string& sif_param, std::ostream& out, std::ostream& err);
 
 } // namespace apcs

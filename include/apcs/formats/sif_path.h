@@ -40,6 +40,13 @@ struct SifPath {
 // max_dat_magnitude; tension, continuity or bias outside [-1, 1]; a time Synfig writes in a form
 // APCS does not read (SOT, EOT, hh:mm:ss). The text is streamed through expat in chunks: time and
 // memory grow linearly with it, and only the chosen parameter's waypoints are kept.
+// Whether `name` is a Synfig document by its extension (.sif, in any case).
+bool is_sif_name(std::string_view name);
+
+// The plane a view looks at (SPEC §7.5): front or side for those named views' angles, else top
+// (the plane of 2-D data, and of any other view: its depth is not in a Synfig document).
+SifPlane sif_plane_of(double theta_degrees, double phi_degrees);
+
 Expected<SifPath> parse_sif_path(std::string_view text, const std::string& file_name, const SifReading& reading);
 
 } // namespace apcs
