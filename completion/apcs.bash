@@ -24,7 +24,8 @@ _apcs_options()
     local pictures="--png --png-raw --svg"
     local terminal_pictures="--sixel --kitty"
     case $1 in
-        path) echo "$staff $curve $view $pictures $terminal_pictures --print --help" ;;
+        path) echo "$staff $curve $view $pictures $terminal_pictures --print --sif-param --help" ;;
+        export) echo "$staff $curve --surface $view --sif --sif-motion --frames-per-span --fps --help" ;;
         fit) echo "$staff $curve --surface $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures $terminal_pictures --help" ;;
@@ -47,6 +48,8 @@ _apcs()
         --spacing) _apcs_words "nearest exact" "$current"; return ;;
         --surface) _apcs_words "blend ferguson" "$current"; return ;;
         --view) _apcs_words "front side top" "$current"; return ;;
+        --sif-motion) _apcs_words "tcb frames" "$current"; return ;;
+        --sif) _apcs_files sif "$current"; return ;;
         --pace) _apcs_words "step 500 1000 2000" "$current"; return ;;
         --law) _apcs_words "linear sqrt square ease-in ease-out ease-in-out" "$current"; return ;;
         --pad) _apcs_words "apcs start end middle midpoint" "$current"; return ;;
@@ -58,18 +61,18 @@ _apcs()
         --kitty) _apcs_files kitty "$current"; return ;;
         --out | --workdir | --handout) mapfile -t COMPREPLY < <(compgen -d -- "$current"); return ;;
         --tension | --continuity | --bias | --accel | --slopes | --samples | --inbetweens | --theta | \
-            --phi | --delay | --step | --frames) return ;;
+            --phi | --delay | --step | --frames | --frames-per-span | --fps | --sif-param) return ;;
     esac
 
     local command="" word
     for word in "${COMP_WORDS[@]:1:COMP_CWORD-1}"; do
-        case $word in path | inbetween | fit | draw | play | figures) command=$word; break ;; esac
+        case $word in path | inbetween | fit | export | draw | play | figures) command=$word; break ;; esac
     done
 
     if [[ $current == -* ]]; then
         _apcs_words "$(_apcs_options "$command")" "$current"
     elif [[ -z $command ]]; then
-        _apcs_words "path inbetween fit draw play figures" "$current"
+        _apcs_words "path inbetween fit export draw play figures" "$current"
     elif [[ $command == play ]]; then
         _apcs_files scn "$current"
     elif [[ $command != figures ]]; then

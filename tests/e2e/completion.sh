@@ -49,7 +49,7 @@ expect "--gif" apcs inbetween --g
 expect "" apcs path --g
 
 # Every command's options, as its --help lists them.
-for command in "" path inbetween fit draw play figures; do
+for command in "" path inbetween fit export draw play figures; do
   # shellcheck disable=SC2086
   listed=$("$apcs" $command --help | sed '/^Examples/,$d' | grep -o -- '--[a-z][a-z-]*' | LC_ALL=C sort -u | tr '\n' ' ' | sed 's/ $//')
   [ -n "$listed" ] || fail "apcs $command --help lists no option"
@@ -65,5 +65,9 @@ expect "folder session.keys" apcs --keys ""
 expect "folder shot.png" apcs path key1.dat --png ""
 expect "folder" apcs figures --out ""
 expect "draw" apcs dr
+expect "export" apcs ex
+expect "frames tcb" apcs export way1.dat --sif-motion ""
+touch path.sif
+expect "folder path.sif" apcs export key1.dat --sif ""
 expect "folder frames.gif" apcs fit a b c d --gif ""
-echo "passed: 20 completions and the options of 6 commands"
+echo "passed: 23 completions and the options of 7 commands"
