@@ -81,6 +81,10 @@ struct PlaneBox {
         bottom = std::min(bottom, point.y);
         top = std::max(top, point.y);
     }
+    double largest_coordinate() const
+    {
+        return std::max({std::abs(left), std::abs(right), std::abs(bottom), std::abs(top)});
+    }
     // The larger side; 1 for a box of no size, so that a path of one point still has a canvas.
     double size() const
     {
@@ -107,14 +111,29 @@ void append_escaped(std::string& text, std::string_view raw)
     }
 }
 
-void append_vector(std::string& text, PlanePoint point)
-{
-    text += "<vector><x>";
-    append_number(text, point.x);
-    text += "</x><y>";
-    append_number(text, point.y);
-    text += "</y></vector>";
-}
+// The view plane's points as a document writes them: projected, then with the decimals that keep
+// them within 0.5e-9 of the drawing's size (decimals_for_size), which reads back far inside 1e-6 and
+// is shorter and faster to write and read than the shortest exact form.
+class PlaneText {
+public:
+    PlaneText(const ParallelView& view, double largest_coordinate)
+        : m_view(view), m_decimals(decimals_for_size(largest_coordinate))
+    {
+    }
+    PlanePoint at(const Vec3& world) const { return m_view(world); }
+    void vector(std::string& text, PlanePoint point) const
+    {
+        text += "<vector><x>";
+        append_fixed(text, point.x, m_decimals);
+        text += "</x><y>";
+        append_fixed(text, point.y, m_decimals);
+        text += "</y></vector>";
+    }
+
+private:
+    ParallelView m_view;
+    int m_decimals;
+};
 
 void append_frame_time(std::string& text, long long frame)
 {
@@ -191,15 +210,16 @@ void append_layer_start(std::string& text, std::string_view type, std::string_vi
 
 // A vertex of an outline: its point (a vector or an animated one, already written), and its
 // tangents in (t1, arriving) and out (t2, leaving), which Synfig takes as Hermite tangents.
-void append_bline_vertex(std::string& text, std::string_view point, PlanePoint arriving, PlanePoint leaving)
+void append_bline_vertex(std::string& text, const PlaneText& plane, std::string_view point, PlanePoint arriving,
+                         PlanePoint leaving)
 {
     text += "      <entry><composite type=\"bline_point\"><point>";
     text += point;
     text += "</point><width><real value=\"1\"/></width><origin><real value=\"0.5\"/></origin>"
             "<split><bool value=\"true\"/></split><t1>";
-    append_vector(text, arriving);
+    plane.vector(text, arriving);
     text += "</t1><t2>";
-    append_vector(text, leaving);
+    plane.vector(text, leaving);
     text += "</t2><split_radius><bool value=\"true\"/></split_radius>"
             "<split_angle><bool value=\"true\"/></split_angle></composite></entry>\n";
 }
@@ -229,24 +249,24 @@ void append_outline_start(std::string& text, std::string_view description, bool 
     text += "\">\n";
 }
 
-PlanePoint projected_tangent(const ParallelView& view, const Vec3& tangent)
+PlanePoint projected_tangent(const PlaneText& plane, const Vec3& tangent)
 {
     // The projection is linear (no translation), so a tangent projects as a point does.
-    return view(tangent);
+    return plane.at(tangent);
 }
 
 // The path's curve, exactly: one vertex per control point, the KB tangents as its Hermite tangents.
-void append_path_outline(std::string& text, const SifPathRequest& request, const ParallelView& view, double width)
+void append_path_outline(std::string& text, const SifPathRequest& request, std::span<const HermiteSegment> segments,
+                         const PlaneText& plane, double width)
 {
     append_outline_start(text, "the path", false);
-    const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
     for (std::size_t k = 0; k < request.points.size(); ++k) {
         const PointTangents tangents = tangents_at(segments, k);
         std::string point;
-        append_vector(point, view(request.points[k].position));
-        const PlanePoint arriving = tangents.incoming ? projected_tangent(view, *tangents.incoming) : PlanePoint{};
-        const PlanePoint leaving = tangents.outgoing ? projected_tangent(view, *tangents.outgoing) : arriving;
-        append_bline_vertex(text, point, tangents.incoming ? arriving : leaving, leaving);
+        plane.vector(point, plane.at(request.points[k].position));
+        const PlanePoint arriving = tangents.incoming ? projected_tangent(plane, *tangents.incoming) : PlanePoint{};
+        const PlanePoint leaving = tangents.outgoing ? projected_tangent(plane, *tangents.outgoing) : arriving;
+        append_bline_vertex(text, plane, point, tangents.incoming ? arriving : leaving, leaving);
     }
     append_outline_end(text, width, 0.6);
 }
@@ -263,7 +283,7 @@ void append_circle(std::string& text, std::string_view description, double radiu
     text += "</param>\n    <param name=\"invert\"><bool value=\"false\"/></param>\n  </layer>\n";
 }
 
-void append_control_point_marks(std::string& text, const SifPathRequest& request, const ParallelView& view,
+void append_control_point_marks(std::string& text, const SifPathRequest& request, const PlaneText& plane,
                                 double radius)
 {
     if (request.points.size() > most_marked_control_points) {
@@ -273,12 +293,12 @@ void append_control_point_marks(std::string& text, const SifPathRequest& request
     }
     for (std::size_t k = 0; k < request.points.size(); ++k) {
         std::string origin;
-        append_vector(origin, view(request.points[k].position));
+        plane.vector(origin, plane.at(request.points[k].position));
         append_circle(text, "control point " + std::to_string(k + 1), radius, origin, 0.25, 0.25);
     }
 }
 
-void append_tcb_waypoint(std::string& text, long long frame, const ControlPoint& point, const ParallelView& view)
+void append_tcb_waypoint(std::string& text, long long frame, const ControlPoint& point, const PlaneText& plane)
 {
     text += "      <waypoint time=\"";
     append_frame_time(text, frame);
@@ -289,30 +309,34 @@ void append_tcb_waypoint(std::string& text, long long frame, const ControlPoint&
     text += "\" bias=\"";
     append_number(text, point.staff.bias);
     text += "\" temporal-tension=\"0\">";
-    append_vector(text, view(point.position));
+    plane.vector(text, plane.at(point.position));
     text += "</waypoint>\n";
 }
 
-void append_linear_waypoint(std::string& text, long long frame, PlanePoint position, std::string_view indent)
+void append_linear_waypoint(std::string& text, const PlaneText& plane, long long frame, PlanePoint position,
+                            std::string_view indent)
 {
     text += indent;
     text += "<waypoint time=\"";
     append_frame_time(text, frame);
     text += "\" before=\"linear\" after=\"linear\">";
-    append_vector(text, position);
+    plane.vector(text, position);
     text += "</waypoint>\n";
 }
 
-std::string moving_origin(const SifPathRequest& request, const ParallelView& view)
+std::string moving_origin(const SifPathRequest& request, const PlaneText& plane)
 {
-    std::string origin = "\n      <animated type=\"vector\">\n";
+    std::string origin;
+    // A waypoint is under 260 bytes: a path of 10^5 points is not copied as its text grows.
+    origin.reserve((request.points.size() + request.frames.size()) * 260 + 64);
+    origin += "\n      <animated type=\"vector\">\n";
     if (request.motion == SifMotion::tcb) {
         for (std::size_t k = 0; k < request.points.size(); ++k)
             append_tcb_waypoint(origin, static_cast<long long>(k) * request.timing.frames_per_span, request.points[k],
-                                view);
+                                plane);
     } else {
         for (std::size_t f = 0; f < request.frames.size(); ++f)
-            append_linear_waypoint(origin, static_cast<long long>(f), view(request.frames[f]), "      ");
+            append_linear_waypoint(origin, plane, static_cast<long long>(f), plane.at(request.frames[f]), "      ");
     }
     origin += "      </animated>\n    ";
     return origin;
@@ -344,15 +368,15 @@ long long last_frame_of(const SifPathRequest& request)
     return static_cast<long long>(request.points.size() - 1) * request.timing.frames_per_span;
 }
 
-PlaneBox path_box(const SifPathRequest& request, const ParallelView& view)
+PlaneBox path_box(const SifPathRequest& request, std::span<const HermiteSegment> segments, const ParallelView& view)
 {
     PlaneBox box;
-    const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
-    // The curve's extremes lie between samples: 16 a segment are close enough for a margin of 10 %.
-    constexpr int samples = 16;
-    for (const HermiteSegment& segment : segments)
-        for (int j = 0; j <= samples; ++j)
-            box.add(view(segment.point_at(static_cast<double>(j) / samples)));
+    // A segment lies inside the hull of its Bézier points P0, P0 + T0/3, P1 − T1/3, P1: their box
+    // holds the curve (a little more where it bends), four points a segment, none evaluated.
+    for (const HermiteSegment& segment : segments) {
+        box.add(view(segment.start + segment.start_tangent * (1.0 / 3.0)));
+        box.add(view(segment.end - segment.end_tangent * (1.0 / 3.0)));
+    }
     for (const ControlPoint& point : request.points)
         box.add(view(point.position));
     for (const Vec3& frame : request.frames)
@@ -365,15 +389,17 @@ PlaneBox path_box(const SifPathRequest& request, const ParallelView& view)
 std::string sif_path_document(const SifPathRequest& request)
 {
     const ParallelView view(request.view);
-    const PlaneBox box = path_box(request, view);
+    const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
+    const PlaneBox box = path_box(request, segments, view);
+    const PlaneText plane(view, box.largest_coordinate());
     std::string text;
     text.reserve(request.points.size() * 700 + request.frames.size() * 120 + 2048);
     append_canvas_start(text, box, request.timing.fps, last_frame_of(request), request.name);
     append_left_out_comment(text, request);
     const double size = box.size();
-    append_path_outline(text, request, view, size / 200.0);
-    append_control_point_marks(text, request, view, size / 120.0);
-    append_circle(text, "the point", size / 60.0, moving_origin(request, view), 1.0, 0.0);
+    append_path_outline(text, request, segments, plane, size / 200.0);
+    append_control_point_marks(text, request, plane, size / 120.0);
+    append_circle(text, "the point", size / 60.0, moving_origin(request, plane), 1.0, 0.0);
     text += "</canvas>\n";
     return text;
 }
@@ -385,6 +411,7 @@ std::string sif_animation_document(const SifAnimationRequest& request)
     for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
         for (const Vec3& point : request.frames.frame(f))
             box.add(view(point));
+    const PlaneText plane(view, box.largest_coordinate());
     std::string text;
     const long long last_frame =
         request.frames.frame_count() == 0 ? 0 : static_cast<long long>(request.frames.frame_count()) - 1;
@@ -404,9 +431,10 @@ std::string sif_animation_document(const SifAnimationRequest& request)
         for (std::size_t vertex = 0; vertex < polylines.front()[part].size(); ++vertex) {
             std::string point = "<animated type=\"vector\">\n";
             for (std::size_t f = 0; f < polylines.size(); ++f)
-                append_linear_waypoint(point, static_cast<long long>(f), view(polylines[f][part][vertex]), "        ");
+                append_linear_waypoint(point, plane, static_cast<long long>(f), plane.at(polylines[f][part][vertex]),
+                                       "        ");
             point += "      </animated>";
-            append_bline_vertex(text, point, {}, {});
+            append_bline_vertex(text, plane, point, {}, {});
         }
         append_outline_end(text, box.size() / 150.0, 0.0);
     }

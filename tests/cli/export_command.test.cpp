@@ -46,7 +46,8 @@ TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point; 2-D dat
     CHECK(count_of(document, "<waypoint ") == 3);
     CHECK(document.find("<waypoint time=\"12f\" before=\"auto\" after=\"auto\" tension=\"0\" continuity=\"-0.25\"") !=
           std::string::npos);
-    CHECK(document.find("<vector><x>4</x><y>2</y></vector></waypoint>") != std::string::npos);
+    // Coordinates below 10 carry 9 decimals (within 0.5e-9 of the drawing's size).
+    CHECK(document.find("<vector><x>4.000000000</x><y>2.000000000</y></vector></waypoint>") != std::string::npos);
     CHECK(document.find("fps=\"30\"") != std::string::npos);
 }
 

@@ -8,7 +8,7 @@
 #   frames:    a path with an acceleration, --sif-motion frames: every frame on APCS's own frame
 #              (KEY1, each in-between, KEY2);
 #   animation: the N-to-L example exported with fit's inputs renders every frame, each with its
-#              outlines drawn.
+#              outlines drawn; the stick and snake examples render their 14 frames.
 # Usage: sif_renders.sh APCS DATA_FOLDER (skips, exit 77, without synfig or python3).
 set -uo pipefail
 apcs=$1
@@ -72,4 +72,15 @@ for name in sys.argv[1:]:
     if sum(1 for v in pixels[::3] if v < 128) < 100:
         sys.exit(f"{name}: the outlines are not drawn")
 PY
-echo "passed: Synfig renders the exported paths within 1e-3 of APCS's points in every frame, and the N-to-L animation's $frames frames"
+# The other shipped examples: the stick falling (an open graphic) and the snake (its paths as the
+# session wrote them).
+"$apcs" export "$data"/stick/key1.dat "$data"/stick/key2.dat "$data"/stick/way1.dat "$data"/stick/way5.dat \
+  --sif stick.sif || fail "apcs export of the stick"
+render stick.sif stick
+"$apcs" export "$data"/snake-apple/key1.dat "$data"/snake-apple/key2.dat "$data"/snake-apple/way1.dat \
+  "$data"/snake-apple/way7.dat --sif snake.sif || fail "apcs export of the snake"
+render snake.sif snake
+for name in stick snake; do
+  [ "$(ls $name.[0-9][0-9][0-9][0-9].ppm | wc -l)" -eq 14 ] || fail "$name: not 14 frames rendered"
+done
+echo "passed: Synfig renders the exported paths within 1e-3 of APCS's points in every frame, and the N-to-L animation's $frames frames, the stick's and the snake's"

@@ -1,4 +1,5 @@
 #include "apcs/formats/sif_export.h"
+#include "apcs/formats/sif_path.h"
 
 #include "support/xml_elements.h"
 
@@ -182,4 +183,35 @@ TEST_CASE("An animation's document: an outline per part, each vertex through eve
     // 2 vertices, then 3 and the closed part's return to its first: 6 vertices, 3 frames each.
     CHECK(named(elements, "waypoint").size() == 18);
     CHECK(elements.front().attributes.at("end-time") == "2f");
+}
+
+TEST_CASE("A path's document read back is the path: positions to 1e-9, the staff values exactly", "[sif]")
+{
+    for (const char* view : {"top", "front", "side"}) {
+        INFO(view);
+        // Points in the view's plane: (u, v) of the top view laid into the named view's plane.
+        ControlPoints points = three_points;
+        const SifPlane plane = sif_plane_of(preset(view).theta_degrees, preset(view).phi_degrees);
+        for (ControlPoint& point : points) {
+            const Vec3 flat = point.position;
+            if (plane == SifPlane::front)
+                point.position = {0.0, flat.x, flat.y};
+            else if (plane == SifPlane::side)
+                point.position = {flat.x, 0.0, flat.y};
+        }
+        const std::string document =
+            sif_path_document({points, {}, preset(view), {}, SifMotion::tcb, {}, "three.dat"});
+        const Expected<SifPath> read = parse_sif_path(document, "three.sif", {"origin", plane});
+        REQUIRE(read);
+        CHECK(read->warnings.empty());
+        const std::vector<DatPoint>& back = read->file.parts.at(0).points;
+        REQUIRE(back.size() == points.size());
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            CHECK(back[k].position.x == Approx(points[k].position.x).margin(1e-9));
+            CHECK(back[k].position.y == Approx(points[k].position.y).margin(1e-9));
+            CHECK(back[k].position.z == Approx(points[k].position.z).margin(1e-9));
+            REQUIRE(back[k].staff);
+            CHECK(*back[k].staff == points[k].staff);
+        }
+    }
 }
