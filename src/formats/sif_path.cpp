@@ -679,7 +679,7 @@ Expected<SifPath> SifReader::finish()
     if (!m_path_read)
         return Diagnostic{m_file_name, 0,
                           "no layer has an animated vector " + param_text() + " (" + absence_details() +
-                              "); --sif-param names another parameter"};
+                              "); apcs path --sif-param names another parameter"};
     if (m_waypoints.size() < 2)
         return Diagnostic{m_file_name, m_path_line,
                           "the animated " + param_text() + " has " + plural(m_waypoints.size(), "waypoint") +

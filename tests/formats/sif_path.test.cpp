@@ -244,7 +244,7 @@ TEST_CASE("--sif-param reads another animated vector, and a static one is passed
         SifReading reading;
         reading.param = "center";
         CHECK(rejection(document, reading) == "walk.sif: no layer has an animated vector `center` (the root canvas "
-                                              "has 3 layers); --sif-param names another parameter");
+                                              "has 3 layers); apcs path --sif-param names another parameter");
     }
 }
 
@@ -271,14 +271,14 @@ TEST_CASE("a document without an animated origin is refused, saying what it has"
                                   "</layer>\n";
         CHECK(rejection(canvas(layer)) ==
               "walk.sif: no layer has an animated vector `origin` (the root canvas has 1 layer; at line 5 `origin` is "
-              "<composite>, a converted value, which APCS does not read); --sif-param names another parameter");
+              "<composite>, a converted value, which APCS does not read); apcs path --sif-param names another parameter");
     }
     SECTION("an origin linked to an exported value is named with its line")
     {
         const std::string layer = "<layer type=\"circle\">\n<param name=\"origin\" use=\"walk\"/>\n</layer>\n";
         CHECK(rejection(canvas(layer)) == "walk.sif: no layer has an animated vector `origin` (the root canvas has 1 "
                                           "layer; at line 4 `origin` is linked to the exported value use=\"walk\", "
-                                          "which APCS does not read); --sif-param names another parameter");
+                                          "which APCS does not read); apcs path --sif-param names another parameter");
     }
 }
 
@@ -508,5 +508,5 @@ TEST_CASE("a 32 MiB attribute is read whole, a piece at a time", "[formats][sif]
     // grow with what it holds; bench/sif_path.bench.cpp (read_long_attribute) times 4 and 32 MiB.
     const std::string document = canvas("<layer desc=\"" + std::string(32u << 20, 'w') + "\"/>\n");
     CHECK(rejection(document) == "walk.sif: no layer has an animated vector `origin` (the root canvas has 1 "
-                                 "layer); --sif-param names another parameter");
+                                 "layer); apcs path --sif-param names another parameter");
 }
