@@ -255,14 +255,14 @@ TEST_CASE("a document without an animated origin is refused, saying what it has"
         const std::string layer =
             "<layer type=\"circle\">\n<param name=\"origin\"><vector><x>9</x><y>9</y></vector></param>\n</layer>\n";
         CHECK(rejection(canvas(layer + layer)) == "walk.sif: no layer has an animated vector `origin` (the root canvas "
-                                                  "has 2 layers, 2 with a static `origin`); --sif-param names another "
-                                                  "parameter");
+                                                  "has 2 layers, 2 with a static `origin`); apcs path --sif-param names "
+                                                  "another parameter");
     }
     SECTION("no layers")
     {
         CHECK(rejection(canvas("<name>empty</name>\n")) ==
-              "walk.sif: no layer has an animated vector `origin` (the root canvas has 0 layers); --sif-param names "
-              "another parameter");
+              "walk.sif: no layer has an animated vector `origin` (the root canvas has 0 layers); apcs path "
+              "--sif-param names another parameter");
     }
     SECTION("an origin converted to another value node is named with its line")
     {
