@@ -34,7 +34,7 @@ std::size_t count_of(const std::string& text, const std::string& what)
 
 } // namespace
 
-TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point; 2-D data seen from the top", "[cli][sif]")
+TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point, 2-D data seen from the top", "[cli][sif]")
 {
     const TempFolder folder;
     // z all 0: the top view, (x, y) as they are; t c b of the file's own columns.
@@ -51,7 +51,7 @@ TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point; 2-D dat
     CHECK(document.find("fps=\"30\"") != std::string::npos);
 }
 
-TEST_CASE("apcs export names what TCB leaves out on stderr; --sif-motion frames keeps it", "[cli][sif]")
+TEST_CASE("apcs export names what TCB leaves out on stderr, and --sif-motion frames keeps it", "[cli][sif]")
 {
     const TempFolder folder;
     test::write_small_example(folder);
