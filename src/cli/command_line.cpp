@@ -9,6 +9,7 @@
 #include "apcs/cli/inbetween_command.h"
 #include "apcs/cli/options.h"
 #include "apcs/cli/path_command.h"
+#include "apcs/formats/sif_path.h"
 #include "apcs/cli/play_command.h"
 #include "apcs/cli/report.h"
 #include "apcs/cli/script_options.h"
@@ -388,6 +389,10 @@ constexpr std::array<Subcommand, 8> subcommands{{
              ->type_name("NAME");
      },
      [](ParsedLine& line, const RunPlace& place) {
+         if (place.command.count("--sif-param") > 0 && !is_sif_name(line.path_file.string()))
+             return usage_error("--sif-param names what to read of a Synfig document (FILE.sif); " +
+                                    line.path_file.string() + " is read as a .dat file",
+                                &place.command, place.err);
          return to_int(run_path_command(line.path_file, line.options, line.sif_param, place.out, place.err));
      }},
     {"inbetween", "in-between frames by an interpolation law and a padding", "two key files KEY1 KEY2",
@@ -439,6 +444,11 @@ constexpr std::array<Subcommand, 8> subcommands{{
              return usage_error("apcs export takes one path file, or four files KEY1 KEY2 PATH_FIRST PATH_LAST; " +
                                     std::to_string(count) + " given",
                                 &place.command, place.err);
+         for (const char* one_path_only : {"--sif-motion", "--frames-per-span"})
+             if (count == 4 && place.command.count(one_path_only) > 0)
+                 return usage_error(std::string(one_path_only) +
+                                        " shapes one path's document; an animation's moves one waypoint a frame",
+                                    &place.command, place.err);
          return to_int(run_export_command(line.export_request, line.options, place.out, place.err));
      }},
     {"draw", "draw key frames and in-between files overlaid as a picture", "one or more .dat files",

@@ -9,6 +9,7 @@
 #include "apcs/formats/path_files.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <ostream>
 #include <string>
 #include <variant>
@@ -26,6 +27,13 @@ ViewAngles export_view(const CommonOptions& options, bool all_z_zero)
 }
 
 namespace {
+
+// The document's text, held whole until it is written: a control point's outline vertex, mark and
+// waypoint come to about 650 bytes, a frame's waypoint to about 110, a vertex's waypoint in one
+// frame of an animation to about 115 (measured on the documents of tests/e2e/sif_renders.sh).
+constexpr std::uint64_t document_bytes_per_point = 900; // with the circle's waypoints copied once
+constexpr std::uint64_t document_bytes_per_frame = 160;
+constexpr std::uint64_t document_bytes_per_vertex_frame = 160;
 
 bool z_all_zero(std::span<const Vec3> points)
 {
@@ -59,10 +67,16 @@ ExitStatus export_path(const ExportRequest& request, const CommonOptions& option
         return report_bad_input(dat.error(), err);
     const ControlPoints points = control_points_from(*dat, options.staff);
     const bool frames = request.motion == SifMotion::frames;
-    const memory::PathRequest budget{points.size(), options.path.samples_per_segment,
+    // A TCB document evaluates no samples: only --sif-motion frames samples the curve.
+    const memory::PathRequest budget{points.size(), frames ? options.path.samples_per_segment : 1,
                                      frames ? options.path.inbetween_count : 0, false};
-    if (const auto refused = refuse_over_budget(memory::describe(budget), memory::path_bytes(budget), options,
-                                                "lower --samples or --inbetweens", err))
+    const std::uint64_t frame_count = frames ? static_cast<std::uint64_t>(options.path.inbetween_count) + 2 : 0;
+    const std::uint64_t document_bytes = points.size() * document_bytes_per_point + frame_count * document_bytes_per_frame;
+    const std::string asked = frames ? memory::describe(budget) : std::to_string(points.size()) + " control points";
+    if (const auto refused = refuse_over_budget(asked + " and their Synfig document",
+                                                memory::saturating_sum(memory::path_bytes(budget), document_bytes), options,
+                                                frames ? "lower --samples or --inbetweens" : "export a shorter path",
+                                                err))
         return *refused;
     const PathSettings settings = settings_of_path(*dat, options);
     std::vector<Vec3> frame_positions;
@@ -86,7 +100,7 @@ ExitStatus export_animation(const ExportRequest& request, const CommonOptions& o
                             std::ostream& err)
 {
     const FitFiles files{request.files[0], request.files[1], request.files[2], request.files[3]};
-    std::variant<FittedAnimation, ExitStatus> fitted = fit_all_frames(files, options, err);
+    std::variant<FittedAnimation, ExitStatus> fitted = fit_all_frames(files, options, err, document_bytes_per_vertex_frame);
     if (const ExitStatus* failed = std::get_if<ExitStatus>(&fitted))
         return *failed;
     const FittedAnimation& animation = std::get<FittedAnimation>(fitted);

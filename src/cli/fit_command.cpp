@@ -30,7 +30,8 @@ bool all_frames_needed(const CommonOptions& options) { return options.print || p
 // keys, and both edge paths while it fits.
 std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, const ControlPoints& first,
                                                     const ControlPoints& last, const CommonOptions& options,
-                                                    bool all_frames, std::ostream& err)
+                                                    bool all_frames, std::ostream& err,
+                                                    std::uint64_t more_bytes_per_frame_point = 0)
 {
     const std::size_t frames_held =
         all_frames ? static_cast<std::size_t>(options.path.inbetween_count) + 2 : 2;
@@ -38,7 +39,10 @@ std::optional<ExitStatus> refuse_over_budget_of_fit(const EqualisedKeys& keys, c
     const auto path = [&options](const ControlPoints& points) {
         return memory::path_bytes({points.size(), options.path.samples_per_segment, options.path.inbetween_count, false});
     };
-    const std::uint64_t needed = memory::saturating_sum(memory::frames_bytes(frames),
+    // At most 100002 frames of 2·10^6 points (SPEC §2.1's limits, doubled by adding points) and a
+    // few hundred bytes each: far from wrapping.
+    const std::uint64_t more = static_cast<std::uint64_t>(frames_held) * keys.key1.point_count() * more_bytes_per_frame_point;
+    const std::uint64_t needed = memory::saturating_sum(memory::saturating_sum(memory::frames_bytes(frames), more),
                                                         memory::saturating_sum(path(first), path(last)));
     const std::string inbetweens = "(--inbetweens " + std::to_string(options.path.inbetween_count) + ")";
     const std::string asked = all_frames
@@ -98,13 +102,14 @@ std::variant<FitInputs, ExitStatus> read_fit_inputs(const FitFiles& files, const
 }
 
 std::variant<FittedAnimation, ExitStatus> fit_all_frames(const FitFiles& files, const CommonOptions& options,
-                                                         std::ostream& err)
+                                                         std::ostream& err, std::uint64_t more_bytes_per_frame_point)
 {
     std::variant<FitInputs, ExitStatus> read = read_fit_inputs(files, options, err);
     if (const ExitStatus* failed = std::get_if<ExitStatus>(&read))
         return *failed;
     FitInputs& inputs = std::get<FitInputs>(read);
-    if (const auto refused = refuse_over_budget_of_fit(inputs.keys, inputs.first, inputs.last, options, true, err))
+    if (const auto refused = refuse_over_budget_of_fit(inputs.keys, inputs.first, inputs.last, options, true, err,
+                                                       more_bytes_per_frame_point))
         return *refused;
     const auto [first_path, last_path] = evaluate_both_paths(inputs, files, err);
     FrameSequence frames = fit_key_frames(inputs.keys, first_path, last_path, options.surface);

@@ -2,6 +2,7 @@
 
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/animation/motion_path.h"
+#include "apcs/base/utf8.h"
 #include "apcs/formats/number_text.h"
 
 #include <algorithm>
@@ -81,10 +82,6 @@ struct PlaneBox {
         bottom = std::min(bottom, point.y);
         top = std::max(top, point.y);
     }
-    double largest_coordinate() const
-    {
-        return std::max({std::abs(left), std::abs(right), std::abs(bottom), std::abs(top)});
-    }
     // The larger side; 1 for a box of no size, so that a path of one point still has a canvas.
     double size() const
     {
@@ -98,26 +95,51 @@ constexpr int shorter_side_least_pixels = 120;
 
 void append_number(std::string& text, double value) { append_shortest(text, value); }
 
+// XML 1.0's characters (its production Char): others cannot stand in a document, even escaped.
+bool is_xml_character(char32_t c)
+{
+    return c == 0x9 || c == 0xA || c == 0xD || (c >= 0x20 && c <= 0xD7FF) || (c >= 0xE000 && c <= 0xFFFD) ||
+           (c >= 0x10000 && c <= 0x10FFFF);
+}
+
+// `raw` (a file or part name, a sentence) as the text of an element or an attribute: the markup
+// characters escaped, bytes that are not UTF-8 read as U+FFFD, what XML cannot hold as '?'.
 void append_escaped(std::string& text, std::string_view raw)
 {
-    for (const char c : raw) {
+    for (const char32_t c : decode_utf8(raw)) {
         switch (c) {
-        case '&': text += "&amp;"; break;
-        case '<': text += "&lt;"; break;
-        case '>': text += "&gt;"; break;
-        case '"': text += "&quot;"; break;
-        default: text += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+        case U'&': text += "&amp;"; break;
+        case U'<': text += "&lt;"; break;
+        case U'>': text += "&gt;"; break;
+        case U'"': text += "&quot;"; break;
+        default:
+            if (is_xml_character(c) && c >= 0x20)
+                append_utf8(text, c);
+            else
+                text += c == U'\t' ? '\t' : '?';
         }
     }
 }
 
-// The view plane's points as a document writes them: projected, then with the decimals that keep
-// them within 0.5e-9 of the drawing's size (decimals_for_size), which reads back far inside 1e-6 and
-// is shorter and faster to write and read than the shortest exact form.
+// `raw` inside a comment, which XML ends at the first "--": each "--" is written "- -".
+void append_comment_text(std::string& text, std::string_view raw)
+{
+    std::string escaped;
+    append_escaped(escaped, raw);
+    for (const char c : escaped) {
+        if (c == '-' && !text.empty() && text.back() == '-')
+            text += ' ';
+        text += c;
+    }
+}
+
+// The view plane's points as a document writes them, projected. What is drawn (the outline, the
+// marks, an animation's parts) with the decimals that keep 0.5e-9 of the drawing's size
+// (decimals_for_size: shorter and faster to write and read than the shortest exact form); the
+// path's own waypoints exactly, so that a document read back gives the very numbers projected.
 class PlaneText {
 public:
-    PlaneText(const ParallelView& view, double largest_coordinate)
-        : m_view(view), m_decimals(decimals_for_size(largest_coordinate))
+    PlaneText(const ParallelView& view, double drawing_size) : m_view(view), m_decimals(decimals_for_size(drawing_size))
     {
     }
     PlanePoint at(const Vec3& world) const { return m_view(world); }
@@ -127,6 +149,14 @@ public:
         append_fixed(text, point.x, m_decimals);
         text += "</x><y>";
         append_fixed(text, point.y, m_decimals);
+        text += "</y></vector>";
+    }
+    static void exact_vector(std::string& text, PlanePoint point)
+    {
+        text += "<vector><x>";
+        append_shortest(text, point.x);
+        text += "</x><y>";
+        append_shortest(text, point.y);
         text += "</y></vector>";
     }
 
@@ -309,18 +339,25 @@ void append_tcb_waypoint(std::string& text, long long frame, const ControlPoint&
     text += "\" bias=\"";
     append_number(text, point.staff.bias);
     text += "\" temporal-tension=\"0\">";
-    plane.vector(text, plane.at(point.position));
+    PlaneText::exact_vector(text, plane.at(point.position));
     text += "</waypoint>\n";
 }
 
+// A path's frames are written exactly (they are what a document read back gives); a drawing's
+// vertices with the drawing's decimals.
+enum class Precision { drawn, exact };
+
 void append_linear_waypoint(std::string& text, const PlaneText& plane, long long frame, PlanePoint position,
-                            std::string_view indent)
+                            Precision precision, std::string_view indent)
 {
     text += indent;
     text += "<waypoint time=\"";
     append_frame_time(text, frame);
     text += "\" before=\"linear\" after=\"linear\">";
-    plane.vector(text, position);
+    if (precision == Precision::exact)
+        PlaneText::exact_vector(text, position);
+    else
+        plane.vector(text, position);
     text += "</waypoint>\n";
 }
 
@@ -336,7 +373,8 @@ std::string moving_origin(const SifPathRequest& request, const PlaneText& plane)
                                 plane);
     } else {
         for (std::size_t f = 0; f < request.frames.size(); ++f)
-            append_linear_waypoint(origin, plane, static_cast<long long>(f), plane.at(request.frames[f]), "      ");
+            append_linear_waypoint(origin, plane, static_cast<long long>(f), plane.at(request.frames[f]),
+                                   Precision::exact, "      ");
     }
     origin += "      </animated>\n    ";
     return origin;
@@ -352,10 +390,10 @@ void append_left_out_comment(std::string& text, const SifPathRequest& request)
     const std::vector<std::string> left_out = sif_left_out(request.points, request.slopes);
     if (left_out.empty())
         return;
-    text += "  <!-- Not carried by Synfig's TCB waypoints (apcs export --sif-motion frames keeps them):\n";
+    text += "  <!-- Not carried by Synfig's TCB waypoints (an export with sif-motion frames keeps them):\n";
     for (const std::string& sentence : left_out) {
         text += "       ";
-        append_escaped(text, sentence);
+        append_comment_text(text, sentence);
         text += ".\n";
     }
     text += "  -->\n";
@@ -391,7 +429,7 @@ std::string sif_path_document(const SifPathRequest& request)
     const ParallelView view(request.view);
     const std::vector<HermiteSegment> segments = kb_segments(request.points, request.slopes);
     const PlaneBox box = path_box(request, segments, view);
-    const PlaneText plane(view, box.largest_coordinate());
+    const PlaneText plane(view, box.size());
     std::string text;
     text.reserve(request.points.size() * 700 + request.frames.size() * 120 + 2048);
     append_canvas_start(text, box, request.timing.fps, last_frame_of(request), request.name);
@@ -411,32 +449,32 @@ std::string sif_animation_document(const SifAnimationRequest& request)
     for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
         for (const Vec3& point : request.frames.frame(f))
             box.add(view(point));
-    const PlaneText plane(view, box.largest_coordinate());
+    const PlaneText plane(view, box.size());
     std::string text;
     const long long last_frame =
         request.frames.frame_count() == 0 ? 0 : static_cast<long long>(request.frames.frame_count()) - 1;
     append_canvas_start(text, box, request.fps, last_frame, request.name);
     text += "  <!-- APCS's frames: frame 0 is KEY1, the last KEY2; each part's vertices move through the "
             "in-betweens, one linear waypoint a frame. -->\n";
-    // Each frame's polylines, part by part: a closed part ends back at its first point.
-    std::vector<std::vector<std::vector<Vec3>>> polylines;
-    polylines.reserve(request.frames.frame_count());
-    for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
-        polylines.push_back(request.structure.polylines(request.frames.frame(f)));
-    const std::size_t part_count = polylines.empty() ? 0 : polylines.front().size();
-    for (std::size_t part = 0; part < part_count; ++part) {
-        append_outline_start(text, request.structure.parts[part].name.empty() ? "part " + std::to_string(part + 1)
-                                                                               : request.structure.parts[part].name,
-                             false);
-        for (std::size_t vertex = 0; vertex < polylines.front()[part].size(); ++vertex) {
+    // Every frame lays its points out part after part, as the structure's parts hold them; a closed
+    // part is a looped outline, whether or not a frame's first and last points meet.
+    std::size_t first_point = 0;
+    for (std::size_t part = 0; part < request.structure.parts.size(); ++part) {
+        const GraphicPart& shape = request.structure.parts[part];
+        if (first_point + shape.points.size() > request.frames.points_per_frame())
+            break; // frames of another graphic: never from fit, which lays out the structure's points
+        append_outline_start(text, shape.name.empty() ? "part " + std::to_string(part + 1) : shape.name,
+                             shape.closure == Closure::closed);
+        for (std::size_t vertex = first_point; vertex < first_point + shape.points.size(); ++vertex) {
             std::string point = "<animated type=\"vector\">\n";
-            for (std::size_t f = 0; f < polylines.size(); ++f)
-                append_linear_waypoint(point, plane, static_cast<long long>(f), plane.at(polylines[f][part][vertex]),
-                                       "        ");
+            for (std::size_t f = 0; f < request.frames.frame_count(); ++f)
+                append_linear_waypoint(point, plane, static_cast<long long>(f), plane.at(request.frames.frame(f)[vertex]),
+                                       Precision::drawn, "        ");
             point += "      </animated>";
             append_bline_vertex(text, plane, point, {}, {});
         }
         append_outline_end(text, box.size() / 150.0, 0.0);
+        first_point += shape.points.size();
     }
     text += "</canvas>\n";
     return text;

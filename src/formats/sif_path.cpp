@@ -221,6 +221,7 @@ private:
     void end_vector();
     void end_waypoint();
     void end_path();
+    bool enter_element();
     void note_not_literal(std::string what);
 
     Expected<SifPath> finish();
@@ -244,6 +245,7 @@ private:
     std::unique_ptr<XML_ParserStruct, decltype(&XML_ParserFree)> m_parser;
     std::optional<Diagnostic> m_problem;
     std::vector<Node> m_open;
+    std::size_t m_depth = 0; // elements open, counted after the path too
     double m_fps = default_fps;
 
     // What was seen before the path, for the message when there is none.
@@ -333,7 +335,9 @@ Expected<void> SifReader::feed(std::string_view text)
 void XMLCALL SifReader::on_start(void* reader, const XML_Char* name, const XML_Char** attributes)
 {
     auto& self = *static_cast<SifReader*>(reader);
-    if (self.m_problem)
+    if (self.m_problem || !self.enter_element())
+        return;
+    if (self.m_path_read)
         return;
     self.m_open.push_back(self.place_of(name, attributes));
 }
@@ -341,7 +345,9 @@ void XMLCALL SifReader::on_start(void* reader, const XML_Char* name, const XML_C
 void XMLCALL SifReader::on_end(void* reader, const XML_Char*)
 {
     auto& self = *static_cast<SifReader*>(reader);
-    if (self.m_problem || self.m_open.empty())
+    if (self.m_depth > 0)
+        --self.m_depth;
+    if (self.m_problem || self.m_path_read || self.m_open.empty())
         return;
     const Node closed = self.m_open.back();
     self.m_open.pop_back();
@@ -666,12 +672,23 @@ void SifReader::end_waypoint()
     m_waypoints.push_back(m_waypoint);
 }
 
-// The path is read: nothing after it matters, so expat goes on only to check the text is XML.
+// The path is read: nothing after it matters, so expat goes on only to check the text is XML
+// (and the elements' depth, which holds expat's memory).
 void SifReader::end_path()
 {
     m_path_read = true;
-    XML_SetElementHandler(m_parser.get(), nullptr, nullptr);
     XML_SetCharacterDataHandler(m_parser.get(), nullptr);
+}
+
+// Expat keeps every open element's name: a document of elements nested without end would take
+// memory in proportion to its size, so depth is bounded far above a Synfig document's few dozen.
+bool SifReader::enter_element()
+{
+    if (++m_depth <= most_nested_elements)
+        return true;
+    refuse("elements nested more than " + std::to_string(most_nested_elements) +
+           " deep; a Synfig document nests a few dozen");
+    return false;
 }
 
 Expected<SifPath> SifReader::finish()

@@ -46,8 +46,8 @@ TEST_CASE("apcs export FILE.dat --sif: a TCB waypoint per control point, 2-D dat
     CHECK(count_of(document, "<waypoint ") == 3);
     CHECK(document.find("<waypoint time=\"12f\" before=\"auto\" after=\"auto\" tension=\"0\" continuity=\"-0.25\"") !=
           std::string::npos);
-    // Coordinates below 10 carry 9 decimals (within 0.5e-9 of the drawing's size).
-    CHECK(document.find("<vector><x>4.000000000</x><y>2.000000000</y></vector></waypoint>") != std::string::npos);
+    // The waypoints' coordinates are exact, in their shortest form.
+    CHECK(document.find("<vector><x>4</x><y>2</y></vector></waypoint>") != std::string::npos);
     CHECK(document.find("fps=\"30\"") != std::string::npos);
 }
 
@@ -153,4 +153,22 @@ TEST_CASE("The session's path prompt reads a Synfig document and writes the adju
     // Tension 0.05 (one 6) on each control point of (0, 0, 0), (0, −4, 5), (0, 0, 10).
     CHECK(adjusted.find("0 -4 5 0.05 0 0 0") != std::string::npos);
     CHECK(text_of(folder / "way1.sif").starts_with("<?xml"));
+}
+
+TEST_CASE("Options that would be ignored are refused: --sif-param on a .dat, one path's options on an animation",
+          "[cli][sif]")
+{
+    const TempFolder folder;
+    test::write_small_example(folder);
+    const auto param = run_apcs({"path", (folder / "way1.dat").string(), "--sif-param", "offset"});
+    CHECK(param.status == 2);
+    CHECK(param.err.find("--sif-param names what to read of a Synfig document (FILE.sif)") != std::string::npos);
+    for (const char* option : {"--sif-motion", "--frames-per-span"}) {
+        const auto animation =
+            run_apcs({"export", (folder / "key1.dat").string(), (folder / "key2.dat").string(),
+                      (folder / "way1.dat").string(), (folder / "way4.dat").string(), "--sif", "-", option,
+                      std::string(option) == "--sif-motion" ? "frames" : "6"});
+        CHECK(animation.status == 2);
+        CHECK(animation.err.find(std::string(option) + " shapes one path's document") != std::string::npos);
+    }
 }

@@ -59,6 +59,13 @@ grep -q "acceleration" frames.err && fail "--sif-motion frames keeps the acceler
 grep -q "not carried to Synfig: the acceleration 0.6 of the span from control point 1 to 2" accel-tcb.err ||
   fail "a TCB export of an acceleration does not say it is left out: $(cat accel-tcb.err)"
 grep -q "<!-- Not carried by Synfig" accel-tcb.sif || fail "the TCB document does not say what it left out"
+# Saying so keeps it a document: Synfig renders it, and APCS reads it back as the path it was.
+render accel-tcb.sif accel-tcb
+"$apcs" path accel-tcb.sif --print > accel-back.print 2> accel-back.err || fail "apcs path accel-tcb.sif: $(cat accel-back.err)"
+"$apcs" path accel.dat --print > accel.print || fail "apcs path accel.dat"
+# The curve is the same (the accelerations, left out, move only the in-betweens).
+curve() { sed -n '/^# curve/,/^# inbetweens/p' "$1"; }
+[ "$(curve accel-back.print)" = "$(curve accel.print)" ] || fail "accel-tcb.sif read back is not accel.dat's curve"
 
 "$apcs" export key1.dat key2.dat way1.dat way4.dat --sif n-to-l.sif || fail "apcs export of the N-to-L animation"
 render n-to-l.sif n-to-l

@@ -169,20 +169,44 @@ TEST_CASE("An animation's document: an outline per part, each vertex through eve
 {
     Graphic structure;
     structure.parts.push_back({"stroke", Closure::open, {{0, 0, 0}, {1, 0, 0}}});
-    structure.parts.push_back({"", Closure::closed, {{0, 1, 0}, {1, 1, 0}, {1, 2, 0}}});
-    FrameSequence frames(3, 5);
+    structure.parts.push_back({"", Closure::closed, {{0, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 1, 0}}});
+    // Frame 0 closes the second part by its first and last points meeting; later frames move its
+    // last point away: the outline is looped in every frame, its 4 vertices throughout.
+    FrameSequence frames(3, 6);
     for (std::size_t f = 0; f < 3; ++f)
-        for (std::size_t p = 0; p < 5; ++p)
-            frames.frame(f)[p] = structure.all_points()[p] + Vec3{static_cast<double>(f), 0, 0};
+        for (std::size_t p = 0; p < 6; ++p)
+            frames.frame(f)[p] = structure.all_points()[p] + Vec3{static_cast<double>(f), p == 5 ? 0.5 * static_cast<double>(f) : 0.0, 0};
     const SifAnimationRequest request{structure, frames, preset("top"), 24.0, "a to b"};
-    const std::vector<XmlElement> elements = elements_of(sif_animation_document(request));
+    const std::string document = sif_animation_document(request);
+    const std::vector<XmlElement> elements = elements_of(document);
     const auto layers = named(elements, "layer");
     REQUIRE(layers.size() == 2);
     CHECK(layers[0].attributes.at("desc") == "stroke");
     CHECK(layers[1].attributes.at("desc") == "part 2");
-    // 2 vertices, then 3 and the closed part's return to its first: 6 vertices, 3 frames each.
+    const auto blines = named(elements, "bline");
+    REQUIRE(blines.size() == 2);
+    CHECK(blines[0].attributes.at("loop") == "false");
+    CHECK(blines[1].attributes.at("loop") == "true");
+    // 2 + 4 vertices, 3 frames each.
     CHECK(named(elements, "waypoint").size() == 18);
     CHECK(elements.front().attributes.at("end-time") == "2f");
+    // The last vertex in the last frame is the frame's own point (2, 2), not a point of another.
+    CHECK(document.find("<waypoint time=\"2f\" before=\"linear\" after=\"linear\"><vector><x>2.000000000</x><y>2."
+                        "000000000</y></vector></waypoint>\n      </animated></point>") != std::string::npos);
+}
+
+TEST_CASE("A document that names what it leaves out, or a name that is not UTF-8, is still XML", "[sif]")
+{
+    ControlPoints accelerated = three_points;
+    accelerated[0].staff.acceleration = 0.6;
+    const std::string document = sif_path_document(
+        {accelerated, {0.5, 1.0}, preset("top"), {}, SifMotion::tcb, {}, std::string("caf\xe9 -- <b>.dat")});
+    CHECK(document.find("Not carried") != std::string::npos);
+    const Expected<SifPath> read = parse_sif_path(document, "left-out.sif", {});
+    INFO((read ? std::string() : read.error().to_string()));
+    REQUIRE(read);
+    CHECK(read->file.parts.at(0).points.size() == 3);
+    CHECK(document.find("<name>caf\xef\xbf\xbd -- &lt;b&gt;.dat</name>") != std::string::npos);
 }
 
 TEST_CASE("A path's document read back is the path: positions to 1e-9, the staff values exactly", "[sif]")
@@ -213,5 +237,19 @@ TEST_CASE("A path's document read back is the path: positions to 1e-9, the staff
             REQUIRE(back[k].staff);
             CHECK(*back[k].staff == points[k].staff);
         }
+    }
+}
+
+TEST_CASE("Waypoints are written exactly: a path far from the origin reads back to the bit", "[sif]")
+{
+    const ControlPoints far{{{999999999.0, 0.0, 0.0}, {}}, {{999999999.25, 0.04, 0.0}, {}}, {{999999999.5, -0.03, 0.0}, {}}};
+    const Expected<SifPath> read =
+        parse_sif_path(sif_path_document({far, {}, preset("top"), {}, SifMotion::tcb, {}, "far.dat"}), "far.sif", {});
+    REQUIRE(read);
+    const std::vector<DatPoint>& back = read->file.parts.at(0).points;
+    REQUIRE(back.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+        CHECK(back[k].position.x == far[k].position.x);
+        CHECK(back[k].position.y == far[k].position.y);
     }
 }

@@ -510,3 +510,18 @@ TEST_CASE("a 32 MiB attribute is read whole, a piece at a time", "[formats][sif]
     CHECK(rejection(document) == "walk.sif: no layer has an animated vector `origin` (the root canvas has 1 "
                                  "layer); apcs path --sif-param names another parameter");
 }
+
+TEST_CASE("elements nested past 1000 deep are refused where they pass it, before or after the path",
+          "[formats][sif][memory]")
+{
+    std::string deep;
+    for (std::size_t level = 0; level < most_nested_elements; ++level)
+        deep += "<a>";
+    // The canvas is the first element: 999 more fit, the 1000th <a> is the 1001st element.
+    const std::string document = "<?xml version=\"1.0\"?>\n<canvas>\n" + deep + "\n</canvas>\n";
+    CHECK(rejection(document) == "walk.sif:3: elements nested more than 1000 deep; a Synfig document nests a few dozen");
+    const std::string after_path = path_document(waypoint("0f", "0", "0") + waypoint("12f", "1", "0"));
+    const std::size_t end = after_path.rfind("</canvas>");
+    CHECK(rejection(after_path.substr(0, end) + deep + "\n" + after_path.substr(end))
+              .ends_with("elements nested more than 1000 deep; a Synfig document nests a few dozen"));
+}

@@ -5,6 +5,7 @@
 #include "apcs/animation/frame_sequence.h"
 #include "apcs/cli/options.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <variant>
@@ -39,9 +40,10 @@ struct FittedAnimation {
 };
 
 // fit's whole work for a command that needs every frame at once (--print, the pictures, export):
-// the inputs, the memory budget, the paths, then the frames.
+// the inputs, the memory budget (with `more_bytes_per_frame_point` for what the caller makes of
+// every point of every frame: export's document), the paths, then the frames.
 std::variant<FittedAnimation, ExitStatus> fit_all_frames(const FitFiles& files, const CommonOptions& options,
-                                                         std::ostream& err);
+                                                         std::ostream& err, std::uint64_t more_bytes_per_frame_point = 0);
 
 // `apcs fit KEY1 KEY2 PATH_FIRST PATH_LAST`: equalise the keys, check and evaluate both paths,
 // fit the surface, then print the frames (--print) or write inb001.dat … into --out.

@@ -3,6 +3,7 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/dat_file.h"
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,9 @@ struct SifPath {
 // max_dat_magnitude; tension, continuity or bias outside [-1, 1]; a time Synfig writes in a form
 // APCS does not read (SOT, EOT, hh:mm:ss). The text is streamed through expat in chunks: time and
 // memory grow linearly with it, and only the chosen parameter's waypoints are kept.
+// Elements nested deeper are refused: expat would hold them all (a Synfig document nests a few dozen).
+inline constexpr std::size_t most_nested_elements = 1000;
+
 // Whether `name` is a Synfig document by its extension (.sif, in any case).
 bool is_sif_name(std::string_view name);
 
