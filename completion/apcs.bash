@@ -75,6 +75,10 @@ _apcs()
         _apcs_words "path inbetween fit export draw play figures" "$current"
     elif [[ $command == play ]]; then
         _apcs_files scn "$current"
+    elif [[ $command == path ]]; then
+        # A path file, or a Synfig document read as one.
+        mapfile -t COMPREPLY < <(compgen -d -- "$current"; compgen -f -X '!*.dat' -- "$current"
+                                 compgen -f -X '!*.sif' -- "$current")
     elif [[ $command != figures ]]; then
         _apcs_files dat "$current"
     fi

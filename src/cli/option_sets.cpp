@@ -183,7 +183,9 @@ void add_inbetween_count(CLI::App& command, CommonOptions& options)
         ->type_name("M");
 }
 
-void add_view(CLI::App& command, CommonOptions& options)
+// `flat_from_top`: the command sees data whose z are all 0 from the top unless a view is given
+// (export, SPEC §7.5), which --view's help then says.
+void add_view(CLI::App& command, CommonOptions& options, bool flat_from_top = false)
 {
     const CLI::Validator degrees = number_in(limits::view_degrees);
     CLI::Option* theta =
@@ -200,6 +202,8 @@ void add_view(CLI::App& command, CommonOptions& options)
         names.emplace_back(preset.name);
         help += std::string(names.size() == 1 ? ": " : "; ") + preset.name + " " + preset.shows;
     }
+    if (flat_from_top)
+        help += ". Without --view, --theta or --phi, data whose z are all 0 is seen from the top";
     command
         .add_option_function<std::string>(
             "--view",
@@ -436,7 +440,7 @@ void add_export_command_options(CLI::App& command, CommonOptions& options, std::
     add_curve(command, options, slopes);
     add_surface(command, options);
     add_inbetween_count(command, options);
-    add_view(command, options);
+    add_view(command, options, true);
 }
 
 void add_inbetween_command_options(CLI::App& command, CommonOptions& options, InbetweenSettings& settings)

@@ -69,5 +69,6 @@ expect "export" apcs ex
 expect "frames tcb" apcs export way1.dat --sif-motion ""
 touch path.sif
 expect "folder path.sif" apcs export key1.dat --sif ""
+expect "folder key1.dat key2.dat path.sif" apcs path ""
 expect "folder frames.gif" apcs fit a b c d --gif ""
-echo "passed: 23 completions and the options of 7 commands"
+echo "passed: 24 completions and the options of 7 commands"
