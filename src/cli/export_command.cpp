@@ -85,9 +85,9 @@ ExitStatus export_path(const ExportRequest& request, const CommonOptions& option
         warn_if_frames_freeze(path, file.string(), err);
         frame_positions = path_frames(points, path);
     }
-    std::vector<Vec3> positions(points.size());
-    std::ranges::transform(points, positions.begin(), [](const ControlPoint& point) { return point.position; });
-    const SifPathRequest document{points,  settings.slopes, export_view(options, z_all_zero(positions)),
+    // The view is chosen on the control points themselves, not on a copy of their positions.
+    const bool flat = std::ranges::all_of(points, [](const ControlPoint& point) { return point.position.z == 0.0; });
+    const SifPathRequest document{points,  settings.slopes, export_view(options, flat),
                                   request.timing, request.motion, frame_positions, file.filename().string()};
     if (!frames)
         for (const std::string& sentence : sif_left_out(points, settings.slopes))
