@@ -19,9 +19,11 @@ build_and_run=(g++ cmake make ninja-build pkgconf libcli11-dev libeigen3-dev lib
 # the sixel file in xterm -ti vt340 -fn 9x15 and the kitty file in kitty on a virtual X server, and takes
 # a screenshot with xwd), locales (localedef and its sources: locale_numbers.sh makes a German locale),
 # chromium and poppler-utils (handout_print.sh prints a handout's index.html to PDF and counts its pictures),
-# and synfig (sif_renders.sh renders `apcs export --sif` documents with Synfig's own renderer).
+# synfig (sif_renders.sh renders `apcs export --sif` documents with Synfig's own renderer), and
+# openssh-server and openssh-client (ssh_session.py runs the session over a real SSH link: sshd on a port
+# of its own, ssh -tt to it).
 testing=(catch2 tmux procps groff-base python3 bsdutils mount librsvg2-bin imagemagick xvfb xterm kitty x11-apps
-         xfonts-base locales chromium poppler-utils synfig)
+         xfonts-base locales chromium poppler-utils synfig openssh-server openssh-client)
 case "${1:-}" in
   --run) testing=(); shift ;;
   --packaging) testing+=(debhelper dpkg-dev fakeroot bash-completion lintian man-db); shift ;;
