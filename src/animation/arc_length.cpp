@@ -409,4 +409,57 @@ Vec3 curve_point_at(std::span<const HermiteSegment> segments, CurveParameter par
     return segments[segment].point_at(std::clamp(parameter.u, 0.0, 1.0));
 }
 
+namespace {
+
+constexpr int halfway_panels = 16;
+
+} // namespace
+
+// Five-point Gauss–Legendre: exact for a speed polynomial of degree 9.
+double speed_integral(const HermiteSegment& segment, double from, double to)
+{
+    constexpr std::array<double, 5> nodes{0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
+                                          0.9061798459386640};
+    constexpr std::array<double, 5> weights{0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
+                                            0.2369268850561891, 0.2369268850561891};
+    const double half = (to - from) / 2.0;
+    const double middle = (to + from) / 2.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+        sum += weights[i] * length(segment.derivative_at(middle + half * nodes[i]));
+    return sum * half;
+}
+
+double halfway_parameter(const HermiteSegment& segment)
+{
+    std::array<double, halfway_panels + 1> cumulative{};
+    for (int p = 0; p < halfway_panels; ++p)
+        cumulative[static_cast<std::size_t>(p) + 1] =
+            cumulative[static_cast<std::size_t>(p)] +
+            speed_integral(segment, static_cast<double>(p) / halfway_panels, static_cast<double>(p + 1) / halfway_panels);
+    const double total = cumulative.back();
+    if (!(total > 0.0))
+        return 0.5;
+    const double target = total / 2.0;
+    const auto panel_end = std::lower_bound(cumulative.begin() + 1, cumulative.end(), target);
+    const int panel = static_cast<int>(panel_end - cumulative.begin()) - 1;
+    const double panel_start = static_cast<double>(panel) / halfway_panels;
+    const double within = target - cumulative[static_cast<std::size_t>(panel)];
+    double low = panel_start;
+    double high = static_cast<double>(panel + 1) / halfway_panels;
+    double u = (low + high) / 2.0;
+    // Newton's steps kept inside a bracket that halves when a step would leave it; the bound only
+    // guarantees an end (a double's resolution is reached in some 60 halvings).
+    for (int iteration = 0; iteration < 100 && high - low > 1e-15; ++iteration) {
+        const double reached = speed_integral(segment, panel_start, u);
+        if (std::abs(reached - within) <= 1e-13 * total)
+            return u;
+        (reached < within ? low : high) = u;
+        const double speed = length(segment.derivative_at(u));
+        const double step = speed > 0.0 ? u - (reached - within) / speed : low - 1.0;
+        u = step > low && step < high ? step : (low + high) / 2.0;
+    }
+    return u;
+}
+
 } // namespace apcs

@@ -40,6 +40,35 @@ std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> p
     return spans;
 }
 
+std::vector<AccelerationSpan> acceleration_spans_after(std::span<const AccelerationSpan> before,
+                                                      std::span<const ControlPoint> points, const PathChange& change)
+{
+    std::vector<AccelerationSpan> spans;
+    if (points.size() < 2)
+        return spans;
+    const std::size_t last = points.size() - 1;
+    const auto acceleration = [&](std::size_t k) { return limits::staff_value.clamp(points[k].staff.acceleration); };
+    const std::size_t changed_end = change.first + change.inserted; // new numbering, the point after
+    std::size_t first = 0;
+    const auto start_span = [&](std::size_t start) {
+        spans.push_back({first, start, acceleration(first)});
+        first = start;
+    };
+    // A span starts at k where k's acceleration is not k − 1's: only the changed points and the one
+    // after them can start or stop starting one.
+    for (const AccelerationSpan& span : before)
+        if (span.first_point > 0 && span.first_point < change.first)
+            start_span(span.first_point);
+    for (std::size_t k = std::max<std::size_t>(change.first, 1); k <= std::min(changed_end, last - 1); ++k)
+        if (acceleration(k) != acceleration(k - 1))
+            start_span(k);
+    for (const AccelerationSpan& span : before)
+        if (span.first_point > change.first + change.removed)
+            start_span(span.first_point - change.removed + change.inserted);
+    spans.push_back({first, last, acceleration(first)});
+    return spans;
+}
+
 std::vector<int> share_by_largest_remainder(std::span<const double> weights, int total)
 {
     std::vector<int> shares(weights.size(), 0);
@@ -347,7 +376,12 @@ SegmentSplice reevaluate_path(std::span<const ControlPoint> points, const PathSe
         const bool spans_kept =
             same_count && change.inserted > 0 && were_current &&
             same_accelerations(points, path.span_timings, change.first, change.first + change.inserted - 1);
-        place_inbetweens_on(spans_kept ? spans_of(path.span_timings) : acceleration_spans(points), points, settings, path);
+        // Spans placed on the points before the change are read around it alone (a waypoint edit).
+        const bool spans_known = were_current && !path.span_timings.empty();
+        place_inbetweens_on(spans_kept    ? spans_of(path.span_timings)
+                            : spans_known ? acceleration_spans_after(spans_of(path.span_timings), points, change)
+                                          : acceleration_spans(points),
+                            points, settings, path);
     };
     if (change.what == PathChange::What::accelerations) {
         if (in_steps && (exact || !path.segments_unmade.empty())) {

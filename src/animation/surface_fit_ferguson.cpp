@@ -48,21 +48,6 @@ std::vector<HermiteSegment> ferguson_point_paths(std::span<const Vec3> key1, std
 
 namespace {
 
-// ∫ ‖P'(u)‖ du from a to b by five-point Gauss-Legendre: exact for a speed polynomial of degree 9.
-double speed_integral(const HermiteSegment& segment, double a, double b)
-{
-    constexpr std::array<double, 5> nodes{0.0, -0.5384693101056831, 0.5384693101056831, -0.9061798459386640,
-                                          0.9061798459386640};
-    constexpr std::array<double, 5> weights{0.5688888888888889, 0.4786286704993665, 0.4786286704993665,
-                                            0.2369268850561891, 0.2369268850561891};
-    const double half = (b - a) / 2.0;
-    const double middle = (a + b) / 2.0;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < nodes.size(); ++i)
-        sum += weights[i] * length(segment.derivative_at(middle + half * nodes[i]));
-    return sum * half;
-}
-
 // The same on [a, b] as two halves, each by the five-point rule: the rule the table keeps.
 double piece_integral(const HermiteSegment& segment, double a, double b)
 {

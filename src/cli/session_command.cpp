@@ -16,6 +16,7 @@
 #include "apcs/session/rewindable_files.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cctype>
 #include <cstdlib>
 #include <langinfo.h>
@@ -128,22 +129,40 @@ SessionSettings session_settings(const CommonOptions& options)
 
 void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out)
 {
+    // A step's screen is printed when the next one changes the phase (the transcript's steps): the
+    // screen after the last key the step took. It is drawn only before a key that may end the step
+    // (a path of 16,000 waypoints inserted, 10^6 staff keys: a screen a key would be most of the
+    // replay's time).
     std::string shown = screen_text(session.screen(), glyphs);
+    bool shown_is_current = true;
     SessionPhase shown_phase = session.phase();
+    const auto draw_current = [&] {
+        if (!shown_is_current)
+            shown = screen_text(session.screen(), glyphs);
+        shown_is_current = true;
+    };
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
     // Nobody can press Esc: each split runs to its end, and the animation's last frame ends its
-    // step. A step's screen is printed when the next one changes the phase (the transcript's
-    // steps).
+    // step.
     IdleDrive drive;
+    drive.before_step = [&] {
+        // While the session works (a split), its screens are not a step's last: the last was drawn
+        // before the key that set it to work.
+        if (!session.busy() && !replay.next_work_keeps_phase())
+            draw_current();
+    };
     drive.after_step = [&] {
         if (session.busy())
             return;
-        if (session.phase() != shown_phase)
+        if (session.phase() != shown_phase) {
+            assert(shown_is_current && "a key vouched to keep its step ended it");
             print_shown();
-        shown = screen_text(session.screen(), glyphs);
+        }
+        shown_is_current = false;
         shown_phase = session.phase();
     };
     play_to_idle(replay, drive);
+    draw_current();
     replay.finish();
     // The last step: the end, or where a script that ends mid-step stopped and why.
     print_shown();

@@ -257,7 +257,7 @@ void PathEditor::refine()
     measure_move_when_refined();
 }
 
-void PathEditor::measure_move_when_refined()
+void PathEditor::measure_move_when_refined() const
 {
     if (!m_move_unmeasured || m_picture->refining())
         return;
@@ -453,7 +453,6 @@ void PathEditor::set_staff_value(Staff& staff, double value)
         return;
     }
     m_move_unmeasured = m_document->edit_count() - 1;
-    measure_move_when_refined();
 }
 
 // A key changes the staff values of a region: only the segments their tangents shape are sampled

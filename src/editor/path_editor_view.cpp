@@ -34,7 +34,7 @@ std::string question_with_goal(const GoalSaid& goal)
 
 } // namespace
 
-std::string PathEditor::message() const
+std::string PathEditor::message(MoveText move) const
 {
     if (!m_problem.empty())
         return m_problem;
@@ -51,7 +51,7 @@ std::string PathEditor::message() const
             [&](const Staff& staff) {
                 const std::string shown = m_show_tangents ? tangent_numbers(evaluated().curve.segments, m_tangent_point)
                                                           : staff_message(staff);
-                return with_move(shown, staff);
+                return with_move(shown, staff, move);
             },
             [](const Waypoints& waypoints) { return waypoints.editor.message(); },
             [](const AskAgain&) { return std::string(text::ask_again); },
@@ -76,8 +76,10 @@ bool PathEditor::field_open() const
 
 // After a staff key, how far it moved the curve (SPEC §7.2.1) follows what the line shows; when both
 // do not fit, the line's name and the move, unless frames freeze: that warning matters more.
-std::string PathEditor::with_move(const std::string& shown, const Staff& staff) const
+std::string PathEditor::with_move(const std::string& shown, const Staff& staff, MoveText move) const
 {
+    if (move == MoveText::measured)
+        measure_move_when_refined();
     if (m_moved.empty())
         return shown;
     if (shown.size() + 2 + m_moved.size() <= max_message_width)
@@ -110,7 +112,7 @@ std::string PathEditor::staff_message(const Staff& staff) const
 
 PathEditor::Look PathEditor::look() const
 {
-    const PathScreenContent content = screen_content();
+    const PathScreenContent content = screen_content(MoveText::left_unmeasured);
     return Look{m_document->revision(),
                 m_picture->revision(),
                 phase(),
@@ -122,7 +124,8 @@ PathEditor::Look PathEditor::look() const
                 law_point(),
                 m_tangent_point,
                 m_zoom_level,
-                {m_show_key_frames, m_show_ghost, m_show_tangents, m_show_law}};
+                {m_show_key_frames, m_show_ghost, m_show_tangents, m_show_law},
+                m_move_unmeasured};
 }
 
 // The span whose law G shows: the region's, the arrow's while picking, the chosen waypoint's.
@@ -159,7 +162,7 @@ std::optional<ControlRegion> PathEditor::picked_region() const
                       m_mode);
 }
 
-PathScreenContent PathEditor::screen_content() const
+PathScreenContent PathEditor::screen_content(MoveText move) const
 {
     if (const auto* waypoints = std::get_if<Waypoints>(&m_mode)) {
         const WaypointEditor& editor = waypoints->editor;
@@ -187,7 +190,7 @@ PathScreenContent PathEditor::screen_content() const
                    [&](const AskAgain& ask) { content.staff = ask.staff; },
                },
                m_mode);
-    content.message = message();
+    content.message = message(move);
     return content;
 }
 

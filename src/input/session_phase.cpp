@@ -1,5 +1,7 @@
 #include "apcs/input/session_phase.h"
 
+#include <variant>
+
 namespace apcs {
 
 const char* phase_name(SessionPhase phase)
@@ -26,6 +28,20 @@ const char* phase_name(SessionPhase phase)
     case SessionPhase::finished: return "end";
     }
     return "";
+}
+
+bool stays_in_phase(KeyContext context, const Command& command)
+{
+    const auto is = [&command]<typename... Kinds>(Kinds...) { return (std::holds_alternative<Kinds>(command) || ...); };
+    using namespace command;
+    switch (context) {
+    case KeyContext::text_line:
+    case KeyContext::value_field: return is(TypeCharacter{}, EraseCharacter{});
+    case KeyContext::staff: return is(StaffStep{});
+    case KeyContext::region_pick: return is(ArrowMove{});
+    case KeyContext::waypoints: return is(ChoosePoint{}, MovePoint{}, InsertPoint{}, DeletePoint{}, Undo{}, Zoom{});
+    default: return false;
+    }
 }
 
 } // namespace apcs

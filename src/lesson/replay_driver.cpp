@@ -210,6 +210,13 @@ void ReplayDriver::play_headless()
     play_scripted();
 }
 
+bool ReplayDriver::next_work_keeps_phase() const
+{
+    // Its captions and goals, reached first (settle), change the message line, never the step.
+    return m_audience == ReplayAudience::headless && !m_session->busy() && playing() && !m_session->animating() &&
+           m_session->keeps_phase(m_script.events[m_played]);
+}
+
 SessionScreen ReplayDriver::screen() const
 {
     SessionScreen screen = m_session->screen();

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdlib>
 #include <utility>
 
@@ -57,8 +58,9 @@ void CurveRaster::splice(const SegmentSplice& change)
         block_first = block_end;
         if (from >= to && !(change.removed == 0 && holds_start))
             continue;
+        if (block.current)
+            add_stale_rows(block);
         block.current = false;
-        m_composed_whole = false;
         block.segment_count -= from < to ? to - from : 0;
         if (!inserted_placed)
             block.segment_count += change.inserted;
@@ -73,13 +75,30 @@ void CurveRaster::splice(const SegmentSplice& change)
     std::erase_if(m_blocks, [](const Block& block) { return block.segment_count == 0; });
     split_large_blocks(std::move(spare_rasters));
     m_segment_count = m_segment_count - change.removed + change.inserted;
+    if (too_many_blocks())
+        start_blocks(m_segment_count);
 }
 
-// A block of more than two blocks' segments becomes blocks of segments_per_block, the last of up
+std::size_t CurveRaster::block_segments(std::size_t segment_count)
+{
+    constexpr std::size_t blocks = 64;
+    return std::clamp(std::bit_ceil((segment_count + blocks - 1) / blocks), fewest_segments_per_block,
+                      most_segments_per_block);
+}
+
+// Twice the blocks the curve's size asks for (each a full raster), at half the size or less: drawing
+// them all again costs what the edits that split them did, a block each.
+bool CurveRaster::too_many_blocks() const
+{
+    const std::size_t size = block_segments(m_segment_count);
+    return m_blocks.size() > 2 * ((m_segment_count + size - 1) / size) && m_block_segments * 2 <= size;
+}
+
+// A block of more than two blocks' segments becomes blocks of m_block_segments, the last of up
 // to twice as many.
 void CurveRaster::split_large_blocks(std::vector<Bitmap> spare_rasters)
 {
-    const auto large = [](const Block& block) { return block.segment_count > 2 * segments_per_block; };
+    const auto large = [this](const Block& block) { return block.segment_count > 2 * m_block_segments; };
     if (std::ranges::none_of(m_blocks, large))
         return;
     m_composed_whole = false;
@@ -88,12 +107,15 @@ void CurveRaster::split_large_blocks(std::vector<Bitmap> spare_rasters)
         if (large(block))
             block.current = false;
         std::size_t left = block.segment_count;
-        while (left > 2 * segments_per_block) {
-            Bitmap raster = spare_rasters.empty() ? Bitmap() : std::move(spare_rasters.back());
-            if (!spare_rasters.empty())
+        while (left > 2 * m_block_segments) {
+            const bool spare = !spare_rasters.empty();
+            Bitmap raster = spare ? std::move(spare_rasters.back()) : Bitmap();
+            if (spare)
                 spare_rasters.pop_back();
-            split.push_back(Block{segments_per_block, false, std::move(raster)});
-            left -= segments_per_block;
+            // A spare raster holds the pixels of the block it was: all its rows are to be cleared.
+            const int dirty_rows = spare ? raster.height() : 0;
+            split.push_back(Block{m_block_segments, false, std::move(raster), 0, dirty_rows});
+            left -= m_block_segments;
         }
         block.segment_count = left;
         split.push_back(std::move(block));
@@ -104,9 +126,10 @@ void CurveRaster::split_large_blocks(std::vector<Bitmap> spare_rasters)
 void CurveRaster::start_blocks(std::size_t segment_count)
 {
     m_composed_whole = false;
-    m_blocks.resize((segment_count + segments_per_block - 1) / segments_per_block);
+    m_block_segments = block_segments(segment_count);
+    m_blocks.resize((segment_count + m_block_segments - 1) / m_block_segments);
     for (std::size_t b = 0; b < m_blocks.size(); ++b) {
-        m_blocks[b].segment_count = std::min(segments_per_block, segment_count - b * segments_per_block);
+        m_blocks[b].segment_count = std::min(m_block_segments, segment_count - b * m_block_segments);
         m_blocks[b].current = false;
     }
 }
@@ -138,6 +161,8 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
         // The picture shows no stale block's old pixels.
         if (waiting && !m_composed_whole)
             compose();
+        else if (waiting)
+            compose_stale_rows();
         return;
     }
     // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
@@ -147,7 +172,8 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
     while (done < stale.size() && work < most_work) {
         const std::size_t count = std::min(round, stale.size() - done);
         std::array<std::size_t, 2> halves{};
-        split_across_cores(count, 1, [&](std::size_t first, std::size_t end) {
+        // A thread is worth some 4096 segments (a block of a long path's; many small ones).
+        split_across_cores(count, most_segments_per_block / m_block_segments, [&](std::size_t first, std::size_t end) {
             std::size_t half = 0;
             for (std::size_t i = done + first; i < done + end; ++i)
                 half += draw_block(m_blocks[stale[i].first], curve, stale[i].second);
@@ -155,6 +181,7 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
         });
         done += count;
         work += halves[0] + halves[1];
+        m_work_done += halves[0] + halves[1];
         // As many blocks as the work left allows at the cost of those drawn, two at the least.
         round = std::max<std::size_t>(2, work == 0 || work >= most_work ? 2 * round : (most_work - work) * done / work);
     }
@@ -162,16 +189,26 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
     // in steps); else all are laid again.
     if (!m_composed_whole)
         return compose();
+    // The stale rows are laid from every current block, those drawn now included; their other rows
+    // are laid over the picture.
+    const auto [laid_first, laid_end] = m_stale_rows;
+    compose_stale_rows();
     for (std::size_t i = 0; i < done; ++i) {
         const Block& block = m_blocks[stale[i].first];
-        m_composed.merge(block.raster, block.first_row, block.end_row);
+        if (laid_first >= laid_end) {
+            m_composed.merge(block.raster, block.first_row, block.end_row);
+            continue;
+        }
+        m_composed.merge(block.raster, block.first_row, std::min(block.end_row, laid_first));
+        m_composed.merge(block.raster, std::max(block.first_row, laid_end), block.end_row);
     }
 }
 
 std::size_t CurveRaster::draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const
 {
     std::size_t lines = 0;
-    block.raster.clear();
+    // Only the rows its lines reached hold pixels (a spare raster's all): a line a key, not a screen.
+    block.raster.clear_rows(block.first_row, block.end_row);
     block.first_row = block.raster.height();
     block.end_row = 0;
     Painter painter(block.raster, m_clip);
@@ -205,6 +242,28 @@ void CurveRaster::compose()
         if (block.current)
             m_composed.merge(block.raster, block.first_row, block.end_row);
     m_composed_whole = true;
+    m_stale_rows = {0, 0};
+}
+
+void CurveRaster::compose_stale_rows()
+{
+    const auto [first, end] = std::exchange(m_stale_rows, {0, 0});
+    if (first >= end)
+        return;
+    m_composed.clear_rows(first, end);
+    for (const Block& block : m_blocks)
+        if (block.current)
+            m_composed.merge(block.raster, std::max(first, block.first_row), std::min(end, block.end_row));
+}
+
+void CurveRaster::add_stale_rows(const Block& block)
+{
+    if (block.first_row >= block.end_row)
+        return;
+    if (m_stale_rows.first >= m_stale_rows.second)
+        m_stale_rows = {block.first_row, block.end_row};
+    else
+        m_stale_rows = {std::min(m_stale_rows.first, block.first_row), std::max(m_stale_rows.second, block.end_row)};
 }
 
 } // namespace apcs

@@ -53,32 +53,41 @@ void update_control_point_runs(std::vector<ControlPointRun>& runs, std::span<con
     const std::size_t old_count = points.size() - change.inserted + change.removed;
     if (runs.empty() || runs.back().last + 1 != old_count || points.empty())
         return void(runs = control_point_runs(points, view));
-    // The runs from the one before the change to the one after it (old numbering) are made again.
-    const auto ending_at_or_after = [&](std::size_t point) {
+    // The points changed and their two neighbours are projected again: old points from … old_last
+    // are new points from … new_last. The runs holding them keep their other points (a run of
+    // thousands on one pixel is not projected again), split off before and after.
+    const std::size_t from = change.first > 0 ? change.first - 1 : 0;
+    const std::size_t old_last = std::min(change.first + change.removed, old_count - 1);
+    const std::size_t new_last = std::min(change.first + change.inserted, points.size() - 1);
+    const auto holding = [&](std::size_t point) {
         return std::partition_point(runs.begin(), runs.end(), [&](const ControlPointRun& run) { return run.last < point; });
     };
-    const auto first_run = ending_at_or_after(change.first > 0 ? change.first - 1 : 0);
-    const auto last_run = ending_at_or_after(std::min(change.first + change.removed, old_count - 1));
-    const std::size_t from = first_run->first;
-    const std::size_t to = last_run->last + change.inserted - change.removed; // inclusive, new numbering
-    std::vector<ControlPointRun> remade = control_point_runs(points.subspan(from, to - from + 1), view);
-    for (ControlPointRun& run : remade) {
+    const auto first_run = holding(from);
+    const auto last_run = holding(old_last);
+    std::vector<ControlPointRun> remade;
+    if (first_run->first < from)
+        remade.push_back({first_run->at, first_run->first, from - 1});
+    for (ControlPointRun run : control_point_runs(points.subspan(from, new_last - from + 1), view)) {
         run.first += from;
         run.last += from;
+        if (!remade.empty() && remade.back().at == run.at)
+            remade.back().last = run.last;
+        else
+            remade.push_back(run);
+    }
+    if (last_run->last > old_last) {
+        const std::size_t suffix_last = last_run->last - old_count + points.size();
+        if (remade.back().at == last_run->at)
+            remade.back().last = suffix_last;
+        else
+            remade.push_back({last_run->at, new_last + 1, suffix_last});
     }
     const auto after = runs.erase(first_run, last_run + 1);
     for (auto run = after; run != runs.end(); ++run) {
-        run->first = run->first + change.inserted - change.removed;
-        run->last = run->last + change.inserted - change.removed;
+        run->first = run->first + points.size() - old_count;
+        run->last = run->last + points.size() - old_count;
     }
-    const auto index = after - runs.begin();
     runs.insert(after, remade.begin(), remade.end());
-    // The remade runs may end on the pixel the next run starts on: one run then.
-    const auto joint = static_cast<std::size_t>(index) + remade.size();
-    if (joint > 0 && joint < runs.size() && runs[joint - 1].at == runs[joint].at) {
-        runs[joint - 1].last = runs[joint].last;
-        runs.erase(runs.begin() + static_cast<std::ptrdiff_t>(joint));
-    }
 }
 
 namespace {

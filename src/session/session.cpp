@@ -102,6 +102,13 @@ bool Session::takes_typed_text() const
     return context == KeyContext::text_line || context == KeyContext::value_field;
 }
 
+bool Session::keeps_phase(const KeyEvent& event) const
+{
+    const KeyContext keys = m_overlays.key_context(step_key_context());
+    const std::optional<Command> command = command_for(keys, event);
+    return !command || stays_in_phase(keys, *command);
+}
+
 void Session::handle(const KeyEvent& event)
 {
     const std::optional<ShapingLook> before = shaping_look();

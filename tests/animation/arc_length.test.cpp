@@ -126,3 +126,26 @@ TEST_CASE("arc lengths are Simpson's from derivative_at to the bit at every scal
         REQUIRE(lengths.length_to_segment_start(s + 1) == running);
     }
 }
+
+TEST_CASE("halfway_parameter halves a segment's arc length as the Simpson table does, at a bounded cost",
+          "[animation][arc-length]")
+{
+    const std::vector<HermiteSegment> segments{
+        {{0, 0, 0}, {10, 0, 0}, {10, 0, 0}, {10, 0, 0}},        // straight, even speed: 0.5
+        {{0, 0, 0}, {10, 0, 0}, {30, 0, 0}, {1, 0, 0}},         // straight, fast then slow
+        {{0, 0, 0}, {0, 6, 3}, {9, -12, 10}, {0, 0, 5}},        // N to L's bend
+        {{1, 2, 3}, {1, 2, 3.000001}, {0, 0, 0.000001}, {0, 0, 0.000001}}, // a millionth long
+        {{0, 0, 0}, {4, 0, 0}, {0, 20, 0}, {0, -20, 0}},        // a loop out and back
+    };
+    for (const HermiteSegment& segment : segments) {
+        CAPTURE(segment.start.x, segment.end.z, segment.start_tangent.x);
+        const ArcLengthTable table(std::span(&segment, 1));
+        const double u = halfway_parameter(segment);
+        REQUIRE(u > 0.0);
+        REQUIRE(u < 1.0);
+        REQUIRE(table.length_at({0, u}) == Approx(table.total_length() / 2.0).epsilon(1e-9));
+    }
+    REQUIRE(halfway_parameter({{0, 0, 0}, {10, 0, 0}, {10, 0, 0}, {10, 0, 0}}) == Approx(0.5).epsilon(1e-12));
+    // A segment of no length (a point inserted on a point): its middle parameter.
+    REQUIRE(halfway_parameter({{1, 1, 1}, {1, 1, 1}, {0, 0, 0}, {0, 0, 0}}) == 0.5);
+}

@@ -153,6 +153,52 @@ TEST_CASE("a span runs on to the next control point whose acceleration differs",
     REQUIRE(spans[1].acceleration == 0.5);
 }
 
+TEST_CASE("the spans after a waypoint edit, read around the edit alone, are the spans read afresh",
+          "[animation][acceleration]")
+{
+    // Runs of accelerations, an insert, delete or move anywhere (the ends too), and acceleration
+    // changes that make, join or move a span's start; 1.5 and 2.0 clamp alike (one span).
+    ControlPoints points;
+    for (int k = 0; k < 40; ++k)
+        points.push_back({{static_cast<double>(k), std::sin(k * 0.5), 0.0}, {0, 0, 0, (k / 7) % 3 == 1 ? 0.5 : 0.0}});
+    points[20].staff.acceleration = 1.5;
+    points[21].staff.acceleration = 2.0;
+    const ControlPoint inserted{{0.5, 0.5, 0.5}, {0, 0, 0, 0.5}};
+    struct Edit {
+        PathChange change;
+        double acceleration; // of the inserted point, or set on the changed ones
+    };
+    const std::vector<Edit> edits{
+        {{1, 0, 1}, 0.5},   {{10, 0, 1}, 0.0},  {{14, 0, 1}, 0.5}, {{41, 0, 1}, 0.0},  {{5, 1, 0}, 0.0},
+        {{13, 1, 0}, 0.0},  {{39, 1, 0}, 0.0},  {{7, 1, 1}, 0.5},  {{8, 1, 1}, 0.0},   {{0, 1, 1}, -0.5},
+        {{20, 2, 2}, 1.0},  {{30, 3, 3}, 0.25}, {{38, 1, 1}, 0.9}, {{0, 0, 1}, 0.0},   {{2, 1, 0}, 0.0}};
+    std::vector<AccelerationSpan> spans = acceleration_spans(points);
+    for (const Edit& edit : edits) {
+        const PathChange& change = edit.change;
+        CAPTURE(change.first, change.removed, change.inserted);
+        const auto at = points.begin() + static_cast<std::ptrdiff_t>(change.first);
+        if (change.inserted > change.removed) {
+            ControlPoint point = inserted;
+            point.staff.acceleration = edit.acceleration;
+            points.insert(at, point);
+        } else if (change.removed > change.inserted) {
+            points.erase(at);
+        } else {
+            for (std::size_t k = change.first; k < change.first + change.inserted; ++k)
+                points[k].staff.acceleration = edit.acceleration;
+        }
+        spans = acceleration_spans_after(spans, points, change);
+        const std::vector<AccelerationSpan> afresh = acceleration_spans(points);
+        REQUIRE(spans.size() == afresh.size());
+        for (std::size_t s = 0; s < spans.size(); ++s) {
+            CAPTURE(s);
+            REQUIRE(spans[s].first_point == afresh[s].first_point);
+            REQUIRE(spans[s].last_point == afresh[s].last_point);
+            REQUIRE(spans[s].acceleration == afresh[s].acceleration);
+        }
+    }
+}
+
 TEST_CASE("largest remainder shares worked by hand", "[animation][acceleration]")
 {
     // Quotas 12·(5, 3, 2)/10 = 6, 3.6, 2.4: floors 6, 3, 2 and the one left goes to 3.6.

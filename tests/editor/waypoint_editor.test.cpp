@@ -1,6 +1,7 @@
 #include "apcs/animation/arc_length.h"
 #include "apcs/animation/kochanek_bartels.h"
 #include "apcs/editor/waypoint_editor.h"
+#include "apcs/screens/curve_raster.h"
 
 #include <catch2/catch.hpp>
 
@@ -201,4 +202,31 @@ TEST_CASE("Enter keeps the edits, listed as changes that revert to the points op
     REQUIRE(points[0].position == opened[0].position);
     REQUIRE(points[1].position == opened[1].position);
     REQUIRE(origins == std::vector<std::size_t>{0, 1});
+}
+
+TEST_CASE("an insert costs the curve's picture the same work after 4000 inserts as after 200", "[session][waypoints]")
+{
+    // Each I inserts after the point the last one made: all land in the first segment, as a replay
+    // of I held down does (issue 61: 16,000 of them took 17.6 s, each drawing the whole curve).
+    EditedPath path(two_point_path());
+    WaypointEditor& editor = path.editor;
+    const auto insert = [&](int count) {
+        for (int i = 0; i < count; ++i)
+            apply(editor, {cmd::InsertPoint{}});
+    };
+    const auto work_of_ten_inserts = [&] {
+        const std::size_t before = path.picture.curve_work();
+        insert(10);
+        return path.picture.curve_work() - before;
+    };
+    insert(200);
+    const std::size_t early = work_of_ten_inserts();
+    insert(3790);
+    const std::size_t late = work_of_ten_inserts();
+    REQUIRE(editor.points().size() == 4012);
+    CAPTURE(early, late);
+    REQUIRE(early > 0);
+    // A block of 64 to 128 segments each (split once they pass 128), the curve's few pixels.
+    REQUIRE(late <= 2 * early);
+    REQUIRE(late <= 10 * 2 * (2 * CurveRaster::fewest_segments_per_block + 64));
 }

@@ -180,9 +180,10 @@ TEST_CASE("an SVG stroke is cut where its clip cuts it: only the pieces inside, 
                                    {{{500, 500}, {600, 600}}, LineStyle::solid, std::nullopt}});
     const std::string svg = encode_svg(screen);
     CHECK(stroke_data(svg, "solid clipped") ==
-          std::vector<std::string>{"M20.5,75.75 L79.5,75.75", "M30.5,15.75 L30.5,299.25 M40.5,297.75 L40.5,30.75"});
-    // The second's segment back in skips its first pixel, as Painter::styled_line does (it counts a
-    // segment's first pixel as the last one's); the third lies wholly below the raster.
+          std::vector<std::string>{"M20.5,75.75 L79.5,75.75", "M30.5,15.75 L30.5,299.25 M40.5,299.25 L40.5,30.75"});
+    // The second's segment back in starts on the clip's last row: a segment's first pixel is
+    // skipped as the last one's end only when it is its start, and this one starts outside, where
+    // nothing was drawn (Painter::styled_line alike); the third lies wholly below the raster.
     CHECK(stroke_data(svg, "solid").empty());
     CHECK(svg.find("clip") == svg.find("clipped"));
     CHECK(svg.find("dasharray") == std::string::npos);

@@ -322,6 +322,8 @@ TEST_CASE("control point runs updated around inserted, deleted and moved points 
     ControlPoints points;
     for (int k = 0; k < 3000; ++k) // runs of a few points on one pixel, and points of their own
         points.push_back({{std::sin(k * 0.9) * (k % 7 == 0 ? 3.0 : 0.001), k * 0.0005, 0.0}, {}});
+    for (int k = 1000; k < 1300; ++k) // and a run of 300 on one pixel, split and joined inside
+        points[static_cast<std::size_t>(k)].position = {0.0, 0.5, 0.0};
     const ViewTransform view = ViewTransform::fit({0, 90}, std::vector<Vec3>{{-3, 0, -1}, {3, 1.5, 1}}, {0, 0, 720, 259});
     std::vector<ControlPointRun> runs = control_point_runs(points, view);
     const auto same_runs = [](const std::vector<ControlPointRun>& left, const std::vector<ControlPointRun>& right) {
@@ -333,8 +335,9 @@ TEST_CASE("control point runs updated around inserted, deleted and moved points 
             REQUIRE(left[r].last == right[r].last);
         }
     };
-    const std::vector<PathChange> changes{{0, 0, 1}, {1, 1, 0}, {700, 1, 1}, {1400, 0, 1},
-                                          {1401, 1, 0}, {2999, 0, 1}, {3000, 1, 0}, {5, 1, 1}};
+    const std::vector<PathChange> changes{{0, 0, 1},    {1, 1, 0},    {700, 1, 1},  {1400, 0, 1}, {1401, 1, 0},
+                                          {2999, 0, 1}, {3000, 1, 0}, {5, 1, 1},    {1100, 0, 1}, {1150, 1, 1},
+                                          {1150, 1, 1}, {1101, 1, 0}, {1000, 0, 1}, {1299, 1, 0}, {1200, 0, 1}};
     for (const PathChange& change : changes) {
         CAPTURE(change.first, change.removed, change.inserted);
         const auto at = points.begin() + static_cast<std::ptrdiff_t>(change.first);

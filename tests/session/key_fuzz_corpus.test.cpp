@@ -5,17 +5,32 @@
 #include <catch2/catch.hpp>
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace apcs;
+
+namespace {
+
+// The corpus' key streams, each its file's name and its bytes.
+std::vector<std::pair<std::string, std::string>> corpus_streams()
+{
+    std::vector<std::pair<std::string, std::string>> streams;
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) / "tests/fuzz/session"))
+        streams.emplace_back(entry.path().filename().string(), test::read_all(entry.path()));
+    return streams;
+}
+
+} // namespace
 
 TEST_CASE("every key stream of the session fuzzing corpus plays without a crash and writes only in the folder",
           "[session][fuzz]")
 {
     std::size_t streams = 0;
     std::size_t reached_fitting = 0;
-    for (const auto& entry :
-         std::filesystem::directory_iterator(std::filesystem::path(APCS_SOURCE_DIR) / "tests/fuzz/session")) {
-        const std::string bytes = test::read_all(entry.path());
+    for (const auto& [name, bytes] : corpus_streams()) {
         const MemoryFiles files = fuzzing::play_keystrokes(
             {reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()});
         ++streams;
@@ -25,4 +40,38 @@ TEST_CASE("every key stream of the session fuzzing corpus plays without a crash 
     REQUIRE(streams > 100);
     // The corpus reaches the end of the session, not only its first prompts.
     REQUIRE(reached_fitting > 0);
+}
+
+// A headless transcript draws a step's last screen only before a key that may end the step
+// (Session::keeps_phase): a key vouched for must never end it, or the transcript would print a
+// screen the step never showed last.
+TEST_CASE("a key the session vouches keeps its step never changes the phase, over the whole fuzzing corpus",
+          "[session][fuzz]")
+{
+    std::size_t vouched = 0;
+    std::size_t changed_phase = 0;
+    for (const auto& [name, bytes] : corpus_streams()) {
+        MemoryFiles files = fuzzing::example_files();
+        SessionSettings settings;
+        settings.samples_per_segment = 4;
+        settings.inbetween_count = 3;
+        Session session(settings, files);
+        for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
+            const KeyEvent key = fuzzing::key_from(static_cast<std::uint8_t>(bytes[i]));
+            const SessionPhase before = session.phase();
+            const bool keeps = session.keeps_phase(key);
+            session.handle(key);
+            if (keeps) {
+                ++vouched;
+                CAPTURE(name, i, phase_name(before));
+                REQUIRE(session.phase() == before);
+            }
+            changed_phase += session.phase() != before;
+            for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
+                session.tick();
+        }
+    }
+    // The corpus tries both: keys vouched for, and keys that end steps.
+    REQUIRE(vouched > 10000);
+    REQUIRE(changed_phase > 1000);
 }

@@ -46,7 +46,7 @@ struct Deck {
          SessionSettings session_settings)
         : folder(std::move(inputs))
         , settings(std::move(session_settings))
-        , m_drive{animations, {}, {}}
+        , m_drive{animations, {}, {}, {}}
     {
         ReplayHooks hooks;
         hooks.caption_reached = [this](std::size_t index, const SessionScreen&) { told.push_back(index); };

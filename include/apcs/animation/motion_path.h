@@ -33,6 +33,11 @@ struct AccelerationSpan {
 };
 
 std::vector<AccelerationSpan> acceleration_spans(std::span<const ControlPoint> points);
+// acceleration_spans(points) from `before`, the spans of the points before `change`: only the
+// accelerations of the changed points and their neighbours are read (a waypoint edit on 10^5 points
+// reads a few, not all).
+std::vector<AccelerationSpan> acceleration_spans_after(std::span<const AccelerationSpan> before,
+                                                      std::span<const ControlPoint> points, const PathChange& change);
 
 // Shares `total` among parts in proportion to their weights by the largest remainder method
 // (ties go to the earlier part). All-zero weights share equally.

@@ -110,6 +110,8 @@ public:
         std::size_t tangent_point = 0;
         int zoom_level = 0;
         std::array<bool, 4> shown{}; // K, O, T, G
+        // A staff key's move, not measured for a look (the document's revision tells the key).
+        std::optional<std::size_t> move_unmeasured;
         bool operator==(const Look&) const = default;
     };
     Look look() const;
@@ -165,8 +167,11 @@ private:
     Staff start_staff(ControlRegion region);
     Waypoints open_waypoints();
     void set_staff_value(Staff& staff, double value);
-    // m_moved from m_move_unmeasured once the picture is refined.
-    void measure_move_when_refined();
+    // m_moved from m_move_unmeasured once the picture is refined: when the message is shown, not
+    // at every key (a replay of 10^6 staff keys shows a few).
+    void measure_move_when_refined() const;
+    // Whether the message measures a staff key's move, or leaves it for when it is shown.
+    enum class MoveText { measured, left_unmeasured };
     void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
     Transition undo();
     Transition undo_change(const StaffEdit& change);
@@ -178,14 +183,14 @@ private:
     void pin_or_unpin_reference();
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
-    std::string message() const;
+    std::string message(MoveText move = MoveText::measured) const;
     // While the picture is refined: what is left, or the 8/2 question followed by it.
     std::string refining_message() const;
     // A staff line's "=" field is open: what is typed there is on the message line.
     bool field_open() const;
     std::string staff_message(const Staff& staff) const;
-    std::string with_move(const std::string& shown, const Staff& staff) const;
-    PathScreenContent screen_content() const;
+    std::string with_move(const std::string& shown, const Staff& staff, MoveText move) const;
+    PathScreenContent screen_content(MoveText move = MoveText::measured) const;
 
     Setup m_setup;
     SessionLog& m_log;
@@ -216,13 +221,13 @@ private:
     std::string m_problem;
     std::string m_notice;
     // After a staff key: how far it moved the curve ("moved up to 0.024 = 1 px").
-    std::string m_moved;
+    mutable std::string m_moved;
     // A staff key whose move is measured once its picture is refined in steps: its edit in the
     // document's history. The message line says what is refined meanwhile, and neither the
     // segments before the key (made again from the points and the edit's runs: 2 ms for a global
     // key's 4096 on 10^6 points) nor the search (about 8 ms) holds up the first picture. Every
     // command drops it, so the points are still those the key left.
-    std::optional<std::size_t> m_move_unmeasured;
+    mutable std::optional<std::size_t> m_move_unmeasured;
 };
 
 } // namespace apcs

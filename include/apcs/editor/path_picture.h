@@ -93,6 +93,8 @@ public:
     bool has_reference() const { return m_reference.has_value(); }
 
     const EvaluatedPath& evaluated() const { return m_evaluated; }
+    // CurveRaster::work_done of the curve's picture.
+    std::size_t curve_work() const { return m_curve.work_done(); }
     const PathSettings& settings() const { return m_settings; }
     // What the picture shows: the document's revision it was made of, and its own, which every
     // change of the view, the ghost, the boxed region and every refinement step advance.

@@ -16,6 +16,8 @@ struct IdleDrive {
     std::function<bool()> go_on;
     // Called after each step the program took (the headless transcript looks at the screen).
     std::function<void()> after_step;
+    // Called before each step, once go_on has let it be taken.
+    std::function<void()> before_step;
 };
 
 // The one loop that drives a program until it has nothing to do without a key: work() while it

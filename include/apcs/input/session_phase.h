@@ -1,5 +1,8 @@
 #pragma once
 
+#include "apcs/input/command.h"
+#include "apcs/input/key_map.h"
+
 namespace apcs {
 
 // The steps of thesis Ch. 4.2, one phase per prompt or screen. Headless runs name each phase as
@@ -27,5 +30,11 @@ enum class SessionPhase {
 };
 
 const char* phase_name(SessionPhase phase);
+
+// Whether `command`, met in `context`, is known to leave the step where it is: typing a line, a
+// staff step, the region's arrow, a waypoint edit. A headless transcript prints each step's last
+// screen, the one before the key that ends it: it draws a screen only before a key this does not
+// vouch for. False says nothing (the command may end its step or not).
+bool stays_in_phase(KeyContext context, const Command& command);
 
 } // namespace apcs

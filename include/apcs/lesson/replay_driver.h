@@ -86,6 +86,10 @@ public:
     // leaves it.
     std::uint64_t screen_revision() const override { return m_session->screen_revision() + m_revision; }
 
+    // Headless: whether the next work() is a script key known to leave the session's step where it
+    // is (Session::keeps_phase). False says nothing.
+    bool next_work_keeps_phase() const;
+
     // The state a key typed now meets (terminal).
     ReplayState state() const;
     // The action of the row the last key met; none before any key and after a written ignore. A

@@ -33,6 +33,8 @@ public:
     // Lights pixels first_x … last_x (either order) of row y, those on the raster: a byte at a time.
     void set_run(int y, int first_x, int last_x);
     void clear();
+    // Rows first_row … end_row − 1 unlit (clamped to the raster).
+    void clear_rows(int first_row, int end_row);
     std::size_t lit_count() const;
     // Lights every pixel lit in `other`, a bitmap of the same size: all of it, or its rows
     // first_row … end_row − 1 (clamped to the raster).

@@ -103,13 +103,15 @@ constexpr bool pattern_lit(LineStyle style, int phase)
 
 // Calls plot(x, y, lit) for each pixel of one segment of a styled polyline, as each_line_pixel
 // walks it. A segment's first pixel is the previous segment's last, so it is counted once: skipped
-// once `phase` (the pixels counted along the polyline so far, 0 at its start) is past 0.
+// once `phase` (the pixels counted along the polyline so far, 0 at its start) is past 0. A segment
+// that enters the box from outside starts at no pixel drawn: its first pixel in the box is drawn,
+// whatever the polyline drew before (so that a curve drawn a block at a time draws the same).
 template <typename Plot>
 void each_styled_pixel(PixelPoint from, PixelPoint to, PixelRect box, LineStyle style, int& phase, Plot plot)
 {
     bool first = true;
     each_line_pixel(from, to, box, [&](int x, int y) {
-        const bool repeated = first && phase > 0;
+        const bool repeated = first && phase > 0 && PixelPoint{x, y} == from;
         first = false;
         if (repeated)
             return;

@@ -6,6 +6,7 @@
 #include "apcs/raster/bitmap.h"
 
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace apcs {
@@ -54,8 +55,9 @@ void for_each_curve_line(const SampledCurve& curve, const ViewTransform& view, s
 // A KB curve drawn solid, as draw_world_curve draws it, kept between keys as one raster per block
 // of consecutive segments: a key that changes a few segments of a path of 10^6 control points draws
 // those blocks again and lays the others over them as they were. Blocks hold about
-// segments_per_block segments each; a control point inserted or deleted grows or shrinks the block
-// it falls in, and the blocks after it keep their pixels. A change of every segment draws all blocks
+// block_segments(N) segments each (some 64 blocks; 4096 segments for 10^6); a control point
+// inserted or deleted grows or shrinks the block it falls in, and the blocks after it keep their
+// pixels, so that an edit costs a block's segments however many were made before it. A change of every segment draws all blocks
 // again, on both cores. The pixels are draw_world_curve's for a curve that starts inside the clip (as
 // a fitted view's does): a block's lines continue from its first segment's start, where the lines
 // before it end. No strokes are recorded (the editor's screen is never written as SVG).
@@ -76,12 +78,19 @@ public:
     bool drawn() const { return blocks_drawn() == m_blocks.size(); }
     std::size_t blocks_drawn() const;
     std::size_t block_count() const { return m_blocks.size(); }
+    // The work of every update since the raster was made (lines drawn and segments visited): an
+    // edit's is a block's, however many edits came before it.
+    std::size_t work_done() const { return m_work_done; }
     // The curve's pixels as of the last update (a 720x348 raster).
     const Bitmap& pixels() const { return m_composed; }
 
     static constexpr std::size_t all_work = static_cast<std::size_t>(-1);
 
-    static constexpr std::size_t segments_per_block = 4096;
+    static constexpr std::size_t fewest_segments_per_block = 64;
+    static constexpr std::size_t most_segments_per_block = 4096;
+    // The blocks' size for a curve of `segment_count` segments: a 64th of them as a power of two,
+    // between the two bounds above.
+    static std::size_t block_segments(std::size_t segment_count);
 
 private:
     struct Block {
@@ -95,19 +104,29 @@ private:
 
     void start_blocks(std::size_t segment_count);
     void split_large_blocks(std::vector<Bitmap> spare_rasters);
+    // Blocks split by edits that grew the curve many times over are drawn afresh at its size.
+    bool too_many_blocks() const;
     // Returns the work it did.
     std::size_t draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const;
     void compose();
+    // The rows m_stale_rows laid again from the current blocks alone: an edit's few rows, not the
+    // whole picture (an edit of a path of 16,000 points lays a few rows of its some 100 blocks).
+    void compose_stale_rows();
+    void add_stale_rows(const Block& block);
 
     std::vector<Block> m_blocks;
+    std::size_t m_block_segments = fewest_segments_per_block;
     // The current blocks laid over one another, made again when one is drawn again; while no block
     // became stale since (m_composed_whole), blocks drawn are laid over it.
     Bitmap m_composed;
     bool m_composed_whole = false;
+    // Rows first … end − 1 of m_composed that may hold the pixels of blocks no longer current.
+    std::pair<int, int> m_stale_rows{0, 0};
     std::optional<ViewTransform> m_view;
     PixelRect m_clip;
     std::size_t m_segment_count = 0;
     int m_samples_per_segment = 0;
+    std::size_t m_work_done = 0;
 };
 
 } // namespace apcs

@@ -50,6 +50,9 @@ public:
     bool showing_help() const;
     // Whether the step now takes typed text: a prompt's line, or a staff value after '='.
     bool takes_typed_text() const;
+    // Whether `event`, typed now, is known to leave the step where it is (stays_in_phase; a key
+    // the step ignores stays too). False says nothing.
+    bool keeps_phase(const KeyEvent& event) const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
     // The KEY1 and KEY2 files as typed (empty until read), relative to the session's folder.
     const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
