@@ -447,12 +447,14 @@ double halfway_parameter(const HermiteSegment& segment)
     const double within = target - cumulative[static_cast<std::size_t>(panel)];
     double low = panel_start;
     double high = static_cast<double>(panel + 1) / halfway_panels;
-    double u = (low + high) / 2.0;
+    // Where the panel's length runs on evenly: a symmetric segment's half lands on u = 0.5 at once.
+    const double panel_length = cumulative[static_cast<std::size_t>(panel) + 1] - cumulative[static_cast<std::size_t>(panel)];
+    double u = panel_length > 0.0 ? std::clamp(low + (high - low) * within / panel_length, low, high) : (low + high) / 2.0;
     // Newton's steps kept inside a bracket that halves when a step would leave it; the bound only
     // guarantees an end (a double's resolution is reached in some 60 halvings).
     for (int iteration = 0; iteration < 100 && high - low > 1e-15; ++iteration) {
         const double reached = speed_integral(segment, panel_start, u);
-        if (std::abs(reached - within) <= 1e-13 * total)
+        if (std::abs(reached - within) <= 1e-15 * total)
             return u;
         (reached < within ? low : high) = u;
         const double speed = length(segment.derivative_at(u));

@@ -172,18 +172,7 @@ double waypoint_step(const BoundingBox& shown)
 Vec3 halfway_along(std::span<const HermiteSegment> segments, std::size_t from)
 {
     assert(from < segments.size());
-    const HermiteSegment& segment = segments[from];
-    // A segment of some length is measured as exact spacing measures it (a symmetric one is halved
-    // at u = 0.5 exactly); one whose points and tangents all lie within a billionth of its place
-    // (points inserted on points) would drive those sums to their finest count, so it takes the
-    // fixed-cost sums instead.
-    const double size = length(segment.end - segment.start) + length(segment.start_tangent) +
-                        length(segment.end_tangent);
-    const double place = std::max({1.0, length(segment.start), length(segment.end)});
-    if (size <= 1e-9 * place)
-        return segment.point_at(halfway_parameter(segment));
-    const ArcLengthTable table(std::span(&segment, 1));
-    return table.point_at(table.parameter_at(table.total_length() / 2.0));
+    return segments[from].point_at(halfway_parameter(segments[from]));
 }
 
 } // namespace apcs
