@@ -227,6 +227,12 @@ Expected<std::unique_ptr<Terminal>> Terminal::open(ColourChoice colour)
     // newterm has read the environment's ESCDELAY, if any.
     if (std::getenv("ESCDELAY") == nullptr)
         set_escdelay(default_escape_delay_ms);
+    // Until curses has been left and resumed once, ncurses 6.4 writes out what it has at every
+    // cursor move (lib_mvcur.c, while SP->_endwin is ewInitial): a screen's changes went out in 8 to
+    // 17 writes, each an SSH packet of its own (36 bytes more each). Left and resumed before anything
+    // is drawn, it writes each refresh at once.
+    endwin();
+    refresh();
     curs_set(0);
     state.colour = colour_wanted(colour) && start_role_colours();
     return terminal;
