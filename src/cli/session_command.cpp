@@ -127,18 +127,21 @@ SessionSettings session_settings(const CommonOptions& options)
     return settings;
 }
 
-void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out)
+std::size_t run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out)
 {
     // A step's screen is printed when the next one changes the phase (the transcript's steps): the
     // screen after the last key the step took. It is drawn only before a key that may end the step
     // (a path of 16,000 waypoints inserted, 10^6 staff keys: a screen a key would be most of the
     // replay's time).
     std::string shown = screen_text(session.screen(), glyphs);
+    std::size_t drawn = 1;
     bool shown_is_current = true;
     SessionPhase shown_phase = session.phase();
     const auto draw_current = [&] {
-        if (!shown_is_current)
+        if (!shown_is_current) {
             shown = screen_text(session.screen(), glyphs);
+            ++drawn;
+        }
         shown_is_current = true;
     };
     const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
@@ -166,6 +169,7 @@ void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet
     replay.finish();
     // The last step: the end, or where a script that ends mid-step stopped and why.
     print_shown();
+    return drawn;
 }
 
 Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)

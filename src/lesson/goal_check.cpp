@@ -40,13 +40,16 @@ struct CurveNearest {
 };
 CurveNearest curve_nearest(const Vec3& point, const SampledCurve& curve)
 {
-    const std::vector<Vec3> samples = curve.samples();
-    if (samples.size() == 1)
-        return {distance(point, samples.front()), 0};
+    const std::size_t count = curve.sample_count();
+    if (count == 1)
+        return {distance(point, curve.sample(0)), 0};
     CurveNearest nearest;
     const auto per_segment = static_cast<std::size_t>(std::max(curve.samples_per_segment, 1));
-    for (std::size_t index = 1; index < samples.size(); ++index) {
-        const double off = segment_distance(point, samples[index - 1], samples[index]);
+    Vec3 before = count > 0 ? curve.sample(0) : Vec3{};
+    for (std::size_t index = 1; index < count; ++index) {
+        const Vec3 after = curve.sample(index);
+        const double off = segment_distance(point, before, after);
+        before = after;
         if (off < nearest.distance)
             nearest = {off, (index - 1) / per_segment};
     }

@@ -172,7 +172,7 @@ void ReplayDriver::goal_path_left()
 
 // The open goal's path (SPEC §3.2): the one shaped when the replay reached its GOAL line, else the
 // next one shaped. Its standing is taken again while that path is shaped and its screen changed.
-ReplayDriver::GoalPath ReplayDriver::follow_open_goal()
+ReplayDriver::GoalPath ReplayDriver::follow_open_goal(bool look)
 {
     OpenGoal& open = *m_open;
     const std::optional<int> shaped = m_session->shaped_path();
@@ -182,7 +182,7 @@ ReplayDriver::GoalPath ReplayDriver::follow_open_goal()
         return GoalPath::not_shaped_yet;
     if (shaped != open.path)
         return GoalPath::left;
-    if (open.looked_at != m_session->screen_revision()) {
+    if (look && open.looked_at != m_session->screen_revision()) {
         open.standing = check_goal(m_script.goals[open.goal], *m_session);
         open.looked_at = m_session->screen_revision();
     }
@@ -230,7 +230,13 @@ void ReplayDriver::judge_goals(std::size_t played)
                 break;
             m_open = OpenGoal{m_next_goal++, std::nullopt, {}, std::nullopt};
         }
-        if (follow_open_goal() == GoalPath::left || judging_end(m_open->goal) <= played)
+        // A key that keeps its step cannot leave the goal's path: the standing is taken before a key
+        // that may, and when judged, not before every key (a NEAR goal's look reads the whole curve,
+        // and a recording may insert 16,000 waypoints).
+        const bool judging = judging_end(m_open->goal) <= played;
+        const bool look =
+            judging || played >= m_script.events.size() || !m_session->keeps_phase(m_script.events[played]);
+        if (follow_open_goal(look) == GoalPath::left || judging)
             judge_open_goal(open_goal_as_it_stands());
         else
             break;

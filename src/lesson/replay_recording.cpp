@@ -13,7 +13,7 @@ void ReplayDriver::to_session(const KeyEvent& key)
         m_recording.add_key(key, m_session->takes_typed_text());
     }
     m_handled.push_back(key);
-    m_work_done += m_session->key_work();
+    m_work_done += m_session->key_work(key);
     m_session->handle(key);
 }
 

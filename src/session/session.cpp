@@ -5,6 +5,7 @@
 #include "apcs/raster/screen_layout.h"
 #include "apcs/session/session_graph.h"
 #include "apcs/session/session_pictures.h"
+#include "apcs/screens/curve_raster.h"
 #include "apcs/screens/session_text.h"
 
 #include <algorithm>
@@ -371,14 +372,28 @@ const PathEditor* Session::path_editor() const
     return shaping == nullptr ? nullptr : &shaping->editor;
 }
 
-std::uint64_t Session::key_work() const
+namespace {
+
+std::size_t largest_path(const SessionModel& model, const PathEditor* editor)
 {
     std::size_t largest = 0;
-    for (const SessionPath& path : m_model.paths)
+    for (const SessionPath& path : model.paths)
         largest = std::max(largest, path.points.size());
-    if (const PathEditor* editor = path_editor())
+    if (editor != nullptr)
         largest = std::max(largest, editor->points().size());
-    return 1 + std::uint64_t{largest};
+    return largest;
+}
+
+} // namespace
+
+std::uint64_t Session::key_work() const { return 1 + std::uint64_t{largest_path(m_model, path_editor())}; }
+
+std::uint64_t Session::key_work(const KeyEvent& event) const
+{
+    if (m_overlays.key_context(step_key_context()) != KeyContext::waypoints || !keeps_phase(event))
+        return key_work();
+    const std::size_t largest = largest_path(m_model, path_editor());
+    return 1 + 2 * std::uint64_t{CurveRaster::block_segments(largest)} + largest / 64;
 }
 
 std::optional<int> Session::shaped_path() const

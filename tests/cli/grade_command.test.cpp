@@ -579,11 +579,20 @@ TEST_CASE("A replay's work is one operation a key and one more for each control 
     // On the staff of way1.dat (3 control points) each key costs 1 + 3.
     const std::uint64_t answered = work_of("L L L 6\n");
     REQUIRE(work_of(staff_keys(100) + "L L L 6\n") == answered + 100 * 4);
-    // Each point inserted makes every later key cost one more: I on 3 points costs 4, then Enter
-    // leaves the waypoint editor (on 4 points: 5) and the 8 and the answer's 4 keys cost 5 each.
+    // Each point inserted makes every later key cost one more. I costs two of the curve's blocks
+    // (64 segments each on a short path) and a 64th of the points: 1 + 128 + 0; then Enter leaves
+    // the waypoint editor (on 4 points: 5) and the 8 and the answer's 4 keys cost 5 each.
     const std::string shape_again = "ENTER ENTER ENTER ENTER Y W ";
     const std::uint64_t unchanged = work_of(shape_again + "ENTER 8 L L L 6\n");
-    REQUIRE(work_of(shape_again + "I ENTER 8 L L L 6\n") == unchanged + 4 + 6 * 1);
+    REQUIRE(work_of(shape_again + "I ENTER 8 L L L 6\n") == unchanged + 129 + 6 * 1);
+    // An insert costs what its block does, not the path: 16,000 on way1.dat stay within the budget
+    // (issue 61: each had cost the whole path, and the replay was stopped at about 4,900).
+    std::string inserts;
+    for (int i = 0; i < 16'000; ++i)
+        inserts += "I ";
+    const std::uint64_t many = work_of(shape_again + inserts + "ENTER 8 L L L 6\n");
+    CAPTURE(many);
+    REQUIRE(many < most_replay_operations);
 }
 
 TEST_CASE("apcs grade stops a replay past its work budget: an error row, too long, and grades the recordings after it",

@@ -409,3 +409,31 @@ TEST_CASE("the snake scene plays the snake session's frames: its path files are 
     // The inb files hold six decimals: the scene's frames are them to their rounding.
     REQUIRE(worst <= 1e-6);
 }
+
+TEST_CASE("a headless replay draws a screen a step, not a key: 10 and 2,000 staff keys draw as many",
+          "[session][headless]")
+{
+    const auto screens_drawn = [](int staff_keys) {
+        const test::TempFolder folder;
+        copy_example("n-to-l", folder);
+        FolderFiles files(folder.path());
+        Session session({}, files);
+        std::string text = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT way1.dat\nENTER ENTER\n8\n";
+        for (int key = 0; key < staff_keys; ++key)
+            text += key % 2 == 0 ? "6\n" : "4\n";
+        const Expected<KeyScript> script = parse_captioned_key_script(text, "staff.keys");
+        REQUIRE(script);
+        ReplayDriver replay(session, *script, "staff.keys", ReplayPace{}, {}, ReplayAudience::headless);
+        std::ostringstream transcript;
+        const std::size_t drawn = run_headless_session(replay, session, GlyphSet::ascii, transcript);
+        // Each step's screen is printed, the staff's last.
+        const std::string printed = transcript.str();
+        REQUIRE(printed.find("--- step 3: global or local control") != std::string::npos);
+        REQUIRE(printed.find("--- step 4: four-line staff") != std::string::npos);
+        return drawn;
+    };
+    const std::size_t few = screens_drawn(10);
+    CAPTURE(few);
+    REQUIRE(few < 30);
+    REQUIRE(screens_drawn(2'000) == few);
+}

@@ -52,8 +52,9 @@ SessionSettings session_settings(const CommonOptions& options);
 // Runs the session headless through `replay` (ReplayAudience::headless, of `session`): every key of
 // the script, the animation untimed, and each step's final screen (after its last key) to `out`:
 // a line "--- STEP", then the 80x24 screen, trailing blanks removed. The replay's hooks hear of
-// each caption as it is reached (the headless command prints ";; TEXT" there).
-void run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out);
+// each caption as it is reached (the headless command prints ";; TEXT" there). Returns how many
+// screens it drew: one a step and a few more, however many keys each step took.
+std::size_t run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out);
 
 // What a headless replay left: the exit status `apcs --keys` ends with, and the outcome of each
 // goal of the script (every goal: headless, the replay's finish() judges those left).

@@ -168,8 +168,9 @@ private:
     void follow_passed_goal();
     void goal_path_left();
     // Where the session is with the open goal's path; bound to the path shaped if it had none.
+    // Its standing is taken again when `look` (and the screen changed since).
     enum class GoalPath { not_shaped_yet, shaped, left };
-    GoalPath follow_open_goal();
+    GoalPath follow_open_goal(bool look = true);
     GoalProgress open_goal_as_it_stands() const;
     void judge_open_goal(const GoalProgress& progress);
     std::size_t judging_end(std::size_t goal) const;

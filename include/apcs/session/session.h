@@ -67,6 +67,10 @@ public:
     // number of samples. The count is the same on every machine; apcs grade stops a replay whose
     // keys have cost more than its budget.
     std::uint64_t key_work() const;
+    // What `event`, typed now, may cost: a waypoint edit that stays in the editor costs two of the
+    // curve's blocks (CurveRaster::block_segments) and a pass over a 64th of the points (the runs
+    // renumbered, the points after it moved up), not the whole path; any other key key_work().
+    std::uint64_t key_work(const KeyEvent& event) const;
     // The last write that failed, if any did (the step that tried it was asked again).
     const Expected<void>& writes() const { return m_model.written.outcome(); }
     // An exercise's goal point (GOAL NEAR, INBETWEEN) marked on the path screen, or none.
