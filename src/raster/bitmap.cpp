@@ -68,6 +68,16 @@ void Bitmap::clear_rows(int first_row, int end_row)
                   std::uint8_t{0});
 }
 
+void Bitmap::copy_rows(const Bitmap& other, int first_row, int end_row)
+{
+    assert(other.m_width == m_width && other.m_height == m_height);
+    const auto clamped = [&](int row) { return static_cast<std::ptrdiff_t>(std::clamp(row, 0, m_height)); };
+    const auto row_bytes = static_cast<std::ptrdiff_t>(m_bytes_per_row);
+    if (clamped(first_row) < clamped(end_row))
+        std::copy(other.m_bits.begin() + clamped(first_row) * row_bytes,
+                  other.m_bits.begin() + clamped(end_row) * row_bytes, m_bits.begin() + clamped(first_row) * row_bytes);
+}
+
 void Bitmap::merge(const Bitmap& other) { merge(other, 0, m_height); }
 
 void Bitmap::merge(const Bitmap& other, int first_row, int end_row)

@@ -250,10 +250,20 @@ void CurveRaster::compose_stale_rows()
     const auto [first, end] = std::exchange(m_stale_rows, {0, 0});
     if (first >= end)
         return;
-    m_composed.clear_rows(first, end);
-    for (const Block& block : m_blocks)
-        if (block.current)
+    // The first current block's rows are copied (a current block's raster is blank outside the
+    // rows it reached), the others laid over them: a path of one block costs one pass, not two.
+    bool copied = false;
+    for (const Block& block : m_blocks) {
+        if (!block.current)
+            continue;
+        if (!copied)
+            m_composed.copy_rows(block.raster, first, end);
+        else
             m_composed.merge(block.raster, std::max(first, block.first_row), std::min(end, block.end_row));
+        copied = true;
+    }
+    if (!copied)
+        m_composed.clear_rows(first, end);
 }
 
 void CurveRaster::add_stale_rows(const Block& block)

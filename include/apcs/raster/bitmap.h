@@ -35,6 +35,8 @@ public:
     void clear();
     // Rows first_row … end_row − 1 unlit (clamped to the raster).
     void clear_rows(int first_row, int end_row);
+    // Rows first_row … end_row − 1 as they are in `other`, a bitmap of the same size (clamped).
+    void copy_rows(const Bitmap& other, int first_row, int end_row);
     std::size_t lit_count() const;
     // Lights every pixel lit in `other`, a bitmap of the same size: all of it, or its rows
     // first_row … end_row − 1 (clamped to the raster).
