@@ -49,17 +49,21 @@ std::vector<AccelerationSpan> acceleration_spans_after(std::span<const Accelerat
     const std::size_t last = points.size() - 1;
     const auto acceleration = [&](std::size_t k) { return limits::staff_value.clamp(points[k].staff.acceleration); };
     const std::size_t changed_end = change.first + change.inserted; // new numbering, the point after
+    const std::size_t old_count = points.size() - change.inserted + change.removed;
+    // A span starts at k (0 < k < last) where k's acceleration is not k − 1's: only the changed
+    // points and the one after them can start or stop starting one, and, when the change reaches
+    // the path's end, the point before it, which may become the last (no start) or stop being it.
+    const bool reaches_end = change.first + change.removed >= old_count;
+    const std::size_t recheck_first = std::max<std::size_t>(reaches_end && change.first > 0 ? change.first - 1 : change.first, 1);
     std::size_t first = 0;
     const auto start_span = [&](std::size_t start) {
         spans.push_back({first, start, acceleration(first)});
         first = start;
     };
-    // A span starts at k where k's acceleration is not k − 1's: only the changed points and the one
-    // after them can start or stop starting one.
     for (const AccelerationSpan& span : before)
-        if (span.first_point > 0 && span.first_point < change.first)
+        if (span.first_point > 0 && span.first_point < recheck_first)
             start_span(span.first_point);
-    for (std::size_t k = std::max<std::size_t>(change.first, 1); k <= std::min(changed_end, last - 1); ++k)
+    for (std::size_t k = recheck_first; k <= std::min(changed_end, last - 1); ++k)
         if (acceleration(k) != acceleration(k - 1))
             start_span(k);
     for (const AccelerationSpan& span : before)

@@ -171,7 +171,11 @@ TEST_CASE("the spans after a waypoint edit, read around the edit alone, are the 
     const std::vector<Edit> edits{
         {{1, 0, 1}, 0.5},   {{10, 0, 1}, 0.0},  {{14, 0, 1}, 0.5}, {{41, 0, 1}, 0.0},  {{5, 1, 0}, 0.0},
         {{13, 1, 0}, 0.0},  {{39, 1, 0}, 0.0},  {{7, 1, 1}, 0.5},  {{8, 1, 1}, 0.0},   {{0, 1, 1}, -0.5},
-        {{20, 2, 2}, 1.0},  {{30, 3, 3}, 0.25}, {{38, 1, 1}, 0.9}, {{0, 0, 1}, 0.0},   {{2, 1, 0}, 0.0}};
+        {{20, 2, 2}, 1.0},  {{30, 3, 3}, 0.25}, {{38, 1, 1}, 0.9}, {{0, 0, 1}, 0.0},   {{2, 1, 0}, 0.0},
+        // At the end: the last point's acceleration starts no span, until a point is appended
+        // after it; deleting the last point makes the one before it last.
+        {{40, 1, 1}, 0.5},  {{41, 0, 1}, 0.5},  {{42, 0, 1}, 0.0}, {{42, 1, 0}, 0.0},  {{41, 1, 0}, 0.0},
+        {{39, 1, 1}, 0.7},  {{40, 0, 1}, 0.7},  {{40, 1, 0}, 0.0}};
     std::vector<AccelerationSpan> spans = acceleration_spans(points);
     for (const Edit& edit : edits) {
         const PathChange& change = edit.change;
