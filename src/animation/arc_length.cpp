@@ -411,7 +411,7 @@ Vec3 curve_point_at(std::span<const HermiteSegment> segments, CurveParameter par
 
 namespace {
 
-constexpr int halfway_panels = 16;
+constexpr std::size_t halfway_panels = 16;
 
 } // namespace
 
@@ -433,23 +433,23 @@ double speed_integral(const HermiteSegment& segment, double from, double to)
 double halfway_parameter(const HermiteSegment& segment)
 {
     std::array<double, halfway_panels + 1> cumulative{};
-    for (int p = 0; p < halfway_panels; ++p)
-        cumulative[static_cast<std::size_t>(p) + 1] =
-            cumulative[static_cast<std::size_t>(p)] +
-            speed_integral(segment, static_cast<double>(p) / halfway_panels, static_cast<double>(p + 1) / halfway_panels);
+    for (std::size_t p = 0; p < halfway_panels; ++p)
+        cumulative[p + 1] = cumulative[p] + speed_integral(segment, static_cast<double>(p) / halfway_panels,
+                                                           static_cast<double>(p + 1) / halfway_panels);
     const double total = cumulative.back();
     if (!(total > 0.0))
         return 0.5;
     const double target = total / 2.0;
     const auto panel_end = std::lower_bound(cumulative.begin() + 1, cumulative.end(), target);
-    const int panel = static_cast<int>(panel_end - cumulative.begin()) - 1;
+    const auto panel = static_cast<std::size_t>(panel_end - cumulative.begin()) - 1;
     const double panel_start = static_cast<double>(panel) / halfway_panels;
-    const double within = target - cumulative[static_cast<std::size_t>(panel)];
+    const double within = target - cumulative[panel];
     double low = panel_start;
     double high = static_cast<double>(panel + 1) / halfway_panels;
     // Where the panel's length runs on evenly: a symmetric segment's half lands on u = 0.5 at once.
-    const double panel_length = cumulative[static_cast<std::size_t>(panel) + 1] - cumulative[static_cast<std::size_t>(panel)];
-    double u = panel_length > 0.0 ? std::clamp(low + (high - low) * within / panel_length, low, high) : (low + high) / 2.0;
+    const double panel_length = cumulative[panel + 1] - cumulative[panel];
+    double u = panel_length > 0.0 ? std::clamp(low + (high - low) * within / panel_length, low, high)
+                                  : (low + high) / 2.0;
     // Newton's steps kept inside a bracket that halves when a step would leave it; the bound only
     // guarantees an end (a double's resolution is reached in some 60 halvings).
     for (int iteration = 0; iteration < 100 && high - low > 1e-15; ++iteration) {

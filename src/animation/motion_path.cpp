@@ -54,7 +54,8 @@ std::vector<AccelerationSpan> acceleration_spans_after(std::span<const Accelerat
     // points and the one after them can start or stop starting one, and, when the change reaches
     // the path's end, the point before it, which may become the last (no start) or stop being it.
     const bool reaches_end = change.first + change.removed >= old_count;
-    const std::size_t recheck_first = std::max<std::size_t>(reaches_end && change.first > 0 ? change.first - 1 : change.first, 1);
+    const std::size_t recheck_first =
+        std::max<std::size_t>(reaches_end && change.first > 0 ? change.first - 1 : change.first, 1);
     std::size_t first = 0;
     const auto start_span = [&](std::size_t start) {
         spans.push_back({first, start, acceleration(first)});

@@ -666,21 +666,31 @@ def read_bytes(path):
         return file.read()
 
 
-def edit_over_the_link(apcs, data, folder, server, user):
-    """Step 1: the whole session over the link; then the files."""
-    work = os.path.join(folder, "edit")
+def copy_example(data, work):
+    """A fresh folder `work` holding the N to L example's key frames and way1.dat."""
     os.mkdir(work)
     for name in ("key1.dat", "key2.dat", "way1.dat"):
         shutil.copy(os.path.join(data, name), work)
+
+
+def to_tension(link):
+    """The session's prompts answered (view 0 90 40, way1.dat) up to TENSION on the staff."""
+    link.wait_for("Please keyin the KEY1 filename!")
+    link.step(b"\r", "Please keyin the KEY2 filename!")
+    link.step(b"\r", "THETA ,PHI & delay-time value.")
+    link.step(b"0 90 40\r", "to adjust the point's animating path!")
+    link.step(b"way1.dat\r", "Please input the slope : DS[0] ,DD[N]")
+    link.step(b"\r", "8 : Global Control")
+    link.step(b"8", ">TENSION")
+
+
+def edit_over_the_link(apcs, data, folder, server, user):
+    """Step 1: the whole session over the link; then the files."""
+    work = os.path.join(folder, "edit")
+    copy_example(data, work)
     link = Link(ssh_command(server, folder, user, server.port, remote_command(apcs, work, "ascii")))
     try:
-        link.wait_for("Please keyin the KEY1 filename!")
-        link.step(b"\r", "Please keyin the KEY2 filename!")
-        link.step(b"\r", "THETA ,PHI & delay-time value.")
-        link.step(b"0 90 40\r", "to adjust the point's animating path!")
-        link.step(b"way1.dat\r", "Please input the slope : DS[0] ,DD[N]")
-        link.step(b"\r", "8 : Global Control")
-        link.step(b"8", ">TENSION")
+        to_tension(link)
         for value in ("+0.05", "+0.10", "+0.15"):
             link.step(b"6", value)
         link.step(b"\r", ">CONTINUITY")
@@ -752,22 +762,14 @@ def slow_link(apcs, data, folder, server, user, variant, presses):
     """Step 2 for one variant (GLYPHS[,FLAG...]): (bytes, settle ms, wire bytes) of each press."""
     glyphs, *flags = variant.split(",")
     work = os.path.join(folder, "slow-" + variant.replace(",", "-"))
-    os.mkdir(work)
-    for name in ("key1.dat", "key2.dat", "way1.dat"):
-        shutil.copy(os.path.join(data, name), work)
+    copy_example(data, work)
     relay = WireRelay(server.port)
     options = ["--color", "never"] if "never" in flags else []
     link = Link(ssh_command(server, folder, user, relay.port, remote_command(apcs, work, glyphs, options),
                             ["-C"] if "compress" in flags else []), relay)
     figures = []
     try:
-        link.wait_for("Please keyin the KEY1 filename!")
-        link.step(b"\r", "Please keyin the KEY2 filename!")
-        link.step(b"\r", "THETA ,PHI & delay-time value.")
-        link.step(b"0 90 40\r", "to adjust the point's animating path!")
-        link.step(b"way1.dat\r", "Please input the slope : DS[0] ,DD[N]")
-        link.step(b"\r", "8 : Global Control")
-        link.step(b"8", ">TENSION")
+        to_tension(link)
         if "noghost" in flags:
             link.step(b"O", "ghost hidden")
         if "wire" in flags:

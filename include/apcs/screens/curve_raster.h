@@ -57,8 +57,8 @@ void for_each_curve_line(const SampledCurve& curve, const ViewTransform& view, s
 // those blocks again and lays the others over them as they were. Blocks hold about
 // block_segments(N) segments each (some 64 blocks; 4096 segments for 10^6); a control point
 // inserted or deleted grows or shrinks the block it falls in, and the blocks after it keep their
-// pixels, so that an edit costs a block's segments however many were made before it. A change of every segment draws all blocks
-// again, on both cores. The pixels are draw_world_curve's for a curve that starts inside the clip (as
+// pixels, so that an edit costs a block's segments however many were made before it. A change of
+// every segment draws all blocks again, on both cores. The pixels are draw_world_curve's for a curve that starts inside the clip (as
 // a fitted view's does): a block's lines continue from its first segment's start, where the lines
 // before it end. No strokes are recorded (the editor's screen is never written as SVG).
 class CurveRaster {
