@@ -7,8 +7,9 @@
 //             staff and key line; with exact spacing its message line says the arc lengths are
 //             being measured, and the in-betweens come when they are);
 //   8/2:      Enter on the slopes until the 8/2 choice stands on that line: the final picture;
-//   a key:    a staff key (6 and 4 in turn on TENSION under global control, each after the
-//             previous one's picture is finished) until its first picture is on the screen.
+//   a key:    a staff key under global control (6, 4, Shift-L and Shift-J in turn, on each of the
+//             four staff lines, Enter going on to the next; each key after the previous one's
+//             picture is finished) until its first picture is on the screen.
 // A screen is on the screen when the emulated terminal holds it and the burst of bytes that drew
 // it has ended (no byte for 3 ms: a refinement step, ~10 ms of work, comes later).
 // Usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS] (every figure is printed, then medians)
@@ -21,6 +22,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -31,6 +33,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -147,11 +150,21 @@ private:
 
 bool contains(const std::string& text, const char* wanted) { return text.find(wanted) != std::string::npos; }
 
-// The TENSION line of the staff, for telling a key's picture from the one before it.
-std::string tension_line(const std::string& screen)
+constexpr std::array<const char*, 4> staff_lines{"TENSION", "CONTINUITY", "BIAS", "ACCELERATION"};
+constexpr std::array<const char*, 4> staff_keys{"6", "4", "L", "J"};
+
+// A line of the staff (the row that starts with its name after the ">" column; the message line
+// above names it too), for telling a key's picture from the one before it.
+std::string staff_line(const std::string& screen, const char* name)
 {
-    const std::size_t at = screen.find("TENSION");
-    return at == std::string::npos ? std::string() : screen.substr(at, screen.find('\n', at) - at);
+    for (std::size_t row = 0; row < screen.size();) {
+        const std::size_t end = std::min(screen.find('\n', row), screen.size());
+        const std::string_view line(screen.data() + row, end - row);
+        if (line.size() > 1 && line.substr(1).starts_with(name))
+            return std::string(line);
+        row = end + 1;
+    }
+    return {};
 }
 
 // The picture is finished when no refinement message is left and the terminal has been quiet.
@@ -167,7 +180,7 @@ struct Run {
     double reading_ms = 0;
     double opening_ms = 0;
     double choice_ms = 0;
-    std::vector<double> key_ms;
+    std::array<std::vector<double>, staff_lines.size()> key_ms; // a staff line's keys
 };
 
 std::optional<Run> run_once(const std::string& apcs, const std::filesystem::path& folder, const char* spacing, int keys)
@@ -200,14 +213,21 @@ std::optional<Run> run_once(const std::string& apcs, const std::filesystem::path
     wait_for_final_picture(terminal);
     terminal.type("8");
     wait_for_final_picture(terminal);
-    for (int key = 0; key < keys; ++key) {
-        const std::string before = tension_line(terminal.text());
-        entered = terminal.type(key % 2 == 0 ? "6" : "4");
-        const std::optional<Clock::time_point> key_shown = terminal.wait_until(
-            [&before](const std::string& screen) { return tension_line(screen) != before; }, 20000);
-        if (!key_shown)
-            return std::nullopt;
-        run.key_ms.push_back(milliseconds_between(entered, *key_shown));
+    for (std::size_t line = 0; line < staff_lines.size(); ++line) {
+        const char* name = staff_lines[line];
+        for (int key = 0; key < keys; ++key) {
+            const std::string before = staff_line(terminal.text(), name);
+            entered = terminal.type(staff_keys[static_cast<std::size_t>(key) % staff_keys.size()]);
+            const std::optional<Clock::time_point> key_shown = terminal.wait_until(
+                [&](const std::string& screen) { return staff_line(screen, name) != before; }, 20000);
+            if (!key_shown) {
+                std::fprintf(stderr, "%s key %d: the line did not change:\n%s\n", name, key, terminal.text().c_str());
+                return std::nullopt;
+            }
+            run.key_ms[line].push_back(milliseconds_between(entered, *key_shown));
+            wait_for_final_picture(terminal);
+        }
+        terminal.type("\r");
         wait_for_final_picture(terminal);
     }
     return run;
@@ -258,10 +278,12 @@ int main(int argc, char** argv)
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / ("apcs-open-" + std::to_string(getpid()));
     write_session_files(folder, points);
-    std::printf("%ld control points, 80x24, %d runs a spacing, %d staff keys a run (ms)\n", points, runs, keys_a_run);
+    std::printf("%ld control points, 80x24, %d runs a spacing, %d keys a staff line a run (ms)\n", points, runs,
+                keys_a_run);
     int failures = 0;
     for (const char* spacing : {"nearest", "exact"}) {
-        std::vector<double> reading, opening, choice, key;
+        std::vector<double> reading, opening, choice, all_keys;
+        std::array<std::vector<double>, staff_lines.size()> line_keys;
         for (int run = 0; run < runs; ++run) {
             const std::optional<Run> measured = run_once(argv[1], folder, spacing, keys_a_run);
             if (!measured) {
@@ -269,18 +291,26 @@ int main(int argc, char** argv)
                 ++failures;
                 continue;
             }
-            std::printf("%-8s run %d: reading %7.1f  opening %7.1f  8/2 %7.1f  keys", spacing, run + 1,
+            std::printf("%-8s run %d: reading %7.1f  opening %7.1f  8/2 %7.1f\n", spacing, run + 1,
                         measured->reading_ms, measured->opening_ms, measured->choice_ms);
-            for (const double ms : measured->key_ms)
-                std::printf(" %5.1f", ms);
-            std::printf("\n");
+            for (std::size_t line = 0; line < staff_lines.size(); ++line) {
+                std::printf("%-8s run %d: %-12s keys", spacing, run + 1, staff_lines[line]);
+                for (const double ms : measured->key_ms[line])
+                    std::printf(" %5.1f", ms);
+                std::printf("\n");
+                line_keys[line].insert(line_keys[line].end(), measured->key_ms[line].begin(), measured->key_ms[line].end());
+                all_keys.insert(all_keys.end(), measured->key_ms[line].begin(), measured->key_ms[line].end());
+            }
             reading.push_back(measured->reading_ms);
             opening.push_back(measured->opening_ms);
             choice.push_back(measured->choice_ms);
-            key.insert(key.end(), measured->key_ms.begin(), measured->key_ms.end());
         }
-        std::printf("%-8s median: reading %7.1f  opening %7.1f  8/2 %7.1f  key's first picture %5.1f\n", spacing,
-                    median(reading), median(opening), median(choice), median(key));
+        std::printf("%-8s median: reading %7.1f  opening %7.1f  8/2 %7.1f  key's first picture %5.1f (", spacing,
+                    median(reading), median(opening), median(choice), median(all_keys));
+        for (std::size_t line = 0; line < staff_lines.size(); ++line)
+            std::printf("%s%s %.1f", line == 0 ? "" : ", ", staff_lines[line], median(line_keys[line]));
+        const auto slowest = std::max_element(all_keys.begin(), all_keys.end());
+        std::printf("; slowest %.1f)\n", slowest == all_keys.end() ? 0.0 : *slowest);
     }
     std::filesystem::remove_all(folder);
     return failures == 0 ? 0 : 1;

@@ -1,6 +1,7 @@
 #include "apcs/animation/kochanek_bartels.h"
 
 #include "apcs/animation/input_limits.h"
+#include "apcs/base/parallel_work.h"
 
 #include <cassert>
 
@@ -48,19 +49,32 @@ HermiteSegment kb_segment(std::span<const ControlPoint> points, EndSlopes slopes
     return {start, end, start_tangent, end_tangent};
 }
 
+namespace {
+
+// Segment k into out[k], for every k; a long path's on both cores.
+void make_segments(std::span<const ControlPoint> points, EndSlopes slopes, std::span<HermiteSegment> out)
+{
+    split_across_cores(out.size(), std::size_t{1} << 14, [&](std::size_t first, std::size_t end) {
+        for (std::size_t k = first; k < end; ++k)
+            out[k] = kb_segment(points, slopes, k);
+    });
+}
+
+std::size_t segment_count(std::span<const ControlPoint> points) { return points.size() < 2 ? 0 : points.size() - 1; }
+
+} // namespace
+
 std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, EndSlopes slopes)
 {
-    std::vector<HermiteSegment> segments;
-    kb_segments(points, slopes, segments);
+    std::vector<HermiteSegment> segments(segment_count(points));
+    make_segments(points, slopes, segments);
     return segments;
 }
 
-void kb_segments(std::span<const ControlPoint> points, EndSlopes slopes, std::vector<HermiteSegment>& segments)
+void kb_segments(std::span<const ControlPoint> points, EndSlopes slopes, HermiteSegments& segments)
 {
-    const std::size_t count = points.size() < 2 ? 0 : points.size() - 1;
-    segments.resize(count);
-    for (std::size_t k = 0; k < count; ++k)
-        segments[k] = kb_segment(points, slopes, k);
+    segments.resize(segment_count(points));
+    make_segments(points, slopes, segments);
 }
 
 PointTangents tangents_at(std::span<const HermiteSegment> segments, std::size_t point)

@@ -73,7 +73,7 @@ std::size_t SampledCurve::nearest_sample(double target) const { return NearestSa
 // and whose start does not.
 NearestSamples::Found NearestSamples::operator()(double target)
 {
-    const std::vector<double>& to_point = m_curve.length_to_point;
+    const LargeArray<double>& to_point = m_curve.length_to_point;
     const auto reaching = std::lower_bound(to_point.begin(), to_point.end(), target);
     if (reaching == to_point.begin())
         return {0, 0.0};

@@ -12,7 +12,7 @@ namespace apcs {
 
 EdgeTangents edge_tangents_of(const EvaluatedPath& path)
 {
-    const std::vector<HermiteSegment>& segments = path.curve.segments;
+    const HermiteSegments& segments = path.curve.segments;
     if (segments.empty())
         return {};
     return {segments.front().start_tangent, segments.back().end_tangent};

@@ -142,7 +142,7 @@ void ViewScene::reach_control_points(Extent& extent, const Reach& reach) const
         reach_in_halves(extent, points.size(), [&](Extent& half, std::size_t k) { reach(half, points[k].position); });
     reach_in_halves(extent, m_points.size(), [&](Extent& half, std::size_t k) { reach(half, m_points[k]); });
     for (const SampledCurve* curve : m_curves) {
-        const std::vector<HermiteSegment>& segments = curve->segments;
+        const HermiteSegments& segments = curve->segments;
         reach_in_halves(extent, segments.size(), [&](Extent& half, std::size_t s) { reach(half, segments[s].start); });
         if (!segments.empty())
             reach(extent, segments.back().end);

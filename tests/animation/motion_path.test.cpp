@@ -311,7 +311,7 @@ TEST_CASE("a long curve measured on two cores is the curve measured in order, to
     const std::vector<HermiteBasis> table = hermite_basis_table(8);
     std::vector<Vec3> expected_points{segments.front().start};
     std::vector<double> expected_in_segment{0.0};
-    std::vector<double> expected_to_point{0.0};
+    LargeArray<double> expected_to_point{0.0};
     for (const HermiteSegment& segment : segments) {
         double length = 0.0;
         for (std::size_t j = 1; j < table.size(); ++j) {
@@ -549,7 +549,7 @@ TEST_CASE("the segments a change reports made again are the only ones that diffe
     std::vector<std::size_t> origins = file_origins(points.size());
     const PathSettings settings{{0.5, 1}, 8, 12, Spacing::exact};
     EvaluatedPath path = evaluate_path(points, settings);
-    const std::vector<HermiteSegment> before = path.curve.segments;
+    const HermiteSegments before = path.curve.segments;
     WaypointChange change;
     change.kind = WaypointChange::Kind::insert;
     change.index = 20;

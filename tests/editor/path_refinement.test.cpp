@@ -99,7 +99,7 @@ TEST_CASE("exact spacing's arc lengths, marked by changes one over another and m
     {
         const PathSettings nearest{{1, 1}, 8, 12, Spacing::nearest};
         EvaluatedPath near = evaluate_path(points, nearest);
-        const std::vector<HermiteSegment> before = near.curve.segments;
+        const HermiteSegments before = near.curve.segments;
         const auto change_near = [&](const PathChange& what) {
             reevaluate_path(points, nearest, near, what, Refinement::in_steps);
         };

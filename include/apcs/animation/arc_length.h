@@ -64,10 +64,10 @@ private:
     void measure_range(std::span<const HermiteSegment> segments, std::size_t first, std::size_t end);
     void add_up_from(std::size_t first);
 
-    std::vector<int> m_intervals; // Simpson intervals chosen for each segment
-    std::vector<double> m_segment_length;
+    LargeArray<int> m_intervals; // Simpson intervals chosen for each segment
+    LargeArray<double> m_segment_length;
     // m_cumulative[k] = length of segments 0 … k−1; size = segments + 1.
-    std::vector<double> m_cumulative;
+    LargeArray<double> m_cumulative;
     // mark_changed: segments m_pending_first … m_pending_end − 1 are to be measured, the sums from
     // m_cumulative[m_sum_from + 1] on to be added up (m_sum_from = size: none).
     std::size_t m_pending_first = 0;

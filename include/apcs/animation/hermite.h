@@ -1,5 +1,6 @@
 #pragma once
 
+#include "apcs/base/large_array.h"
 #include "apcs/geometry/vec3.h"
 
 namespace apcs {
@@ -41,5 +42,9 @@ struct HermiteSegment {
     constexpr Vec3 derivative_at(double u) const { return apply(hermite_basis_derivative(u)); }
     constexpr bool operator==(const HermiteSegment&) const = default;
 };
+
+// A path's segments: 96 MB for 10^6 control points, in 2 MB pages where the kernel gives them
+// (opening such a path faulted in 24,000 4 KB pages on one core: PERFORMANCE.md 19).
+using HermiteSegments = LargeArray<HermiteSegment>;
 
 } // namespace apcs

@@ -24,9 +24,9 @@ Vec3 outgoing_tangent(const Vec3& previous, const Vec3& current, const Vec3& nex
 // each slope clamped to [0, 1] (limits::end_slope); interior tangents clamp t, c, b as above.
 // Fewer than two control points give no segments.
 std::vector<HermiteSegment> kb_segments(std::span<const ControlPoint> points, EndSlopes slopes);
-// The same into `segments`, whose room is kept: a long path's segments are made again at every
-// staff key of a global change.
-void kb_segments(std::span<const ControlPoint> points, EndSlopes slopes, std::vector<HermiteSegment>& segments);
+// The same into `segments`, whose room is kept (a long path's segments are made again at every
+// staff key of a global change), a long path's on both cores.
+void kb_segments(std::span<const ControlPoint> points, EndSlopes slopes, HermiteSegments& segments);
 // Segment k alone (k + 1 < points.size()): it depends on control points k − 1 … k + 2.
 HermiteSegment kb_segment(std::span<const ControlPoint> points, EndSlopes slopes, std::size_t k);
 

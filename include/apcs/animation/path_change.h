@@ -62,8 +62,8 @@ struct SegmentRange {
 
 // Per-segment `values` made to fit the curve after `change`: the entries of the segments after it
 // move with them; those of the inserted segments are T{} until they are made.
-template <typename T>
-void splice_room(std::vector<T>& values, const SegmentSplice& change)
+template <typename T, typename Allocator>
+void splice_room(std::vector<T, Allocator>& values, const SegmentSplice& change)
 {
     const auto at = values.begin() + static_cast<std::ptrdiff_t>(change.first);
     if (change.inserted > change.removed)

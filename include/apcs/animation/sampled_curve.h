@@ -20,11 +20,11 @@ std::vector<HermiteBasis> hermite_basis_table(int samples_per_segment);
 // (the length of the polyline through its samples) and the lengths to the control points, so that a
 // change to a few segments measures those again and adds up one number per segment.
 struct SampledCurve {
-    std::vector<HermiteSegment> segments;
+    HermiteSegments segments;
     // Each segment's chord length, and the chord length from the start to control point k
     // (k = 0 … segments): 0 first, the whole length L last.
-    std::vector<double> segment_length;
-    std::vector<double> length_to_point;
+    LargeArray<double> segment_length;
+    LargeArray<double> length_to_point;
     int samples_per_segment = 1;
     std::vector<HermiteBasis> basis; // hermite_basis_table(samples_per_segment)
 

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <new>
+#include <vector>
 
 // Storage for arrays of many megabytes (a path of 10^6 control points is 56 MB) in the kernel's
 // 2 MB pages where it offers them (transparent huge pages, "madvise" mode included). A pass over
@@ -50,5 +51,9 @@ struct LargeArrayAllocator {
         return true;
     }
 };
+
+// A vector of many megabytes (a long path's per-point and per-segment numbers) in huge pages.
+template <class T>
+using LargeArray = std::vector<T, LargeArrayAllocator<T>>;
 
 } // namespace apcs
