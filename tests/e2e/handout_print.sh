@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # A handout prints from a real browser (issue 42 item 6): the N-to-L lesson's --handout --paper
 # index.html, printed by Debian's chromium (--headless --print-to-pdf), gives a PDF with every page's
-# picture, one or two to a sheet, black on white. chromium and poppler-utils (pdfimages, pdfinfo,
-# pdftoppm) are installed here when missing, as tests/e2e/debian_package.sh's set-up installs
-# debhelper; where apt-get cannot install them (not root, no network) the test is skipped (exit 77).
+# picture, one or two to a sheet, black on white, with chromium's header and footer and without
+# them. chromium and poppler-utils (pdfimages, pdfinfo, pdftoppm, pdftotext) are installed here
+# when missing, as tests/e2e/debian_package.sh's set-up installs debhelper; where apt-get cannot
+# install them (not root, no network) the test is skipped (exit 77).
 # Usage: handout_print.sh APCS N_TO_L_FOLDER
 set -uo pipefail
 apcs=$1
@@ -27,6 +28,7 @@ need chromium chromium
 need pdfimages poppler-utils
 need pdfinfo poppler-utils
 need pdftoppm poppler-utils
+need pdftotext poppler-utils
 
 cp "$data"/*.dat "$data"/lesson.keys "$work"/
 "$apcs" --keys "$work/lesson.keys" --workdir "$work" --glyphs ascii --handout "$work/handout" --paper \
@@ -35,24 +37,32 @@ pages=$(find "$work/handout" -name '*.png' | wc -l)
 [ "$pages" -ge 3 ] || fail "the handout has $pages pages: $(ls "$work/handout")"
 [ "$(grep -c '<img ' "$work/handout/index.html")" -eq "$pages" ] || fail "index.html does not show the $pages pictures"
 
+# Printed as chromium prints it by default (its header and footer in the page margins: the date,
+# the title, the address, page numbers) and without them (--no-pdf-header-footer, as the manual
+# says): every picture at its size (720 pixels wide), one or two on each sheet, in order, either way.
 # Its own profile and home: a build daemon's HOME may not be writable; root needs --no-sandbox.
-HOME=$work timeout 180 chromium --headless --no-sandbox --disable-gpu --no-pdf-header-footer \
-  --user-data-dir="$work/profile" --print-to-pdf="$work/handout.pdf" "file://$work/handout/index.html" \
-  > "$work/chromium.log" 2>&1 || fail "chromium --print-to-pdf: exit $?: $(tail -5 "$work/chromium.log")"
-[ -s "$work/handout.pdf" ] || fail "chromium wrote no PDF: $(tail -5 "$work/chromium.log")"
-
-# Every picture printed, at its size (720 pixels wide); one or two on each sheet, in order.
-pdfimages -list "$work/handout.pdf" > "$work/images" 2>&1 || fail "pdfimages: $(cat "$work/images")"
-images=$(awk 'NR > 2 && $3 == "image"' "$work/images" | wc -l)
-echo "the handout's $pages pages printed as $images pictures"
-[ "$images" -eq "$pages" ] || fail "the PDF holds $images pictures, the handout $pages: $(cat "$work/images")"
-awk 'NR > 2 && $3 == "image" && $4 != 720 { bad = 1 } END { exit bad }' "$work/images" ||
-  fail "a picture is not 720 pixels wide: $(cat "$work/images")"
-sheets=$(pdfinfo "$work/handout.pdf" | awk '/^Pages:/ { print $2 }')
-echo "on $sheets sheets"
-[ "$sheets" -eq $(((pages + 1) / 2)) ] || fail "$pages pictures on $sheets sheets, not two a sheet"
-per_sheet=$(awk 'NR > 2 && $3 == "image" { count[$1]++ } END { for (s in count) print count[s] }' "$work/images" | sort -u | tr '\n' ' ')
-[ "$per_sheet" = "2 " ] || [ "$per_sheet" = "1 2 " ] || fail "pictures a sheet: $per_sheet"
+print_handout() { # PDF [CHROMIUM_FLAG]
+  HOME=$work timeout 180 chromium --headless --no-sandbox --disable-gpu ${2:+"$2"} \
+    --user-data-dir="$work/profile" --print-to-pdf="$1" "file://$work/handout/index.html" \
+    > "$work/chromium.log" 2>&1 || fail "chromium --print-to-pdf ${2:-}: exit $?: $(tail -5 "$work/chromium.log")"
+  [ -s "$1" ] || fail "chromium wrote no PDF: $(tail -5 "$work/chromium.log")"
+  pdfimages -list "$1" > "$work/images" 2>&1 || fail "pdfimages: $(cat "$work/images")"
+  images=$(awk 'NR > 2 && $3 == "image"' "$work/images" | wc -l)
+  echo "${2:-with the header and footer}: the handout's $pages pages printed as $images pictures"
+  [ "$images" -eq "$pages" ] || fail "the PDF holds $images pictures, the handout $pages: $(cat "$work/images")"
+  awk 'NR > 2 && $3 == "image" && $4 != 720 { bad = 1 } END { exit bad }' "$work/images" ||
+    fail "a picture is not 720 pixels wide: $(cat "$work/images")"
+  sheets=$(pdfinfo "$1" | awk '/^Pages:/ { print $2 }')
+  echo "on $sheets sheets"
+  [ "$sheets" -eq $(((pages + 1) / 2)) ] || fail "$pages pictures on $sheets sheets, not two a sheet (${2:-})"
+  per_sheet=$(awk 'NR > 2 && $3 == "image" { count[$1]++ } END { for (s in count) print count[s] }' "$work/images" | sort -u | tr '\n' ' ')
+  [ "$per_sheet" = "2 " ] || [ "$per_sheet" = "1 2 " ] || fail "pictures a sheet: $per_sheet (${2:-})"
+}
+print_handout "$work/with-header.pdf"
+pdftotext -f 1 -l 1 "$work/with-header.pdf" - | grep -q 'file://' ||
+  fail "chromium printed no footer with the page's address: the default print is not what the manual describes"
+print_handout "$work/handout.pdf" --no-pdf-header-footer
+! pdftotext -f 1 -l 1 "$work/handout.pdf" - | grep -q 'file://' || fail "--no-pdf-header-footer left the footer"
 
 # Ink on paper: the first sheet is mostly white (its pictures black on white, as --paper drew them).
 pdftoppm -f 1 -l 1 -r 40 -gray "$work/handout.pdf" "$work/sheet" || fail "pdftoppm"
