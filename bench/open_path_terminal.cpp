@@ -12,7 +12,11 @@
 //             picture is finished) until its first picture is on the screen.
 // A screen is on the screen when the emulated terminal holds it and the burst of bytes that drew
 // it has ended (no byte for 3 ms: a refinement step, ~10 ms of work, comes later).
-// Usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS] (every figure is printed, then medians)
+// The slopes are answered (Enter) PROMPT_MS after their prompt is on the screen (1000 by default: a
+// person reads it; the program prepares the opening meanwhile), and no sooner than 200 ms after the
+// terminal fell quiet.
+// Usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS] [PROMPT_MS] (every figure is printed, then
+// medians)
 #include "pty_reading.h"
 
 #include <vterm.h>
@@ -183,7 +187,8 @@ struct Run {
     std::array<std::vector<double>, staff_lines.size()> key_ms; // a staff line's keys
 };
 
-std::optional<Run> run_once(const std::string& apcs, const std::filesystem::path& folder, const char* spacing, int keys)
+std::optional<Run> run_once(const std::string& apcs, const std::filesystem::path& folder, const char* spacing, int keys,
+                            int prompt_ms)
 {
     EmulatedTerminal terminal(apcs, folder, spacing);
     const auto prompt_with = [&terminal](const char* wanted) {
@@ -203,6 +208,9 @@ std::optional<Run> run_once(const std::string& apcs, const std::filesystem::path
         return std::nullopt;
     run.reading_ms = milliseconds_between(entered, *slopes_shown);
     terminal.read_for(200);
+    const int read_so_far = static_cast<int>(milliseconds_between(*slopes_shown, Clock::now()));
+    if (read_so_far < prompt_ms)
+        terminal.wait_until([](const std::string&) { return false; }, prompt_ms - read_so_far);
     entered = terminal.type("\r");
     const std::optional<Clock::time_point> path_shown = prompt_with("W waypoints");
     const std::optional<Clock::time_point> choice_shown = prompt_with("8 : Global Control");
@@ -268,24 +276,26 @@ double median(std::vector<double> values)
 
 int main(int argc, char** argv)
 {
-    if (argc < 2 || argc > 4) {
-        std::fprintf(stderr, "usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS]\n");
+    if (argc < 2 || argc > 5) {
+        std::fprintf(stderr, "usage: open_path_terminal PATH_TO_APCS [RUNS] [POINTS] [PROMPT_MS]\n");
         return 2;
     }
     const int runs = argc > 2 ? std::atoi(argv[2]) : 3;
     const long points = argc > 3 ? std::atol(argv[3]) : 1'000'000;
+    const int prompt_ms = argc > 4 ? std::atoi(argv[4]) : 1000;
     constexpr int keys_a_run = 6;
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / ("apcs-open-" + std::to_string(getpid()));
     write_session_files(folder, points);
-    std::printf("%ld control points, 80x24, %d runs a spacing, %d keys a staff line a run (ms)\n", points, runs,
-                keys_a_run);
+    std::printf("%ld control points, 80x24, %d runs a spacing, the slopes answered %d ms after their prompt, %d keys "
+                "a staff line a run (ms)\n",
+                points, runs, prompt_ms, keys_a_run);
     int failures = 0;
     for (const char* spacing : {"nearest", "exact"}) {
         std::vector<double> reading, opening, choice, all_keys;
         std::array<std::vector<double>, staff_lines.size()> line_keys;
         for (int run = 0; run < runs; ++run) {
-            const std::optional<Run> measured = run_once(argv[1], folder, spacing, keys_a_run);
+            const std::optional<Run> measured = run_once(argv[1], folder, spacing, keys_a_run, prompt_ms);
             if (!measured) {
                 std::printf("%-8s run %d: a screen did not come\n", spacing, run + 1);
                 ++failures;

@@ -140,6 +140,19 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
     place_inbetweens(points, settings, path);
 }
 
+void make_room(EvaluatedPath& path, std::size_t control_points)
+{
+    const std::size_t segments = control_points < 2 ? 0 : control_points - 1;
+    path.curve.segments.resize(segments);
+    path.curve.segment_length.resize(segments);
+    path.curve.length_to_point.resize(segments == 0 ? 0 : segments + 1);
+}
+
+bool has_room(const EvaluatedPath& path, std::size_t control_points)
+{
+    return control_points < 2 || path.curve.segments.size() >= control_points - 1;
+}
+
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)
 {
     place_inbetweens_on(acceleration_spans(points), points, settings, path);

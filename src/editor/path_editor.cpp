@@ -150,7 +150,8 @@ PathEditor::PathEditor(Setup setup, SessionLog& log)
     : m_setup(std::move(setup))
     , m_log(log)
     , m_document(std::make_unique<PathDocument>(std::exchange(m_setup.points, {})))
-    , m_picture(std::make_unique<PathPicture>(*m_document, m_setup.settings, m_setup.refinement))
+    , m_picture(std::make_unique<PathPicture>(*m_document, m_setup.settings, m_setup.refinement,
+                                              std::exchange(m_setup.evaluation_room, {})))
 {
     assert(points().size() >= 2);
     fit_view();

@@ -7,11 +7,13 @@
 
 namespace apcs {
 
-PathPicture::PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement)
+PathPicture::PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement,
+                         EvaluatedPath room)
     : m_document(&document)
     , m_document_revision(document.revision())
     , m_settings(settings)
     , m_refinement(refinement)
+    , m_evaluated(std::move(room))
 {
     evaluate_path(points(), settings, m_evaluated, refinement.when);
     refine_if_quick();

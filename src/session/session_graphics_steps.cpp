@@ -48,7 +48,8 @@ Shaping Shaping::after(const SlopesPrompt& slopes, StepContext& context)
             PathEditor(PathEditor::Setup{path.name, std::move(path.points), context.path_settings(slopes.path), model.view_angles,
                                          std::move(key_frames), context.settings.step,
                                          PictureRefinement{.when = context.settings.refinement,
-                                                           .seen = context.settings.pictures_seen}},
+                                                           .seen = context.settings.pictures_seen},
+                                         std::exchange(path.evaluation_room, {})},
                        context.files)};
 }
 

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <memory>
 #include <string>
 
 using namespace apcs;
@@ -106,4 +107,42 @@ TEST_CASE("a key script's keys take one allocation of at most 8 bytes per byte o
     const Expected<std::vector<KeyEvent>> words = parse_key_script(named, "named.keys");
     REQUIRE(words);
     CHECK(words->capacity() < 2 * words->size());
+}
+
+// A path from (0, 0, 0) to (0, 0, 10), KEY1's first point to KEY2's, of `count` control points.
+std::string long_way(int count)
+{
+    std::string text = "0 0 0\n";
+    for (int k = 1; k + 1 < count; ++k)
+        text += std::to_string(k % 5) + " " + std::to_string(k % 3) + " " + std::to_string(k % 10) + "\n";
+    return text + "0 0 10\n";
+}
+
+// Opening a 10^6-point path waited for 112 MB of arrays new to the process (PERFORMANCE.md 19);
+// the terminal's session makes them while the slopes prompt waits, and the editor takes them.
+TEST_CASE("the slopes prompt of a long path makes its evaluation's arrays while it waits", "[session][memory]")
+{
+    MemoryFiles files = example_files();
+    constexpr int long_count = 70'000; // above the 65,536 points worth it
+    files.files["long.dat"] = long_way(long_count);
+    const auto at_slopes = [&files](Refinement refinement, const std::string& path) {
+        SessionSettings settings;
+        settings.refinement = refinement;
+        auto session = std::make_unique<Session>(settings, files);
+        for (const std::string answer : {"", "", "0 90 0", path.c_str()})
+            type(*session, answer);
+        REQUIRE(session->phase() == SessionPhase::ask_slopes);
+        return session;
+    };
+    std::unique_ptr<Session> terminal = at_slopes(Refinement::in_steps, "long.dat");
+    REQUIRE(terminal->busy());
+    terminal->work();
+    REQUIRE_FALSE(terminal->busy());
+    REQUIRE(terminal->phase() == SessionPhase::ask_slopes);
+    type(*terminal, "");
+    REQUIRE(terminal->phase() == SessionPhase::choose_control);
+    REQUIRE(terminal->path_editor()->evaluated().curve.segments.size() == long_count - 1);
+    // Headless (the whole picture at once) and a short path: the prompt never sets it to work.
+    REQUIRE_FALSE(at_slopes(Refinement::at_once, "long.dat")->busy());
+    REQUIRE_FALSE(at_slopes(Refinement::in_steps, "way1.dat")->busy());
 }

@@ -107,6 +107,13 @@ EvaluatedPath evaluate_path(std::span<const ControlPoint> points, const PathSett
 // the in-betweens not placed (refine_path does both).
 void evaluate_path(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path,
                    Refinement refinement = Refinement::at_once);
+// The arrays evaluate_path fills for a path of `control_points` points, made ahead (their memory
+// written once): evaluate_path then writes into them. A session makes them for a long path while
+// its slopes prompt waits, so that opening it does not wait for the kernel's pages (on a virtual
+// machine, memory new to the host took 1.2-2 ms a MB to touch: PERFORMANCE.md 19).
+void make_room(EvaluatedPath& path, std::size_t control_points);
+// Whether `path` has that room, or more.
+bool has_room(const EvaluatedPath& path, std::size_t control_points);
 // `path` was evaluated from the points before `change` with `settings`; `points` are those after
 // it. Only the segments whose tangents the changed points set are made and measured again (and
 // their arc lengths, with exact spacing), the lengths after them added up again, and the

@@ -55,6 +55,8 @@ public:
         double staff_step = 0.05;
         // The terminal's: a key's first picture at once, the rest in refine_step() (path_picture.h).
         PictureRefinement refinement;
+        // Arrays for the path's evaluation made ahead (make_room), or none.
+        EvaluatedPath evaluation_room;
     };
     enum class Outcome { editing, accepted };
 

@@ -54,7 +54,9 @@ public:
     // refine_step(); until then refining() is true and the in-betweens are not drawn.
     // Refinement::at_once does it all at once.
     // `document` outlives the picture and keeps its address.
-    PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {});
+    // `room`: arrays for the evaluation made ahead (make_room), or none.
+    PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {},
+                EvaluatedPath room = {});
 
     // Turns the points after a change back into those before it: the ghost's path, drawn again
     // when the view changes (SPEC §7.2.1: the ghost stays through Z and K).

@@ -37,7 +37,8 @@ public:
     void work() override;
     bool finished() const override { return phase() == SessionPhase::finished; }
     bool animating() const override;
-    // Busy too while the path editor refines its picture (Refinement::in_steps): a step per work().
+    // Busy too while the path editor refines its picture (Refinement::in_steps): a step per work();
+    // and at the slopes prompt of a long path, until its evaluation's arrays are made (one work()).
     bool busy() const override;
     int delay_ms() const override { return m_model.delay_ms; }
     SessionScreen screen() const override;
@@ -91,6 +92,9 @@ private:
     std::optional<ShapingLook> shaping_look() const;
     void take_key(const KeyEvent& event);
     StepContext context();
+    // The path whose evaluation's arrays the slopes prompt makes while it waits, if any.
+    SessionPath* path_wanting_room();
+    const SessionPath* path_wanting_room() const;
     KeyContext step_key_context() const;
     void dispatch_to_step(const Command& command);
     std::optional<std::string> typed_answer(const Command& command);

@@ -3,6 +3,7 @@
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/control_point.h"
 #include "apcs/animation/graphic.h"
+#include "apcs/animation/motion_path.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/base/diagnostic.h"
 #include "apcs/session/session_files.h"
@@ -27,6 +28,9 @@ struct SessionPath {
     EndSlopes slopes;
     // The file's own SLOPES line (SPEC §2.1): an empty slope answer takes it when --slopes is not given.
     std::optional<EndSlopes> file_slopes;
+    // A long path's evaluation arrays, made while the slopes prompt waits (make_room); the editor
+    // takes them.
+    EvaluatedPath evaluation_room;
 };
 
 // The files the session wrote, in order, for the last screen; and the last write that failed.
