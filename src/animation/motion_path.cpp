@@ -140,17 +140,27 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
     place_inbetweens(points, settings, path);
 }
 
-void make_room(EvaluatedPath& path, std::size_t control_points)
+bool make_room(EvaluatedPath& path, std::size_t control_points, std::size_t most_segments)
 {
+    SampledCurve& curve = path.curve;
     const std::size_t segments = control_points < 2 ? 0 : control_points - 1;
-    path.curve.segments.resize(segments);
-    path.curve.segment_length.resize(segments);
-    path.curve.length_to_point.resize(segments == 0 ? 0 : segments + 1);
+    if (curve.segments.size() < segments) {
+        curve.segments.reserve(segments);
+        curve.segments.resize(std::min(segments, curve.segments.size() + std::max<std::size_t>(most_segments, 1)));
+        if (curve.segments.size() < segments)
+            return false;
+    }
+    curve.segment_length.resize(std::max(curve.segment_length.size(), segments));
+    curve.length_to_point.resize(std::max(curve.length_to_point.size(), segments == 0 ? 0 : segments + 1));
+    return true;
 }
 
 bool has_room(const EvaluatedPath& path, std::size_t control_points)
 {
-    return control_points < 2 || path.curve.segments.size() >= control_points - 1;
+    const std::size_t segments = control_points < 2 ? 0 : control_points - 1;
+    const SampledCurve& curve = path.curve;
+    return curve.segments.size() >= segments && curve.segment_length.size() >= segments &&
+           curve.length_to_point.size() >= (segments == 0 ? 0 : segments + 1);
 }
 
 void place_inbetweens(std::span<const ControlPoint> points, const PathSettings& settings, EvaluatedPath& path)

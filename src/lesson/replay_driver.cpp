@@ -43,7 +43,7 @@ ReplayState ReplayDriver::state() const
             return ReplayState::animation_paused;
         return m_mode == Mode::step_held ? ReplayState::animation_step_held : ReplayState::animation_playing;
     }
-    if (m_session->busy())
+    if (m_session->working())
         return ReplayState::session_working;
     if (m_played == m_script.events.size())
         return ReplayState::end;
@@ -59,7 +59,7 @@ bool ReplayDriver::playing() const
 
 bool ReplayDriver::session_idle() const
 {
-    return !m_session->busy() && !m_session->animating() && m_session->phase() != SessionPhase::animating;
+    return !m_session->working() && !m_session->animating() && m_session->phase() != SessionPhase::animating;
 }
 
 bool ReplayDriver::script_ready() const
@@ -213,7 +213,7 @@ void ReplayDriver::play_headless()
 bool ReplayDriver::next_work_keeps_phase() const
 {
     // Its captions and goals, reached first (settle), change the message line, never the step.
-    return m_audience == ReplayAudience::headless && !m_session->busy() && playing() && !m_session->animating() &&
+    return m_audience == ReplayAudience::headless && !m_session->working() && playing() && !m_session->animating() &&
            m_session->keeps_phase(m_script.events[m_played]);
 }
 

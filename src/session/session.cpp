@@ -25,9 +25,11 @@ std::string trimmed(const std::string& line)
 }
 
 // From this many control points on, the terminal's session makes a path's evaluation arrays while
-// its slopes prompt waits (10^6 points: 112 MB, 0.1-0.2 s on a virtual machine). A shorter path's
-// take a few ms at the opening, and never set the session to work at the prompt.
+// its slopes prompt waits (10^6 points: 112 MB, 0.1-0.3 s on a virtual machine), 24 MB of segments
+// a work() step so that a key typed meanwhile waits for no more. A shorter path's take a few ms at
+// the opening, and never set the session to work at the prompt.
 constexpr std::size_t points_worth_a_room = std::size_t{1} << 16;
+constexpr std::size_t room_segments_a_step = std::size_t{1} << 18;
 
 // A typed answer is a file name or a few numbers: longer input is not kept.
 constexpr std::size_t max_answer_bytes = 200;
@@ -275,11 +277,12 @@ void Session::tick()
         playing->player.tick();
 }
 
-bool Session::busy() const
+bool Session::busy() const { return working() || preparing(); }
+
+bool Session::working() const
 {
     const auto* shaping = std::get_if<step::Shaping>(&m_step);
-    return std::holds_alternative<step::Splitting>(m_step) || (shaping != nullptr && shaping->editor.refining()) ||
-           path_wanting_room() != nullptr;
+    return std::holds_alternative<step::Splitting>(m_step) || (shaping != nullptr && shaping->editor.refining());
 }
 
 const SessionPath* Session::path_wanting_room() const
@@ -300,8 +303,10 @@ SessionPath* Session::path_wanting_room()
 void Session::work()
 {
     ++m_revision;
-    if (SessionPath* path = path_wanting_room())
-        return make_room(path->evaluation_room, path->points.size());
+    if (SessionPath* path = path_wanting_room()) {
+        make_room(path->evaluation_room, path->points.size(), room_segments_a_step);
+        return;
+    }
     if (auto* shaping = std::get_if<step::Shaping>(&m_step))
         return shaping->editor.refine_step();
     auto* splitting = std::get_if<step::Splitting>(&m_step);

@@ -1,8 +1,11 @@
 #include "apcs/editor/path_document.h"
 #include "apcs/editor/path_picture.h"
 #include "apcs/animation/view_transform.h"
+#include "support/same_path.h"
 
 #include <catch2/catch.hpp>
+
+#include <cmath>
 
 using namespace apcs;
 
@@ -152,4 +155,36 @@ TEST_CASE("a picture nobody sees evaluates the path as one that is seen, and dra
     REQUIRE(seen.has_ghost());
     REQUIRE_FALSE(unseen.has_ghost());
     REQUIRE_FALSE(unseen.refining());
+}
+
+// The arrays a session makes while a long path's slopes prompt waits (make_room) are the ones the
+// picture evaluates into, and the evaluation is the one made without them (PERFORMANCE.md 19).
+TEST_CASE("a path picture made with arrays made ahead evaluates into them, to the bit as one made without",
+          "[editor][document]")
+{
+    ControlPoints points;
+    for (int k = 0; k < 3000; ++k)
+        points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.5, std::cos(k * 0.7) * 4.0},
+                          {k % 7 == 0 ? -0.5 : 0.2, std::sin(k * 0.3) * 0.4, 0.1, k < 1500 ? 0.0 : 0.45}});
+    const PathDocument document(points);
+    for (const Spacing spacing : {Spacing::nearest, Spacing::exact})
+        for (const Refinement when : {Refinement::at_once, Refinement::in_steps}) {
+            CAPTURE(static_cast<int>(spacing), static_cast<int>(when));
+            const PathSettings settings{{1, 0.5}, 16, 12, spacing};
+            EvaluatedPath room;
+            std::size_t steps = 1;
+            while (!make_room(room, points.size(), 1000))
+                ++steps;
+            REQUIRE(steps == 3); // 2,999 segments, 1,000 a step
+            REQUIRE(has_room(room, points.size()));
+            const HermiteSegment* made = room.curve.segments.data();
+            const double* lengths = room.curve.length_to_point.data();
+            PathPicture picture(document, settings, PictureRefinement{.when = when}, std::move(room));
+            picture.refine();
+            PathPicture without(document, settings, PictureRefinement{.when = when});
+            without.refine();
+            REQUIRE(picture.evaluated().curve.segments.data() == made);
+            REQUIRE(picture.evaluated().curve.length_to_point.data() == lengths);
+            test::require_same_path(picture.evaluated(), without.evaluated());
+        }
 }

@@ -335,3 +335,41 @@ TEST_CASE("the terminal paints a screen only when its revision changes: once per
     // Back down one step: the path changes, one paint.
     REQUIRE(paints_of(U'4') == 1);
 }
+
+// At a long path's slopes prompt the terminal's session makes the path's arrays between keys
+// (Session::preparing); a paced replay still waits there for Space, and a key typed before that
+// work is done is the replay's as at any prompt, not typed into the slopes' line.
+TEST_CASE("a paced replay at a long path's slopes prompt waits for Space while the session prepares the path",
+          "[lesson][replay]")
+{
+    MemoryFiles files;
+    files.files["key1.dat"] = "0 0 0\n0 0 10\n0 6 0\n0 6 10\n";
+    files.files["key2.dat"] = "0 0 10\n0 0 0\n0 5 0\n";
+    std::string way = "0 0 0\n";
+    for (int k = 1; k < 69'999; ++k)
+        way += std::to_string(k % 5) + " " + std::to_string(k % 3) + " " + std::to_string(k % 10) + "\n";
+    files.files["long.dat"] = way + "0 0 10\n";
+    Expected<KeyScript> script =
+        parse_captioned_key_script("ENTER\nENTER\nTEXT 0 90 0\nENTER\nTEXT long.dat\nENTER\n;; the slopes\nENTER\n",
+                                   "long.keys");
+    REQUIRE(script);
+    SessionSettings settings;
+    settings.refinement = Refinement::in_steps;
+    Session session(settings, files);
+    ReplayDriver replay(session, *script, "long.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
+    for (int step = 0; step < 10 && session.phase() != SessionPhase::ask_slopes; ++step) {
+        play_to_idle(replay);
+        replay.handle(space);
+    }
+    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    REQUIRE(session.preparing());
+    REQUIRE(replay.state() == ReplayState::waiting_for_space);
+    const std::size_t handled = replay.handled().size();
+    replay.handle(KeyEvent::typed(U'x'));
+    REQUIRE(replay.handled().size() == handled);
+    play_to_idle(replay); // the arrays made
+    REQUIRE_FALSE(session.preparing());
+    replay.handle(space);
+    play_to_idle(replay);
+    REQUIRE(session.phase() == SessionPhase::choose_control);
+}

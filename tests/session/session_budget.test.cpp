@@ -136,6 +136,8 @@ TEST_CASE("the slopes prompt of a long path makes its evaluation's arrays while 
     };
     std::unique_ptr<Session> terminal = at_slopes(Refinement::in_steps, "long.dat");
     REQUIRE(terminal->busy());
+    REQUIRE(terminal->preparing());
+    REQUIRE_FALSE(terminal->working()); // a replay routes keys as at any prompt
     terminal->work();
     REQUIRE_FALSE(terminal->busy());
     REQUIRE(terminal->phase() == SessionPhase::ask_slopes);

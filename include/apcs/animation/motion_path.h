@@ -110,8 +110,10 @@ void evaluate_path(std::span<const ControlPoint> points, const PathSettings& set
 // The arrays evaluate_path fills for a path of `control_points` points, made ahead (their memory
 // written once): evaluate_path then writes into them. A session makes them for a long path while
 // its slopes prompt waits, so that opening it does not wait for the kernel's pages (on a virtual
-// machine, memory new to the host took 1.2-2 ms a MB to touch: PERFORMANCE.md 19).
-void make_room(EvaluatedPath& path, std::size_t control_points);
+// machine, memory new to the host took 1.2-2 ms a MB to touch: PERFORMANCE.md 19). One step makes
+// up to `most_segments` segments' room (reserved whole first, so the made part never moves), the
+// lengths' once the segments have theirs; returns has_room.
+bool make_room(EvaluatedPath& path, std::size_t control_points, std::size_t most_segments);
 // Whether `path` has that room, or more.
 bool has_room(const EvaluatedPath& path, std::size_t control_points);
 // `path` was evaluated from the points before `change` with `settings`; `points` are those after

@@ -16,7 +16,7 @@ enum class ReplayState : std::uint8_t {
     playing_unasked,     // the preamble, a step's rest, PgDn's run: keys typed meanwhile wait for its end
     waiting_for_space,   // --pace step: the next step waits for Space
     waiting_for_clock,   // --pace MS: the next step waits for the clock
-    session_working,     // the session splits or refines a picture between the script's keys
+    session_working,     // the session splits or refines a picture between the script's keys (Session::working)
     animation_playing,   // the session plays the frames
     animation_step_held, // the frames play and a Space waits to be the next step when they end
     animation_paused,    // the frames are paused by , or . (each press steps one frame)

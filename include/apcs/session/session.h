@@ -37,9 +37,15 @@ public:
     void work() override;
     bool finished() const override { return phase() == SessionPhase::finished; }
     bool animating() const override;
-    // Busy too while the path editor refines its picture (Refinement::in_steps): a step per work();
-    // and at the slopes prompt of a long path, until its evaluation's arrays are made (one work()).
+    // Busy while working() or preparing(): a step of either per work().
     bool busy() const override;
+    // The step works between keys: a split, or the path editor refining its picture
+    // (Refinement::in_steps). A replay waits for it before its next key.
+    bool working() const;
+    // At the slopes prompt of a long path, until its evaluation's arrays are made: work no key
+    // waits for (a replay routes keys as at any prompt; the step that takes the answer takes the
+    // arrays made so far).
+    bool preparing() const { return path_wanting_room() != nullptr; }
     int delay_ms() const override { return m_model.delay_ms; }
     SessionScreen screen() const override;
     // A key that changes nothing on the path screen (a staff step past +1, a key no mode takes)
