@@ -30,7 +30,7 @@ _apcs_options()
         inbetween) echo "--inbetweens --frames --law --pad $view $pictures $terminal_pictures --gif --delay --print --out --help" ;;
         draw) echo "$view $pictures $terminal_pictures --help" ;;
         play) echo "$staff --slopes --samples --spacing --surface $view --glyphs --pixels $pictures $terminal_pictures --gif --delay --print --out --tree --help" ;;
-        figures) echo "$staff $curve --workdir --out --help" ;;
+        figures) echo "$staff $curve --workdir --out --paper --help" ;;
         *) echo "$staff $curve --surface $view --delay --glyphs --color --pixels --step $pictures --workdir --keys --pace --record --handout --paper --help --version" ;;
     esac
 }

@@ -155,8 +155,10 @@ ExitStatus run_figures_command(const CommonOptions& options, const std::filesyst
     pictures.emplace_back("fig-3-3-3.png", std::move(*robot));
     if (Expected<void> made = make_output_folder(target, "the figures"); !made)
         return report_bad_input(made.error(), err);
+    const PngInk ink = options.paper ? PngInk::paper : PngInk::monitor;
     for (const auto& [name, screen] : pictures) {
-        if (Expected<void> done = write_png_file(target / name, screen, PngShape::monitor, read_files_guard(options), out);
+        if (Expected<void> done =
+                write_png_file(target / name, screen, PngShape::monitor, read_files_guard(options), out, ink);
             !done)
             return report_bad_input(done.error(), err);
         out << escape_controls((target / name).string()) << '\n';

@@ -508,6 +508,8 @@ void add_figures_command_options(CLI::App& command, CommonOptions& options, std:
         ->check(a_name)
         ->type_name("DIR");
     add_out(command, options, "the pictures");
+    command.add_flag("--paper", options.paper,
+                     "draw the pictures black on white, for printing or a projector in a bright room");
 }
 
 } // namespace apcs

@@ -58,9 +58,9 @@ Expected<void> write_picture_bytes(const std::filesystem::path& target, const st
 }
 
 Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out)
+                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out, PngInk ink)
 {
-    const Expected<std::string> png = encode_png(render_raster(screen), shape);
+    const Expected<std::string> png = encode_png(render_raster(screen), shape, ink);
     if (!png)
         return Diagnostic{target.string(), 0, "cannot encode the PNG image: " + png.error().to_string()};
     return write_picture_bytes(target, *png, inputs, out);

@@ -11,10 +11,13 @@ using namespace posix_files;
 
 namespace {
 
-// What to do about an input that is not the exercise's, in the folder `role` names.
-std::string copy_again(InputFolder role)
+// Whose input it is: an exercise names its inputs' bytes, a lesson their presence (script_input.h).
+std::string owner_of(const ScriptInput& input) { return input.crc32 ? "exercise" : "lesson"; }
+
+// What to do about an input that is not the script's, in the folder `role` names.
+std::string copy_again(const ScriptInput& input, InputFolder role)
 {
-    return role == InputFolder::work ? "copy the exercise's files into the work folder again"
+    return role == InputFolder::work ? "copy the " + owner_of(input) + "'s files into the work folder again"
                                      : "put the exercise's files, as shipped, beside it again";
 }
 
@@ -35,8 +38,21 @@ Expected<std::uint32_t> crc32_of_descriptor(int descriptor)
     }
 }
 
-// The input's problem, if any, as "NAME what; expected …": the file's bytes checked against the
-// exercise's CRC-32.
+// A lesson's input: a regular file of its own, whatever its bytes (not read).
+Expected<void> check_presence(const ScriptInput& input, const std::filesystem::path& file)
+{
+    struct stat status {};
+    if (::lstat(file.c_str(), &status) != 0)
+        return Diagnostic{"", 0, input.name + " cannot be read: " + system_reason(errno)};
+    if (!S_ISREG(status.st_mode))
+        return Diagnostic{"", 0, input.name + " is " + kind_of(status.st_mode) +
+                                     "; expected the lesson's input, a regular file of its own: " +
+                                     copy_again(input, InputFolder::work)};
+    return ok;
+}
+
+// The input's problem, if any, as "NAME what; expected …": an exercise's file's bytes checked
+// against its CRC-32, a lesson's file found.
 Expected<void> check_input(const ScriptInput& input, const std::filesystem::path& folder, InputFolder role)
 {
     const std::string where = role == InputFolder::work ? "the work folder " : "the exercise's folder ";
@@ -48,16 +64,18 @@ Expected<void> check_input(const ScriptInput& input, const std::filesystem::path
     struct stat status {};
     if (::lstat(found->c_str(), &status) != 0 && errno == ENOENT)
         return Diagnostic{"", 0,
-                          input.name + " is missing from " + where + folder.string() +
-                              "; expected the exercise's input: " + copy_again(role)};
+                          input.name + " is missing from " + where + folder.string() + "; expected the " +
+                              owner_of(input) + "'s input: " + copy_again(input, role)};
+    if (!input.crc32)
+        return check_presence(input, *found);
     const Expected<std::uint32_t> crc32 = file_crc32(*found);
     if (!crc32)
-        return Diagnostic{"", 0, input.name + " " + crc32.error().message + ": " + copy_again(role)};
-    if (*crc32 != input.crc32)
+        return Diagnostic{"", 0, input.name + " " + crc32.error().message + ": " + copy_again(input, role)};
+    if (*crc32 != *input.crc32)
         return Diagnostic{"", 0,
                           input.name + " differs from the exercise's (CRC-32 " + crc32_text(*crc32) + ", expected " +
-                              crc32_text(input.crc32) + "): a session rewrote it, or it is another exercise's; " +
-                              copy_again(role)};
+                              crc32_text(*input.crc32) + "): a session rewrote it, or it is another exercise's; " +
+                              copy_again(input, role)};
     return ok;
 }
 

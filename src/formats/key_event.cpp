@@ -340,6 +340,21 @@ const TypedLine* typed_line_at(const KeyScript& script, std::size_t first)
     return typed != script.typed_lines.end() && typed->first_event == first ? &*typed : nullptr;
 }
 
+// An exercise (a script with GOAL lines) names its inputs' very bytes: apcs grade replays every
+// recording on files of those bytes, and a goal met before any key must be impossible. Only a
+// lesson may name an input by its presence alone.
+Expected<void> exercise_inputs_have_checksums(const KeyScript& script, const std::string& file_name)
+{
+    if (script.goals.empty())
+        return ok;
+    for (const ScriptInput& input : script.inputs)
+        if (!input.crc32)
+            return Diagnostic{file_name, input.line_number,
+                              "INPUT " + input.name + " without its CRC32 in an exercise (a script with GOAL "
+                              "lines); expected INPUT NAME CRC32 XXXXXXXX, the file's checksum"};
+    return ok;
+}
+
 } // namespace
 
 Expected<std::vector<KeyEvent>> parse_key_script(std::string_view text, const std::string& file_name)
@@ -355,6 +370,8 @@ Expected<KeyScript> parse_captioned_key_script(std::string_view text, const std:
     if (!events)
         return events.error();
     script.events = std::move(*events);
+    if (Expected<void> checked = exercise_inputs_have_checksums(script, file_name); !checked)
+        return checked.error();
     return script;
 }
 

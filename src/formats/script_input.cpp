@@ -41,13 +41,17 @@ Expected<ScriptInput> parse_input_line(std::string_view words, const std::string
     for_each_field(line, [&fields](std::string_view field) { fields.push_back(field); });
     const auto refused = [&](const std::string& reason) {
         return Diagnostic{file_name, line_number,
-                          "expected INPUT NAME CRC32 XXXXXXXX (" + reason + "); found 'INPUT " +
+                          "expected INPUT NAME [CRC32 XXXXXXXX] (" + reason + "); found 'INPUT " +
                               std::string(line.substr(0, line.find_last_not_of(" \t\r") + 1)) + "'"};
     };
-    if (fields.size() != 3 || !equals_ignoring_case(fields[1], "CRC32"))
-        return refused("a file's name, the word CRC32 and its checksum");
+    const bool named_alone = fields.size() == 1;
+    const bool with_checksum = fields.size() == 3 && equals_ignoring_case(fields[1], "CRC32");
+    if (!named_alone && !with_checksum)
+        return refused("a file's name, then the word CRC32 and its checksum or nothing");
     if (!is_plain_file_name(fields[0]))
         return refused("NAME a file of the work folder, without a folder");
+    if (named_alone)
+        return ScriptInput{std::string(fields[0]), std::nullopt, line_number};
     const std::optional<std::uint32_t> crc32 = crc32_of(fields[2]);
     if (!crc32)
         return refused("XXXXXXXX the CRC-32 of the file's bytes in 8 hex digits");
@@ -56,7 +60,9 @@ Expected<ScriptInput> parse_input_line(std::string_view words, const std::string
 
 std::string input_line(const ScriptInput& input)
 {
-    return "INPUT " + input.name + " CRC32 " + crc32_text(input.crc32);
+    if (!input.crc32)
+        return "INPUT " + input.name;
+    return "INPUT " + input.name + " CRC32 " + crc32_text(*input.crc32);
 }
 
 std::string crc32_text(std::uint32_t crc32)

@@ -166,19 +166,23 @@ struct RoleColour {
     int priority;
     char letter;
     std::string_view colour;
-    int number; // curses' COLOR_*: 0 black 1 red 2 green 3 yellow 4 blue 5 magenta 6 cyan 7 white
+    int number; // 0-7 curses' COLOR_* (black red green yellow blue magenta cyan white), 8-15 bright
     std::string_view name;
 };
 
-// The one table of the roles' colours (SPEC §7.2.1): the eight colours every colour terminal has.
+// The one table of the roles' colours (SPEC §7.2.1, §3.2): each at least 4.5:1 against black in
+// xterm's default palette, so that a projector's back row sees it. Blue (2.2:1), red (3.6:1) and
+// magenta (4.48:1) fail there, and so does bright blue (4.4:1): the ghost is grey (bright black,
+// 5.2:1), the marks bright red (5.3:1), the region bright magenta (6.7:1), named as a person
+// sees them: red, magenta.
 constexpr RoleColour role_colours[] = {
     {ColourRole::monitor, 3, 'm', "the terminal's own", -1, "curve, x marks, staff, text (1989)"},
     {ColourRole::key_frame, 0, 'k', "cyan", 6, "key frames (K)"},
-    {ColourRole::ghost, 1, 'g', "blue", 4, "ghost (O)"},
+    {ColourRole::ghost, 1, 'g', "grey", 8, "ghost (O)"},
     // Green as the law's: the law is an inset graph in a corner, never a curve beside the path.
     {ColourRole::reference, 2, 'a', "green", 2, "reference A, pinned (C)"},
-    {ColourRole::inbetween, 4, 'i', "red", 1, "in-between marks"},
-    {ColourRole::region, 5, 'r', "magenta", 5, "picked region"},
+    {ColourRole::inbetween, 4, 'i', "red", 9, "in-between marks"},
+    {ColourRole::region, 5, 'r', "magenta", 13, "picked region"},
     {ColourRole::tangent, 6, 't', "yellow", 3, "tangents (T)"},
     {ColourRole::law, 7, 'l', "green", 2, "law (G)"},
     {ColourRole::goal, 8, 'o', "reverse", -1, "goal"},

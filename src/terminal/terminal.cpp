@@ -56,6 +56,8 @@ attr_t attributes_of(CellStyle style)
 // roles in unmade pairs: black on black). A role in the terminal's own foreground (-1) is white
 // there. False when the pairs cannot be made: the roles are then told apart without colour, as
 // with --color never.
+// A bright colour (8-15) on a terminal of 8 is its colour of 0-7 in bold, which xterm and the
+// Linux console show bright.
 bool start_role_colours()
 {
     if (start_color() == ERR)
@@ -65,13 +67,16 @@ bool start_role_colours()
     for (const ColourRole role : colour_roles) {
         if (role == ColourRole::monitor)
             continue;
-        const int number = colour_number(role);
+        const int number = colour_number(role) >= COLORS ? colour_number(role) - 8 : colour_number(role);
         const short foreground = static_cast<short>(number >= 0 || own_colours ? number : COLOR_WHITE);
         if (init_pair(static_cast<short>(role), foreground, background) == ERR)
             return false;
     }
     return true;
 }
+
+// Bold where a role's bright colour is beyond the terminal's (start_role_colours).
+attr_t bright_by_bold(ColourRole role) { return colour_number(role) >= COLORS ? A_BOLD : A_NORMAL; }
 
 bool colour_wanted(ColourChoice colour)
 {
@@ -413,7 +418,7 @@ bool Terminal::show(const CellGrid& grid)
                     append_utf8(run, mark);
                 ++column;
             }
-            attr_set(attributes_of(style), pair, nullptr);
+            attr_set(attributes_of(style) | bright_by_bold(static_cast<ColourRole>(pair)), pair, nullptr);
             mvaddstr(row, start, run.c_str());
         }
     }

@@ -263,7 +263,7 @@ TEST_CASE("an exercise whose input is missing or a FIFO or a symbolic link or wh
         std::string script = read_all(folder / "exercise-1-tension.keys");
         script.replace(script.find("CRC32 1db7d833"), 14, "CRC32 1db7d8z3");
         folder.write("exercise-1-tension.keys", script);
-        expected = script_name + ":7: expected INPUT NAME CRC32 XXXXXXXX (XXXXXXXX the CRC-32 of the file's bytes in 8 "
+        expected = script_name + ":7: expected INPUT NAME [CRC32 XXXXXXXX] (XXXXXXXX the CRC-32 of the file's bytes in 8 "
                                  "hex digits); found 'INPUT way1.dat CRC32 1db7d8z3'\n";
     }
     const auto before = folder_content(folder);

@@ -125,3 +125,33 @@ TEST_CASE("apcs figures refuses a robot whose joint closing a cycle opens in som
     CHECK(result.out.empty());
     CHECK_FALSE(std::filesystem::exists(folder / "fig-3-1-1.png"));
 }
+
+TEST_CASE("apcs figures --paper draws each figure black on white, pixel for pixel the monitor's inverted",
+          "[cli][figures][paper]")
+{
+    const test::TempFolder monitor;
+    const test::TempFolder paper;
+    REQUIRE(test::run_apcs({"figures", "--out", monitor.path().string()}).status == 0);
+    const auto result = test::run_apcs({"figures", "--paper", "--out", paper.path().string()});
+    REQUIRE(result.status == 0);
+    for (const char* name : {"fig-3-1-1.png", "fig-3-2-1.png", "example-1-n-to-l-surfaces.png", "fig-3-3-3.png"}) {
+        CAPTURE(name);
+        const test::GreyPicture lit = test::grey_picture(test::read_all(monitor / name));
+        const test::GreyPicture ink = test::grey_picture(test::read_all(paper / name));
+        REQUIRE(ink.width == lit.width);
+        REQUIRE(ink.height == lit.height);
+        REQUIRE(ink.pixels.size() == lit.pixels.size());
+        std::size_t dark = 0;
+        std::size_t not_inverted = 0;
+        for (std::size_t k = 0; k < lit.pixels.size(); ++k) {
+            if (ink.pixels[k] + lit.pixels[k] != 255)
+                ++not_inverted;
+            if (ink.pixels[k] == 0)
+                ++dark;
+        }
+        REQUIRE(not_inverted == 0);
+        // Ink on paper: a drawing, and mostly white.
+        REQUIRE(dark > 1000);
+        REQUIRE(dark < ink.pixels.size() / 4);
+    }
+}

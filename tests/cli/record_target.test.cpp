@@ -82,8 +82,8 @@ TEST_CASE("a recording to - (--record -) goes to standard output, not to a file 
     CAPTURE(recorded.err);
     REQUIRE(recorded.status == 0);
     CHECK_FALSE(std::filesystem::exists("-"));
-    // Keys and the script's captions, no screens.
-    CHECK(recorded.out.starts_with(";; Step 1 (fig. 4.2.1): KEY1 and KEY2, the two key frames: an N and an L\nENTER\nENTER\n;; "
+    // The script's inputs, keys and captions, no screens.
+    CHECK(recorded.out.starts_with("INPUT key1.dat\nINPUT key2.dat\nINPUT way1.dat\nINPUT way4.dat\n;; Step 1 (fig. 4.2.1): KEY1 and KEY2, the two key frames: an N and an L\nENTER\nENTER\n;; "
                                    "Step 2 (fig. 4.2.2): points added, one path file each; now the view, face-on\nTEXT 0 90 "
                                    "100\nENTER\n"));
 }

@@ -112,7 +112,7 @@ if [ "$part" = core ]; then
   # --- A cell whose style alone changes is sent again: the control point picked, its 'x' the
   # same character, shows in reverse video (SPEC 7.2).
   styled() { tmux -L "$socket" capture-pane -p -e -t "$1"; }
-  # With colour (--color auto) a region's x is also in the region's colour: \e[7m\e[35mx.
+  # With colour (--color auto) a region's x is also in the region's colour: \e[7m\e[95mx.
   reversed_x() { styled braille | grep -qE $'\e\\[7m(\e\\[[0-9;]*m)*x'; }
   reversed_x && fail "a control point in reverse video before any pick" braille
   keys braille Enter

@@ -2,6 +2,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
+
 using namespace apcs;
 
 TEST_CASE("cell widths are Unicode's: wide CJK and fullwidth 2, combining 0, controls -1", "[raster][cells]")
@@ -73,4 +77,44 @@ TEST_CASE("writing over half of a wide character blanks its other half", "[raste
     grid.put_text(0, 1, "\u6F22\u5B57");
     grid.put_text(0, 1, "yz");
     REQUIRE(grid.row_text(1) == "yz\u5B57");
+}
+
+namespace {
+
+// xterm's default 16 colours (its XTerm-col.ad resource file: color0 … color15).
+constexpr std::array<std::uint32_t, 16> xterm_palette = {
+    0x000000, 0xcd0000, 0x00cd00, 0xcdcd00, 0x0000ee, 0xcd00cd, 0x00cdcd, 0xe5e5e5,
+    0x7f7f7f, 0xff0000, 0x00ff00, 0xffff00, 0x5c5cff, 0xff00ff, 0x00ffff, 0xffffff,
+};
+
+// WCAG 2's relative luminance of an sRGB colour 0xRRGGBB.
+double relative_luminance(std::uint32_t rgb)
+{
+    const auto linear = [](std::uint32_t channel) {
+        const double value = channel / 255.0;
+        return value <= 0.04045 ? value / 12.92 : std::pow((value + 0.055) / 1.055, 2.4);
+    };
+    return 0.2126 * linear(rgb >> 16 & 0xff) + 0.7152 * linear(rgb >> 8 & 0xff) + 0.0722 * linear(rgb & 0xff);
+}
+
+// WCAG 2's contrast ratio of a colour against black.
+double contrast_on_black(std::uint32_t rgb) { return (relative_luminance(rgb) + 0.05) / 0.05; }
+
+} // namespace
+
+TEST_CASE("every colour role stands at least 4.5:1 against black in xterm's default palette", "[raster][colour]")
+{
+    // The figures SPEC §3.2 gives, so that the table's formula is the one it measured with.
+    REQUIRE(contrast_on_black(xterm_palette[4]) == Approx(2.2).margin(0.05));  // blue
+    REQUIRE(contrast_on_black(xterm_palette[1]) == Approx(3.6).margin(0.05));  // red
+    REQUIRE(contrast_on_black(xterm_palette[5]) == Approx(4.48).margin(0.01)); // magenta
+    REQUIRE(contrast_on_black(xterm_palette[12]) == Approx(4.4).margin(0.05)); // bright blue
+    for (const ColourRole role : colour_roles) {
+        const int number = colour_number(role);
+        CAPTURE(colour_role_name(role), colour_name(role), number);
+        if (number < 0) // the terminal's own foreground, or reverse video: no colour of ours
+            continue;
+        REQUIRE(number < 16);
+        CHECK(contrast_on_black(xterm_palette[static_cast<std::size_t>(number)]) >= 4.5);
+    }
 }

@@ -41,7 +41,8 @@ Expected<void> write_picture_bytes(const std::filesystem::path& target, const st
 // Writes the screen's raster (text drawn in the font) as a PNG, atomically; to `out` when
 // `target` is "-". The old picture's backup never replaces one of `inputs`.
 Expected<void> write_png_file(const std::filesystem::path& target, const GraphicsScreen& screen,
-                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out);
+                              PngShape shape, const KeyFileGuard& inputs, std::ostream& out,
+                              PngInk ink = PngInk::monitor);
 
 // Writes the screen as an SVG (encode_svg), atomically; to `out` when `target` is "-". The old
 // picture's backup never replaces one of `inputs`.

@@ -33,8 +33,9 @@ enum class ColourChoice : unsigned char { automatic, always, never };
 int colour_priority(ColourRole role);
 // One letter per role for test dumps: m k g i r t l o a.
 char colour_letter(ColourRole role);
-// The legend's name of the colour a terminal draws `role` in ("yellow"), and the curses colour
-// number (0-7: black red green yellow blue magenta cyan white) it means; monitor is the default
+// The legend's name of the colour a terminal draws `role` in ("yellow"), and the colour number it
+// means: 0-7 curses' black red green yellow blue magenta cyan white, 8-15 their bright kin (a
+// terminal of 8 colours shows them as the colour 8 below, bold); monitor is the default
 // foreground (-1).
 std::string_view colour_name(ColourRole role);
 int colour_number(ColourRole role);
