@@ -45,7 +45,7 @@ ReplayState ReplayDriver::state() const
     }
     if (m_session->working())
         return ReplayState::session_working;
-    if (m_played == m_script.events.size())
+    if (m_played == m_script.events.size() && !caption_due())
         return ReplayState::end;
     if (plays_unasked())
         return ReplayState::playing_unasked;
@@ -64,7 +64,8 @@ bool ReplayDriver::session_idle() const
 
 bool ReplayDriver::script_ready() const
 {
-    return m_audience == ReplayAudience::terminal && lesson_has_keyboard() && playing() && session_idle();
+    return m_audience == ReplayAudience::terminal && lesson_has_keyboard() && (playing() || caption_due()) &&
+           session_idle();
 }
 
 bool ReplayDriver::plays_unasked() const
@@ -147,10 +148,20 @@ void ReplayDriver::act(ReplayAction action, const KeyEvent& key)
     case ReplayAction::skip_goal: skip_goal(); return;
     case ReplayAction::back: {
         const std::optional<std::size_t> caption = caption_on_row();
-        go_to_caption(caption && *caption > 0 ? *caption - 1 : 0, "PGUP");
+        if (caption && *caption > 0)
+            go_to_caption(*caption - 1, "PGUP");
+        else
+            go_to_start("PGUP");
         return;
     }
-    case ReplayAction::back_to_shown: go_to_caption(caption_on_row().value_or(0), "PGUP"); return;
+    case ReplayAction::back_to_shown: {
+        const std::optional<std::size_t> caption = caption_on_row();
+        if (caption)
+            go_to_caption(*caption, "PGUP");
+        else
+            go_to_start("PGUP");
+        return;
+    }
     case ReplayAction::forward_to_next: {
         const std::optional<std::size_t> caption = caption_on_row();
         go_to_caption(caption ? *caption + 1 : 0, "PGDN");
@@ -268,9 +279,10 @@ std::string ReplayDriver::place_in_badge(std::optional<std::size_t> caption) con
         return std::string(replay_keys_keyboard);
     if (m_last_action == ReplayAction::name_keys)
         return std::string(m_pace.kind == ReplayPace::Kind::on_space ? replay_keys_on_space : replay_keys_timed);
+    const std::size_t captions = m_script.captions.size();
     if (caption)
-        return "caption " + std::to_string(*caption + 1) + " of " + std::to_string(m_script.captions.size());
-    return {};
+        return "caption " + std::to_string(*caption + 1) + " of " + std::to_string(captions);
+    return captions > 0 ? "caption 0 of " + std::to_string(captions) : std::string();
 }
 
 void ReplayDriver::finish()
@@ -296,6 +308,14 @@ void ReplayDriver::play_scripted()
 {
     if (m_last_action == ReplayAction::name_keys)
         m_last_action.reset(); // the badge names the step again
+    if (keyless_caption_due()) {
+        ++m_captions_shown;
+        m_step_label.clear(); // no key played: the badge gives the place alone
+        return;
+    }
+    if (m_played >= m_script.events.size())
+        return;
+    show_captions_through(m_played);
     if (!mid_step()) {
         m_step_end = m_played + step_length(m_script, m_played);
         m_step_label = step_label(m_script, m_played);
@@ -323,10 +343,43 @@ std::optional<std::size_t> ReplayDriver::caption_on_row() const
         const std::size_t before = m_script.goals[*goal].captions_before;
         return before > 0 ? std::optional<std::size_t>(before - 1) : std::nullopt;
     }
+    if (paced())
+        return m_captions_shown > 0 ? std::optional<std::size_t>(m_captions_shown - 1) : std::nullopt;
     const ScriptCaption* caption = caption_at(m_script, m_played);
     if (caption == nullptr)
         return std::nullopt;
     return static_cast<std::size_t>(caption - m_script.captions.data());
+}
+
+std::size_t ReplayDriver::caption_keys_end(std::size_t caption) const
+{
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    return caption + 1 < captions.size() ? captions[caption + 1].before_event : m_script.events.size();
+}
+
+bool ReplayDriver::caption_due() const
+{
+    return paced() && m_captions_shown < m_script.captions.size() &&
+           m_script.captions[m_captions_shown].before_event <= m_played;
+}
+
+bool ReplayDriver::keyless_caption_due() const
+{
+    return caption_due() && caption_keys_end(m_captions_shown) <= m_played;
+}
+
+void ReplayDriver::show_captions_through(std::size_t event)
+{
+    if (!paced())
+        return;
+    const std::vector<ScriptCaption>& captions = m_script.captions;
+    while (m_captions_shown < captions.size() && captions[m_captions_shown].before_event <= event)
+        ++m_captions_shown;
+}
+
+bool ReplayDriver::task_shown(std::size_t goal) const
+{
+    return !paced() || m_captions_shown >= m_script.goals[goal].captions_before;
 }
 
 } // namespace apcs

@@ -34,7 +34,7 @@ void ReplayDriver::settle()
     if (!playing() && session_idle() && !waiting_goal())
         end_caption();
     // A Space held through the script's last animation: the next step is the end.
-    if (m_mode == Mode::step_held && !playing() && session_idle())
+    if (m_mode == Mode::step_held && !playing() && !caption_due() && session_idle())
         m_mode = paced() ? Mode::end_told : Mode::deck;
 }
 
@@ -87,7 +87,7 @@ void ReplayDriver::wait_at_goal()
         }
     }
     const std::vector<ScriptGoal>& goals = m_script.goals;
-    while (m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played) {
+    while (m_next_goal < goals.size() && goals[m_next_goal].before_event <= m_played && task_shown(m_next_goal)) {
         // The next GOAL line: a goal passed before it is judged as it stands (SPEC §3).
         if (m_open)
             judge_open_goal(open_goal_as_it_stands());
@@ -139,6 +139,10 @@ void ReplayDriver::pass_goal()
 {
     m_mode = Mode::deck;
     m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
+    // A caption after the answer with no keys of its own (the one closing the goal) is about the
+    // path as the student left it: it shows at once, beside it.
+    if (keyless_caption_due())
+        ++m_captions_shown;
 }
 
 // On a terminal, a goal passed (it held) until it is judged: when its path is left (accepted, or
@@ -273,6 +277,8 @@ void ReplayDriver::skip_goal()
     m_mode = Mode::deck;
     m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
     m_step_label = "PGDN";
+    // As any PgDn: the next caption (the goal's closing one, "(skipped) …") and its keys.
+    play_to_next_caption();
 }
 
 // A caption after the goal's GOAL line, reached by its answer's end, that is not the task of a

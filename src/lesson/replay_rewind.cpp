@@ -9,27 +9,38 @@
 // screen replayed in memory from the inputs as they were when the replay started.
 namespace apcs {
 
-// The rest of the caption's keys play unasked; the next caption stops them (or a goal, or the end).
+// PgDn (SPEC §3.2): the next caption shows and its keys play unasked (the rest of the one on the
+// row first); the caption after it stops them (or a goal, or the end). Past the last caption, the
+// script's rest.
 void ReplayDriver::play_to_next_caption()
 {
-    const std::vector<ScriptCaption>& captions = m_script.captions;
-    const auto next = std::find_if(captions.begin(), captions.end(),
-                                   [&](const ScriptCaption& caption) { return caption.before_event > m_played; });
-    m_run_to = next == captions.end() ? m_script.events.size() : next->before_event;
+    if (paced() && m_captions_shown < m_script.captions.size())
+        m_run_to = caption_keys_end(m_captions_shown++);
+    else
+        m_run_to = m_script.events.size();
     if (m_mode == Mode::step_held)
         m_mode = Mode::deck;
+    m_step_label = "PGDN";
 }
 
-// Caption `caption`'s screen (its keys not yet played); past the last caption, the script's end.
+// Caption `caption` beside the screen its keys made; past the last caption, the script's end.
 void ReplayDriver::go_to_caption(std::size_t caption, std::string label)
 {
     const std::vector<ScriptCaption>& captions = m_script.captions;
-    if (captions.empty())
+    if (captions.empty()) {
         rewind_to(m_script.preamble_end, std::move(label));
-    else if (caption < captions.size())
-        rewind_to(captions[caption].before_event, std::move(label));
-    else
-        rewind_to(m_script.events.size(), std::move(label));
+        return;
+    }
+    caption = std::min(caption, captions.size() - 1);
+    rewind_to(caption_keys_end(caption), std::move(label));
+    m_captions_shown = caption + 1;
+}
+
+// The lesson's first screen: its opening answers played, no caption shown yet.
+void ReplayDriver::go_to_start(std::string label)
+{
+    rewind_to(m_script.preamble_end, std::move(label));
+    m_captions_shown = 0;
 }
 
 // A new session on the inputs as they were when the replay started, the first `events` keys played
@@ -42,8 +53,9 @@ void ReplayDriver::rewind_to(std::size_t events, std::string label)
     m_recording = KeyRecording();
     m_recording.add_inputs(m_script.inputs);
     m_lines_recorded = 0;
+    // The lines at `events` itself (the next caption, a GOAL line) are the replay's to record as it
+    // meets them: a goal's answer comes after its GOAL line, before the caption that closes it.
     catch_up(*session, events);
-    record_lines(m_recording, m_lines_recorded, events);
     if (m_hooks.caught_up)
         m_hooks.caught_up();
     // The new session counts its screens from 0: the sum the terminal watches must still grow.

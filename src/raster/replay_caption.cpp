@@ -82,9 +82,11 @@ SessionScreen with_caption(SessionScreen screen, std::string_view caption)
 
 CellGrid with_played_key(CellGrid grid, std::string_view label, std::string_view place)
 {
-    if (label.empty() || grid.rows() == 0)
+    if ((label.empty() && place.empty()) || grid.rows() == 0)
         return grid;
-    const std::string badge = played_key_badge(label) + (place.empty() ? "" : "| " + std::string(place) + " ");
+    // Before any step (a lesson that opens on its first prompt) the place stands alone.
+    const std::string after_label = place.empty() ? "" : "| " + std::string(place) + " ";
+    const std::string badge = label.empty() ? " " + std::string(place) + " " : played_key_badge(label) + after_label;
     const int column = grid.columns() - 2 - text_columns(badge);
     if (column < 0)
         return grid;

@@ -165,10 +165,10 @@ def settled_screen(session, quiet, seen):
 
 def first_caption_screen(session):
     """Waits until the replay has played its preamble and stands at its first caption (the badge
-    says "caption 1 of N"), up to 30 s."""
+    says "caption 0 of N"), up to 30 s."""
     deadline = time.time() + 30
     while time.time() < deadline:
-        if "caption 1 of" in tmux("capture-pane", "-p", "-t", session).split("\n")[0]:
+        if "caption 0 of" in tmux("capture-pane", "-p", "-t", session).split("\n")[0]:
             return
         time.sleep(0.05)
 

@@ -25,7 +25,9 @@ tmux -L "$socket" new-session -d -s deck -x 200 -y 60 -c "$work" \
 captions=$(grep -c '^;;' "$work/lesson-continuity.keys")
 caption_number() { grep '^;;' "$work/lesson-continuity.keys" | grep -n -- "$1" | cut -d: -f1; }
 pin=$(caption_number "C pins")
-wait_for deck "caption 1 of $captions"
+wait_for deck "caption 0 of $captions"
+keys deck NPage
+wait_for deck "key PGDN | caption 1 of $captions"
 # The caption is under the staff, the badge on the top row, at 200 columns as at 80.
 screen deck | grep -v "^ *$" | tail -n 1 | grep -q "T shows the tangents" || fail "the first caption is not under the staff" deck
 for n in $(seq 2 "$captions"); do

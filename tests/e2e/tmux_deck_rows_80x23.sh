@@ -28,8 +28,9 @@ mkdir "$work/surface"
 cp "$data"/n-to-l/*.dat "$data"/n-to-l/lesson-surface.keys "$work/surface/"
 start surface "$work/surface" "--keys lesson-surface.keys --pace step --delay 1000 --glyphs ascii"
 captions=$(grep -c '^;;' "$work/surface/lesson-surface.keys")
-wait_for surface "Surface fitting (Ch. 3.2)"
-for _ in $(seq 1 8); do keys surface PageDown; done
+wait_for surface "caption 0 of $captions"
+# PgDn K shows caption K with its keys played: caption 5's key starts the frames.
+for _ in $(seq 1 5); do keys surface PageDown; done
 wait_for surface "In-between"
 keys surface .
 wait_for surface "(paused)"
@@ -37,31 +38,31 @@ first=$(frame_shown surface)
 for _ in 1 2 3 4; do keys surface .; done
 sleep 0.3
 [ "$(frame_shown surface)" = $((first + 4)) ] || fail "five presses of . did not step five frames (from $first)" surface
-screen surface | grep -qF "caption 9 of $captions" || fail "the caption moved while stepping frames" surface
+screen surface | grep -qF "caption 5 of $captions" || fail "the caption moved while stepping frames" surface
 keys surface ,
 sleep 0.3
 [ "$(frame_shown surface)" = $((first + 3)) ] || fail ", did not step a frame back" surface
 keys surface Space
 wait_for surface "Press any key to see all frames"
-screen surface | grep -qF "caption 9 of $captions" || fail "Space after the pause played a step of the script" surface
+screen surface | grep -qF "caption 5 of $captions" || fail "Space after the pause played a step of the script" surface
 
 # --- Esc, a key of the teacher's, PgUp: the caption's screen again.
 mkdir "$work/lesson"
 cp "$data"/n-to-l/*.dat "$data"/n-to-l/lesson.keys "$work/lesson/"
 start lesson "$work/lesson" "--keys lesson.keys --pace step --glyphs ascii"
 captions=$(grep -c '^;;' "$work/lesson/lesson.keys")
-wait_for lesson "caption 1 of $captions"
+wait_for lesson "caption 0 of $captions"
 keys lesson PageDown PageDown
-wait_for lesson "caption 3 of $captions"
+wait_for lesson "caption 2 of $captions"
 sleep 0.3
-at_three=$(below_badge lesson)
+at_two=$(below_badge lesson)
 keys lesson Escape
 wait_for lesson "your keyboard: PgUp/PgDn/Home return"
 keys lesson 8
 keys lesson PageUp
-wait_for lesson "key PGUP | caption 3 of $captions"
+wait_for lesson "key PGUP | caption 2 of $captions"
 sleep 0.3
-[ "$(below_badge lesson)" = "$at_three" ] || fail "PgUp after Esc did not return to caption 3's screen" lesson
+[ "$(below_badge lesson)" = "$at_two" ] || fail "PgUp after Esc did not return to caption 2's screen" lesson
 keys lesson Escape
 keys lesson Home
 wait_for lesson "key HOME | caption 1 of $captions"
@@ -76,6 +77,8 @@ wait_for lesson "caption $captions of $captions"
 mkdir "$work/exercise"
 cp "$data"/exercises/*.dat "$data"/exercises/exercise-1-tension.keys "$work/exercise/"
 start exercise "$work/exercise" "--keys exercise-1-tension.keys --pace step --glyphs ascii"
+wait_for exercise "caption 0 of"
+keys exercise Space
 wait_for exercise "caption 1 of"
 keys exercise Space
 wait_for exercise "GOAL: tension +0.00, want +0.40 to +0.60"

@@ -48,21 +48,24 @@ screen paced | head -n 1 | grep -q " key 6 " || fail "the key just played is not
 keys paced C-c
 wait_for paced "EXITED=130"
 
-# --pace step: nothing plays until Space; each Space plays one key.
+# --pace step: nothing plays until Space; each Space plays one key, a caption shows with its first.
 start stepped "$apcs --keys class.keys --pace step --glyphs ascii"
-wait_for stepped "Step 1: KEY1 and KEY2 are the two key frames"
+wait_for stepped "caption 0 of 5"
 sleep 0.5
 screen stepped | grep -q "Please keyin the KEY2 filename" && fail "a key played without Space" stepped
+screen stepped | grep -q "Step 1: KEY1" && fail "a caption showed before its keys" stepped
 keys stepped Space
 wait_for stepped "Please keyin the KEY2 filename"
+wait_for stepped "Step 1: KEY1 and KEY2 are the two key frames"
 keys stepped Space
-wait_for stepped "Step 2: the viewer's direction, face-on"
+wait_for stepped "THETA ,PHI & delay-time value."
 # A key other than Space or Esc is not played, nor typed into the prompt.
 keys stepped x
 screen stepped | grep -q "THETA ,PHI & delay-time value.*x" && fail "a typed key reached the prompt" stepped
-# One Space plays the whole TEXT line, and names it.
+# One Space plays the whole TEXT line, and names it; its caption shows with it.
 keys stepped Space
 wait_for stepped "0 90 100_"
+wait_for stepped "Step 2: the viewer's direction, face-on"
 screen stepped | head -n 1 | grep -q " key TEXT 0 90 100 | caption 2 of 5$" || fail "the TEXT line played and the caption count are not shown" stepped
 # Esc ends the replay: the keyboard types, the caption goes at the first key.
 keys stepped Escape
@@ -75,16 +78,16 @@ wait_for stepped "EXITED=130"
 # A Space while the animation plays is the lesson's next step, played when the animation ends (it
 # was the animation's pause key, and the lesson stood still paused).
 start surface "$apcs --keys lesson-surface.keys --pace step --glyphs ascii"
-wait_for surface "Surface fitting (Ch. 3.2)"
+wait_for surface "caption 0 of"
 for _ in $(seq 1 60); do
-  screen surface | grep -q "A key plays the frames" && break
+  screen surface | grep -q "A key played KEY1, 12 in-betweens" && break
   keys surface Space
   sleep 0.2
 done
-wait_for surface "A key plays the frames"
+wait_for surface "A key played KEY1, 12 in-betweens"
+# That caption's key started the frames: this Space waits for their end to play the overlay.
 keys surface Space
-keys surface Space
-wait_for surface "Dotted: in-between 6 of 12"
+wait_for surface "dotted in-between 6 of 12: its middle points fitted"
 keys surface C-c
 wait_for surface "EXITED=130"
 # The slide-deck keys (SPEC 3.1): the lesson starts after its START line, PgDn goes to the next
@@ -94,9 +97,9 @@ cp "$data"/lesson.keys "$work"/
 captions=$(grep -c '^;;' "$work/lesson.keys")
 start deck "$apcs --keys lesson.keys --pace step --glyphs braille"
 first=$(grep -m1 '^;;' "$work/lesson.keys" | sed 's/^;; //')
-wait_for deck "$first"
-screen deck | head -n 1 | grep -q "key START | caption 1 of $captions" || fail "the lesson did not start at its first caption" deck
-for n in $(seq 2 "$captions"); do
+wait_for deck "key START | caption 0 of $captions"
+screen deck | grep -q "$first" && fail "the first caption showed before its keys" deck
+for n in $(seq 1 "$captions"); do
   keys deck NPage
   wait_for deck "caption $n of $captions"
 done

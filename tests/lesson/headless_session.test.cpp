@@ -2,7 +2,9 @@
 #include "apcs/formats/path_files.h"
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/key_event.h"
+#include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
+#include "apcs/raster/replay_caption.h"
 #include "apcs/session/session_files.h"
 
 #include "support/golden.h"
@@ -251,8 +253,9 @@ KeyScript read_lesson(const std::string& lesson)
     return *script;
 }
 
-// Each caption of `lesson` with the screen a paced replay shows it over, at 80x24 in `glyphs`:
-// "=== N: CAPTION", then the screen (trailing blanks removed).
+// Each caption of `lesson` beside the screen its keys made, as PgDn shows it and the handout prints
+// it (SPEC 3.2), at 80x24 in `glyphs`: "=== N: CAPTION", then the screen with the caption on its
+// last row (trailing blanks removed).
 std::string caption_screens(const std::string& lesson, GlyphSet glyphs)
 {
     const std::filesystem::path example = std::filesystem::path(lesson).parent_path();
@@ -265,13 +268,9 @@ std::string caption_screens(const std::string& lesson, GlyphSet glyphs)
     std::ostream no_screens(nullptr);
     const KeyScript script = read_lesson(lesson);
     ReplayHooks hooks;
-    hooks.caption_reached = [&](std::size_t index, const SessionScreen& shown) {
-        const CellGrid grid = shown.graphics ? render_cells(shown.picture, {80, 24}, glyphs) : shown.text;
+    hooks.caption_ended = [&](std::size_t index, const SessionScreen& shown, const std::vector<std::string>&) {
         screens += "=== " + std::to_string(++number) + ": " + script.captions[index].text + "\n";
-        for (int row = 0; row < grid.rows(); ++row) {
-            std::string line = grid.row_text(row);
-            screens += line.erase(line.find_last_not_of(' ') + 1) + "\n";
-        }
+        screens += screen_text(with_caption(shown, script.captions[index].text), glyphs);
     };
     ReplayDriver replay(session, script, lesson, ReplayPace{}, hooks, ReplayAudience::headless);
     run_headless_session(replay, session, glyphs, no_screens);
@@ -298,16 +297,21 @@ TEST_CASE("a script with a caption wider than the key-hint row is refused before
     REQUIRE_FALSE(std::filesystem::exists(folder / "ani1.dat"));
 }
 
-TEST_CASE("every shipped lesson ends with a caption that follows its last key", "[session][captions][teaching]")
+TEST_CASE("every key of a shipped lesson after its opening answers is a caption's, so that each screen the class "
+          "sees has its caption beside it",
+          "[session][captions][teaching]")
 {
+    // SPEC 3.2: a caption shows beside the screen its keys made; a key before the first caption
+    // would play with the caption row empty, and the last caption is about the last screen.
     const std::vector<std::string> lessons = shipped_lessons();
     REQUIRE(lessons.size() >= 3);
     for (const std::string& lesson : lessons) {
         CAPTURE(lesson);
         const KeyScript script = read_lesson(lesson);
         REQUIRE_FALSE(script.captions.empty());
-        REQUIRE(script.captions.back().before_event == script.events.size());
-        REQUIRE_FALSE(script.captions.back().text.empty());
+        REQUIRE(script.captions.front().before_event == script.preamble_end);
+        for (const ScriptCaption& caption : script.captions)
+            REQUIRE_FALSE(caption.text.empty());
     }
 }
 

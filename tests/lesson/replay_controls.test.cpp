@@ -84,8 +84,8 @@ TEST_CASE("START ends the preamble: its keys are one step, named START, and it s
     REQUIRE(test::parsed_deck("TEXT START\n").events.size() == 5);
 }
 
-TEST_CASE("a paced lesson begins after its preamble, at its first caption, the badge saying START and caption 1 "
-          "of N",
+TEST_CASE("a paced lesson begins after its preamble with no caption yet, the badge saying START and caption 0 of "
+          "N, and the first PgDn shows caption 1 with its keys played (SPEC 3.2)",
           "[lesson][replay][deck]")
 {
     const KeyScript script = test::parsed_deck(n_to_l_deck);
@@ -94,12 +94,24 @@ TEST_CASE("a paced lesson begins after its preamble, at its first caption, the b
     REQUIRE(deck.replay->handled().size() == 21);
     const SessionScreen shown = deck.replay->screen();
     REQUIRE(shown.graphics);
-    REQUIRE(shown.caption == "one");
+    REQUIRE(shown.caption.empty());
     REQUIRE(shown.badge == "START");
-    REQUIRE(shown.badge_place == "caption 1 of 3");
-    REQUIRE(cells_of(with_caption(shown, shown.caption)).row_text(23).starts_with(" one"));
+    REQUIRE(shown.badge_place == "caption 0 of 3");
     REQUIRE(with_played_key(CellGrid(80, 24), shown.badge, shown.badge_place).row_text(0).ends_with(
-        " key START | caption 1 of 3   "));
+        " key START | caption 0 of 3   "));
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->handled().size() == 22);
+    const SessionScreen first = deck.replay->screen();
+    REQUIRE(first.caption == "one");
+    REQUIRE(first.badge_place == "caption 1 of 3");
+    REQUIRE(cells_of(with_caption(first, first.caption)).row_text(23).starts_with(" one"));
+    // A lesson with no START opens on its first prompt, nothing played: the place stands alone.
+    const KeyScript no_start = test::parsed_deck(";; one\nENTER\n;; two\nENTER\n");
+    Deck opening(no_start, "n-to-l");
+    REQUIRE(opening.replay->handled().empty());
+    REQUIRE(opening.replay->screen().badge.empty());
+    REQUIRE(opening.replay->screen().badge_place == "caption 0 of 2");
+    REQUIRE(with_played_key(CellGrid(80, 24), "", "caption 0 of 2").row_text(0).ends_with(" caption 0 of 2   "));
 }
 
 TEST_CASE("a key a paced replay does not take puts in the badge the keys it does, until the next key",
@@ -117,7 +129,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
         " key START | Space next step  PgDn next caption  Esc your keyboard   "));
     press(*deck.replay, space);
     REQUIRE(deck.replay->handled().size() == 22);
-    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+    REQUIRE(deck.replay->screen().badge_place == "caption 1 of 3"); // shown with its first key
     // A long step's label gives way to the keys: the badge still fits the 80-column top edge.
     const KeyScript long_step = test::parsed_deck("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
                                        ";; one\nTEXT my-first-path.dat\n;; two\n8\n");
@@ -130,23 +142,25 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
         " key TEXT my-f... | Space next step  PgDn next caption  Esc your keyboard   "));
 }
 
-TEST_CASE("PgDn plays the rest of the caption's keys and stops at the next caption, past the last it tells the end",
+TEST_CASE("PgDn shows the next caption and plays its keys, stopping before the caption after it, and past the last it "
+          "tells the end",
           "[lesson][replay][deck]")
 {
     const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->handled().size() == script.captions[1].before_event);
-    REQUIRE(deck.replay->screen().caption == "two");
+    REQUIRE(deck.replay->screen().caption == "one");
     REQUIRE(deck.replay->screen().badge == "PGDN");
-    REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
+    REQUIRE(deck.replay->screen().badge_place == "caption 1 of 3");
     // ']' is PgDn while the replay waits for the presenter.
     press(*deck.replay, KeyEvent::typed(U']'));
     REQUIRE(deck.replay->handled().size() == script.captions[2].before_event);
-    REQUIRE(deck.replay->screen().caption == "three");
+    REQUIRE(deck.replay->screen().caption == "two");
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->handled() == script.events);
     REQUIRE(deck.replay->screen().caption == "three");
+    REQUIRE(deck.replay->state() == ReplayState::end);
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->screen().caption == end_of_script_caption);
     // Past the end nothing more is played, and PgDn types nothing into the session.
@@ -176,19 +190,21 @@ TEST_CASE("PgUp and Home go back to a caption's screen, replayed in memory from 
     Expected<KeyScript> lesson = parse_captioned_key_script(test::read_all(data_folder / "n-to-l" / "lesson.keys"), "lesson.keys");
     REQUIRE(lesson);
     Deck deck(*lesson, "n-to-l");
+    const CellGrid start = cells_of(deck.replay->screen());
     std::vector<CellGrid> first_seen;
     for (std::size_t caption = 0; caption < lesson->captions.size(); ++caption) {
+        press(*deck.replay, page_down);
         first_seen.push_back(cells_of(deck.replay->screen()));
         REQUIRE(deck.replay->screen().caption == lesson->captions[caption].text);
-        press(*deck.replay, page_down);
     }
     REQUIRE(deck.replay->handled() == lesson->events);
+    press(*deck.replay, page_down);
     const std::string ani1_rewritten = deck.folder.files.at("ani1.dat");
     const std::size_t writes = deck.folder.writes.size();
     const std::size_t log_lines = deck.folder.log_lines.size();
     REQUIRE(writes > 0);
-    // The last caption has no keys: the last PgDn told the end, and PgUp from there goes to the
-    // last caption's screen (SPEC 3.2), then back one a press.
+    // The last caption has no keys: a PgDn of its own showed it, the next told the end, and PgUp
+    // from there goes to the last caption's screen (SPEC 3.2), then back one a press.
     REQUIRE(deck.replay->screen().caption == end_of_script_caption);
     for (std::size_t caption = lesson->captions.size(); caption-- > 0;) {
         press(*deck.replay, page_up);
@@ -198,21 +214,27 @@ TEST_CASE("PgUp and Home go back to a caption's screen, replayed in memory from 
         REQUIRE(deck.replay->screen().badge_place ==
                 "caption " + std::to_string(caption + 1) + " of " + std::to_string(lesson->captions.size()));
         REQUIRE(cells_of(deck.replay->screen()) == first_seen[caption]);
-        REQUIRE(deck.replay->handled().size() == lesson->captions[caption].before_event);
+        const std::size_t keys_end = caption + 1 < lesson->captions.size() ? lesson->captions[caption + 1].before_event
+                                                                            : lesson->events.size();
+        REQUIRE(deck.replay->handled().size() == keys_end);
     }
     REQUIRE(deck.folder.writes.size() == writes);
     REQUIRE(deck.folder.log_lines.size() == log_lines);
     REQUIRE(deck.folder.files.at("ani1.dat") == ani1_rewritten);
-    // PgUp at the first caption stays there; Home from anywhere goes to it.
+    // PgUp at the first caption goes to the start, no caption shown; Home from anywhere to caption 1.
     press(*deck.replay, page_up);
-    REQUIRE(cells_of(deck.replay->screen()) == first_seen[0]);
+    REQUIRE(cells_of(deck.replay->screen()) == start);
+    REQUIRE(deck.replay->screen().caption.empty());
+    REQUIRE(deck.replay->screen().badge_place == "caption 0 of " + std::to_string(lesson->captions.size()));
+    REQUIRE(deck.replay->handled().size() == lesson->preamble_end);
     press(*deck.replay, page_down);
     press(*deck.replay, page_down);
     press(*deck.replay, home);
     REQUIRE(deck.replay->screen().badge == "HOME");
+    REQUIRE(deck.replay->screen().caption == lesson->captions[0].text);
     REQUIRE(cells_of(deck.replay->screen()) == first_seen[0]);
     // Gone back, the replay goes forward for real again: the same captions, each told once.
-    for (std::size_t caption = 0; caption < lesson->captions.size(); ++caption)
+    for (std::size_t caption = 1; caption < lesson->captions.size(); ++caption)
         press(*deck.replay, page_down);
     REQUIRE(deck.replay->handled() == lesson->events);
     REQUIRE(deck.folder.writes.size() > writes);
@@ -225,6 +247,8 @@ TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the
 {
     const KeyScript script = test::parsed_deck(n_to_l_deck);
     Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == "one");
     const CellGrid at_one = cells_of(deck.replay->screen());
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->screen().caption == "two");
@@ -251,7 +275,7 @@ TEST_CASE("Esc hands the keyboard over and keeps the caption on the row, not the
     REQUIRE(deck.replay->screen().badge == "PGUP");
     REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
     REQUIRE(cells_of(deck.replay->screen()) == at_two);
-    REQUIRE(deck.replay->handled().size() == script.captions[1].before_event);
+    REQUIRE(deck.replay->handled().size() == script.captions[2].before_event);
     press(*deck.replay, page_up);
     REQUIRE(deck.replay->screen().caption == "one");
     REQUIRE(cells_of(deck.replay->screen()) == at_one);
@@ -277,8 +301,9 @@ TEST_CASE("PgUp at End of the script goes to the last caption's screen, caption 
     Deck deck(script, "n-to-l");
     press(*deck.replay, page_down);
     press(*deck.replay, page_down);
-    const CellGrid at_three = cells_of(deck.replay->screen());
     press(*deck.replay, page_down);
+    const CellGrid at_three = cells_of(deck.replay->screen());
+    REQUIRE(deck.replay->screen().caption == "three");
     REQUIRE(deck.replay->state() == ReplayState::end);
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->screen().caption == end_of_script_caption);
@@ -287,7 +312,6 @@ TEST_CASE("PgUp at End of the script goes to the last caption's screen, caption 
     REQUIRE(deck.replay->screen().badge_place == "caption 3 of 3");
     REQUIRE(cells_of(deck.replay->screen()) == at_three);
     // From the end not yet told (caption 3 on the row, its keys played) PgUp is back a caption.
-    press(*deck.replay, page_down);
     REQUIRE(deck.replay->state() == ReplayState::end);
     press(*deck.replay, page_up);
     REQUIRE(deck.replay->screen().badge_place == "caption 2 of 3");
@@ -337,9 +361,12 @@ TEST_CASE("after PgUp the recording is the script up to the caption gone back to
     REQUIRE(before_back.ends_with(";; two\nGOAL VALUE TENSION 0.4 0.6\n6\nJ\n"));
     press(*deck.replay, page_up);
     REQUIRE(deck.replay->screen().caption == "one");
-    REQUIRE(deck.replay->recording().text() ==
-            "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n;; one\n");
-    press(*deck.replay, space); // 8
+    const std::string gone_back = deck.replay->recording().text();
+    CAPTURE(gone_back);
+    REQUIRE(gone_back.starts_with("ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n;; one\n8\n"));
+    REQUIRE(gone_back.find("6\nJ\n") == std::string::npos);
+    REQUIRE_FALSE(at_goal_feedback(*deck.replay)); // until its task shows
+    press(*deck.replay, space);                     // two, the task
     REQUIRE(at_goal_feedback(*deck.replay));
     press(*deck.replay, KeyEvent::typed(U'L'));
     press(*deck.replay, KeyEvent::typed(U'L'));
@@ -359,10 +386,12 @@ TEST_CASE("the KEY files read are those of every session the replay played into,
     press(*deck.replay, space); // KEY1: key1.dat, the default
     press(*deck.replay, space); // KEY2: key2.dat
     REQUIRE(deck.replay->key_files_read() == std::vector<std::string>{"key1.dat", "key2.dat"});
-    // Home: caption one's screen again, its KEY1 prompt unanswered; the presenter takes the keyboard
-    // (Esc) and types another name.
+    // Home: caption one's screen again, KEY1 answered; PgUp: the start, its KEY1 prompt unanswered;
+    // the presenter takes the keyboard (Esc) and types another name.
     press(*deck.replay, home);
     REQUIRE(deck.replay->screen().caption == "one");
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->handled().empty());
     press(*deck.replay, KeyEvent::of(Key::escape));
     for (const char32_t letter : std::u32string(U"other1.dat"))
         press(*deck.replay, KeyEvent::typed(letter));

@@ -393,5 +393,6 @@ TEST_CASE("comma and period pause a paced lesson's animation and step one frame 
     const std::size_t before_overlay = deck.replay->handled().size();
     deck.press(KeyEvent::of(Key::space));
     REQUIRE(deck.replay->handled().size() == before_overlay + 1);
+    // The overlay's key is the last caption's: it shows with it, beside the overlay (SPEC 3.2).
     REQUIRE(deck.replay->screen().caption == script.captions.back().text);
 }

@@ -217,6 +217,18 @@ private:
     void stop();
     // The caption on the caption row (its index), none before the first.
     std::optional<std::size_t> caption_on_row() const;
+    // The deck (SPEC §3.2): a paced replay shows each caption beside the screen its keys made. A
+    // caption shows as its first key plays (Space), or at once with all its keys (PgDn); one
+    // with no keys (a summary) by a press of its own.
+    std::size_t caption_keys_end(std::size_t caption) const; // the next caption's place, or the end
+    // Paced: the next caption stands where the script is: the next step shows it.
+    bool caption_due() const;
+    // And it has no keys: the next step shows it alone.
+    bool keyless_caption_due() const;
+    void show_captions_through(std::size_t event);
+    // Whether a goal may wait: paced, only once its task (the caption before its GOAL line) shows.
+    bool task_shown(std::size_t goal) const;
+    void go_to_start(std::string label);
 
     Session* m_session;
     std::unique_ptr<Session> m_session_gone_back; // the session PgUp or Home made, if any
@@ -235,6 +247,7 @@ private:
     std::size_t m_step_end = 0;
     std::size_t m_run_to = 0; // keys before it play unasked: the preamble, PgDn's run
     std::string m_step_label;
+    std::size_t m_captions_shown = 0; // paced: the last one shown is on the row; 0 before the first
     std::size_t m_captions_told = 0;
     std::size_t m_captions_ended = 0;
     std::size_t m_next_goal = 0;

@@ -54,9 +54,9 @@ enum class ReplayAction : std::uint8_t {
     to_keyboard,      // the session's key, and the keyboard the presenter's (state keyboard)
     release,          // the session's key, and the replay over: nothing of it shown again (state left)
     hold_step,        // the next step, played once the animation ends
-    next_caption,     // PgDn: the rest of the caption's keys, stopping at the next caption
+    next_caption,     // PgDn: the next caption shown, its keys played, stopping before the one after
     skip_goal,        // PgDn at a goal: "GOAL skipped: …", the closing caption "(skipped) …"
-    back,             // PgUp: to the previous caption's screen
+    back,             // PgUp: to the previous caption's screen (before the first: the start)
     back_to_shown,    // PgUp after Esc or at the end: to the screen of the caption on the row
     forward_to_next,  // PgDn after Esc: to the next caption's screen, replayed from the inputs
     first,            // Home: to the first caption's screen

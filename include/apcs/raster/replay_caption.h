@@ -19,8 +19,9 @@ inline constexpr int max_played_key_columns = 32;
 // What a paced replay just played (step_label: "ENTER", "TEXT ani1.dat"), shown as screencast
 // tools do: " key ENTER " in reverse video at the right end of the terminal's top row (the
 // boundary's top line in graphics mode, the oldest console line in text mode), two columns from
-// the edge; `place` follows it ("caption 2 of 7", SPEC §3.1), never cut. An empty label, or a grid
-// too narrow for the badge, leaves the grid as it is.
+// the edge; `place` follows it ("caption 2 of 7", SPEC §3.1), never cut, or stands alone where
+// nothing has played yet (" caption 0 of 10 "). Neither, or a grid too narrow for the badge, leaves
+// the grid as it is.
 CellGrid with_played_key(CellGrid grid, std::string_view label, std::string_view place = {});
 
 } // namespace apcs
