@@ -2,6 +2,7 @@
 
 #include "apcs/input/session_phase.h"
 
+#include <algorithm>
 #include <utility>
 
 // The replay's policy: which state a key meets, and what the chart's row for it does.
@@ -316,6 +317,9 @@ void ReplayDriver::play_scripted()
     if (m_played >= m_script.events.size())
         return;
     show_captions_through(m_played);
+    // The caption just shown poses a goal here: it waits (settle) before any key is played.
+    if (goal_due())
+        return;
     if (!mid_step()) {
         m_step_end = m_played + step_length(m_script, m_played);
         m_step_label = step_label(m_script, m_played);
@@ -354,7 +358,19 @@ std::optional<std::size_t> ReplayDriver::caption_on_row() const
 std::size_t ReplayDriver::caption_keys_end(std::size_t caption) const
 {
     const std::vector<ScriptCaption>& captions = m_script.captions;
-    return caption + 1 < captions.size() ? captions[caption + 1].before_event : m_script.events.size();
+    std::size_t end = caption + 1 < captions.size() ? captions[caption + 1].before_event : m_script.events.size();
+    // A task's keys end at its GOAL line: what follows is the answer, the student's.
+    for (const ScriptGoal& goal : m_script.goals)
+        if (goal.captions_before == caption + 1)
+            end = std::min(end, goal.before_event);
+    return end;
+}
+
+bool ReplayDriver::goal_due() const
+{
+    const std::vector<ScriptGoal>& goals = m_script.goals;
+    return m_audience == ReplayAudience::terminal && m_next_goal < goals.size() &&
+           goals[m_next_goal].before_event <= m_played && task_shown(m_next_goal);
 }
 
 bool ReplayDriver::caption_due() const

@@ -51,12 +51,26 @@ void ReplayDriver::record_lines(KeyRecording& recording, std::size_t& lines_reco
         if (waiting_goal() && line.before_event == event && line.kind != ScriptLine::Kind::start &&
             lines_recorded > m_waiting_goal_line)
             return;
+        if (!line_met(line))
+            return;
         switch (line.kind) {
         case ScriptLine::Kind::start: recording.add_start(); break;
         case ScriptLine::Kind::caption: recording.add_caption(m_script.captions[line.index].text); break;
         case ScriptLine::Kind::goal: recording.add_goal(m_script.goals[line.index]); break;
         }
     }
+}
+
+bool ReplayDriver::line_met(const ScriptLine& line) const
+{
+    if (!paced())
+        return true;
+    switch (line.kind) {
+    case ScriptLine::Kind::start: return true;
+    case ScriptLine::Kind::caption: return line.index < m_captions_shown;
+    case ScriptLine::Kind::goal: return task_shown(line.index);
+    }
+    return true;
 }
 
 KeyRecording ReplayDriver::recording() const

@@ -28,27 +28,24 @@ void ReplayDriver::go_to_caption(std::size_t caption, std::string label)
 {
     const std::vector<ScriptCaption>& captions = m_script.captions;
     if (captions.empty()) {
-        rewind_to(m_script.preamble_end, std::move(label));
+        rewind_to(m_script.preamble_end, std::move(label), 0);
         return;
     }
     caption = std::min(caption, captions.size() - 1);
-    rewind_to(caption_keys_end(caption), std::move(label));
-    m_captions_shown = caption + 1;
+    rewind_to(caption_keys_end(caption), std::move(label), caption + 1);
 }
 
 // The lesson's first screen: its opening answers played, no caption shown yet.
-void ReplayDriver::go_to_start(std::string label)
-{
-    rewind_to(m_script.preamble_end, std::move(label));
-    m_captions_shown = 0;
-}
+void ReplayDriver::go_to_start(std::string label) { rewind_to(m_script.preamble_end, std::move(label), 0); }
 
 // A new session on the inputs as they were when the replay started, the first `events` keys played
 // into it at once (writing nothing), and the lesson on from there with the keyboard.
-void ReplayDriver::rewind_to(std::size_t events, std::string label)
+void ReplayDriver::rewind_to(std::size_t events, std::string label, std::size_t captions_shown)
 {
     if (!m_hooks.session_as_started)
         return;
+    // Shown before the catch-up, whose recording holds the captions shown.
+    m_captions_shown = captions_shown;
     std::unique_ptr<Session> session = m_hooks.session_as_started();
     m_recording = KeyRecording();
     m_recording.add_inputs(m_script.inputs);

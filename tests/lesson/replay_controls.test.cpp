@@ -371,8 +371,12 @@ TEST_CASE("after PgUp the recording is the script up to the caption gone back to
     press(*deck.replay, KeyEvent::typed(U'L'));
     press(*deck.replay, KeyEvent::typed(U'L'));
     press(*deck.replay, KeyEvent::typed(U'L'));
-    REQUIRE(deck.replay->recording().text() == "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n"
-                                                ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\nL\nL\nL\n;; three\n");
+    // Caption three has a key of its own: it is recorded once it shows, with its key.
+    const std::string opening = "ENTER\nENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER\nENTER\nSTART\n";
+    REQUIRE(deck.replay->recording().text() == opening + ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\nL\nL\nL\n");
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->recording().text() ==
+            opening + ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\nL\nL\nL\n;; three\n4\n");
 }
 
 TEST_CASE("the KEY files read are those of every session the replay played into, the one Home replaced too, so "
@@ -399,4 +403,43 @@ TEST_CASE("the KEY files read are those of every session the replay played into,
     REQUIRE(deck.replay->session().key_names()[0] == "other1.dat");
     // The first session read key1.dat and key2.dat; the one Home made, other1.dat.
     REQUIRE(deck.replay->key_files_read() == std::vector<std::string>{"key1.dat", "key2.dat", "other1.dat"});
+}
+
+TEST_CASE("an answer played a Space a step poses its goal when its task shows, before any key of the answer, and PgUp "
+          "back to the task poses it again without playing the answer",
+          "[lesson][replay][deck][goal]")
+{
+    // An exercise's answer (or a student's recording): the task, its GOAL line, the answer's keys.
+    const std::string text = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+                             ";; one\n8\n;; two, the task\nGOAL VALUE TENSION 0.4 0.6\nL L L\n;; three\n4\n";
+    const KeyScript script = test::parsed_deck(text);
+    const std::size_t goal_at = script.goals[0].before_event;
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, space); // one, with 8
+    REQUIRE_FALSE(at_goal_feedback(*deck.replay));
+    press(*deck.replay, space); // the task: the goal waits, L not played
+    REQUIRE(at_goal_feedback(*deck.replay));
+    REQUIRE(deck.replay->handled().size() == goal_at);
+    REQUIRE(deck.replay->screen().caption == "two, the task");
+    // Skipped, then back: the task's screen is where its keys end, at the GOAL line.
+    press(*deck.replay, page_down);
+    REQUIRE(deck.folder.log_lines.back() == "goal skipped");
+    REQUIRE(deck.replay->screen().caption == "(skipped) three");
+    press(*deck.replay, page_up);
+    REQUIRE(deck.replay->screen().caption == "two, the task");
+    REQUIRE(deck.replay->handled().size() == goal_at);
+    REQUIRE(at_goal_feedback(*deck.replay));
+}
+
+TEST_CASE("keys typed after Esc at caption K are recorded under caption K, not under the caption after it",
+          "[lesson][replay][deck][record]")
+{
+    const KeyScript script = test::parsed_deck(n_to_l_deck);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down); // one, with 8
+    press(*deck.replay, KeyEvent::of(Key::escape));
+    press(*deck.replay, KeyEvent::typed(U'L'));
+    const std::string recorded = deck.replay->recording().text();
+    CAPTURE(recorded);
+    REQUIRE(recorded.ends_with("START\n;; one\n8\nL\n")); // Esc is the replay's, not the session's
 }

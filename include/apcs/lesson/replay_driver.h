@@ -198,7 +198,7 @@ private:
     // replay_rewind.cpp: PgUp, Home, and PgDn after Esc.
     void play_to_next_caption();
     void go_to_caption(std::size_t caption, std::string label);
-    void rewind_to(std::size_t events, std::string label);
+    void rewind_to(std::size_t events, std::string label, std::size_t captions_shown);
     void catch_up(Session& session, std::size_t events);
 
     // The session neither splits nor shows the frames: a scripted key may play, a caption be reached.
@@ -220,7 +220,10 @@ private:
     // The deck (SPEC §3.2): a paced replay shows each caption beside the screen its keys made. A
     // caption shows as its first key plays (Space), or at once with all its keys (PgDn); one
     // with no keys (a summary) by a press of its own.
-    std::size_t caption_keys_end(std::size_t caption) const; // the next caption's place, or the end
+    // Where caption `caption`'s keys end: the next caption's place, its goal's GOAL line, or the end.
+    std::size_t caption_keys_end(std::size_t caption) const;
+    // A goal stands where the script is, its task shown, not yet waited at (terminal).
+    bool goal_due() const;
     // Paced: the next caption stands where the script is: the next step shows it.
     bool caption_due() const;
     // And it has no keys: the next step shows it alone.
@@ -229,6 +232,9 @@ private:
     // Whether a goal may wait: paced, only once its task (the caption before its GOAL line) shows.
     bool task_shown(std::size_t goal) const;
     void go_to_start(std::string label);
+    // Paced: whether a recording may hold `line` yet: a caption once shown, a GOAL line once its
+    // task is (keys typed at caption K are not under caption K+1).
+    bool line_met(const ScriptLine& line) const;
 
     Session* m_session;
     std::unique_ptr<Session> m_session_gone_back; // the session PgUp or Home made, if any
