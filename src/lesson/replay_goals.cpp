@@ -277,8 +277,10 @@ void ReplayDriver::skip_goal()
     m_mode = Mode::deck;
     m_played = m_step_end = m_script.goals[m_next_goal++].answer_end;
     m_step_label = "PGDN";
-    // As any PgDn: the next caption (the goal's closing one, "(skipped) …") and its keys.
-    play_to_next_caption();
+    // As any PgDn: the next caption (the goal's closing one, "(skipped) …") and its keys; a second
+    // GOAL line under the same task waits first.
+    if (!goal_due())
+        play_to_next_caption();
 }
 
 // A caption after the goal's GOAL line, reached by its answer's end, that is not the task of a

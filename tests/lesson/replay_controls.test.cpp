@@ -443,3 +443,33 @@ TEST_CASE("keys typed after Esc at caption K are recorded under caption K, not u
     CAPTURE(recorded);
     REQUIRE(recorded.ends_with("START\n;; one\n8\nL\n")); // Esc is the replay's, not the session's
 }
+
+TEST_CASE("two GOAL lines under one task wait in turn: skipping the first poses the second, and the caption after "
+          "them shows only when the presenter asks for it",
+          "[lesson][replay][deck][goal]")
+{
+    const std::string text = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n8\n"
+                             ";; the task\nGOAL VALUE TENSION 0.4 0.6\nGOAL VALUE BIAS 0.3 0.5\n;; closing\n4\n";
+    const KeyScript script = test::parsed_deck(text);
+    Deck deck(script, "n-to-l");
+    press(*deck.replay, page_down);
+    REQUIRE(message_line(*deck.replay).starts_with("GOAL: tension"));
+    press(*deck.replay, page_down);
+    CAPTURE(message_line(*deck.replay));
+    REQUIRE(message_line(*deck.replay).find("the goal is BIAS") != std::string::npos);
+    REQUIRE(deck.replay->screen().caption == "the task");
+    const std::size_t at_second = deck.replay->handled().size();
+    REQUIRE(at_second == script.goals[1].before_event);
+    // The second reached: the closing caption has a key of its own, so it waits for PgDn (it had
+    // been counted shown by the first skip, and its key played unasked).
+    for (const KeyEvent key : {KeyEvent::of(Key::enter), KeyEvent::of(Key::enter), KeyEvent::typed(U'L'),
+                               KeyEvent::typed(U'L')})
+        press(*deck.replay, key);
+    REQUIRE(message_line(*deck.replay).starts_with("GOAL REACHED: bias"));
+    REQUIRE(deck.replay->handled().size() == at_second + 4);
+    REQUIRE(deck.replay->screen().caption == "the task");
+    // It closes the tension goal too, which was skipped: it says so.
+    press(*deck.replay, page_down);
+    REQUIRE(deck.replay->screen().caption == "(skipped) closing");
+    REQUIRE(deck.replay->handled().size() == at_second + 5);
+}
