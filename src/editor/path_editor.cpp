@@ -362,7 +362,7 @@ void PathEditor::pin_or_unpin_reference()
     }
     const std::string label = reference_label(region_staff().value_or(points().front().staff));
     m_picture->pin_reference(label);
-    m_notice = label + " pinned: dashed, beside the curve (C unpins)";
+    m_notice = label + " pinned: dashed, under the curve until the curve moves (C unpins)";
 }
 
 PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)

@@ -49,6 +49,8 @@ std::string PathEditor::message(MoveText move) const
             [](const ControlChoice&) { return std::string(text::choose_control); },
             [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
             [&](const Staff& staff) {
+                if (m_picture->reference_under_curve())
+                    return std::string(text::reference_under_curve);
                 const std::string shown = m_show_tangents ? tangent_numbers(evaluated().curve.segments, m_tangent_point)
                                                           : staff_message(staff);
                 return with_move(shown, staff, move);

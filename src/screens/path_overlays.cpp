@@ -111,9 +111,9 @@ void draw_tangent_arrows(GraphicsScreen& screen, Painter& painter, std::span<con
 
 double tangent_arrow_scale(std::span<const ControlPoint> points, const ViewTransform& view)
 {
-    constexpr double bezier_handle = 1.0 / 3.0;
-    // A third of a chord shorter than three cells is hard to see at 80x24.
-    constexpr double shortest_readable_pixels = 3.0 * hercules::cell_width;
+    constexpr double true_length = 1.0;
+    // A mean chord shorter than nine cells leaves arrows a back row cannot compare.
+    constexpr double shortest_readable_pixels = 9.0 * hercules::cell_width;
     double chord_pixels = 0.0;
     for (std::size_t k = 1; k < points.size(); ++k) {
         const DevicePoint a = view.to_device(points[k - 1].position);
@@ -121,10 +121,9 @@ double tangent_arrow_scale(std::span<const ControlPoint> points, const ViewTrans
         chord_pixels += std::hypot(b.x - a.x, b.y - a.y);
     }
     if (points.size() < 2 || !(chord_pixels > 0.0))
-        return bezier_handle;
-    const double mean_third = bezier_handle * chord_pixels / static_cast<double>(points.size() - 1);
-    return mean_third >= shortest_readable_pixels ? bezier_handle
-                                                  : std::min(1.0, bezier_handle * shortest_readable_pixels / mean_third);
+        return true_length;
+    const double mean_chord = chord_pixels / static_cast<double>(points.size() - 1);
+    return mean_chord >= shortest_readable_pixels ? true_length : shortest_readable_pixels / mean_chord;
 }
 
 std::string tangent_numbers(std::span<const HermiteSegment> segments, std::size_t point)

@@ -107,9 +107,9 @@ TEST_CASE("a handout (--handout) holds each caption of the N to L lesson as NN-S
     }
     std::sort(expected.begin(), expected.end());
     REQUIRE(file_names(folder / "handout") == expected);
-    REQUIRE(expected.front() == "01-w-opens-the-waypoint-editor-i.png");
+    REQUIRE(expected.front() == "01-w-i-a-control-point-halfway.png");
     // Issue 42: "T shows the tangents" shows their numbers.
-    REQUIRE(read_all(folder / "handout/03-t-shows-the-tangents-dd-leaves.txt").find(" point 2  DS 0.00 0.00 5.00") !=
+    REQUIRE(read_all(folder / "handout/02-t-shows-the-tangents-to-scale-dd.txt").find(" point 2  DS 0.00 0.00 5.00") !=
             std::string::npos);
 }
 
@@ -185,7 +185,7 @@ TEST_CASE("a handout drawn for paper (--paper) is black on white: every pixel th
         REQUIRE(read_all(folder / "paper" / (name.substr(0, name.size() - 4) + ".txt")) ==
                 read_all(folder / "monitor" / (name.substr(0, name.size() - 4) + ".txt")));
     }
-    REQUIRE(pictures == 9);
+    REQUIRE(pictures == 6);
 }
 
 TEST_CASE("a run with --paper and no --handout is refused: exit 2 and what to give", "[cli][handout]")
@@ -244,15 +244,15 @@ TEST_CASE("a handout's pages (--handout) are replaced as pictures are: same cont
     const test::TempFolder folder;
     copy_n_to_l(folder);
     REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
-    const std::filesystem::path page = folder / "handout/01-w-opens-the-waypoint-editor-i";
+    const std::filesystem::path page = folder / "handout/01-w-i-a-control-point-halfway";
     std::ofstream(page.string() + ".txt", std::ios::binary) << "old text\n";
     std::ofstream(page.string() + ".png", std::ios::binary) << "old picture\n";
-    const auto first_written = std::filesystem::last_write_time(folder / "handout/02-4-moves-it-left-one-step-1-of.png");
+    const auto first_written = std::filesystem::last_write_time(folder / "handout/02-t-shows-the-tangents-to-scale-dd.png");
     REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
     REQUIRE(read_all(page.string() + ".bak") == "old picture\n");
     REQUIRE(read_all(page.string() + ".b01") == "old text\n");
     REQUIRE(read_all(page.string() + ".txt").starts_with("+-----"));
-    REQUIRE(std::filesystem::last_write_time(folder / "handout/02-4-moves-it-left-one-step-1-of.png") == first_written);
+    REQUIRE(std::filesystem::last_write_time(folder / "handout/02-t-shows-the-tangents-to-scale-dd.png") == first_written);
 }
 
 TEST_CASE("a handout goes only into a new or empty folder or an earlier handout's, and the user's files stay as they were",
@@ -272,7 +272,7 @@ TEST_CASE("a handout goes only into a new or empty folder or an earlier handout'
     REQUIRE_FALSE(std::filesystem::exists(folder / "apcs.log"));
 
     REQUIRE(lesson_handout(folder, folder / "handout").status == 0);
-    std::filesystem::copy_file(folder / "handout/01-w-opens-the-waypoint-editor-i.png", folder / "handout/98-older.png");
+    std::filesystem::copy_file(folder / "handout/01-w-i-a-control-point-halfway.png", folder / "handout/98-older.png");
     std::ofstream(folder / "handout/99-older.txt") << "an earlier, longer lesson's page\n";
     const auto again = lesson_handout(folder, folder / "handout");
     REQUIRE(again.status == 0);

@@ -3,15 +3,21 @@
 
 Every line "PRESS SCRIPT [OPTIONS] KEY×N ..." of the section is one lesson or exercise of the plan.
 This script
-  - sums the presses (at most 120: a presenter's remote, not a keyboard),
-  - times the plan at 30 s a caption plus each animation's length (frames × delay, read from the
-    apcs.log of a headless run with the same options): at most 45 minutes,
-  - plays each script in tmux at 80x24 (--pace step, the glyph set given) on a fresh copy of its
-    folder with exactly those presses, and requires that every caption was shown and that the last
-    press leaves "End of the script" on the caption row.
+  - sums the PgDn presses: at most 40 (a presenter's remote, not a keyboard),
+  - times the plan (issue 58): 0.75 minute a caption, 1/3 minute a command typed during the class
+    (an indented "apcs" line between "The class, minute by minute" and "After the class"), 1.75
+    a figure shown (each fig-*.png named there), 2 a GOAL of the scripts played, the hands-on
+    minutes the section states ("hands-on: N minutes"), and each animation's length (frames ×
+    delay, read from the apcs.log of a headless run with the same options): at most 45 minutes,
+  - plays each script in a real 80x23 pane (tmux on an 80x24 window, its status line on; the pane's
+    height is checked) with --pace step and the glyph set given, on a fresh copy of its folder, with
+    exactly those presses, and requires that every caption was shown and that the last press leaves
+    "End of the script" on the caption row,
+  - plays each script without a GOAL again in an 80x24 pane and requires that after PgDn K every
+    row below the badge's is the handout's page K (apcs --handout with the same options and glyphs).
 
 Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS [SCREENS_FOLDER]]   (prints each script's presses,
-captions and time; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
+captions and minutes; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
 """
 import concurrent.futures
 import os
@@ -24,19 +30,37 @@ import tempfile
 import threading
 import time
 
-MOST_PRESSES = 120
-MOST_SECONDS = 45 * 60
-SECONDS_A_CAPTION = 30
+MOST_PAGE_DOWNS = 40
+MOST_MINUTES = 45
+MINUTES_A_CAPTION = 0.75
+MINUTES_A_COMMAND = 1 / 3
+MINUTES_A_FIGURE = 1.75
+MINUTES_A_GOAL = 2
+PANE = (80, 23)
 SKIPPED = "(skipped) "
 END_OF_SCRIPT = "End of the script: the keyboard is yours"
 TMUX_KEYS = {"PgDn": "NPage", "PgUp": "PPage", "Home": "Home", "Space": "Space"}
 
 
-def plan_lines(manual):
+def class_section(manual):
+    """Section 25's minute-by-minute part: what is done while the class watches."""
     text = open(manual, encoding="utf-8").read()
     start = text.index("25. TEACHING WITH APCS")
     section = text[start:text.index("\n26. ", start)]
-    return [line.split()[1:] for line in section.split("\n") if line.strip().startswith("PRESS ")]
+    return section[section.index("The class, minute by minute"):section.index("After the class")]
+
+
+def plan_lines(manual):
+    return [line.split()[1:] for line in class_section(manual).split("\n") if line.strip().startswith("PRESS ")]
+
+
+def fixed_minutes(manual):
+    """The commands typed, the figures shown and the hands-on minutes the class part states."""
+    part = class_section(manual)
+    commands = sum(1 for line in part.split("\n") if re.match(r"\s+apcs ", line))
+    figures = len(set(re.findall(r"fig-[0-9-]+\.png", part)))
+    hands_on = sum(int(minutes) for minutes in re.findall(r"hands-on:\s+(\d+)\s+minutes?", part))
+    return commands, figures, hands_on
 
 
 def parse(words):
@@ -59,6 +83,10 @@ def script_folder(data, script):
         if os.path.isfile(os.path.join(data, folder, script)):
             return os.path.join(data, folder)
     sys.exit(f"class_plan: {script}: not found in {data}/*/")
+
+
+def goals_of(path):
+    return sum(1 for line in open(path, encoding="utf-8") if line.startswith("GOAL "))
 
 
 def captions_of(path):
@@ -179,53 +207,112 @@ def quiet_seconds(options):
     return max(0.8, int(delay) / 1000 + 0.5)
 
 
-def play(apcs, folder, script, options, presses, glyphs, shown):
-    """The captions the class saw, the caption row after the last press, and what went wrong in
-    ending the program (or None); `shown` gets each screen after a press, under the press."""
+def open_pane(session, work, command, size):
+    """A tmux session whose one pane is `size` and runs `command` in `work`; 80x23 is made as a class
+    has it: an 80x24 client attached (through `script`, which gives it a terminal of that size)
+    under tmux's status line. Returns the client's process (or None) and what went wrong (or None)."""
+    columns, rows = size
+    tmux("new-session", "-d", "-s", session, "-x", str(columns), "-y", str(rows), "-c", work, "sleep 600")
+    client = None
+    if rows == PANE[1]:
+        tmux("set-option", "-t", session, "status", "on")
+        client = subprocess.Popen(["script", "-qfc", f"stty rows {rows + 1} cols {columns}; exec tmux -L "
+                                   f"{local.socket} attach -t {session}", "/dev/null"],
+                                  stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.time() + 10
+    shown = ""
+    while time.time() < deadline:
+        shown = tmux("display", "-p", "-t", session, "#{pane_width}x#{pane_height}").strip()
+        if shown == f"{columns}x{rows}":
+            tmux("respawn-pane", "-k", "-t", session, "-c", work, f"LANG=C.UTF-8 {command}; sleep 60")
+            return client, None
+        time.sleep(0.05)
+    return client, f"the pane is {shown}, not {columns}x{rows}"
+
+
+def play(apcs, folder, script, options, presses, glyphs, shown, size=PANE, pages=None):
+    """The captions the class saw, the caption row after the last press, and what went wrong (or
+    None); `shown` gets each screen after a press, under the press. With `pages` (a handout's
+    .txt pages, page K at index K-1), each screen after press K must be page K below the badge's row."""
     session = "class-plan"
     with tempfile.TemporaryDirectory() as work:
         shutil.copytree(folder, work, dirs_exist_ok=True)
         command = " ".join([apcs, "--keys", script, "--pace", "step", "--glyphs", glyphs, *options])
         tmux("kill-session", "-t", session)
-        tmux("new-session", "-d", "-s", session, "-x", "80", "-y", "24", "-c", work,
-             f"LANG=C.UTF-8 {command}; sleep 60")
+        client, trouble = open_pane(session, work, command, size)
         seen = set()
         quiet = quiet_seconds(options)
+        screen = ""
         try:
-            first_caption_screen(session)
-            screen = settled_screen(session, quiet, seen)
-            shown.append(f"=== {script}: the replay begins\n{screen}")
-            for number, key in enumerate(presses, 1):
-                tmux("send-keys", "-t", session, key)
-                changed_screen(session, screen)
+            if trouble is None:
+                first_caption_screen(session)
                 screen = settled_screen(session, quiet, seen)
-                shown.append(f"=== {script}: press {number}, {key}\n{screen}")
+                shown.append(f"=== {script}: the replay begins\n{screen}")
+                for number, key in enumerate(presses, 1):
+                    tmux("send-keys", "-t", session, key)
+                    changed_screen(session, screen)
+                    screen = settled_screen(session, quiet, seen)
+                    shown.append(f"=== {script}: press {number}, {key}\n{screen}")
+                    if pages is not None and number <= len(pages) and below_badge(screen) != below_badge(pages[number - 1]):
+                        trouble = (f"at {size[0]}x{size[1]}, press {number} shows\n{screen}\nwhere the handout's "
+                                   f"page {number} is\n{pages[number - 1]}")
+                        break
         finally:
             ending = end_program(session)
             tmux("kill-server")
-    return seen, caption_row(screen), ending
+            if client is not None:
+                client.wait(timeout=10)
+    return seen, caption_row(screen), trouble or ending
+
+
+def below_badge(screen):
+    """The rows after the first (the badge's), without trailing blanks, as tmux captures them."""
+    return [row.rstrip() for row in screen.rstrip("\n").split("\n")[1:]]
+
+
+def handout_pages(apcs, folder, script, options, glyphs):
+    """The .txt pages of the script's handout (apcs --handout, headless, on a fresh copy), in order."""
+    with tempfile.TemporaryDirectory() as work:
+        shutil.copytree(folder, work, dirs_exist_ok=True)
+        handout = os.path.join(work, "handout-pages")
+        subprocess.run([apcs, "--keys", script, "--glyphs", glyphs, "--handout", handout, *options], cwd=work,
+                       stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120)
+        names = sorted(name for name in os.listdir(handout) if name.endswith(".txt")) if os.path.isdir(handout) else []
+        return [open(os.path.join(handout, name), encoding="utf-8").read() for name in names]
 
 
 def hold(apcs, data, glyphs, number, words):
-    """One line of the plan played: its script, presses, captions, seconds and what was seen."""
+    """One line of the plan played: its script, presses, captions, goals, minutes and what was seen."""
     local.socket = f"{SOCKET}-{number}"
     script, options, presses = parse(words)
     folder = script_folder(data, script)
     captions = captions_of(os.path.join(folder, script))
-    seconds = SECONDS_A_CAPTION * len(captions) + animation_seconds(apcs, folder, script, options)
+    goals = goals_of(os.path.join(folder, script))
+    minutes = MINUTES_A_CAPTION * len(captions) + MINUTES_A_GOAL * goals + \
+        animation_seconds(apcs, folder, script, options) / 60
     shown = []
-    seen, last_row, ending = play(apcs, folder, script, options, presses, glyphs, shown)
-    return script, presses, captions, seconds, shown, seen, last_row, ending
+    seen, last_row, trouble = play(apcs, folder, script, options, presses, glyphs, shown)
+    if trouble is None and goals == 0:
+        pages = handout_pages(apcs, folder, script, options, glyphs)
+        if len(pages) != len(captions):
+            trouble = f"its handout has {len(pages)} pages for {len(captions)} captions"
+        else:
+            _, _, trouble = play(apcs, folder, script, options, presses, glyphs, [], (80, 24), pages)
+    return script, presses, captions, minutes, shown, seen, last_row, trouble
 
 
 def main():
     apcs, manual, data = sys.argv[1:4]
     glyphs = sys.argv[4] if len(sys.argv) > 4 else "ascii"
     screens_folder = sys.argv[5] if len(sys.argv) > 5 else None
-    total_presses, total_seconds, failures = 0, 0.0, []
+    total_page_downs, failures = 0, []
     lines = plan_lines(manual)
     if not lines:
         sys.exit("class_plan: manual section 25 has no PRESS line")
+    commands, figures, hands_on = fixed_minutes(manual)
+    total_minutes = MINUTES_A_COMMAND * commands + MINUTES_A_FIGURE * figures + hands_on
+    print(f"typed: {commands} commands, {figures} figures shown, {hands_on} minutes hands-on: "
+          f"{total_minutes:.1f} minutes")
     # The longest plays (most presses, each waiting the longest quiet) start first.
     def waits(number):
         _, options, presses = parse(lines[number])
@@ -234,28 +321,28 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(PLAYS_AT_ONCE) as plays:
         held = {number: plays.submit(hold, apcs, data, glyphs, number, lines[number]) for number in order}
         results = [held[number].result() for number in range(len(lines))]
-    for script, presses, captions, seconds, shown, seen, last_row, ending in results:
+    for script, presses, captions, minutes, shown, seen, last_row, trouble in results:
         if screens_folder:
             os.makedirs(screens_folder, exist_ok=True)
             with open(os.path.join(screens_folder, script + ".txt"), "w", encoding="utf-8") as out:
                 out.write("\n".join(shown))
         unseen = [caption for caption in captions if not any(shown_as(caption, row) for row in seen)]
-        print(f"{script}: {len(presses)} presses, {len(captions)} captions, {seconds:.0f} s; "
+        print(f"{script}: {len(presses)} presses, {len(captions)} captions, {minutes:.1f} minutes; "
               f"last caption row: {last_row}")
         if unseen:
             failures.append(f"{script}: captions never shown with those presses: {unseen}; "
                             f"the caption rows seen: {sorted(seen)}")
         if not last_row.startswith(END_OF_SCRIPT):
             failures.append(f"{script}: the presses end at '{last_row}', not at the end of the script")
-        if ending:
-            failures.append(f"{script}: {ending}")
-        total_presses += len(presses)
-        total_seconds += seconds
-    print(f"the plan: {total_presses} presses, {total_seconds / 60:.1f} minutes")
-    if total_presses > MOST_PRESSES:
-        failures.append(f"{total_presses} presses; expected at most {MOST_PRESSES}")
-    if total_seconds > MOST_SECONDS:
-        failures.append(f"{total_seconds / 60:.1f} minutes; expected at most 45")
+        if trouble:
+            failures.append(f"{script}: {trouble}")
+        total_page_downs += presses.count(TMUX_KEYS["PgDn"])
+        total_minutes += minutes
+    print(f"the plan: {total_page_downs} PgDn presses, {total_minutes:.1f} minutes")
+    if total_page_downs > MOST_PAGE_DOWNS:
+        failures.append(f"{total_page_downs} PgDn presses; expected at most {MOST_PAGE_DOWNS}")
+    if total_minutes > MOST_MINUTES:
+        failures.append(f"{total_minutes:.1f} minutes; expected at most {MOST_MINUTES}")
     for failure in failures:
         print("FAILED: " + failure)
     sys.exit(1 if failures else 0)

@@ -61,8 +61,8 @@ links() {
   # A handout folder whose index and first pages are links: refused before the first page.
   mkdir "$work/h"
   ln -s ../victim/a "$work/h/index.html"
-  ln -s ../victim/b "$work/h/01-w-opens-the-waypoint-editor-i.png"
-  ln -s ../victim/c "$work/h/01-w-opens-the-waypoint-editor-i.txt"
+  ln -s ../victim/b "$work/h/01-w-i-a-control-point-halfway.png"
+  ln -s ../victim/c "$work/h/01-w-i-a-control-point-halfway.txt"
   refused_with "$leads" --workdir "$work/w" --keys "$work/w/lesson.keys" --handout "$work/h" --glyphs ascii
   victim_untouched "--handout through links"
   [ "$(ls -A "$work/h" | wc -l)" -eq 3 ] || fail "the handout wrote pages: $(ls -A "$work/h")"
@@ -153,7 +153,7 @@ handout_folder() {
 
   # An earlier handout is APCS's: written over; a page of an earlier, longer lesson is named, kept.
   "$apcs" "${handout[@]}" "$work/h" < /dev/null > /dev/null 2> "$work/err" || fail "first handout: $(cat "$work/err")"
-  cp "$work/h/01-w-opens-the-waypoint-editor-i.png" "$work/h/99-an-earlier-page.png"
+  cp "$work/h/01-w-i-a-control-point-halfway.png" "$work/h/99-an-earlier-page.png"
   echo 'older' > "$work/h/99-an-earlier-page.bak"
   "$apcs" "${handout[@]}" "$work/h" < /dev/null > /dev/null 2> "$work/err" || fail "second handout: $(cat "$work/err")"
   grep -qF "h/99-an-earlier-page.png is from an earlier run (not rewritten)" "$work/err" \

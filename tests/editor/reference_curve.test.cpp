@@ -2,6 +2,7 @@
 // dashed in a colour role of its own beside the live curve until C unpins it.
 #include "apcs/editor/path_editor.h"
 #include "apcs/screens/reference_curve.h"
+#include "apcs/screens/session_text.h"
 
 #include "support/session_keys.h"
 
@@ -93,7 +94,7 @@ TEST_CASE("C pins the curve as reference A beside the live curve until C unpins 
     const PathEditor::Look before_pin = editor.look();
     apply(editor, {cmd::PinReference{}});
     CHECK_FALSE(editor.look() == before_pin);
-    CHECK(editor.look().message == "A: continuity -1.00 pinned: dashed, beside the curve (C unpins)");
+    CHECK(editor.look().message == "A: continuity -1.00 pinned: dashed, under the curve until the curve moves (C unpins)");
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille}) {
         CAPTURE(glyphs);
         const CellGrid pinned = render_cells(editor.view(), {80, 24}, glyphs);
@@ -102,7 +103,11 @@ TEST_CASE("C pins the curve as reference A beside the live curve until C unpins 
         CHECK(drawing_cells(pinned, ColourRole::reference) == 0);
         CHECK_FALSE(letter_in_drawing(pinned));
     }
+    // A key that leaves the curve as it is: the message line still says why A cannot be seen.
+    apply(editor, {cmd::ToggleLawGraph{}, cmd::ToggleLawGraph{}});
+    CHECK(editor.look().message == session_text::reference_under_curve);
     continuity_steps(editor, +14); // +1
+    CHECK(editor.look().message != session_text::reference_under_curve);
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
         CAPTURE(glyphs);
         const CellGrid compared = render_cells(editor.view(), {80, 24}, glyphs);

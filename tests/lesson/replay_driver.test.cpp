@@ -55,11 +55,11 @@ struct CaptionSeen {
 
 } // namespace
 
-TEST_CASE("lesson.keys paced a step per Space: every step once, each caption told over the screen it captions, "
+TEST_CASE("lesson-continuity.keys paced a step per Space: every step once, each caption told over the screen it captions, "
           "the badge naming the step",
           "[lesson][replay]")
 {
-    const KeyScript script = read_script(data_folder / "n-to-l" / "lesson.keys");
+    const KeyScript script = read_script(data_folder / "n-to-l" / "lesson-continuity.keys");
     REQUIRE(script.captions.size() > 5);
     MemoryFiles files = example_files("n-to-l");
     Session session({}, files);
@@ -72,7 +72,7 @@ TEST_CASE("lesson.keys paced a step per Space: every step once, each caption tol
         REQUIRE(cells == cells_of(with_caption(session.screen(), script.captions[index].text)));
         REQUIRE(cells.row_text(23).starts_with(" " + script.captions[index].text));
     };
-    ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::on_space, 0}, hooks,
+    ReplayDriver replay(session, script, "lesson-continuity.keys", {ReplayPace::Kind::on_space, 0}, hooks,
                         ReplayAudience::terminal);
     std::size_t spaces = 0;
     std::size_t captions_shown = 0;

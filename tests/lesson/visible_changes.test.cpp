@@ -1,9 +1,12 @@
-// SPEC §3.1: what a caption says can be seen. A caption of a shipped script that names a visible
-// change, and has keys before the next caption, changes at least 12 cells of the drawing area at
-// 80x24 between the screen before its keys and the screen after them, in every glyph set.
+// SPEC §3.1, §3.2: what a caption says can be seen from the back row. A caption of a shipped script
+// that names a visible change, and has keys before the next caption, names what changes, and at
+// least 12 cells of that thing's colour role change between the screen before its keys and the
+// screen after them, on the 80x23 pane a class shares (tmux under its status line), in every
+// glyph set.
 #include "apcs/cli/session_command.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/raster/screen_layout.h"
+#include "apcs/raster/short_screen.h"
 #include "apcs/session/session_files.h"
 
 #include "support/temp_folder.h"
@@ -26,9 +29,48 @@ constexpr int fewest_changed_cells = 12;
 
 bool names_a_visible_change(const std::string& caption)
 {
-    static const std::regex visible_change(R"(\b(corner|loop|crowd|tighten|shorten|turn|bend|overshoot|spike|straighten)\w*)",
-                                           std::regex::icase);
+    static const std::regex visible_change(
+        R"(\b(shows|corner|loop|crowd|tighten|shorten|turn|bend|overshoot|spike|straighten|halve)\w*)",
+        std::regex::icase);
     return std::regex_search(caption, visible_change);
+}
+
+// The things a caption can name, each drawn in a colour role of its own (SPEC §7.2.1).
+struct NamedThing {
+    std::regex words;
+    ColourRole role;
+};
+
+const std::vector<NamedThing>& named_things()
+{
+    static const std::vector<NamedThing> things{
+        {std::regex(R"(\b(tangents?|DS|DD)\b)"), ColourRole::tangent},
+        {std::regex(R"(\b(curve|corner|spike)\b)"), ColourRole::monitor},
+        {std::regex(R"(\b(marks|in-betweens|frames)\b)"), ColourRole::inbetween},
+        {std::regex(R"(\blaw\b)"), ColourRole::law},
+        {std::regex(R"(\bregion\b)"), ColourRole::region},
+        {std::regex(R"(\bghost\b)"), ColourRole::ghost},
+        {std::regex(R"(\breference\b)"), ColourRole::reference},
+    };
+    return things;
+}
+
+// The colour roles of the things `caption` names.
+std::vector<ColourRole> named_roles(const std::string& caption)
+{
+    std::vector<ColourRole> roles;
+    for (const NamedThing& thing : named_things())
+        if (std::regex_search(caption, thing.words))
+            roles.push_back(thing.role);
+    return roles;
+}
+
+// Whether caption `k` is an exercise's task: it says what the student is to reach, and the keys
+// after it are an answer's or the student's, not a demonstration of what it says.
+bool is_task(const KeyScript& script, std::size_t k)
+{
+    return std::any_of(script.goals.begin(), script.goals.end(),
+                       [k](const ScriptGoal& goal) { return goal.captions_before == k + 1; });
 }
 
 // Every key script under data/ that holds a caption, as paths relative to data/.
@@ -71,26 +113,38 @@ std::vector<SessionScreen> caption_screens(const std::filesystem::path& script_f
     return screens;
 }
 
+// The screen on an 80x23 pane, as the terminal lays it (terminal_session.cpp).
 CellGrid cells_of(const SessionScreen& screen, GlyphSet glyphs)
 {
-    return screen.graphics ? render_cells(screen.picture, {80, 24}, glyphs) : screen.text;
+    return screen.graphics ? render_cells(screen.picture, {80, short_screen_rows}, glyphs)
+                           : text_on_short_screen(screen.text);
 }
 
-// The cells of the drawing area (the rows above the message line) that differ.
-int changed_drawing_cells(const SessionScreen& before, const SessionScreen& after, GlyphSet glyphs)
+bool is_blank(char32_t glyph) { return glyph == U' ' || glyph == U'\u2800'; }
+
+// The cells of the short screen's drawing area (the rows above its message line) that show `role`
+// before or after and differ in character or role.
+int changed_cells_of(ColourRole role, const SessionScreen& before, const SessionScreen& after, GlyphSet glyphs)
 {
     const CellGrid a = cells_of(before, glyphs);
     const CellGrid b = cells_of(after, glyphs);
+    const auto shows = [role](const CellGrid& grid, int column, int row) {
+        return grid.role_at(column, row) == role && !is_blank(grid.at(column, row));
+    };
     int changed = 0;
-    for (int row = 0; row < layout::message_row; ++row)
+    for (int row = 0; row < layout::message_row - 1; ++row)
         for (int column = 0; column < 80; ++column)
-            changed += a.at(column, row) != b.at(column, row) ? 1 : 0;
+            changed += (shows(a, column, row) || shows(b, column, row)) &&
+                               (a.at(column, row) != b.at(column, row) || a.role_at(column, row) != b.role_at(column, row))
+                           ? 1
+                           : 0;
     return changed;
 }
 
 } // namespace
 
-TEST_CASE("a caption that names a visible change changes at least 12 cells of the drawing area in every glyph set",
+TEST_CASE("a caption that names a visible change names what changes, and at least 12 cells of its colour role "
+          "change on an 80x23 pane in every glyph set",
           "[lesson][captions][visible]")
 {
     const std::vector<std::filesystem::path> scripts = captioned_scripts();
@@ -107,14 +161,19 @@ TEST_CASE("a caption that names a visible change changes at least 12 cells of th
                 const ScriptCaption& caption = script->captions[k];
                 const std::size_t keys_end =
                     k + 1 < script->captions.size() ? script->captions[k + 1].before_event : script->events.size();
-                if (!names_a_visible_change(caption.text) || keys_end == caption.before_event)
+                if (!names_a_visible_change(caption.text) || keys_end == caption.before_event || is_task(*script, k))
                     continue;
                 CAPTURE(script_file.string(), caption.text, static_cast<int>(glyphs));
-                CHECK(changed_drawing_cells(screens[k], screens[k + 1], glyphs) >= fewest_changed_cells);
-                ++checked;
+                const std::vector<ColourRole> roles = named_roles(caption.text);
+                CHECK_FALSE(roles.empty());
+                for (const ColourRole role : roles) {
+                    CAPTURE(colour_role_name(role));
+                    CHECK(changed_cells_of(role, screens[k], screens[k + 1], glyphs) >= fewest_changed_cells);
+                    ++checked;
+                }
             }
         }
     }
-    // The lessons on continuity, bias, acceleration and regions, the exercises' answers, the sessions.
+    // The lessons' and the sessions' named changes (an exercise's task is the student's to make).
     REQUIRE(checked >= 3 * 15);
 }

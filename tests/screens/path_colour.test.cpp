@@ -36,7 +36,7 @@ GraphicsScreen every_overlay()
     LogLines log;
     PathEditor editor(zigzag_with_key_frame(), log);
     // K first: showing the key frames fits the view again, which drops the ghost.
-    apply(editor, {cmd::ToggleKeyFrames{}, cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{+3},
+    apply(editor, {cmd::ToggleKeyFrames{}, cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{+10},
                    cmd::ToggleTangents{}, cmd::ToggleLawGraph{}});
     return editor.view();
 }

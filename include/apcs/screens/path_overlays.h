@@ -25,10 +25,11 @@ namespace apcs {
 void draw_tangent_arrows(GraphicsScreen& screen, Painter& painter, std::span<const HermiteSegment> segments,
                          const ViewTransform& view, double scale);
 
-// The scale that keeps arrows readable for the whole editing: a third of the tangent (the Bezier
-// handle, so an arrow of a Catmull-Rom tangent reaches a third of the way to the next point),
-// lengthened when the mean chord between control points is short on the screen. Fixed while the
-// view is, so that arrows shrinking under tension are seen to shrink.
+// The scale of the arrows for the whole editing: the tangent's own length (an arrow is DS or DD as
+// the message line gives its numbers; a Catmull-Rom tangent reaches about the next point), every
+// arrow lengthened alike when the mean chord between control points is short on the screen, so
+// that a back row can compare them. Fixed while the view is, so that arrows shrinking under
+// tension are seen to shrink.
 double tangent_arrow_scale(std::span<const ControlPoint> points, const ViewTransform& view);
 
 // The message line's numbers of one control point (from 0), 1-based in the text:
