@@ -24,6 +24,25 @@ TextLine label_cell(PixelPoint at, const std::string& label)
     return {column, row, label};
 }
 
+// The legend (overlay_legend) on `row` from column 1, each part in the colour of the frames it names.
+void put_legend(GraphicsScreen& screen, const OverlayNames& names, std::size_t count, int row)
+{
+    const std::string legend = overlay_legend(names, count);
+    const std::size_t dashed = legend.find("  dashed: ");
+    const std::size_t dotted = legend.find("  dotted: ");
+    const std::size_t parts[] = {0, dashed, dotted, legend.size()};
+    const ColourRole roles[] = {ColourRole::monitor, ColourRole::key_frame, ColourRole::inbetween};
+    std::size_t from = 0;
+    for (std::size_t part = 0; part < 3; ++part) {
+        const std::size_t to = std::min(parts[part + 1], legend.size());
+        if (parts[part] == std::string::npos || to <= from)
+            continue;
+        screen.text.push_back({1 + static_cast<int>(from), row, legend.substr(from, to - from), CellStyle::plain,
+                               roles[part]});
+        from = to;
+    }
+}
+
 } // namespace
 
 std::vector<std::size_t> overlaid_frames(std::size_t count, bool first_middle_last)
@@ -41,6 +60,13 @@ LineStyle overlay_style(std::size_t index, std::size_t count)
     if (index == 0)
         return LineStyle::solid;
     return index + 1 == count ? LineStyle::dashed : LineStyle::dotted;
+}
+
+ColourRole overlay_role(std::size_t index, std::size_t count)
+{
+    if (index == 0)
+        return ColourRole::monitor;
+    return index + 1 == count ? ColourRole::key_frame : ColourRole::inbetween;
 }
 
 std::string overlay_legend(const OverlayNames& names, std::size_t count)
@@ -81,12 +107,15 @@ GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic&
     GraphicsScreen screen;
     Painter painter(screen.bitmap);
     painter.record_into(screen.strokes).rectangle(layout::drawing_area);
-    Painter inside(screen.bitmap, layout::inside_boundary);
-    inside.record_into(screen.strokes);
     const std::size_t count = frames.frame_count();
     const std::vector<std::size_t> drawn = overlaid_frames(count, overlay.first_middle_last);
-    for (const std::size_t k : drawn)
-        draw_world_graphic(inside, structure, frames.frame(k), view, overlay_style(k, count));
+    for (const std::size_t k : drawn) {
+        Bitmap layer;
+        Painter frame_painter(layer, layout::inside_boundary);
+        frame_painter.record_into(screen.strokes);
+        draw_world_graphic(frame_painter, structure, frames.frame(k), view, overlay_style(k, count));
+        paint_layer(screen, layer, overlay_role(k, count));
+    }
     for (const LetteredPoint& point : overlay.points) {
         const PixelPoint at = view.to_device(point.position).rounded();
         if (!layout::inside_boundary.contains(at))
@@ -99,7 +128,7 @@ GraphicsScreen frames_overlay_screen(const FrameSequence& frames, const Graphic&
     OverlayNames names = overlay.names;
     if (sampled)
         names.between = overlay.middle_name;
-    screen.text.push_back({1, overlay_legend_row, overlay_legend(names, count)});
+    put_legend(screen, names, count, overlay_legend_row);
     int row = overlay_legend_row + 1;
     if (sampled)
         screen.text.push_back({1, row++, "the first, middle and last of " + std::to_string(count) +

@@ -82,6 +82,17 @@ std::string played_svg(const std::filesystem::path& scene)
     return result.out;
 }
 
+// The text of every element on the row of `first` (the same y), in order: a legend is written in
+// parts, each in the colour of the frames it names.
+std::string texts_on_row_of(const std::vector<XmlElement>& texts, const XmlElement& first)
+{
+    std::string row;
+    for (const XmlElement& text : texts)
+        if (text.attributes.at("y") == first.attributes.at("y"))
+            row += text.text;
+    return row;
+}
+
 } // namespace
 
 TEST_CASE("apcs path --svg holds the path's polyline through the control points' pixels", "[cli][svg]")
@@ -169,9 +180,9 @@ TEST_CASE("apcs fit --svg draws all M+2 frames overlaid: KEY1 solid, the in-betw
     for (std::size_t k = 0; k < lines.size(); ++k)
         CHECK(dashes(lines[k]) == (k == 0 ? "solid" : k == 6 ? "dashed" : "dotted"));
     const auto texts = elements_named(elements, "text");
-    REQUIRE(texts.size() == 2);
+    REQUIRE(texts.size() == 4); // the caption, the legend in three parts (each in its frames' colour)
     CHECK(texts[0].text == "7 frames overlaid: key1.dat to key2.dat");
-    CHECK(texts[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 5 in-betweens");
+    CHECK(texts_on_row_of(texts, texts[1]) == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 5 in-betweens");
 }
 
 TEST_CASE("apcs play --svg draws frame 0 solid, the last dashed, the others dotted, and names them", "[cli][svg][overlay]")
@@ -184,8 +195,8 @@ TEST_CASE("apcs play --svg draws frame 0 solid, the last dashed, the others dott
     const auto dotted = std::count_if(lines.begin(), lines.end(), [](const XmlElement& line) { return dashes(line) == "dotted"; });
     CHECK(static_cast<std::size_t>(dotted) * 13 >= lines.size() * 10); // frames 1-11 of 0-12
     const auto texts = elements_named(elements, "text");
-    REQUIRE(texts.size() == 2);
-    CHECK(texts[1].text == "solid: frame 0  dashed: frame 12  dotted: frames 1-11");
+    REQUIRE(texts.size() == 4);
+    CHECK(texts_on_row_of(texts, texts[1]) == "solid: frame 0  dashed: frame 12  dotted: frames 1-11");
 }
 
 TEST_CASE("apcs play letters the car's waypoints A–D: an x on each, its letter in the cell under it", "[cli][svg][overlay]")
@@ -225,8 +236,8 @@ TEST_CASE("apcs play letters the car's waypoints A–D: an x on each, its letter
     }
     CHECK(std::any_of(texts.begin(), texts.end(),
                       [](const XmlElement& t) { return t.text == "A-D: car at frames 0, 10, 35, 60"; }));
-    CHECK(std::any_of(texts.begin(), texts.end(), [](const XmlElement& t) {
-        return t.text == "solid: frame 0  dashed: frame 60  dotted: frames 1-59";
+    CHECK(std::any_of(texts.begin(), texts.end(), [&](const XmlElement& t) {
+        return texts_on_row_of(texts, t) == "solid: frame 0  dashed: frame 60  dotted: frames 1-59";
     }));
 }
 

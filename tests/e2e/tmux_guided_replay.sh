@@ -87,7 +87,7 @@ done
 wait_for surface "A key played KEY1, 12 in-betweens"
 # That caption's key started the frames: this Space waits for their end to play the overlay.
 keys surface Space
-wait_for surface "dotted in-between 6 of 12: its middle points fitted"
+wait_for surface "dotted in-between 6; in colour, each as its legend"
 keys surface C-c
 wait_for surface "EXITED=130"
 # The slide-deck keys (SPEC 3.1): the lesson starts after its START line, PgDn goes to the next

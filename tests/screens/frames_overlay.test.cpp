@@ -2,6 +2,7 @@
 
 #include "apcs/raster/svg_encoder.h"
 #include "apcs/playback/animation_player.h"
+#include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/screen_layout.h"
 #include "apcs/base/session_log.h"
 
@@ -81,6 +82,16 @@ GraphicsScreen three_levels_overlay()
                                  {key_frames_names("key1.dat", "key2.dat", 3), {}, {}, false, {}});
 }
 
+// The legend's row as it reads: its parts, each in the colour of its frames, one after the other.
+std::string legend_of(const GraphicsScreen& screen)
+{
+    std::string legend;
+    for (const TextLine& line : screen.text)
+        if (line.row == overlay_legend_row)
+            legend += line.text;
+    return legend;
+}
+
 // The raster x of each lit run of an SVG stroke's path data ("Mx,y Lx,y" or a dot "Mx,y Vy"),
 // first and last pixel.
 std::vector<std::pair<int, int>> svg_runs(const std::string& data)
@@ -143,14 +154,45 @@ TEST_CASE("an overlay of frames draws the first solid, the last dashed and the o
     CHECK(lit_along(screen.bitmap, last).size() * 10 >= length * 6 - 10);
 }
 
-TEST_CASE("an overlay's legend names its strokes under the caption", "[session][overlay]")
+TEST_CASE("an overlay's legend names its strokes under the caption, each part in the colour of its frames",
+          "[session][overlay][colour]")
 {
     const GraphicsScreen screen = three_levels_overlay();
-    REQUIRE(screen.text.size() == 2);
+    REQUIRE(screen.text.size() == 4);
     CHECK(screen.text[0].row == layout::message_row);
     CHECK(screen.text[0].text == "3 frames overlaid");
-    CHECK(screen.text[1].row == overlay_legend_row);
-    CHECK(screen.text[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 1 in-between");
+    std::string legend;
+    for (std::size_t part = 1; part < 4; ++part) {
+        CHECK(screen.text[part].row == overlay_legend_row);
+        CHECK(screen.text[part].column == 1 + static_cast<int>(legend.size()));
+        CHECK(screen.text[part].role == overlay_role(part == 1 ? 0 : part == 2 ? 2 : 1, 3));
+        legend += screen.text[part].text;
+    }
+    CHECK(legend == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 1 in-between");
+}
+
+TEST_CASE("an overlay's first, last and middle frames are told apart in colour in every glyph set on an 80x23 pane, "
+          "where braille and blocks draw a dash or a dot as a line",
+          "[session][overlay][colour]")
+{
+    CHECK(overlay_role(0, 3) == ColourRole::monitor);
+    CHECK(overlay_role(1, 3) == ColourRole::inbetween);
+    CHECK(overlay_role(2, 3) == ColourRole::key_frame);
+    const GraphicsScreen screen = three_levels_overlay();
+    for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
+        CAPTURE(static_cast<int>(glyphs));
+        const CellGrid grid = render_cells(screen, {80, short_screen_rows}, glyphs);
+        for (const ColourRole role : {ColourRole::monitor, ColourRole::inbetween, ColourRole::key_frame}) {
+            CAPTURE(colour_role_name(role));
+            int cells = 0;
+            // Inside the boundary (the short screen's drawing area is rows 0-16).
+            for (int row = 1; row < layout::message_row - 2; ++row)
+                for (int column = 1; column < 79; ++column)
+                    cells += grid.role_at(column, row) == role && grid.at(column, row) != U' ' &&
+                             grid.at(column, row) != U'\u2800';
+            CHECK(cells >= 12);
+        }
+    }
 }
 
 TEST_CASE("overlay legends: a fit's keys and in-betweens, a scene's frame numbers, fewer parts for fewer items",
@@ -200,8 +242,8 @@ TEST_CASE("the session's last screen is the overlay the pictures draw, with the 
     const GraphicsScreen screen = player.view();
     const GraphicsScreen picture = three_levels_overlay();
     CHECK(screen.bitmap == picture.bitmap);
-    REQUIRE(screen.text.size() == 2);
-    CHECK(screen.text[1].text == picture.text[1].text);
+    REQUIRE(screen.text.size() == 4); // the caption, the legend's three parts
+    CHECK(legend_of(screen) == legend_of(picture));
 }
 
 TEST_CASE("lettered points are marked with an x and lettered in the cell under them", "[session][overlay]")
@@ -211,7 +253,7 @@ TEST_CASE("lettered points are marked with an x and lettered in the cell under t
     const GraphicsScreen screen = frames_overlay_screen(frames, one_line(), face_on, "caption", overlay);
     const ViewTransform view = frames_view(frames, face_on);
     REQUIRE(screen.marks.size() == 2);
-    REQUIRE(screen.text.size() == 5);
+    REQUIRE(screen.text.size() == 7); // two letters, the caption, the legend's three parts, the note
     for (std::size_t k = 0; k < 2; ++k) {
         const PixelPoint at = view.to_device(overlay.points[k].position).rounded();
         CHECK(screen.marks[k].at == at);
@@ -223,8 +265,8 @@ TEST_CASE("lettered points are marked with an x and lettered in the cell under t
         CHECK(top > at.y + 2);
         CHECK(top <= at.y + 2 + hercules::text_row_top(1) + 1);
     }
-    CHECK(screen.text[4].row == overlay_legend_row + 1);
-    CHECK(screen.text[4].text == "A-B: the ends");
+    CHECK(screen.text[6].row == overlay_legend_row + 1);
+    CHECK(screen.text[6].text == "A-B: the ends");
 }
 
 TEST_CASE("on the terminal the overlay draws the first, middle and last frames and says so, pictures every frame",
@@ -254,8 +296,8 @@ TEST_CASE("on the terminal the overlay draws the first, middle and last frames a
         CHECK(lit_along(picture.bitmap, row).size() > 10);
         CHECK(lit_along(screen.bitmap, row).empty() == (k == 1 || k == 3));
     }
-    REQUIRE(screen.text.size() == 3);
-    CHECK(screen.text[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: in-between 2 (inb002.dat)");
-    CHECK(screen.text[2].text == "the first, middle and last of 5 frames (pictures, --png, draw every frame)");
-    CHECK(picture.text[1].text == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 3 in-betweens");
+    REQUIRE(screen.text.size() == 5);
+    CHECK(legend_of(screen) == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: in-between 2 (inb002.dat)");
+    CHECK(screen.text[4].text == "the first, middle and last of 5 frames (pictures, --png, draw every frame)");
+    CHECK(legend_of(picture) == "solid: KEY1 key1.dat  dashed: KEY2 key2.dat  dotted: 3 in-betweens");
 }

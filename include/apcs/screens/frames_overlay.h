@@ -17,6 +17,10 @@ namespace apcs {
 // dashed, the ones between dotted, so that where a motion starts and where it ends can be told
 // apart (apcs draw, the pictures of apcs fit and apcs play, the session's last screen).
 LineStyle overlay_style(std::size_t index, std::size_t count);
+// Its colour role, for a terminal whose glyphs cannot draw a dash or a dot apart from a line
+// (braille, blocks): the first in the monitor's colour, the last in the key frames' (cyan), the
+// ones between in the in-betweens' (red); the legend's parts are in the same colours.
+ColourRole overlay_role(std::size_t index, std::size_t count);
 
 // What the strokes of an overlay stand for.
 struct OverlayNames {
