@@ -4,7 +4,7 @@
 Every line "PRESS SCRIPT [OPTIONS] KEY×N ..." of the section is one lesson or exercise of the plan.
 This script
   - sums the PgDn presses: at most 40 (a presenter's remote, not a keyboard),
-  - times the plan (issue 58): 0.75 minute a caption, 1/3 minute a command typed during the class
+  - times the plan: 0.75 minute a caption, 1/3 minute a command typed during the class
     (an indented "apcs" line between "The class, minute by minute" and "After the class"), 1.75
     a figure shown (each fig-*.png named there), 2 a GOAL of the scripts played, the hands-on
     minutes the section states ("hands-on: N minutes"), and each animation's length (frames ×

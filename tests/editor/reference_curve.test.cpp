@@ -94,7 +94,7 @@ TEST_CASE("C pins the curve as reference A beside the live curve until C unpins 
     const PathEditor::Look before_pin = editor.look();
     apply(editor, {cmd::PinReference{}});
     CHECK_FALSE(editor.look() == before_pin);
-    CHECK(editor.look().message == "A: continuity -1.00 pinned: dashed, under the curve until the curve moves (C unpins)");
+    CHECK(editor.look().message == "A: continuity -1.00 pinned, dashed: under the curve till it moves (C unpins)");
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille}) {
         CAPTURE(glyphs);
         const CellGrid pinned = render_cells(editor.view(), {80, 24}, glyphs);

@@ -31,8 +31,7 @@ inline constexpr std::string_view ask_draw = "Press any key to draw the animatio
 inline constexpr std::string_view pick_first = "Local: 4/6 move the arrow, Enter picks the FIRST control point";
 inline constexpr std::string_view pick_last = "Local: 4/6 move the arrow, Enter picks the LAST control point";
 // On the staff while a pinned reference (C) is the path as it still is: its dashes are under the curve.
-inline constexpr std::string_view reference_under_curve =
-    "A lies under the curve until the curve moves: change a value to see both (C unpins)";
+inline constexpr std::string_view reference_under_curve = "A lies under the curve until the curve moves (C unpins)";
 inline constexpr std::string_view staff_keys = "4/6 step  J/L 3 steps  Enter accept  Esc keep";
 inline constexpr std::string_view animation_keys = "Esc stop  Space pause  R replay";
 inline constexpr std::string_view animation_done = "Press any key to see all frames";
