@@ -160,3 +160,17 @@ TEST_CASE("the reference outlives the region and the staff it was pinned on", "[
     CHECK(drawing_cells(grid, ColourRole::reference) >= 12);
     CHECK(labelled_on_top_edge(grid));
 }
+
+TEST_CASE("the pin's notice fits the message line, whatever the label", "[editor][compare]")
+{
+    LogLines log;
+    PathEditor editor(three_points(), log);
+    // Tension, continuity, bias and acceleration each moved: the label names all four.
+    apply(editor, {cmd::ChooseGlobal{}, cmd::StaffStep{+3}, cmd::Accept{}, cmd::StaffStep{-3}, cmd::Accept{},
+                   cmd::StaffStep{+3}, cmd::Accept{}, cmd::StaffStep{-3}, cmd::PinReference{}});
+    const std::string message = editor.look().message;
+    CAPTURE(message);
+    CHECK(message.starts_with("A: t +0.15  c -0.15  b +0.15  a -0.15"));
+    CHECK(message.ends_with(" pinned, dashed (C unpins)"));
+    CHECK(message.size() < 80);
+}
