@@ -3,6 +3,7 @@
 
 #include "apcs/base/overloaded.h"
 #include "apcs/base/utf8.h"
+#include "apcs/geometry/hercules.h"
 #include "apcs/screens/path_overlays.h"
 #include "apcs/screens/session_text.h"
 
@@ -34,6 +35,17 @@ std::string question_with_goal(const GoalSaid& goal)
 
 } // namespace
 
+// The tangents' numbers (T) stay, so that Tab is seen to choose a point; a pinned A under the
+// curve is said after them where the line has room.
+std::string PathEditor::with_reference_told(std::string numbers) const
+{
+    constexpr std::string_view told = "  (A under the curve)";
+    if (m_picture->reference_under_curve() &&
+        numbers.size() + told.size() < static_cast<std::size_t>(hercules::text_columns))
+        numbers += told;
+    return numbers;
+}
+
 std::string PathEditor::message(MoveText move) const
 {
     if (!m_problem.empty())
@@ -49,11 +61,12 @@ std::string PathEditor::message(MoveText move) const
             [](const ControlChoice&) { return std::string(text::choose_control); },
             [](const RegionPick& pick) { return std::string(pick.first ? text::pick_last : text::pick_first); },
             [&](const Staff& staff) {
+                if (m_show_tangents)
+                    return with_move(with_reference_told(tangent_numbers(evaluated().curve.segments, m_tangent_point)),
+                                     staff, move);
                 if (m_picture->reference_under_curve())
                     return std::string(text::reference_under_curve);
-                const std::string shown = m_show_tangents ? tangent_numbers(evaluated().curve.segments, m_tangent_point)
-                                                          : staff_message(staff);
-                return with_move(shown, staff, move);
+                return with_move(staff_message(staff), staff, move);
             },
             [](const Waypoints& waypoints) { return waypoints.editor.message(); },
             [](const AskAgain&) { return std::string(text::ask_again); },

@@ -175,6 +175,16 @@ void PathPicture::pin_reference(std::string label)
         draw_reference();
 }
 
+bool PathPicture::reference_under_curve() const
+{
+    const auto same_curve = [](const ControlPoint& a, const ControlPoint& b) {
+        return a.position == b.position && a.staff.tension == b.staff.tension &&
+               a.staff.continuity == b.staff.continuity && a.staff.bias == b.staff.bias;
+    };
+    return m_reference && std::equal(m_reference->points.begin(), m_reference->points.end(), points().begin(),
+                                     points().end(), same_curve);
+}
+
 void PathPicture::unpin_reference()
 {
     if (m_reference)

@@ -1,5 +1,6 @@
 #include "apcs/screens/frames_overlay.h"
 
+#include "apcs/base/utf8.h"
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/painter.h"
 #include "apcs/raster/screen_layout.h"
@@ -24,22 +25,29 @@ TextLine label_cell(PixelPoint at, const std::string& label)
     return {column, row, label};
 }
 
-// The legend (overlay_legend) on `row` from column 1, each part in the colour of the frames it names.
+// The legend's parts for `count` items: "solid: FIRST", "  dashed: LAST", "  dotted: BETWEEN",
+// as many as there are kinds of items.
+std::vector<std::string> legend_parts(const OverlayNames& names, std::size_t count)
+{
+    std::vector<std::string> parts;
+    if (count > 0)
+        parts.push_back("solid: " + names.first);
+    if (count > 1)
+        parts.push_back("  dashed: " + names.last);
+    if (count > 2)
+        parts.push_back("  dotted: " + names.between);
+    return parts;
+}
+
+// The legend on `row` from column 1, each part in the colour of the frames it names.
 void put_legend(GraphicsScreen& screen, const OverlayNames& names, std::size_t count, int row)
 {
-    const std::string legend = overlay_legend(names, count);
-    const std::size_t dashed = legend.find("  dashed: ");
-    const std::size_t dotted = legend.find("  dotted: ");
-    const std::size_t parts[] = {0, dashed, dotted, legend.size()};
     const ColourRole roles[] = {ColourRole::monitor, ColourRole::key_frame, ColourRole::inbetween};
-    std::size_t from = 0;
-    for (std::size_t part = 0; part < 3; ++part) {
-        const std::size_t to = std::min(parts[part + 1], legend.size());
-        if (parts[part] == std::string::npos || to <= from)
-            continue;
-        screen.text.push_back({1 + static_cast<int>(from), row, legend.substr(from, to - from), CellStyle::plain,
-                               roles[part]});
-        from = to;
+    int column = 1;
+    const std::vector<std::string> parts = legend_parts(names, count);
+    for (std::size_t part = 0; part < parts.size(); ++part) {
+        screen.text.push_back({column, row, parts[part], CellStyle::plain, roles[part]});
+        column += text_columns(parts[part]);
     }
 }
 
@@ -71,13 +79,9 @@ ColourRole overlay_role(std::size_t index, std::size_t count)
 
 std::string overlay_legend(const OverlayNames& names, std::size_t count)
 {
-    if (count == 0)
-        return {};
-    std::string legend = "solid: " + names.first;
-    if (count > 1)
-        legend += "  dashed: " + names.last;
-    if (count > 2)
-        legend += "  dotted: " + names.between;
+    std::string legend;
+    for (const std::string& part : legend_parts(names, count))
+        legend += part;
     return legend;
 }
 

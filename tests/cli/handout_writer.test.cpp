@@ -185,7 +185,7 @@ TEST_CASE("a handout drawn for paper (--paper) is black on white: every pixel th
         REQUIRE(read_all(folder / "paper" / (name.substr(0, name.size() - 4) + ".txt")) ==
                 read_all(folder / "monitor" / (name.substr(0, name.size() - 4) + ".txt")));
     }
-    REQUIRE(pictures == 6);
+    REQUIRE(pictures == 7);
 }
 
 TEST_CASE("a run with --paper and no --handout is refused: exit 2 and what to give", "[cli][handout]")

@@ -13,8 +13,9 @@ This script
     height is checked) with --pace step and the glyph set given, on a fresh copy of its folder, with
     exactly those presses, and requires that every caption was shown and that the last press leaves
     "End of the script" on the caption row,
-  - plays each script without a GOAL again in an 80x24 pane and requires that after PgDn K every
-    row below the badge's is the handout's page K (apcs --handout with the same options and glyphs).
+  - plays each script again in an 80x24 pane and requires that after PgDn K every row below the
+    badge's is the handout's page K (apcs --handout with the same options and glyphs): each caption
+    of a lesson, the captions before an exercise's task.
 
 Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS [SCREENS_FOLDER]]   (prints each script's presses,
 captions and minutes; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
@@ -83,6 +84,16 @@ def script_folder(data, script):
         if os.path.isfile(os.path.join(data, folder, script)):
             return os.path.join(data, folder)
     sys.exit(f"class_plan: {script}: not found in {data}/*/")
+
+
+def captions_before_goal(path):
+    """The captions before the script's first GOAL line: all of them when it has none."""
+    count = 0
+    for line in open(path, encoding="utf-8"):
+        if line.startswith("GOAL "):
+            break
+        count += line.startswith(";;")
+    return count
 
 
 def goals_of(path):
@@ -212,22 +223,27 @@ def open_pane(session, work, command, size):
     has it: an 80x24 client attached (through `script`, which gives it a terminal of that size)
     under tmux's status line. Returns the client's process (or None) and what went wrong (or None)."""
     columns, rows = size
-    tmux("new-session", "-d", "-s", session, "-x", str(columns), "-y", str(rows), "-c", work, "sleep 600")
+    attached = rows == PANE[1]
+    window_rows = rows + 1 if attached else rows
+    tmux("new-session", "-d", "-s", session, "-x", str(columns), "-y", str(window_rows), "-c", work, "sleep 600")
     client = None
-    if rows == PANE[1]:
+    wanted_client = ""
+    if attached:
         tmux("set-option", "-t", session, "status", "on")
-        client = subprocess.Popen(["script", "-qfc", f"stty rows {rows + 1} cols {columns}; exec tmux -L "
+        client = subprocess.Popen(["script", "-qfc", f"stty rows {window_rows} cols {columns}; exec tmux -L "
                                    f"{local.socket} attach -t {session}", "/dev/null"],
                                   stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        wanted_client = f"{columns}x{window_rows}"
     deadline = time.time() + 10
     shown = ""
     while time.time() < deadline:
+        clients = tmux("list-clients", "-t", session, "-F", "#{client_width}x#{client_height}").split()
         shown = tmux("display", "-p", "-t", session, "#{pane_width}x#{pane_height}").strip()
-        if shown == f"{columns}x{rows}":
+        if shown == f"{columns}x{rows}" and (not attached or clients == [wanted_client]):
             tmux("respawn-pane", "-k", "-t", session, "-c", work, f"LANG=C.UTF-8 {command}; sleep 60")
             return client, None
         time.sleep(0.05)
-    return client, f"the pane is {shown}, not {columns}x{rows}"
+    return client, f"the pane is {shown}, not {columns}x{rows}" + (f" under an {wanted_client} client" if attached else "")
 
 
 def play(apcs, folder, script, options, presses, glyphs, shown, size=PANE, pages=None):
@@ -292,12 +308,17 @@ def hold(apcs, data, glyphs, number, words):
         animation_seconds(apcs, folder, script, options) / 60
     shown = []
     seen, last_row, trouble = play(apcs, folder, script, options, presses, glyphs, shown)
-    if trouble is None and goals == 0:
+    if trouble is None:
+        # An exercise's pages pair up to the caption before its task: at the task the terminal's
+        # message line gives the goal's distance, where the handout's headless run has the staff's
+        # message, and past the GOAL the class sees "(skipped) ..." where the handout has the caption.
+        paired = captions_before_goal(os.path.join(folder, script)) - (1 if goals else 0)
         pages = handout_pages(apcs, folder, script, options, glyphs)
-        if len(pages) != len(captions):
+        if len(pages) < paired or (goals == 0 and len(pages) != len(captions)):
             trouble = f"its handout has {len(pages)} pages for {len(captions)} captions"
         else:
-            _, _, trouble = play(apcs, folder, script, options, presses, glyphs, [], (80, 24), pages)
+            _, _, trouble = play(apcs, folder, script, options, presses[:paired], glyphs, [], (80, 24),
+                                 pages[:paired])
     return script, presses, captions, minutes, shown, seen, last_row, trouble
 
 

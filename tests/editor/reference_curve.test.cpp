@@ -174,3 +174,19 @@ TEST_CASE("the pin's notice fits the message line, whatever the label", "[editor
     CHECK(message.ends_with(" pinned, dashed (C unpins)"));
     CHECK(message.size() < 80);
 }
+
+TEST_CASE("a pinned A stays under the curve through an acceleration step, and T's numbers say so after them",
+          "[editor][compare]")
+{
+    LogLines log;
+    PathEditor editor(three_points(), log);
+    apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{-3}, cmd::PinReference{}});
+    // Down to ACCELERATION and a step there: the in-betweens move, the curve does not.
+    apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{+3}});
+    CHECK(editor.look().message == session_text::reference_under_curve);
+    apply(editor, {cmd::ToggleTangents{}});
+    CHECK(editor.look().message.starts_with("point 2  DS "));
+    CHECK(editor.look().message.ends_with("  (A under the curve)"));
+    apply(editor, {cmd::ChoosePoint{+1}});
+    CHECK(editor.look().message.starts_with("point 3  DS "));
+}

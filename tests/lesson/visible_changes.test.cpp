@@ -30,7 +30,7 @@ constexpr int fewest_changed_cells = 12;
 bool names_a_visible_change(const std::string& caption)
 {
     static const std::regex visible_change(
-        R"(\b(shows|corner|loop|crowd|tighten|shorten|turn|bend|overshoot|spike|straighten|halve)\w*)",
+        R"(\b(shows|corner|loop|crowd|tighten|shorten|turn|bend|overshoot|spike|straighten|halve|lean|swing|boxed)\w*)",
         std::regex::icase);
     return std::regex_search(caption, visible_change);
 }
@@ -44,7 +44,7 @@ struct NamedThing {
 const std::vector<NamedThing>& named_things()
 {
     static const std::vector<NamedThing> things{
-        {std::regex(R"(\b(tangents?|DS|DD)\b)"), ColourRole::tangent},
+        {std::regex(R"(\b(tangents?|arrows?|DS|DD)\b)"), ColourRole::tangent},
         {std::regex(R"(\b(curve|corner|spike)\b)"), ColourRole::monitor},
         {std::regex(R"(\b(marks|in-betweens|frames)\b)"), ColourRole::inbetween},
         {std::regex(R"(\blaw\b)"), ColourRole::law},
@@ -81,7 +81,10 @@ std::vector<std::filesystem::path> captioned_scripts()
         if (entry.path().extension() != ".keys")
             continue;
         const Expected<KeyScript> script = parse_captioned_key_script(test::read_all(entry.path()), entry.path().string());
-        if (script && !script->captions.empty())
+        // A script refused (a caption too wide) would drop out of the test unseen.
+        CAPTURE(entry.path().string());
+        REQUIRE(script);
+        if (!script->captions.empty())
             scripts.push_back(std::filesystem::relative(entry.path(), data_folder));
     }
     std::sort(scripts.begin(), scripts.end());
@@ -123,18 +126,26 @@ CellGrid cells_of(const SessionScreen& screen, GlyphSet glyphs)
 bool is_blank(char32_t glyph) { return glyph == U' ' || glyph == U'\u2800'; }
 
 // The cells of the short screen's drawing area (the rows above its message line) that show `role`
-// before or after and differ in character or role.
-int changed_cells_of(ColourRole role, const SessionScreen& before, const SessionScreen& after, GlyphSet glyphs)
+// before or after and differ in character or role; a cell another thing the caption names shows
+// before or after is not counted (hiding the tangents uncovers the curve under them: that is no
+// change of the curve).
+int changed_cells_of(ColourRole role, const std::vector<ColourRole>& named, const SessionScreen& before,
+                     const SessionScreen& after, GlyphSet glyphs)
 {
     const CellGrid a = cells_of(before, glyphs);
     const CellGrid b = cells_of(after, glyphs);
-    const auto shows = [role](const CellGrid& grid, int column, int row) {
-        return grid.role_at(column, row) == role && !is_blank(grid.at(column, row));
+    const auto shows = [](ColourRole shown, const CellGrid& grid, int column, int row) {
+        return grid.role_at(column, row) == shown && !is_blank(grid.at(column, row));
+    };
+    const auto other_named = [&](int column, int row) {
+        return std::any_of(named.begin(), named.end(), [&](ColourRole other) {
+            return other != role && (shows(other, a, column, row) || shows(other, b, column, row));
+        });
     };
     int changed = 0;
     for (int row = 0; row < layout::message_row - 1; ++row)
         for (int column = 0; column < 80; ++column)
-            changed += (shows(a, column, row) || shows(b, column, row)) &&
+            changed += (shows(role, a, column, row) || shows(role, b, column, row)) && !other_named(column, row) &&
                                (a.at(column, row) != b.at(column, row) || a.role_at(column, row) != b.role_at(column, row))
                            ? 1
                            : 0;
@@ -168,7 +179,7 @@ TEST_CASE("a caption that names a visible change names what changes, and at leas
                 CHECK_FALSE(roles.empty());
                 for (const ColourRole role : roles) {
                     CAPTURE(colour_role_name(role));
-                    CHECK(changed_cells_of(role, screens[k], screens[k + 1], glyphs) >= fewest_changed_cells);
+                    CHECK(changed_cells_of(role, roles, screens[k], screens[k + 1], glyphs) >= fewest_changed_cells);
                     ++checked;
                 }
             }

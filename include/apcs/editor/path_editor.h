@@ -186,6 +186,7 @@ private:
     std::optional<ControlRegion> picked_region() const;
     std::size_t law_point() const;
     std::string message(MoveText move = MoveText::measured) const;
+    std::string with_reference_told(std::string numbers) const;
     // While the picture is refined: what is left, or the 8/2 question followed by it.
     std::string refining_message() const;
     // A staff line's "=" field is open: what is typed there is on the message line.

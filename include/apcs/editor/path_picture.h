@@ -93,9 +93,9 @@ public:
     void pin_reference(std::string label);
     void unpin_reference();
     bool has_reference() const { return m_reference.has_value(); }
-    // Whether a reference is pinned and the path is still the one pinned: A is drawn, but the
-    // curve covers every dash of it.
-    bool reference_under_curve() const { return m_reference && m_reference->points == points(); }
+    // Whether a reference is pinned and the curve is still the one pinned (acceleration moves only
+    // the in-betweens): A is drawn, but the curve covers every dash of it.
+    bool reference_under_curve() const;
 
     const EvaluatedPath& evaluated() const { return m_evaluated; }
     // CurveRaster::work_done of the curve's picture.
