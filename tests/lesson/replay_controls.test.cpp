@@ -40,12 +40,15 @@ const KeyEvent page_down = KeyEvent::of(Key::page_down);
 const KeyEvent page_up = KeyEvent::of(Key::page_up);
 const KeyEvent home = KeyEvent::of(Key::home);
 
-const std::string n_to_l_deck = "ENTER ENTER\n"
-                                "TEXT 0 90 100\n"
-                                "ENTER\n"
-                                "TEXT ani1.dat\n"
-                                "ENTER ENTER\n"
-                                "START\n"
+// The N to L example's opening answers, up to the path screen where the decks begin.
+const std::string n_to_l_opening = "ENTER ENTER\n"
+                                   "TEXT 0 90 100\n"
+                                   "ENTER\n"
+                                   "TEXT ani1.dat\n"
+                                   "ENTER ENTER\n"
+                                   "START\n";
+
+const std::string n_to_l_deck = n_to_l_opening +
                                 ";; one\n"
                                 "8\n"
                                 ";; two\n"
@@ -131,8 +134,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
     REQUIRE(deck.replay->handled().size() == 22);
     REQUIRE(deck.replay->screen().badge_place == "caption 1 of 3"); // shown with its first key
     // A long step's label gives way to the keys: the badge still fits the 80-column top edge.
-    const KeyScript long_step = test::parsed_deck("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
-                                       ";; one\nTEXT my-first-path.dat\n;; two\n8\n");
+    const KeyScript long_step = test::parsed_deck(n_to_l_opening + ";; one\nTEXT my-first-path.dat\n;; two\n8\n");
     Deck typed(long_step, "n-to-l"); // the replay keeps a reference to its script
     press(*typed.replay, space);
     press(*typed.replay, KeyEvent::typed(U'x'));
@@ -347,7 +349,7 @@ TEST_CASE("after PgUp the recording is the script up to the caption gone back to
           "and PgDn PgUp Home are never in it",
           "[lesson][replay][deck][record]")
 {
-    const std::string script = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+    const std::string script = n_to_l_opening +
                                ";; one\n8\n;; two\nGOAL VALUE TENSION 0.4 0.6\n;; three\n4\n";
     const KeyScript keys = test::parsed_deck(script); // the replay keeps a reference to it
     Deck deck(keys, "n-to-l");
@@ -410,7 +412,7 @@ TEST_CASE("an answer played a Space a step poses its goal when its task shows, b
           "[lesson][replay][deck][goal]")
 {
     // An exercise's answer (or a student's recording): the task, its GOAL line, the answer's keys.
-    const std::string text = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n"
+    const std::string text = n_to_l_opening +
                              ";; one\n8\n;; two, the task\nGOAL VALUE TENSION 0.4 0.6\nL L L\n;; three\n4\n";
     const KeyScript script = test::parsed_deck(text);
     const std::size_t goal_at = script.goals[0].before_event;
@@ -448,7 +450,7 @@ TEST_CASE("two GOAL lines under one task wait in turn: skipping the first poses 
           "them shows only when the presenter asks for it",
           "[lesson][replay][deck][goal]")
 {
-    const std::string text = "ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT ani1.dat\nENTER ENTER\nSTART\n8\n"
+    const std::string text = n_to_l_opening + "8\n"
                              ";; the task\nGOAL VALUE TENSION 0.4 0.6\nGOAL VALUE BIAS 0.3 0.5\n;; closing\n4\n";
     const KeyScript script = test::parsed_deck(text);
     Deck deck(script, "n-to-l");
