@@ -362,9 +362,9 @@ void PathEditor::pin_or_unpin_reference()
     }
     const std::string label = reference_label(region_staff().value_or(points().front().staff));
     m_picture->pin_reference(label);
-    // The message line holds 79 columns; a label of all four values leaves room for less.
+    // A label of all four values leaves the message line room for less.
     const std::string said = label + " pinned, dashed: under the curve till it moves (C unpins)";
-    m_notice = said.size() < static_cast<std::size_t>(hercules::text_columns) ? said : label + " pinned, dashed (C unpins)";
+    m_notice = fits_message_line(said) ? said : label + " pinned, dashed (C unpins)";
 }
 
 PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)

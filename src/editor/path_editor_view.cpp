@@ -3,7 +3,6 @@
 
 #include "apcs/base/overloaded.h"
 #include "apcs/base/utf8.h"
-#include "apcs/geometry/hercules.h"
 #include "apcs/screens/path_overlays.h"
 #include "apcs/screens/session_text.h"
 
@@ -16,10 +15,14 @@ namespace {
 // The message line's text fits 79 columns (the 80th holds no text).
 constexpr std::size_t max_message_width = 79;
 
+} // namespace
+
 bool fits_message_line(std::string_view text)
 {
     return static_cast<std::size_t>(text_columns(text)) <= max_message_width;
 }
+
+namespace {
 
 // "Adjust the path again ? (Y/N)" first, and beside it the goal, whole or in a few words, as it
 // fits: the student sees whether to answer Y.
@@ -39,11 +42,8 @@ std::string question_with_goal(const GoalSaid& goal)
 // curve is said after them where the line has room.
 std::string PathEditor::with_reference_told(std::string numbers) const
 {
-    constexpr std::string_view told = "  (A under the curve)";
-    if (m_picture->reference_under_curve() &&
-        numbers.size() + told.size() < static_cast<std::size_t>(hercules::text_columns))
-        numbers += told;
-    return numbers;
+    const std::string told = numbers + "  (A under the curve)";
+    return m_picture->reference_under_curve() && fits_message_line(told) ? told : numbers;
 }
 
 std::string PathEditor::message(MoveText move) const

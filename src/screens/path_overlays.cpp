@@ -123,7 +123,11 @@ double tangent_arrow_scale(std::span<const ControlPoint> points, const ViewTrans
     if (points.size() < 2 || !(chord_pixels > 0.0))
         return true_length;
     const double mean_chord = chord_pixels / static_cast<double>(points.size() - 1);
-    return mean_chord >= shortest_readable_pixels ? true_length : shortest_readable_pixels / mean_chord;
+    // Lengthened three times at most, as a third of the tangent once was: arrows of a picture
+    // crowded into a few cells stay near it, not thousands of pixels long.
+    constexpr double most_lengthened = 3.0;
+    return mean_chord >= shortest_readable_pixels ? true_length
+                                                  : std::min(most_lengthened, shortest_readable_pixels / mean_chord);
 }
 
 std::string tangent_numbers(std::span<const HermiteSegment> segments, std::size_t point)

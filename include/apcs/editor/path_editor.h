@@ -26,6 +26,9 @@
 
 namespace apcs {
 
+// Whether `text` fits the message line of the path screen.
+bool fits_message_line(std::string_view text);
+
 // An exercise's feedback for the message line (lesson/goal_check.h): whole ("GOAL: the curve
 // passes 0.35 from (0.00, 1.00, 2.00), want within 0.10") and in a few words ("GOAL: 0.35 off,
 // want within 0.10"); both empty for none.
