@@ -94,13 +94,13 @@ std::vector<std::string> HandoutWriter::earlier_pages() const
     return earlier;
 }
 
-void HandoutWriter::write(int number, std::size_t count, std::string_view caption, const SessionScreen& screen,
+void HandoutWriter::write(int number, std::size_t count, PageCaption caption, const SessionScreen& screen,
                           GlyphSet glyphs, const KeyFileGuard& inputs)
 {
     if (!m_outcome || is_empty_prompt(screen))
         return;
-    const SessionScreen shown = with_caption(screen, caption);
-    const std::string stem = handout_file_stem(number, count, caption);
+    const SessionScreen shown = with_caption(screen, caption.shown);
+    const std::string stem = handout_file_stem(number, count, caption.written);
     const std::filesystem::path picture = m_folder / (stem + ".png");
     const Expected<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor, m_ink);
     if (!png) {
@@ -111,7 +111,7 @@ void HandoutWriter::write(int number, std::size_t count, std::string_view captio
     write_file(stem + ".png", *png, inputs);
     write_file(stem + ".txt", screen_text(shown, glyphs), inputs);
     if (m_outcome)
-        m_pages[number] = HandoutPage{number, stem + ".png", std::string(caption)};
+        m_pages[number] = HandoutPage{number, stem + ".png", std::string(caption.shown)};
 }
 
 void HandoutWriter::finish(std::string_view title, const KeyFileGuard& inputs)

@@ -540,9 +540,10 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
     ReplayHooks hooks;
     if (handout)
         hooks.caption_ended = [&handout, &options, &script, glyphs, folder](
-                                  std::size_t index, const SessionScreen& screen, const std::vector<std::string>& keys) {
-            handout->write(static_cast<int>(index) + 1, script.captions.size(), script.captions[index].text, screen,
-                           glyphs, files_read(options, keys, folder));
+                                  std::size_t index, const std::string& caption, const SessionScreen& screen,
+                                  const std::vector<std::string>& keys) {
+            handout->write(static_cast<int>(index) + 1, script.captions.size(),
+                           {script.captions[index].text, caption}, screen, glyphs, files_read(options, keys, folder));
         };
     return hooks;
 }

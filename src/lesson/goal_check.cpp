@@ -156,6 +156,14 @@ std::string goal_feedback(const GoalProgress& progress)
     return "GOAL: " + goal_distance_text(progress);
 }
 
+std::string goal_verdict_line(std::string_view verdict, const GoalProgress& progress)
+{
+    const std::string whole = "GOAL " + std::string(verdict) + ": " + goal_distance_text(progress);
+    if (fits_message_line(whole))
+        return whole;
+    return "GOAL " + std::string(verdict) + ": " + progress.said_briefly + ", " + progress.want;
+}
+
 std::string goal_feedback_briefly(const GoalProgress& progress)
 {
     if (progress.reached)

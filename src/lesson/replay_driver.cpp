@@ -253,8 +253,7 @@ ReplayDriver::Shown ReplayDriver::shown() const
     const std::optional<std::size_t> caption = caption_on_row();
     const bool typed_since_hand_over = m_mode == Mode::keyboard && m_handled.size() > m_handed_over_at;
     if (caption && !typed_since_hand_over)
-        over.caption = (closes_skipped_goal(*caption) ? std::string(skipped_caption_prefix) : std::string()) +
-                       m_script.captions[*caption].text;
+        over.caption = caption_text(*caption);
     if (m_mode == Mode::end_told)
         over.caption = end_of_script_caption;
     if (!paced())
@@ -301,7 +300,7 @@ void ReplayDriver::finish()
         return;
     }
     settle();
-    judge_goals(m_script.events.size());
+    settle_headless(m_script.events.size());
     end_caption();
 }
 

@@ -21,8 +21,7 @@ void ReplayDriver::after_change()
 void ReplayDriver::settle()
 {
     if (m_audience == ReplayAudience::headless) {
-        judge_goals(m_played);
-        tell_captions();
+        settle_headless(m_played);
         return;
     }
     if (lesson_has_keyboard() && session_idle())
@@ -38,10 +37,11 @@ void ReplayDriver::settle()
         m_mode = paced() ? Mode::end_told : Mode::deck;
 }
 
-void ReplayDriver::tell_captions()
+void ReplayDriver::tell_captions(std::size_t limit)
 {
     const std::vector<ScriptCaption>& captions = m_script.captions;
-    for (; m_captions_told < captions.size() && captions[m_captions_told].before_event <= m_played; ++m_captions_told) {
+    limit = std::min(limit, captions.size());
+    for (; m_captions_told < limit && captions[m_captions_told].before_event <= m_played; ++m_captions_told) {
         end_caption();
         if (m_hooks.caption_reached)
             m_hooks.caption_reached(m_captions_told, with_caption(m_session->screen(), captions[m_captions_told].text));
@@ -55,7 +55,8 @@ void ReplayDriver::end_caption()
         return;
     m_captions_ended = m_captions_told;
     if (m_hooks.caption_ended)
-        m_hooks.caption_ended(m_captions_ended - 1, m_session->screen(), key_files_read());
+        m_hooks.caption_ended(m_captions_ended - 1, caption_text(m_captions_ended - 1), m_session->screen(),
+                              key_files_read());
 }
 
 std::optional<std::size_t> ReplayDriver::waiting_goal() const
@@ -221,32 +222,76 @@ std::size_t ReplayDriver::judging_end(std::size_t goal) const
     return goal + 1 < goals.size() ? goals[goal + 1].before_event : m_script.events.size();
 }
 
-// Headless, with `played` keys played: each goal opened at its GOAL line and judged on its path as
-// the student accepted it (the session left the path), else as it stands at the next GOAL line or
-// the script's end (SPEC §3, §3.2); the first not reached is the run's failure. The point of the
-// goal whose answer is playing is marked, from its GOAL line to its answer's end.
-void ReplayDriver::judge_goals(std::size_t played)
+// Headless, with `played` keys played (the script's end when finishing), as a class would see it
+// at each caption's end (SPEC §3.2: the handout's page K is the projector's screen at caption K):
+// each goal opened at its GOAL line, its task's page showing its feedback ("GOAL: tension +0.00,
+// want …") and its point marked while it does not hold, as the terminal waits there; judged on its
+// path as the student accepted it (the session left the path), else as it stands at the next GOAL
+// line or the script's end (SPEC §3, §3.2), its closing caption's page then saying "GOAL not
+// reached: …" under "(not reached) …" when it was not. The first not reached is the run's failure.
+// What the replay says stays on the message line until the next key; the point of the goal whose
+// answer is playing is marked until its answer's end.
+void ReplayDriver::settle_headless(std::size_t played)
 {
     const std::vector<ScriptGoal>& goals = m_script.goals;
+    if (m_goal_said_at && *m_goal_said_at < m_played)
+        say_goal_headless({});
     for (;;) {
         if (!m_open) {
             if (m_next_goal == goals.size() || goals[m_next_goal].before_event > played)
                 break;
-            m_open = OpenGoal{m_next_goal++, std::nullopt, {}, std::nullopt};
+            open_goal_headless();
         }
-        // A key that keeps its step cannot leave the goal's path: the standing is taken before a key
-        // that may, and when judged, not before every key (a NEAR goal's look reads the whole curve,
-        // and a recording may insert 16,000 waypoints).
-        const bool judging = judging_end(m_open->goal) <= played;
-        const bool look =
-            judging || played >= m_script.events.size() || !m_session->keeps_phase(m_script.events[played]);
-        if (follow_open_goal(look) == GoalPath::left || judging)
-            judge_open_goal(open_goal_as_it_stands());
-        else
+        if (!judge_goal_headless(played))
             break;
     }
+    tell_captions();
+    if (m_goal_said_at == m_played)
+        return; // the mark as the goal's feedback or verdict left it
     const bool answering = m_next_goal > 0 && goals[m_next_goal - 1].answer_end > played;
     m_session->mark_goal(answering ? goal_point(goals[m_next_goal - 1]) : std::nullopt);
+}
+
+// Goal m_next_goal's GOAL line reached: its task and the captions before it told first, ending as
+// they stood, then its feedback and mark as the terminal shows them waiting there.
+void ReplayDriver::open_goal_headless()
+{
+    const ScriptGoal& goal = m_script.goals[m_next_goal];
+    tell_captions(goal.captions_before);
+    m_open = OpenGoal{m_next_goal++, std::nullopt, {}, std::nullopt};
+    follow_open_goal();
+    const GoalProgress progress = open_goal_as_it_stands();
+    say_goal_headless(goal_feedback(progress), goal_feedback_briefly(progress));
+    m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
+}
+
+// The open goal judged if its path was left or its judging comes at `played`: the captions before
+// the next goal's task told first (its own task's page shows its feedback), then the verdict. False
+// while it stays open.
+bool ReplayDriver::judge_goal_headless(std::size_t played)
+{
+    // A key that keeps its step cannot leave the goal's path: the standing is taken before a key
+    // that may, and when judged, not before every key (a NEAR goal's look reads the whole curve,
+    // and a recording may insert 16,000 waypoints).
+    const bool judging = judging_end(m_open->goal) <= played;
+    const bool look = judging || played >= m_script.events.size() || !m_session->keeps_phase(m_script.events[played]);
+    if (follow_open_goal(look) != GoalPath::left && !judging)
+        return false;
+    const std::size_t next = m_open->goal + 1;
+    tell_captions(next < m_script.goals.size() ? m_script.goals[next].captions_before - 1 : m_script.captions.size());
+    const GoalProgress progress = open_goal_as_it_stands();
+    judge_open_goal(progress);
+    if (!progress.reached) {
+        say_goal_headless(goal_verdict_line("not reached", progress));
+        m_session->mark_goal(std::nullopt);
+    }
+    return true;
+}
+
+void ReplayDriver::say_goal_headless(std::string feedback, std::string briefly)
+{
+    m_goal_said_at = feedback.empty() ? std::nullopt : std::optional<std::size_t>(m_played);
+    m_session->say_goal(std::move(feedback), std::move(briefly));
 }
 
 // apcs.log's line for the goal: "goal reached: tension +0.45 at key 12", "goal not reached: tension
@@ -271,7 +316,7 @@ void ReplayDriver::judged(std::size_t goal, GoalOutcome::Verdict verdict, const 
 void ReplayDriver::skip_goal()
 {
     m_session->mark_goal(std::nullopt);
-    m_session->say_goal("GOAL skipped: " + goal_distance_text(m_waiting_progress));
+    m_session->say_goal(goal_verdict_line("skipped", m_waiting_progress));
     m_open.reset();
     judged(m_next_goal, GoalOutcome::Verdict::skipped, m_waiting_progress);
     m_mode = Mode::deck;
@@ -283,19 +328,31 @@ void ReplayDriver::skip_goal()
         play_to_next_caption();
 }
 
-// A caption after the goal's GOAL line, reached by its answer's end, that is not the task of a
-// later goal.
-bool ReplayDriver::closes_skipped_goal(std::size_t caption) const
+// The verdict of the goal caption `caption` closes: a caption after the goal's GOAL line, reached
+// by its answer's end, that is not the task of a later goal; only a goal skipped or not reached.
+std::optional<GoalOutcome::Verdict> ReplayDriver::closed_goal_verdict(std::size_t caption) const
 {
     const std::vector<ScriptGoal>& goals = m_script.goals;
     const bool a_later_task = std::any_of(goals.begin(), goals.end(), [&](const ScriptGoal& goal) {
         return goal.captions_before == caption + 1;
     });
-    return !a_later_task && std::any_of(m_outcomes.begin(), m_outcomes.end(), [&](const GoalOutcome& outcome) {
+    if (a_later_task)
+        return std::nullopt;
+    const auto closed = std::find_if(m_outcomes.begin(), m_outcomes.end(), [&](const GoalOutcome& outcome) {
         const ScriptGoal& goal = goals[outcome.goal];
-        return outcome.verdict == GoalOutcome::Verdict::skipped && caption >= goal.captions_before &&
+        return outcome.verdict != GoalOutcome::Verdict::reached && caption >= goal.captions_before &&
                m_script.captions[caption].before_event <= goal.answer_end;
     });
+    return closed == m_outcomes.end() ? std::nullopt : std::optional(closed->verdict);
+}
+
+std::string ReplayDriver::caption_text(std::size_t caption) const
+{
+    const std::optional<GoalOutcome::Verdict> verdict = closed_goal_verdict(caption);
+    std::string_view prefix;
+    if (verdict)
+        prefix = *verdict == GoalOutcome::Verdict::skipped ? skipped_caption_prefix : not_reached_caption_prefix;
+    return std::string(prefix) + m_script.captions[caption].text;
 }
 
 // Y to "Leave the exercise ?": the replay ends there, its goal not reached, and the keyboard is

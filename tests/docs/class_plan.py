@@ -14,8 +14,9 @@ This script
     exactly those presses, and requires that every caption was shown and that the last press leaves
     "End of the script" on the caption row,
   - plays each script again in an 80x24 pane and requires that after PgDn K every row below the
-    badge's is the handout's page K (apcs --handout with the same options and glyphs): each caption
-    of a lesson, the captions before an exercise's task.
+    badge's is the handout's page K (apcs --handout with the same options and glyphs), an exercise's
+    task with its goal's feedback; past a goal the class skips (PgDn), which the handout's headless
+    run finds not reached, only the verdict's words differ (pairs).
 
 Usage: class_plan.py APCS MANUAL DATA_FOLDER [GLYPHS [SCREENS_FOLDER]]   (prints each script's presses,
 captions and minutes; SCREENS_FOLDER gets SCRIPT.txt, every screen the class saw, for reading them)
@@ -84,16 +85,6 @@ def script_folder(data, script):
         if os.path.isfile(os.path.join(data, folder, script)):
             return os.path.join(data, folder)
     sys.exit(f"class_plan: {script}: not found in {data}/*/")
-
-
-def captions_before_goal(path):
-    """The captions before the script's first GOAL line: all of them when it has none."""
-    count = 0
-    for line in open(path, encoding="utf-8"):
-        if line.startswith("GOAL "):
-            break
-        count += line.startswith(";;")
-    return count
 
 
 def goals_of(path):
@@ -269,7 +260,7 @@ def play(apcs, folder, script, options, presses, glyphs, shown, size=PANE, pages
                     changed_screen(session, screen)
                     screen = settled_screen(session, quiet, seen)
                     shown.append(f"=== {script}: press {number}, {key}\n{screen}")
-                    if pages is not None and number <= len(pages) and below_badge(screen) != below_badge(pages[number - 1]):
+                    if pages is not None and number <= len(pages) and not pairs(screen, pages[number - 1]):
                         trouble = (f"at {size[0]}x{size[1]}, press {number} shows\n{screen}\nwhere the handout's "
                                    f"page {number} is\n{pages[number - 1]}")
                         break
@@ -284,6 +275,29 @@ def play(apcs, folder, script, options, presses, glyphs, shown, size=PANE, pages
 def below_badge(screen):
     """The rows after the first (the badge's), without trailing blanks, as tmux captures them."""
     return [row.rstrip() for row in screen.rstrip("\n").split("\n")[1:]]
+
+
+def same_but_verdict(shown, page, skipped, not_reached):
+    """The projector's row says `skipped` where the handout's says `not_reached`, the rest the same
+    (the handout's row, cut at the screen's edge sooner, begins the projector's)."""
+    return shown.startswith(skipped) and page.startswith(not_reached) and \
+        shown[len(skipped):].startswith(page[len(not_reached):])
+
+
+def pairs(screen, page):
+    """Every row below the badge's the same, but past a goal the class skipped, where the handout's
+    headless run found it not reached: the message line ("GOAL skipped: ..." / "GOAL not reached:
+    ...", the same quantities, in a few words where the whole does not fit) and the caption row
+    ("(skipped) ..." / "(not reached) ...")."""
+    shown_rows, page_rows = below_badge(screen), below_badge(page)
+    if len(shown_rows) != len(page_rows):
+        return False
+    differing = [(shown, printed) for shown, printed in zip(shown_rows, page_rows) if shown != printed]
+    if not differing:
+        return True
+    return len(differing) == 2 and all(
+        (shown.startswith(" GOAL skipped: ") and printed.startswith(" GOAL not reached: ")) or
+        same_but_verdict(shown, printed, " " + SKIPPED, " (not reached) ") for shown, printed in differing)
 
 
 def handout_pages(apcs, folder, script, options, glyphs):
@@ -309,16 +323,14 @@ def hold(apcs, data, glyphs, number, words):
     shown = []
     seen, last_row, trouble = play(apcs, folder, script, options, presses, glyphs, shown)
     if trouble is None:
-        # An exercise's pages pair up to the caption before its task: at the task the terminal's
-        # message line gives the goal's distance, where the handout's headless run has the staff's
-        # message, and past the GOAL the class sees "(skipped) ..." where the handout has the caption.
-        paired = captions_before_goal(os.path.join(folder, script)) - (1 if goals else 0)
+        # Every page pairs with its PgDn, an exercise's task with the goal's feedback on the message
+        # line; past the goal, the class's skip against the handout's "not reached" (pairs).
+        paired = len(captions)
         pages = handout_pages(apcs, folder, script, options, glyphs)
-        if len(pages) < paired or (goals == 0 and len(pages) != len(captions)):
+        if len(pages) != paired:
             trouble = f"its handout has {len(pages)} pages for {len(captions)} captions"
         else:
-            _, _, trouble = play(apcs, folder, script, options, presses[:paired], glyphs, [], (80, 24),
-                                 pages[:paired])
+            _, _, trouble = play(apcs, folder, script, options, presses[:paired], glyphs, [], (80, 24), pages)
     return script, presses, captions, minutes, shown, seen, last_row, trouble
 
 

@@ -50,7 +50,8 @@ ReplayHooks logging_hooks(CaptionLog& log, const Session& session)
         log.events.push_back("reached " + std::to_string(index));
         log.reached.push_back(screen_text(session.screen(), GlyphSet::ascii));
     };
-    hooks.caption_ended = [&log](std::size_t index, const SessionScreen& screen, const std::vector<std::string>&) {
+    hooks.caption_ended = [&log](std::size_t index, const std::string&, const SessionScreen& screen,
+                                const std::vector<std::string>&) {
         log.events.push_back("ended " + std::to_string(index));
         log.ended.push_back(screen_text(screen, GlyphSet::ascii));
     };

@@ -197,6 +197,19 @@ TEST_CASE("a goal's feedback in a few words says the quantity and what the goal 
     CHECK(goal_feedback_briefly(progress) == "GOAL REACHED: tension +0.45");
 }
 
+TEST_CASE("a goal left says its verdict whole where it fits the message line, else in a few words", "[lesson][goal]")
+{
+    const GoalProgress tension{false, "+0.00", "tension +0.00", "want +0.40 to +0.60", {}, "tension +0.00"};
+    CHECK(goal_verdict_line("skipped", tension) == "GOAL skipped: tension +0.00, want +0.40 to +0.60");
+    CHECK(goal_verdict_line("not reached", tension) == "GOAL not reached: tension +0.00, want +0.40 to +0.60");
+    const GoalProgress near{false, "0.39", "the curve passes 0.39 from (1.50, -2.00, 2.50)", "want within 0.10", {},
+                            "0.39 off"};
+    // 76 columns: fits the 79 of the message line; with "not reached", 80 do not.
+    CHECK(goal_verdict_line("skipped", near) ==
+          "GOAL skipped: the curve passes 0.39 from (1.50, -2.00, 2.50), want within 0.10");
+    CHECK(goal_verdict_line("not reached", near) == "GOAL not reached: 0.39 off, want within 0.10");
+}
+
 TEST_CASE("the help over a paced replay keeps its title and last line: no caption or badge is laid over it",
           "[lesson][replay][goal]")
 {

@@ -268,7 +268,8 @@ std::string caption_screens(const std::string& lesson, GlyphSet glyphs)
     std::ostream no_screens(nullptr);
     const KeyScript script = read_lesson(lesson);
     ReplayHooks hooks;
-    hooks.caption_ended = [&](std::size_t index, const SessionScreen& shown, const std::vector<std::string>&) {
+    hooks.caption_ended = [&](std::size_t index, const std::string&, const SessionScreen& shown,
+                             const std::vector<std::string>&) {
         screens += "=== " + std::to_string(++number) + ": " + script.captions[index].text + "\n";
         screens += screen_text(with_caption(shown, script.captions[index].text), glyphs);
     };

@@ -16,6 +16,13 @@
 
 namespace apcs {
 
+// A page's caption: as the script writes it (the page's file name comes from it) and as the page
+// shows it ("(not reached) …" before the caption closing a goal not reached).
+struct PageCaption {
+    std::string_view written;
+    std::string_view shown;
+};
+
 // --handout DIR: per caption of a replay, DIR/NN-STEP.png (the screen as the monitor showed it,
 // 720x522, as P and --png write pictures; black on white with --paper) and DIR/NN-STEP.txt (the
 // 80x24 screen as text, as the headless replay prints it), names as handout.h gives them; at the
@@ -32,13 +39,13 @@ public:
     [[nodiscard]] static Expected<HandoutWriter> open(const std::filesystem::path& folder, PngInk ink = PngInk::monitor);
 
     // Caption number `number` (1, 2, …) of `count` at the end of its keys: `screen` is the
-    // session's (the caption is laid on here), the text in `glyphs`. An empty prompt
+    // session's (the caption shown is laid on here), the text in `glyphs`. An empty prompt
     // (is_empty_prompt) gets no page. Each file is written atomically as every picture of APCS is:
     // an existing one is replaced (kept as NN-STEP.bak; identical content leaves it untouched),
     // never one of `inputs`. When the PNG's old content took NN-STEP.bak this time, the text's goes
     // to NN-STEP.b01 …, so that one backup never replaces the other. The first problem is kept
     // (outcome()); after it nothing more is written. A caption written again replaces its page.
-    void write(int number, std::size_t count, std::string_view caption, const SessionScreen& screen, GlyphSet glyphs,
+    void write(int number, std::size_t count, PageCaption caption, const SessionScreen& screen, GlyphSet glyphs,
                const KeyFileGuard& inputs);
 
     // DIR/index.html of the pages written, titled `title`, written as the pages are (never one of

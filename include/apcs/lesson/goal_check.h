@@ -4,6 +4,7 @@
 #include "apcs/session/session.h"
 
 #include <string>
+#include <string_view>
 
 namespace apcs {
 
@@ -38,6 +39,11 @@ std::string goal_distance_text(const GoalProgress& progress);
 // instead when there is one ("GOAL: you are on BIAS; …"), or "GOAL REACHED:
 // tension +0.45 (want +0.40 to +0.60)".
 std::string goal_feedback(const GoalProgress& progress);
+
+// The message line once a goal is left: "GOAL skipped: tension +0.00, want +0.40 to +0.60" (`verdict`
+// "skipped"), the quantity in a few words ("GOAL not reached: 0.39 off, want within 0.10") when
+// the whole does not fit the line.
+std::string goal_verdict_line(std::string_view verdict, const GoalProgress& progress);
 
 // The feedback in a few words, for beside "Adjust the path again ? (Y/N)" when the whole of it
 // does not fit there: "GOAL: 0.35 off, want within 0.10", "GOAL REACHED: tension +0.45".

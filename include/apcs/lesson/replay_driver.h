@@ -33,6 +33,9 @@ inline constexpr std::string_view replay_keys_timed = "PgDn next caption  PgUp b
 inline constexpr std::string_view replay_keys_keyboard = "your keyboard: PgUp/PgDn/Home return";
 // Before a caption that closes a goal skipped by PgDn: it describes a goal that was not reached.
 inline constexpr std::string_view skipped_caption_prefix = "(skipped) ";
+// Before a caption that closes a goal judged not reached (a headless replay with no answer, a
+// handout's page): the caption describes the goal, not the screen under it.
+inline constexpr std::string_view not_reached_caption_prefix = "(not reached) ";
 
 // What became of a goal of the script (SPEC §3.1): apcs.log has a line for each, apcs grade a row.
 struct GoalOutcome {
@@ -157,7 +160,8 @@ private:
     // waited for.
     void settle();
     void after_change();
-    void tell_captions();
+    // The captions the script has reached told, those before caption `limit` only.
+    void tell_captions(std::size_t limit = static_cast<std::size_t>(-1));
     void end_caption();
     void wait_at_goal();
     // The goal m_next_goal checked again: its feedback on the message line. Whether it holds, or
@@ -174,14 +178,20 @@ private:
     GoalProgress open_goal_as_it_stands() const;
     void judge_open_goal(const GoalProgress& progress);
     std::size_t judging_end(std::size_t goal) const;
-    void judge_goals(std::size_t played);
+    // Headless: goals opened at their GOAL lines and judged, captions told between (see settle).
+    void settle_headless(std::size_t played);
+    void open_goal_headless();
+    bool judge_goal_headless(std::size_t played);
+    void say_goal_headless(std::string feedback, std::string briefly = {});
     void judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress);
     void skip_goal();
     void leave_exercise();
     // The goal waited at (at_goal, asking_to_leave).
     std::optional<std::size_t> waiting_goal() const;
-    // Whether caption `caption` closes a goal that PgDn skipped.
-    bool closes_skipped_goal(std::size_t caption) const;
+    // The verdict of the goal caption `caption` closes, if it closes one that PgDn skipped or that
+    // was judged not reached; the caption as shown, prefixed accordingly.
+    std::optional<GoalOutcome::Verdict> closed_goal_verdict(std::size_t caption) const;
+    std::string caption_text(std::size_t caption) const;
 
     // replay_recording.cpp
     void to_session(const KeyEvent& key);
@@ -272,6 +282,9 @@ private:
     // it is left; why a key that changed the staff did not move the in-between).
     GoalProgress m_waiting_progress;
     std::optional<StaffValues> m_waiting_staff;
+    // Headless: the keys played when a goal's feedback or verdict went on the message line, which
+    // keeps it until the next key (as the terminal keeps it at the goal).
+    std::optional<std::size_t> m_goal_said_at;
     std::vector<GoalOutcome> m_outcomes;
     std::vector<ScriptLine> m_script_lines;
     KeyRecording m_recording;
