@@ -26,7 +26,7 @@ Bitmap drawing_area_raster(const GraphicsScreen& screen)
 
 } // namespace
 
-TerminalPixels::TerminalPixels(Terminal& terminal, PixelDecision decision)
+TerminalPixels::TerminalPixels(TerminalDevice& terminal, PixelDecision decision)
     : m_terminal(terminal), m_protocol(decision.protocol), m_notice(std::move(decision.why_not))
 {
 }

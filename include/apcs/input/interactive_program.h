@@ -7,7 +7,7 @@
 
 namespace apcs {
 
-// What the one terminal loop (terminal_session.h) drives: the session (apcs) and a scene's player
+// What the one terminal loop (program_loop.h) drives: the session (apcs) and a scene's player
 // (apcs play). Keys in, screens out; no terminal and no clock: the loop calls tick() every
 // delay_ms() while animating(), and work() until busy() is false, reading keys in between.
 class InteractiveProgram {

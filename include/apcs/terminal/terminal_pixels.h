@@ -3,7 +3,7 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/raster/pixel_picture.h"
 #include "apcs/terminal/pixel_detection.h"
-#include "apcs/terminal/terminal.h"
+#include "apcs/terminal/terminal_device.h"
 
 #include <optional>
 #include <string>
@@ -18,12 +18,12 @@ struct PictureFrame {
 };
 
 // The drawing area of the graphics screens as a picture (--pixels, SPEC §7.2.1), sent through a
-// Terminal (which it does not own and which outlives it) after curses has drawn the characters
+// TerminalDevice (which it does not own and which outlives it) after curses has drawn the characters
 // around it: the whole picture after anything that repainted the terminal, else only the band of
 // cell rows that changed. Falls back to characters for good when the picture cannot be encoded.
 class TerminalPixels {
 public:
-    TerminalPixels(Terminal& terminal, PixelDecision decision);
+    TerminalPixels(TerminalDevice& terminal, PixelDecision decision);
 
     // The picture's place on a terminal of `size` for a graphics screen; nullopt where the screen
     // stays characters (pixels off, the terminal below 80x24, no cell size in pixels).
@@ -33,7 +33,7 @@ public:
     // terminal clear and repaint every cell.
     void before_show(const std::optional<PictureFrame>& frame);
     // After curses showed `screen` with `frame`'s rows blank (`repainted`: every cell was sent,
-    // Terminal::show): sends the picture, whole or its changed band.
+    // TerminalDevice::show): sends the picture, whole or its changed band.
     void show(const GraphicsScreen& screen, const PictureFrame& frame, bool repainted);
     // Why pictures are off, until a key is typed (clear_notice): one line for the message line;
     // empty when they are on or were not asked for.
@@ -41,7 +41,7 @@ public:
     void clear_notice() { m_notice.clear(); }
 
 private:
-    Terminal& m_terminal;
+    TerminalDevice& m_terminal;
     std::optional<TerminalPictureProtocol> m_protocol;
     std::string m_notice;
     // What is on the terminal: the picture last sent (whole or in bands) and its placement;
