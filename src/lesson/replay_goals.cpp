@@ -236,6 +236,10 @@ void ReplayDriver::settle_headless(std::size_t played)
     const std::vector<ScriptGoal>& goals = m_script.goals;
     if (m_goal_said_at && *m_goal_said_at < m_played)
         say_goal_headless({});
+    // On while an answer plays, before a goal opened or judged here marks its point or clears it
+    // and captions end over it.
+    const bool answering = m_next_goal > 0 && goals[m_next_goal - 1].answer_end > played;
+    m_session->mark_goal(answering ? goal_point(goals[m_next_goal - 1]) : std::nullopt);
     for (;;) {
         if (!m_open) {
             if (m_next_goal == goals.size() || goals[m_next_goal].before_event > played)
@@ -246,10 +250,6 @@ void ReplayDriver::settle_headless(std::size_t played)
             break;
     }
     tell_captions();
-    if (m_goal_said_at == m_played)
-        return; // the mark as the goal's feedback or verdict left it
-    const bool answering = m_next_goal > 0 && goals[m_next_goal - 1].answer_end > played;
-    m_session->mark_goal(answering ? goal_point(goals[m_next_goal - 1]) : std::nullopt);
 }
 
 // Goal m_next_goal's GOAL line reached: its task and the captions before it told first, ending as
@@ -277,8 +277,16 @@ bool ReplayDriver::judge_goal_headless(std::size_t played)
     const bool look = judging || played >= m_script.events.size() || !m_session->keeps_phase(m_script.events[played]);
     if (follow_open_goal(look) != GoalPath::left && !judging)
         return false;
+    const std::vector<ScriptGoal>& goals = m_script.goals;
     const std::size_t next = m_open->goal + 1;
-    tell_captions(next < m_script.goals.size() ? m_script.goals[next].captions_before - 1 : m_script.captions.size());
+    if (next == goals.size())
+        tell_captions();
+    else if (goals[next].captions_before > 0)
+        tell_captions(goals[next].captions_before - 1);
+    // A task no caption follows before the next goal's (two goals, no answer): its page now, with
+    // its feedback, not the verdict.
+    if (m_captions_told > 0 && m_captions_told == goals[m_open->goal].captions_before)
+        end_caption();
     const GoalProgress progress = open_goal_as_it_stands();
     judge_open_goal(progress);
     if (!progress.reached) {
@@ -329,7 +337,8 @@ void ReplayDriver::skip_goal()
 }
 
 // The verdict of the goal caption `caption` closes: a caption after the goal's GOAL line, reached
-// by its answer's end, that is not the task of a later goal; only a goal skipped or not reached.
+// by its answer's end, that is not the task of a later goal; only a goal skipped, or headless not
+// reached.
 std::optional<GoalOutcome::Verdict> ReplayDriver::closed_goal_verdict(std::size_t caption) const
 {
     const std::vector<ScriptGoal>& goals = m_script.goals;
@@ -338,9 +347,16 @@ std::optional<GoalOutcome::Verdict> ReplayDriver::closed_goal_verdict(std::size_
     });
     if (a_later_task)
         return std::nullopt;
+    // On a terminal a goal not reached leaves the replay (q and Y, its path accepted) or is judged
+    // after its closing caption was shown beside the goal reached; PgUp replays its answer: only a
+    // skip is said there.
+    const auto said = [&](GoalOutcome::Verdict verdict) {
+        return verdict == GoalOutcome::Verdict::skipped ||
+               (verdict == GoalOutcome::Verdict::not_reached && m_audience == ReplayAudience::headless);
+    };
     const auto closed = std::find_if(m_outcomes.begin(), m_outcomes.end(), [&](const GoalOutcome& outcome) {
         const ScriptGoal& goal = goals[outcome.goal];
-        return outcome.verdict != GoalOutcome::Verdict::reached && caption >= goal.captions_before &&
+        return said(outcome.verdict) && caption >= goal.captions_before &&
                m_script.captions[caption].before_event <= goal.answer_end;
     });
     return closed == m_outcomes.end() ? std::nullopt : std::optional(closed->verdict);

@@ -41,6 +41,7 @@ struct CaptionLog {
     std::vector<std::string> events;
     std::vector<std::string> reached;
     std::vector<std::string> ended;
+    std::vector<std::string> ended_captions; // as shown: "(not reached) ..." after a goal not reached
 };
 
 ReplayHooks logging_hooks(CaptionLog& log, const Session& session)
@@ -50,9 +51,10 @@ ReplayHooks logging_hooks(CaptionLog& log, const Session& session)
         log.events.push_back("reached " + std::to_string(index));
         log.reached.push_back(screen_text(session.screen(), GlyphSet::ascii));
     };
-    hooks.caption_ended = [&log](std::size_t index, const std::string&, const SessionScreen& screen,
+    hooks.caption_ended = [&log](std::size_t index, const std::string& caption, const SessionScreen& screen,
                                 const std::vector<std::string>&) {
         log.events.push_back("ended " + std::to_string(index));
+        log.ended_captions.push_back(caption);
         log.ended.push_back(screen_text(screen, GlyphSet::ascii));
     };
     return hooks;
@@ -114,6 +116,27 @@ TEST_CASE("captions with no keys between them end at once on the screen they are
     REQUIRE(log.ended[0].starts_with("Please keyin the KEY1 filename!\n_\n"));
     REQUIRE(log.ended[1] != log.reached[1]);
     REQUIRE(log.ended[2] == log.reached[2]);
+}
+
+TEST_CASE("headless, each task's page shows its goal's feedback and the caption closing a goal not reached says "
+          "so, two goals with no answer between them too",
+          "[lesson][handout][goal]")
+{
+    const KeyScript script = script_of("ENTER ENTER\nTEXT 0 90 100\nENTER\nTEXT way1.dat\nENTER ENTER\nSTART\n"
+                                       ";; the staff\n8\n"
+                                       ";; Task A\nGOAL VALUE TENSION 0.40 0.60\n"
+                                       ";; Task B\nGOAL VALUE BIAS 0.30 0.50\n"
+                                       ";; Both done\n");
+    const CaptionLog log = headless_captions(script);
+    REQUIRE(log.events == each_reached_then_ended(4));
+    CHECK(log.ended[0].find("GOAL") == std::string::npos);
+    CHECK(log.ended[1].find("\n GOAL: tension +0.00, want +0.40 to +0.60\n") != std::string::npos);
+    // On TENSION, a BIAS goal says where the line is (the terminal waiting there says the same).
+    CHECK(log.ended[2].find("\n GOAL: you are on TENSION; the goal is BIAS: Enter or Esc goes down a line\n") !=
+          std::string::npos);
+    CHECK(log.ended[3].find("\n GOAL not reached: bias +0.00, want +0.30 to +0.50\n") != std::string::npos);
+    CHECK(log.ended_captions ==
+          std::vector<std::string>{"the staff", "Task A", "Task B", std::string(not_reached_caption_prefix) + "Both done"});
 }
 
 TEST_CASE("a script without captions ends none", "[lesson][handout]")

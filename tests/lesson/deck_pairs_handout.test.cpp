@@ -191,6 +191,31 @@ TEST_CASE("an answer's handout shows its goal reached: no page says 'not reached
         INFO(entry.path().filename().string() << '\n' << page);
         CHECK(page.find("not reached") == std::string::npos);
         CHECK(page.find(" GOAL: ") == std::string::npos);
+        // The goal's point is marked only while its answer plays: no page shows it.
+        CHECK(page.find('@') == std::string::npos);
     }
     REQUIRE(pages == test::read_script(answer).captions.size());
+}
+
+TEST_CASE("on a terminal a caption closing a goal is never said 'not reached': PgUp replays the answer",
+          "[lesson][replay][deck][goal]")
+{
+    // The goal reached (its closing caption shown), then left and the path accepted: not reached;
+    // PgUp goes back to the closing caption, its answer played again.
+    const KeyScript script =
+        test::read_script(test::data_folder / "exercises" / "answers" / "exercise-1-tension-answer.keys");
+    test::Deck deck(script, "exercises");
+    for (const KeyEvent key : {KeyEvent::of(Key::page_down), KeyEvent::of(Key::page_down), KeyEvent::typed(U'L'),
+                               KeyEvent::typed(U'L'), KeyEvent::typed(U'L'), KeyEvent::typed(U'6'),
+                               KeyEvent::of(Key::escape), KeyEvent::typed(U'L'), KeyEvent::of(Key::enter),
+                               KeyEvent::of(Key::enter), KeyEvent::of(Key::enter), KeyEvent::of(Key::enter),
+                               KeyEvent::typed(U'N')})
+        deck.press(key);
+    REQUIRE_FALSE(deck.replay->goal_outcomes().empty());
+    REQUIRE(deck.replay->goal_outcomes()[0].verdict == GoalOutcome::Verdict::not_reached);
+    deck.press(KeyEvent::of(Key::page_up));
+    const SessionScreen shown = deck.replay->screen();
+    INFO(shown.caption);
+    REQUIRE_FALSE(shown.caption.empty());
+    REQUIRE_FALSE(shown.caption.starts_with(not_reached_caption_prefix));
 }

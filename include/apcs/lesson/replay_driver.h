@@ -189,7 +189,7 @@ private:
     // The goal waited at (at_goal, asking_to_leave).
     std::optional<std::size_t> waiting_goal() const;
     // The verdict of the goal caption `caption` closes, if it closes one that PgDn skipped or that
-    // was judged not reached; the caption as shown, prefixed accordingly.
+    // a headless replay judged not reached; the caption as shown, prefixed accordingly.
     std::optional<GoalOutcome::Verdict> closed_goal_verdict(std::size_t caption) const;
     std::string caption_text(std::size_t caption) const;
 
