@@ -121,7 +121,7 @@ TEST_CASE("a program that ends ends the loop with success, its last key's screen
     REQUIRE(loop.painted_counts() == std::vector<std::string>{"keys: 0"});
 }
 
-TEST_CASE("below 80x23 the screen says how large it must be and keys wait; back at 80x24 every cell is painted",
+TEST_CASE("below 80x23 the screen says how large it must be and keys wait, back at 80x24 every cell is painted",
           "[terminal][loop]")
 {
     Loop loop;
@@ -154,7 +154,7 @@ TEST_CASE("Ctrl-L clears the terminal and paints every cell again, and the progr
     REQUIRE(loop.terminal.shown_whole == std::vector<bool>{true, true});
 }
 
-TEST_CASE("an animation is ticked every delay_ms and painted each frame; a screen that did not change is not "
+TEST_CASE("an animation is ticked every delay_ms and painted each frame, a screen that did not change is not "
           "painted again",
           "[terminal][loop]")
 {
