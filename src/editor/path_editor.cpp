@@ -212,14 +212,14 @@ SessionPhase PathEditor::phase() const
                       m_mode);
 }
 
-KeyContext PathEditor::key_context() const
+PathEditor::State PathEditor::leaf() const
 {
     return std::visit(Overloaded{
-                          [](const ControlChoice&) { return KeyContext::control_choice; },
-                          [](const RegionPick&) { return KeyContext::region_pick; },
-                          [](const Staff& staff) { return staff.field ? KeyContext::value_field : KeyContext::staff; },
-                          [](const Waypoints&) { return KeyContext::waypoints; },
-                          [](const AskAgain&) { return KeyContext::adjust_again; },
+                          [](const ControlChoice&) { return State::control_choice; },
+                          [](const RegionPick& pick) { return pick.first ? State::region_last : State::region_first; },
+                          [](const Staff& staff) { return staff.field ? State::value_field : State::staff; },
+                          [](const Waypoints&) { return State::waypoints; },
+                          [](const AskAgain&) { return State::ask_again; },
                       },
                       m_mode);
 }
@@ -281,74 +281,40 @@ PathEditor::Outcome PathEditor::update(const Command& command)
     return outcome;
 }
 
-// lager's update: the mode takes the command and says which mode follows.
+// lager's update through the chart: the row the command meets in the editor's leaf acts on the
+// mode and says which follows (path_editor_chart.cpp).
 PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
     m_notice.clear();
     m_moved.clear();
     m_move_unmeasured.reset();
-    if (update_views(command))
-        return Outcome::editing;
-    const bool was_changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
-    Transition transition =
-        std::visit(Overloaded{
-                       [&](ControlChoice&) { return check_global_or_local_control(command); },
-                       [&](RegionPick& pick) { return scan_control_point(pick, command); },
-                       [&](Staff& staff) { return scan_parameters(staff, command); },
-                       [&](Waypoints& waypoints) { return update_waypoints(waypoints, command); },
-                       [&](AskAgain&) { return ask_adjusting(command); },
-                   },
-                   m_mode);
-    if (transition.next)
-        m_mode = std::move(*transition.next);
-    // Leaving the staff or the waypoint editor, the view is fitted to the path as it now stands.
-    const bool changing_path = std::holds_alternative<Staff>(m_mode) || std::holds_alternative<Waypoints>(m_mode);
-    if (was_changing_path && !changing_path)
-        fit_view();
-    return transition.outcome;
+    m_accepted = false;
+    const State from = leaf();
+    if (const EditorChart::Row* row = chart().row_for(*this, from, command))
+        chart().take(*this, from, *row, command, [](const PathEditor& editor) { return editor.leaf(); });
+    return m_accepted ? Outcome::accepted : Outcome::editing;
 }
 
-// K, T, G and Tab change what is shown, never the path (Tab chooses the waypoint editor's point
-// there).
-bool PathEditor::update_views(const Command& command)
+// K fits the view to the path and the key frames together, or to the path alone again (the
+// waypoint editor's view stays until it is left: its own row).
+void PathEditor::toggle_key_frames()
 {
-    const bool in_waypoints = std::holds_alternative<Waypoints>(m_mode);
-    const auto toggle = [](bool& shown) {
-        shown = !shown;
-        return true;
-    };
-    return std::visit(Overloaded{
-                          // K fits the view to the path and the key frames together, or to the
-                          // path alone again (the waypoint editor's view stays until it is left).
-                          [&](const command::ToggleKeyFrames&) {
-                              toggle(m_show_key_frames);
-                              if (!in_waypoints)
-                                  fit_view();
-                              return true;
-                          },
-                          [&](const command::Zoom&) { return !in_waypoints && zoom(); },
-                          [&](const command::ToggleGhost&) {
-                              toggle(m_show_ghost);
-                              m_notice = !m_show_ghost        ? "ghost hidden (O shows it)"
-                                         : m_picture->has_ghost() ? "ghost shown: the curve before the last change, dotted"
-                                                                 : "ghost shown after the next staff key or waypoint edit";
-                              return true;
-                          },
-                          [&](const command::PinReference&) {
-                              pin_or_unpin_reference();
-                              return true;
-                          },
-                          [&](const command::ToggleTangents&) { return toggle(m_show_tangents); },
-                          [&](const command::ToggleLawGraph&) { return toggle(m_show_law); },
-                          [&](const command::ChoosePoint& choose) {
-                              if (!in_waypoints)
-                                  m_tangent_point = wrapped_point(m_tangent_point, choose.by, points().size());
-                              return !in_waypoints;
-                          },
-                          // Every other command is the mode's.
-                          [](const auto&) { return false; },
-                      },
-                      command);
+    m_show_key_frames = !m_show_key_frames;
+    if (!std::holds_alternative<Waypoints>(m_mode))
+        fit_view();
+}
+
+void PathEditor::toggle_ghost()
+{
+    m_show_ghost = !m_show_ghost;
+    m_notice = !m_show_ghost              ? "ghost hidden (O shows it)"
+               : m_picture->has_ghost() ? "ghost shown: the curve before the last change, dotted"
+                                        : "ghost shown after the next staff key or waypoint edit";
+}
+
+void PathEditor::choose_tangent_point(const command::ChoosePoint& choose)
+{
+    m_tangent_point = wrapped_point(m_tangent_point, choose.by, points().size());
 }
 
 // C pins the curve as it is, labelled with the staff's values as they are (the region's, else the
@@ -367,62 +333,31 @@ void PathEditor::pin_or_unpin_reference()
     m_notice = fits_message_line(said) ? said : label + " pinned, dashed (C unpins)";
 }
 
-PathEditor::Transition PathEditor::check_global_or_local_control(const Command& command)
+// The arrow's first move, whichever way, brings it from the corner to the first point.
+void PathEditor::move_arrow(const command::ArrowMove& move)
 {
-    return std::visit(Overloaded{
-                          [&](const command::ChooseGlobal&) {
-                              m_log.log("global control");
-                              return Transition{start_staff(ControlRegion::whole(points()))};
-                          },
-                          [](const command::ChooseLocal&) { return Transition{RegionPick{}}; },
-                          [&](const command::OpenWaypoints&) { return Transition{open_waypoints()}; },
-                          [&](const command::Undo&) { return undo(); },
-                          // Check_GorL_Control waits for 8, 2 or W.
-                          [](const auto&) { return Transition{}; },
-                      },
-                      command);
+    RegionPick& pick = std::get<RegionPick>(m_mode);
+    const std::size_t last_index = points().size() - 1;
+    const auto target = pick.arrow ? static_cast<long long>(*pick.arrow) + move.points : 0LL;
+    pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
 }
 
-PathEditor::Transition PathEditor::scan_control_point(RegionPick& pick, const Command& command)
+// Enter at the region's last point: the arrow's point, at or after the first (Enter twice on one
+// control point picks it alone: KB's per-key control), or why not.
+void PathEditor::pick_last_point()
 {
-    const std::size_t last_index = points().size() - 1;
-    const auto pick_last = [&](std::size_t first, std::size_t last) {
-        if (last < first) {
-            m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
-            return Transition{};
-        }
-        // Enter twice on one control point picks it alone: KB's per-key control.
-        m_problem.clear();
-        m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
-                                : "local control: control points " + std::to_string(first + 1) + " to " +
-                                      std::to_string(last + 1));
-        return Transition{start_staff({first, last})};
-    };
-    return std::visit(
-        Overloaded{
-            [&](const command::ArrowMove& move) {
-                // The arrow's first move, whichever way, brings it from the corner to the first point.
-                const auto target = pick.arrow ? static_cast<long long>(*pick.arrow) + move.points : 0LL;
-                pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
-                return Transition{};
-            },
-            [&](const command::Back&) {
-                m_problem.clear();
-                return pick.first ? Transition{RegionPick{pick.arrow, std::nullopt}} : Transition{ControlChoice{}};
-            },
-            [&](const command::Accept&) {
-                if (!pick.arrow) // Enter before the arrow has moved points at nothing.
-                    return Transition{};
-                if (pick.first)
-                    return pick_last(*pick.first, *pick.arrow);
-                m_problem.clear();
-                return Transition{RegionPick{pick.arrow, pick.arrow}};
-            },
-            [&](const command::Undo&) { return undo(); },
-            // The arrow waits for a move, Enter or Esc.
-            [](const auto&) { return Transition{}; },
-        },
-        command);
+    const RegionPick pick = std::get<RegionPick>(m_mode);
+    const std::size_t first = *pick.first;
+    const std::size_t last = *pick.arrow;
+    if (last < first) {
+        m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
+        return;
+    }
+    m_problem.clear();
+    m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
+                            : "local control: control points " + std::to_string(first + 1) + " to " +
+                                  std::to_string(last + 1));
+    m_mode = start_staff({first, last});
 }
 
 PathEditor::Staff PathEditor::start_staff(ControlRegion region)
@@ -467,31 +402,19 @@ void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what, 
     m_picture->refresh(PathChange{region.first, count, count, what}, std::move(back));
 }
 
-// Scan_Tension_Value … Scan_Accerlation_Value: one line at a time; each key is one tnextpixel.
-PathEditor::Transition PathEditor::scan_parameters(Staff& staff, const Command& command)
+// A single control point starts no span of its own: its acceleration line is skipped.
+bool PathEditor::staff_line_is_last() const
 {
-    if (staff.field)
-        return update_value_field(staff, command);
-    return std::visit(Overloaded{
-                          [&](const command::StaffStep& step) {
-                              set_staff_value(staff, staff.staff[staff.line] + step.steps * m_setup.staff_step);
-                              return Transition{};
-                          },
-                          [&](const command::OpenValueField&) {
-                              staff.field.emplace();
-                              return Transition{};
-                          },
-                          [&](const command::Keep&) { return accept_staff_line(staff, LineEnding::kept); },
-                          [&](const command::Accept&) { return accept_staff_line(staff, LineEnding::accepted); },
-                          [&](const command::Undo&) { return undo(); },
-                          // The staff waits for a step, =, Enter or Esc.
-                          [](const auto&) { return Transition{}; },
-                      },
-                      command);
+    const Staff& staff = std::get<Staff>(m_mode);
+    const bool single_point = staff.region.first == staff.region.last;
+    return is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias);
 }
 
-PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding ending)
+// Enter or Esc on a staff line: its value logged, then the next line, or the question whether to
+// adjust again after the last.
+void PathEditor::end_staff_line(LineEnding ending)
 {
+    Staff& staff = std::get<Staff>(m_mode);
     const bool kept = ending == LineEnding::kept;
     if (kept) {
         set_staff_value(staff, staff.line_start_value);
@@ -501,63 +424,46 @@ PathEditor::Transition PathEditor::accept_staff_line(Staff& staff, LineEnding en
     m_log.log(std::string(staff_line_name(staff.line)) + " " + format_staff_value(staff.staff[staff.line]) +
               (kept ? " (kept)" : ""));
     m_picture->drop_ghost(); // the ghost lasts until the next line
-    // A single control point starts no span of its own: its acceleration line is skipped.
-    const bool single_point = staff.region.first == staff.region.last;
-    if (is_last_staff_line(staff.line) || (single_point && staff.line == StaffLine::bias))
-        return Transition{AskAgain{staff.region, staff.staff}};
+    if (staff_line_is_last()) {
+        m_mode = AskAgain{staff.region, staff.staff};
+        return;
+    }
     staff.line = next_staff_line(staff.line);
     staff.line_start_value = staff.staff[staff.line];
-    return Transition{};
 }
 
-// "=": the typed value sets the line like keys would; the line stays active.
-PathEditor::Transition PathEditor::update_value_field(Staff& staff, const Command& command)
+// "=" and Enter on a number: the typed value sets the line like keys would; the line stays active.
+void PathEditor::set_typed_value()
 {
-    const ValueField::Outcome outcome = staff.field->update(command);
-    if (outcome == ValueField::Outcome::editing)
-        return Transition{};
-    if (outcome == ValueField::Outcome::set) {
-        set_staff_value(staff, staff.field->value());
-        const std::string line(staff_line_name(staff.line));
-        m_log.log(line + " typed " + format_staff_value(staff.staff[staff.line]));
-        if (staff.field->clamped())
-            m_notice = line + " set to " + format_staff_value(staff.staff[staff.line]) + ": the staff runs from -1 to 1";
-    }
+    Staff& staff = std::get<Staff>(m_mode);
+    staff.field->submit();
+    set_staff_value(staff, staff.field->value());
+    const std::string line(staff_line_name(staff.line));
+    m_log.log(line + " typed " + format_staff_value(staff.staff[staff.line]));
+    if (staff.field->clamped())
+        m_notice = line + " set to " + format_staff_value(staff.staff[staff.line]) + ": the staff runs from -1 to 1";
     staff.field.reset();
-    return Transition{};
 }
 
-PathEditor::Transition PathEditor::ask_adjusting(const Command& command)
+void PathEditor::say_nothing_to_undo() { m_notice = "Nothing to undo: the path is as it was opened"; }
+
+bool PathEditor::last_edit_is_staff() const
 {
-    return std::visit(Overloaded{
-                          [&](const command::Yes&) {
-                              m_picture->drop_ghost();
-                              return Transition{ControlChoice{}};
-                          },
-                          [](const command::No&) { return Transition{std::nullopt, Outcome::accepted}; },
-                          [&](const command::Undo&) { return undo(); },
-                          // Ask_Adjusting waits for Y or N.
-                          [](const auto&) { return Transition{}; },
-                      },
-                      command);
+    return m_document->edit_count() > 0 && std::holds_alternative<StaffEdit>(m_document->edits().back());
 }
 
-PathEditor::Transition PathEditor::undo()
+// U with a change to take back: the last one, whichever it is.
+void PathEditor::undo()
 {
-    if (m_document->edit_count() == 0) {
-        m_notice = "Nothing to undo: the path is as it was opened";
-        return Transition{};
-    }
     const PathEdit change = m_document->take_last_edit();
     m_problem.clear();
-    Transition transition = std::visit([this](const auto& last) { return undo_change(last); }, change);
+    std::visit([this](const auto& last) { undo_change(last); }, change);
     m_notice += "; " + changes_text(m_document->edit_count()) + " left to undo";
     m_log.log(m_notice);
-    return transition;
 }
 
 // Back to the staff line the change was made on, with the staff as it was.
-PathEditor::Transition PathEditor::undo_change(const StaffEdit& change)
+void PathEditor::undo_change(const StaffEdit& change)
 {
     const PathChange::What what = runs_change_shape(change.points_before, points()[change.region.first].staff)
                                       ? PathChange::What::staff
@@ -567,11 +473,11 @@ PathEditor::Transition PathEditor::undo_change(const StaffEdit& change)
     reevaluate_region(change.region, what, std::move(back));
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
-    return Transition{Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt}};
+    m_mode = Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt};
 }
 
 // A waypoint edit is undone at the choice of control, where the editor was opened.
-PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
+void PathEditor::undo_change(const WaypointChange& change)
 {
     // The ghost: the path with the edit, as it was before U.
     take_back_waypoint_edit(*m_document, *m_picture, change);
@@ -583,7 +489,7 @@ PathEditor::Transition PathEditor::undo_change(const WaypointChange& change)
     }
     m_tangent_point = std::min(m_tangent_point, points().size() - 1);
     fit_view();
-    return Transition{ControlChoice{}};
+    m_mode = ControlChoice{};
 }
 
 PathEditor::Waypoints PathEditor::open_waypoints()
@@ -593,23 +499,22 @@ PathEditor::Waypoints PathEditor::open_waypoints()
     return Waypoints{WaypointEditor(*m_document, *m_picture, {m_picture->view(), step})};
 }
 
-PathEditor::Transition PathEditor::update_waypoints(Waypoints& waypoints, const Command& command)
+// Enter keeps the waypoint editor's changes, Esc takes them back (the path as it was when the
+// editor opened): either way the choice of control follows.
+void PathEditor::leave_waypoints(WaypointsLeft left)
 {
-    WaypointEditor& editor = waypoints.editor;
+    WaypointEditor& editor = waypoint_editor();
     const std::size_t changes = editor.change_count();
-    const WaypointEditor::Outcome outcome = editor.update(command);
-    if (outcome == WaypointEditor::Outcome::editing)
-        return Transition{};
-    // Esc has taken the editor's changes back: the path is as it was when the editor opened.
-    if (outcome == WaypointEditor::Outcome::kept) {
+    if (left == WaypointsLeft::changes_kept) {
         m_notice = "Waypoints: " + changes_text(changes) + " kept, " + std::to_string(points().size()) +
                    " control points";
     } else {
+        editor.discard();
         m_notice = "Waypoints: " + changes_text(changes) + " undone";
     }
     m_log.log(m_notice);
     m_tangent_point = std::min(m_tangent_point, points().size() - 1);
-    return Transition{ControlChoice{}};
+    m_mode = ControlChoice{};
 }
 
 std::optional<StaffValues> PathEditor::region_staff() const

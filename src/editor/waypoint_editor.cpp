@@ -22,46 +22,57 @@ WaypointEditor::WaypointEditor(PathDocument& document, PathPicture& picture, Set
     m_picture->box_region(ControlRegion{m_chosen, m_chosen});
 }
 
-WaypointEditor::Outcome WaypointEditor::update(const Command& command)
-{
-    const Outcome outcome = take_command(command);
-    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
-    return outcome;
-}
-
-WaypointEditor::Outcome WaypointEditor::take_command(const Command& command)
+// Every key starts afresh: what the last one said is gone, and the chosen point is boxed again.
+template <typename Edit>
+void WaypointEditor::taking(Edit edit)
 {
     m_problem.clear();
     m_notice.clear();
-    const auto editing = [](auto&& edit) {
-        edit();
-        return Outcome::editing;
-    };
-    return std::visit(
-        Overloaded{
-            [&](const command::ChoosePoint& choose) {
-                return editing([&] { m_chosen = wrapped_point(m_chosen, choose.by, points().size()); });
-            },
-            [&](const command::MovePoint& move) { return editing([&] { move_point(move); }); },
-            [&](const command::InsertPoint&) { return editing([&] { insert_point(); }); },
-            [&](const command::DeletePoint&) { return editing([&] { delete_point(); }); },
-            [&](const command::Undo&) { return editing([&] { undo(); }); },
-            [&](const command::Zoom&) { return editing([&] { zoom(); }); },
-            [](const command::Accept&) { return Outcome::kept; },
-            [&](const command::Back&) { return discard(); },
-            // The editor waits for Tab, a move, I, D, U, Z, Enter or Esc.
-            [](const auto&) { return Outcome::editing; },
-        },
-        command);
+    edit();
+    m_picture->box_region(ControlRegion{m_chosen, m_chosen});
 }
 
-WaypointEditor::Outcome WaypointEditor::discard()
+void WaypointEditor::choose(int by)
+{
+    taking([&] { m_chosen = wrapped_point(m_chosen, by, points().size()); });
+}
+
+void WaypointEditor::move(const command::MovePoint& move)
+{
+    taking([&] { move_point(move); });
+}
+
+void WaypointEditor::insert()
+{
+    taking([&] { insert_point(); });
+}
+
+void WaypointEditor::remove()
+{
+    taking([&] { delete_point(); });
+}
+
+void WaypointEditor::undo()
+{
+    taking([&] { undo_last(); });
+}
+
+void WaypointEditor::zoom()
+{
+    taking([&] { zoom_view(); });
+}
+
+void WaypointEditor::discard()
+{
+    taking([&] { discard_changes(); });
+}
+
+void WaypointEditor::discard_changes()
 {
     while (change_count() > 0)
         revert_last();
     // Nothing was kept: no curve before a change is left to show.
     m_picture->drop_ghost();
-    return Outcome::discarded;
 }
 
 void WaypointEditor::apply(const WaypointChange& change)
@@ -130,7 +141,7 @@ void WaypointEditor::move_point(const command::MovePoint& move)
     apply(change);
 }
 
-void WaypointEditor::undo()
+void WaypointEditor::undo_last()
 {
     if (change_count() == 0) {
         m_problem = "Nothing to undo in the waypoint editor";
@@ -139,7 +150,7 @@ void WaypointEditor::undo()
     revert_last();
 }
 
-void WaypointEditor::zoom()
+void WaypointEditor::zoom_view()
 {
     m_zoom_level = next_zoom_level(m_zoom_level);
     const int factor = 1 << m_zoom_level;

