@@ -1,7 +1,7 @@
 #include "apcs/editor/path_editor.h"
 
 // The editor's chart: every command the key map lets through in each of its leaves is a row here
-// or a written ignore (tests/editor/path_editor_chart.test.cpp walks them; the chart prints itself
+// or a written ignore (tests/input/charts.test.cpp walks them; the chart prints itself
 // to tests/golden/path_editor_chart.txt).
 namespace apcs {
 
@@ -9,9 +9,6 @@ namespace {
 
 using State = PathEditor::State;
 using Row = PathEditor::EditorChart::Row;
-
-template <typename Event>
-constexpr std::size_t on = command_index<Event>();
 
 } // namespace
 

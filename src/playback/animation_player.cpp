@@ -63,44 +63,36 @@ bool AnimationPlayer::playing() const
     return showing != nullptr && !showing->paused;
 }
 
-KeyContext AnimationPlayer::key_context() const
+AnimationPlayer::State AnimationPlayer::leaf() const
 {
-    return std::holds_alternative<Showing>(m_mode) ? KeyContext::animation : KeyContext::any_key_graphics;
-}
-
-AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
-{
-    m_notice.clear();
-    return std::visit(Overloaded{[&](Showing& showing) { return update_showing(showing, command); },
-                                 // The key map lets any key through after the last frame: it shows all frames.
-                                 [&](Stopped&) {
-                                     m_mode = Overlaid{};
-                                     m_log.log("showed all " + std::to_string(m_frames.frame_count()) +
-                                               " frames overlaid");
-                                     return Outcome::showing;
-                                 },
-                                 [](Overlaid&) { return Outcome::finished; }},
+    return std::visit(Overloaded{[](const Showing& showing) { return showing.paused ? State::paused : State::running; },
+                                 [](const Stopped&) { return State::stopped; },
+                                 [](const Overlaid&) { return State::overlaid; }},
                       m_mode);
 }
 
-AnimationPlayer::Outcome AnimationPlayer::update_showing(Showing& showing, const Command& command)
+// The row the command meets in the player's leaf (animation_player_chart.cpp).
+AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
 {
-    std::visit(Overloaded{[&](const command::StopAnimation&) { m_mode = Stopped{}; },
-                          [&](const command::Pause&) { showing.paused = !showing.paused; },
-                          [&](const command::Replay&) {
-                              m_frame = 0;
-                              showing.paused = false;
-                          },
-                          [&](const command::StepFrame& step) {
-                              showing.paused = true;
-                              m_frame = step.by < 0 ? (m_frame == 0 ? 0 : m_frame - 1)
-                                                    : std::min(m_frame + 1, m_frames.frame_count() - 1);
-                          },
-                          // The animation's key map binds no other command (help, pictures and quitting are
-                          // the overlays').
-                          [](const auto&) {}},
-              command);
-    return Outcome::showing;
+    m_notice.clear();
+    m_finished = false;
+    const State from = leaf();
+    if (const PlayerChart::Row* row = chart().row_for(*this, from, command))
+        chart().take(*this, from, *row, command, [](const AnimationPlayer& player) { return player.leaf(); });
+    return m_finished ? Outcome::finished : Outcome::showing;
+}
+
+// , and .: the frame before or after, paused there.
+void AnimationPlayer::step_frame(int by)
+{
+    m_mode = Showing{true};
+    m_frame = by < 0 ? (m_frame == 0 ? 0 : m_frame - 1) : std::min(m_frame + 1, m_frames.frame_count() - 1);
+}
+
+void AnimationPlayer::overlay_all_frames()
+{
+    m_mode = Overlaid{};
+    m_log.log("showed all " + std::to_string(m_frames.frame_count()) + " frames overlaid");
 }
 
 std::string AnimationPlayer::frame_label() const

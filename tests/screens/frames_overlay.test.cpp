@@ -238,7 +238,7 @@ TEST_CASE("the session's last screen is the overlay the pictures draw, with the 
     AnimationPlayer player(three_levels(), one_line(), {"key1.dat", "key2.dat"}, face_on, 100, log);
     while (player.playing())
         player.tick();
-    player.update(command::StopAnimation{});
+    player.update(command::Continue{}); // any key after the last frame (key map: Continue)
     const GraphicsScreen screen = player.view();
     const GraphicsScreen picture = three_levels_overlay();
     CHECK(screen.bitmap == picture.bitmap);

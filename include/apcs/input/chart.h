@@ -34,6 +34,10 @@ consteval std::size_t command_index()
         return command_index<Event, Index + 1>();
 }
 
+// A row's event: `on<command::StaffStep>`.
+template <typename Event>
+inline constexpr std::size_t on = command_index<Event>();
+
 template <typename Machine, typename State>
 struct ChartState {
     State state;

@@ -4,6 +4,7 @@
 #include "apcs/animation/graphic.h"
 #include "apcs/animation/view_transform.h"
 #include "apcs/raster/graphics_screen.h"
+#include "apcs/input/chart.h"
 #include "apcs/input/command.h"
 #include "apcs/screens/frames_overlay.h"
 #include "apcs/input/key_map.h"
@@ -27,6 +28,20 @@ namespace apcs {
 class AnimationPlayer {
 public:
     enum class Outcome { showing, finished };
+    // The player's states (its chart, animation_player_chart.cpp).
+    enum class State {
+        player,   // every state
+        showing,  // the frames one at a time
+        running,  // a frame a tick
+        paused,   // Space, or a frame stepped with , and .
+        stopped,  // the last frame (or Esc): a key overlays all frames
+        overlaid, // all frames: a key ends the session
+    };
+    using PlayerChart = Chart<AnimationPlayer, State>;
+    // Every row of the player: which command does what in which state.
+    static const PlayerChart& chart();
+    // The keys a leaf listens with.
+    static KeyContext key_context_of(State leaf);
 
     // `structure` gives the parts that draw each frame (the equalised KEY1); `key_names` name the
     // first and the last frame on the screen.
@@ -45,7 +60,9 @@ public:
 
     SessionPhase phase() const;
     bool playing() const;
-    KeyContext key_context() const;
+    KeyContext key_context() const { return key_context_of(leaf()); }
+    // The leaf of the chart the player is in.
+    State leaf() const;
 
     // Which frame is shown, as the files are numbered: "KEY1: key1.dat", "In-between 3 of 12:
     // inb003.dat", "KEY2: key2.dat"; for a scene (name_frames_by_scene) "Frame 3 of 60: car.scn".
@@ -78,12 +95,16 @@ private:
     struct Overlaid {};
     using Mode = std::variant<Showing, Stopped, Overlaid>;
 
-    Outcome update_showing(Showing& showing, const Command& command);
+    static PlayerChart make_chart();
+    void step_frame(int by);
+    void overlay_all_frames();
     std::string middle_frame_name() const;
     std::string message() const;
 
     Mode m_mode;
     std::size_t m_frame = 0; // the frame on the screen while showing or stopped
+    // The command taken ended the session (a key at the overlay).
+    bool m_finished = false;
 };
 
 } // namespace apcs
