@@ -45,34 +45,6 @@ std::string without_last_character(const std::string& input)
     return shorter;
 }
 
-// What a command does to the line being typed at a prompt: the answer when it ends the line.
-std::optional<std::string> edit_line(TextConsole& console, const Command& command)
-{
-    return std::visit(Overloaded{[&](const command::TypeCharacter& typed) -> std::optional<std::string> {
-                                     std::string input = console.input();
-                                     // A zero-width or control character would change the answer where nobody can see it.
-                                     if (input.size() < max_answer_bytes && cell_width(typed.character) > 0) {
-                                         append_utf8(input, typed.character);
-                                         console.set_input(input);
-                                     }
-                                     return std::nullopt;
-                                 },
-                                 [&](const command::EraseCharacter&) -> std::optional<std::string> {
-                                     console.set_input(without_last_character(console.input()));
-                                     return std::nullopt;
-                                 },
-                                 [&](const command::ClearLine&) -> std::optional<std::string> {
-                                     console.set_input("");
-                                     return std::nullopt;
-                                 },
-                                 [&](const command::SubmitLine&) -> std::optional<std::string> {
-                                     return trimmed(console.input());
-                                 },
-                                 // The key map lets no other command through to a text line.
-                                 [](const auto&) -> std::optional<std::string> { return std::nullopt; }},
-                      command);
-}
-
 } // namespace
 
 Session::Session(SessionSettings settings, SessionFiles& files)
@@ -177,40 +149,65 @@ void Session::dispatch_to_step(const Command& command)
         Overloaded{[&](step::Shaping& shaping) { return shaping.update(step_context, command); },
                    [&](step::Playing& playing) { return playing.update(step_context, command); },
                    [](step::Finished&) { return StepResult{}; },
-                   [&](auto& prompt) -> StepResult {
-                       if constexpr (requires { prompt.default_answer(step_context); }) {
-                           const std::optional<std::string> typed = typed_answer(command);
-                           if (!typed)
-                               return {};
-                           // An empty answer takes the thesis' example, and the console shows it as typed.
-                           const std::string answer = typed->empty() ? prompt.default_answer(step_context) : *typed;
-                           m_console.set_input(answer);
-                           m_console.commit_input();
-                           return prompt.submit(step_context, answer);
-                       } else {
-                           // Y, Enter or any key, as the question asks: the key map let only those through.
-                           return prompt.submit(step_context, {});
-                       }
+                   [&](auto&) -> StepResult {
+                       m_console_result = {};
+                       const ConsoleState leaf = console_leaf();
+                       if (const ConsoleChart::Row* row = console_chart().row_for(*this, leaf, command))
+                           console_chart().take(*this, leaf, *row, command,
+                                               [](const Session& session) { return session.console_leaf(); });
+                       return std::exchange(m_console_result, {});
                    }},
         m_step);
     follow(result);
 }
 
-// The line typed at a text prompt when `command` ends it; nullopt while it is being typed, and
-// for the answer ? alone, which asks for the help screen (SPEC §7.3) and is no answer. Esc on an
-// empty line asks "Quit APCS ? (Y/N)"; on a typed line it clears the line, as DOS did.
-std::optional<std::string> Session::typed_answer(const Command& command)
+void Session::type_into_line(char32_t character)
 {
-    if (std::holds_alternative<command::ClearLine>(command) && m_console.input().empty()) {
-        m_overlays.ask_quit(session_text::quit_apcs_question);
-        return std::nullopt;
+    std::string input = m_console.input();
+    // A zero-width or control character would change the answer where nobody can see it.
+    if (input.size() < max_answer_bytes && cell_width(character) > 0) {
+        append_utf8(input, character);
+        m_console.set_input(input);
     }
-    const std::optional<std::string> typed = edit_line(m_console, command);
-    if (typed != "?")
-        return typed;
-    m_console.set_input("");
-    m_overlays.open_help(KeyContext::text_line, empty_answer());
-    return std::nullopt;
+}
+
+void Session::erase_last_typed() { m_console.set_input(without_last_character(m_console.input())); }
+
+std::string Session::typed_answer() const { return trimmed(m_console.input()); }
+
+// Enter on a typed line: the answer, an empty line taking the prompt's (the console shows it as
+// typed), to the step, which says how it ended.
+void Session::submit_line()
+{
+    StepContext step_context = context();
+    const std::string typed = typed_answer();
+    m_console_result = std::visit(
+        [&](auto& prompt) -> StepResult {
+            if constexpr (requires { prompt.default_answer(step_context); }) {
+                const std::string answer = typed.empty() ? prompt.default_answer(step_context) : typed;
+                m_console.set_input(answer);
+                m_console.commit_input();
+                return prompt.submit(step_context, answer);
+            } else {
+                return {};
+            }
+        },
+        m_step);
+}
+
+// Y, Enter or any key, as the question asks: the key map lets only those through.
+void Session::answer_question()
+{
+    StepContext step_context = context();
+    m_console_result = std::visit(
+        [&](auto& question) -> StepResult {
+            if constexpr (requires { question.submit(step_context, std::string()); } &&
+                          !requires { question.default_answer(step_context); })
+                return question.submit(step_context, {});
+            else
+                return {};
+        },
+        m_step);
 }
 
 // The answer an empty line takes at the step's text prompt (its help names it); empty elsewhere.

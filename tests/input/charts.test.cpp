@@ -1,10 +1,13 @@
-// The charts of the path editor (path_editor_chart.cpp) and the animation player
-// (animation_player_chart.cpp): every command the key map lets through in each leaf, and the
+// The charts of the text console's steps (session_console_chart.cpp), the path editor
+// (path_editor_chart.cpp) and the animation player (animation_player_chart.cpp): every command the key map lets through in each leaf, and the
 // overlays hand to the step, meets a row or a written ignore; the walk fails when a row that alone
 // answers a command is removed; every row can be met; a state's last row for a command has no
-// guard; the chart as printed is the newcomer's map (tests/golden/NAME_chart.txt).
+// guard; the chart as printed, with what each command meets in each leaf, is the newcomer's map
+// (tests/golden/NAME_chart.txt): a row removed or shadowed changes it even where a row of a state
+// around would still answer.
 #include "apcs/editor/path_editor.h"
 #include "apcs/playback/animation_player.h"
+#include "apcs/session/session.h"
 
 #include "support/chart_walk.h"
 #include "support/golden.h"
@@ -24,7 +27,8 @@ void check_chart(const Chart<Machine, State>& chart, KeysOf keys_of, const std::
     REQUIRE(test::chart_gaps(chart, keys_of).empty());
     REQUIRE(test::check_rows_alone_leave_gaps(chart, keys_of) >= least_alone);
     test::check_rows_met_and_guards_end(chart);
-    test::check_golden(golden, chart.printed());
+    test::check_golden(golden, chart.printed() + "\nThe walk: what each command the keys send meets in each leaf\n" +
+                                   test::chart_walk_text(chart, keys_of));
 }
 
 } // namespace
@@ -41,4 +45,11 @@ TEST_CASE("the animation player's chart answers every command its keys send in e
           "[playback][chart]")
 {
     check_chart(AnimationPlayer::chart(), AnimationPlayer::key_context_of, "animation_player_chart.txt", 5);
+}
+
+TEST_CASE("the text console's chart answers every command its keys send in every leaf, each row can be met and "
+          "counts, and it prints as approved",
+          "[session][chart]")
+{
+    check_chart(Session::console_chart(), Session::key_context_of, "session_console_chart.txt", 5);
 }

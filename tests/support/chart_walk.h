@@ -8,6 +8,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,51 @@ std::vector<std::string> chart_gaps(const Chart<Machine, State>& chart, KeysOf k
         }
     }
     return missing;
+}
+
+// The walk written out, one line a leaf and command the key map sends there: the rows the command
+// meets, in the order their guards are tried ("staff --Accept: [the last line] -> ask_again, else
+// -> staff"), so that a row removed or shadowed changes the approved file even where a row of a
+// state around would still answer.
+template <typename Machine, typename State, typename KeysOf>
+std::string chart_walk_text(const Chart<Machine, State>& chart, KeysOf keys_of)
+{
+    std::string text;
+    for (const auto& state : chart.states()) {
+        if (!chart.is_leaf(state.state))
+            continue;
+        const KeyContext keys = keys_of(state.state);
+        std::vector<std::size_t> events;
+        for (const KeyBinding& binding : key_bindings()) {
+            const std::size_t event = binding.command.index();
+            Overlays overlays;
+            if (binding.contexts.contains(keys) &&
+                overlays.handle(keys, binding.command, {QuitAsks::question_first, {}}) == OverlayAnswer::step_command &&
+                std::find(events.begin(), events.end(), event) == events.end())
+                events.push_back(event);
+        }
+        for (const std::size_t event : events) {
+            text += std::string(state.name) + " + " + std::string(command_name(event)) + ":";
+            bool met = false;
+            for (std::optional<State> around = state.state; around && !met; around = chart.info(*around).parent)
+                for (const auto& row : chart.rows()) {
+                    if (row.from != *around || row.event != event)
+                        continue;
+                    text += " " + std::string(chart.info(row.from).name);
+                    if (row.guard)
+                        text += " [" + std::string(row.guard_name) + "]";
+                    text += row.ignores() ? " ignored" : " -> " + (row.to ? std::string(chart.info(*row.to).name)
+                                                                          : std::string("(stays)"));
+                    if (!row.guard) {
+                        met = true;
+                        break;
+                    }
+                    text += ", else";
+                }
+            text += met ? "\n" : " NOTHING\n";
+        }
+    }
+    return text;
 }
 
 // The chart's rows that alone answer their command in some leaf below them (no other row, nor a

@@ -24,8 +24,10 @@ public:
     static Input resize(TerminalSize size) { return {TerminalInput::resize, {}, size}; }
 
     std::deque<Input> inputs;
-    // Each read_key moves the clock on by this much (a key typed every `per_read`).
+    // A key read moves the clock on by this much (a key typed every `per_read`); a time-out by the
+    // wait asked; each look at the clock (now()) by `per_look`, the time work takes between them.
     std::chrono::milliseconds per_read{0};
+    std::chrono::milliseconds per_look{0};
     // What show() was given, in order, and whether it sent every cell.
     std::vector<CellGrid> shown;
     std::vector<bool> shown_whole;
@@ -40,9 +42,13 @@ public:
     TerminalInput read_key(int timeout_ms, KeyEvent& key) override
     {
         waits.push_back(timeout_ms);
+        if (inputs.empty()) {
+            if (timeout_ms < 0)
+                return TerminalInput::stop;
+            m_clock += std::chrono::milliseconds(timeout_ms);
+            return TerminalInput::timeout;
+        }
         m_clock += per_read;
-        if (inputs.empty())
-            return timeout_ms < 0 ? TerminalInput::stop : TerminalInput::timeout;
         const Input input = inputs.front();
         inputs.pop_front();
         key = input.key;
@@ -72,7 +78,11 @@ public:
     void send_picture(int, int, std::string_view) override {}
     void remove_pictures(TerminalPictureProtocol) override {}
 
-    std::chrono::steady_clock::time_point now() const override { return m_clock; }
+    std::chrono::steady_clock::time_point now() const override
+    {
+        m_clock += per_look;
+        return m_clock;
+    }
 
     // The text of a grid's row, blanks at its end cut.
     static std::string row_of(const CellGrid& grid, int row)
@@ -86,7 +96,7 @@ private:
     TerminalSize m_size{80, 24};
     TerminalSize m_shown_size{};
     bool m_whole_next = true;
-    std::chrono::steady_clock::time_point m_clock{};
+    mutable std::chrono::steady_clock::time_point m_clock{};
 };
 
 } // namespace apcs::test

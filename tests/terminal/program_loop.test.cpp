@@ -25,6 +25,7 @@ namespace {
 class KeyCounter final : public InteractiveProgram {
 public:
     int frames_left = 0;
+    int work_left = 0; // busy until it is done, a unit a work()
     int ticks = 0;
     std::vector<KeyEvent> handled;
 
@@ -41,6 +42,12 @@ public:
             ++m_revision;
         }
     }
+    bool busy() const override { return work_left > 0; }
+    void work() override
+    {
+        --work_left;
+        ++m_revision;
+    }
     bool finished() const override { return !handled.empty() && handled.back() == KeyEvent::typed(U'q'); }
     bool animating() const override { return frames_left > 0; }
     int delay_ms() const override { return 50; }
@@ -50,6 +57,7 @@ public:
         screen.text = CellGrid(80, 24);
         screen.text.put_text(0, 0, "keys: " + std::to_string(handled.size()));
         screen.text.put_text(0, 1, "frames left: " + std::to_string(frames_left));
+        screen.text.put_text(0, 3, "work left: " + std::to_string(work_left));
         return screen;
     }
     std::uint64_t screen_revision() const override { return m_revision; }
@@ -203,4 +211,19 @@ TEST_CASE("a lesson's PgDn through the loop paints at 80x24 the handout's page o
         below_badge += FakeTerminal::row_of(painted, row) + '\n';
     REQUIRE(below_badge == pages[1].substr(pages[1].find('\n') + 1));
     REQUIRE(FakeTerminal::row_of(painted, 0).find("caption 2 of") != std::string::npos);
+}
+
+TEST_CASE("a busy program works in slices of 30 ms of the terminal's clock, painted between them", "[terminal][loop]")
+{
+    // Each look at the clock takes 1 ms: a slice starts at a look, and each unit of work follows a
+    // look 1, 2, ... 29 ms after it; the 30th look ends the slice. 100 units: 29, 29, 29 and 13.
+    Loop loop;
+    loop.program.work_left = 100;
+    loop.terminal.per_look = std::chrono::milliseconds(1);
+    loop.run();
+    std::vector<std::string> painted;
+    for (const CellGrid& grid : loop.terminal.shown)
+        painted.push_back(FakeTerminal::row_of(grid, 3));
+    REQUIRE(painted ==
+            std::vector<std::string>{"work left: 100", "work left: 71", "work left: 42", "work left: 13", "work left: 0"});
 }

@@ -3,6 +3,7 @@
 #include "apcs/raster/png_encoder.h"
 #include "apcs/input/interactive_program.h"
 #include "apcs/formats/key_event.h"
+#include "apcs/input/chart.h"
 #include "apcs/input/overlays.h"
 #include "apcs/session/session_files.h"
 #include "apcs/session/session_model.h"
@@ -28,6 +29,24 @@ namespace apcs {
 class Session final : public InteractiveProgram {
 public:
     Session(SessionSettings settings, SessionFiles& files);
+
+    // The text console's steps as a chart (session_console_chart.cpp): a prompt's line being typed
+    // and answered, the questions that wait for Y, Enter or any key, and the split Esc stops.
+    // Which step an answer leads to is the session's graph (session_graph.cpp); the path screen
+    // and the animation are their own charts (PathEditor::chart, AnimationPlayer::chart).
+    enum class ConsoleState {
+        console,          // every text step
+        text_line,        // KEY1, KEY2, the view, a path file, its slopes
+        splitting,        // the path files being written
+        question,         // the questions
+        yes_question,     // "Press 'Y' to adjust the next path !"
+        enter_question,   // "Press <ENTER> to Stop the work !"
+        any_key_question, // "Press any key ..." on the console
+    };
+    using ConsoleChart = Chart<Session, ConsoleState>;
+    static const ConsoleChart& console_chart();
+    // The keys a leaf listens with.
+    static KeyContext key_context_of(ConsoleState leaf);
 
     void handle(const KeyEvent& event) override;
     void tick() override;
@@ -103,7 +122,17 @@ private:
     const SessionPath* path_wanting_room() const;
     KeyContext step_key_context() const;
     void dispatch_to_step(const Command& command);
-    std::optional<std::string> typed_answer(const Command& command);
+    // The text step on the screen as a leaf of the prompt chart.
+    ConsoleState console_leaf() const;
+    static ConsoleChart make_console_chart();
+    // The rows' actions: the line typed, the answer (an empty line: the prompt's) submitted, a
+    // question answered or the split stopped; what the step said, for follow().
+    void type_into_line(char32_t character);
+    void erase_last_typed();
+    // The line typed, without the blanks around it.
+    std::string typed_answer() const;
+    void submit_line();
+    void answer_question();
     std::string empty_answer();
     // Follows the transition table from the step on the screen for `result`.
     void follow(StepResult result);
@@ -125,6 +154,8 @@ private:
     std::string m_goal_feedback;
     std::string m_goal_briefly;
     std::uint64_t m_revision = 0;
+    // How the text step the last command answered ended (console_chart's rows), for follow().
+    StepResult m_console_result;
 };
 
 } // namespace apcs
