@@ -40,17 +40,6 @@ std::string text_line(const KeyEvent& key)
 void KeyRecording::add_key(const KeyEvent& key, bool typed_text)
 {
     m_entries.push_back({Entry::Kind::key, key, typed_text, {}});
-    ++m_key_count;
-}
-
-void KeyRecording::keep_keys(std::size_t keys)
-{
-    std::size_t seen = 0;
-    const auto cut = std::find_if(m_entries.begin(), m_entries.end(), [&](const Entry& entry) {
-        return entry.kind == Entry::Kind::key && seen++ == keys;
-    });
-    m_entries.erase(cut, m_entries.end());
-    m_key_count = std::min(m_key_count, keys);
 }
 
 std::string KeyRecording::text() const

@@ -11,18 +11,6 @@ namespace apcs {
 
 std::string path_file_name(std::size_t point_number) { return "ani" + std::to_string(point_number) + ".dat"; }
 
-std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2)
-{
-    const std::vector<Vec3> first = key1.all_points();
-    const std::vector<Vec3> second = key2.all_points();
-    const std::size_t count = std::min(first.size(), second.size());
-    std::vector<NamedText> files;
-    files.reserve(count);
-    for (std::size_t i = 0; i < count; ++i)
-        files.push_back(split_path_file(i + 1, first[i], second[i]));
-    return files;
-}
-
 NamedText split_path_file(std::size_t point_number, const Vec3& key1_point, const Vec3& key2_point)
 {
     DatFile path;

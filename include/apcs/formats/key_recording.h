@@ -23,10 +23,6 @@ public:
     void add_start() { m_entries.push_back({Entry::Kind::start, {}, false, {}}); }
     void add_caption(std::string text) { m_entries.push_back({Entry::Kind::caption, {}, false, std::move(text)}); }
     void add_goal(const ScriptGoal& goal) { m_entries.push_back({Entry::Kind::goal, {}, false, goal_line(goal)}); }
-    // Everything after the first `keys` keys gone (PgUp and Home replay from an earlier caption),
-    // the lines met before them kept.
-    void keep_keys(std::size_t keys);
-    std::size_t key_count() const { return m_key_count; }
     // One token a line, typed text as TEXT lines (a ';' typed alone: "TEXT ;").
     std::string text() const;
 
@@ -41,7 +37,6 @@ private:
     std::vector<ScriptInput> m_inputs;
     std::string m_options;
     std::vector<Entry> m_entries;
-    std::size_t m_key_count = 0;
 };
 
 } // namespace apcs

@@ -26,12 +26,10 @@ struct NamedText {
     std::string content;
 };
 
-// The thesis' split.c (SPEC §5.2): one path file per graphic point, aniK.dat holding KEY1 point K
-// and KEY2 point K (the keys equalised, so their counts are equal).
-std::vector<NamedText> split_path_files(const Graphic& key1, const Graphic& key2);
-
-// One of them: path file `point_number` (from 1) from its point in KEY1 and in KEY2. Made one at a
-// time, so that a split of 10^6 points never holds all its files' text in memory.
+// The thesis' split.c (SPEC §5.2) writes one path file per graphic point, aniK.dat holding KEY1
+// point K and KEY2 point K (the keys equalised, so their counts are equal): path file
+// `point_number` (from 1) from its point in KEY1 and in KEY2, made one at a time, so that a split
+// of 10^6 points never holds all its files' text in memory.
 NamedText split_path_file(std::size_t point_number, const Vec3& key1_point, const Vec3& key2_point);
 
 // "inb001.dat" … (three digits at least, more when there are over 999 in-betweens).
