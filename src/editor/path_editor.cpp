@@ -289,9 +289,7 @@ PathEditor::Outcome PathEditor::take_command(const Command& command)
     m_moved.clear();
     m_move_unmeasured.reset();
     m_accepted = false;
-    const State from = leaf();
-    if (const EditorChart::Row* row = chart().row_for(*this, from, command))
-        chart().take(*this, from, *row, command, [](const PathEditor& editor) { return editor.leaf(); });
+    chart().fire(*this, command, [](const PathEditor& editor) { return editor.leaf(); });
     return m_accepted ? Outcome::accepted : Outcome::editing;
 }
 
@@ -342,17 +340,13 @@ void PathEditor::move_arrow(const command::ArrowMove& move)
     pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
 }
 
-// Enter at the region's last point: the arrow's point, at or after the first (Enter twice on one
-// control point picks it alone: KB's per-key control), or why not.
+// Enter at the region's last point, the arrow at or after the first (Enter twice on one control
+// point picks it alone: KB's per-key control).
 void PathEditor::pick_last_point()
 {
     const RegionPick pick = std::get<RegionPick>(m_mode);
     const std::size_t first = *pick.first;
     const std::size_t last = *pick.arrow;
-    if (last < first) {
-        m_problem = "The last control point must come after the first (point " + std::to_string(first + 1) + ")";
-        return;
-    }
     m_problem.clear();
     m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
                             : "local control: control points " + std::to_string(first + 1) + " to " +

@@ -9,6 +9,9 @@ namespace {
 
 using State = PathEditor::State;
 using Row = PathEditor::EditorChart::Row;
+// The rows' lambdas: an action takes (E&, C), a guard (const E&, C).
+using E = PathEditor;
+using C = const Command&;
 
 } // namespace
 
@@ -37,7 +40,6 @@ KeyContext PathEditor::key_context_of(State leaf)
 
 PathEditor::EditorChart PathEditor::make_chart()
 {
-    using E = PathEditor;
     std::vector<EditorChart::StateInfo> states = {
         {State::path_screen, "path_screen", std::nullopt},
         {State::control_choice, "control_choice", State::path_screen},
@@ -62,8 +64,6 @@ PathEditor::EditorChart PathEditor::make_chart()
 // What is shown, never the path, in every mode (the waypoint editor's own rows first), and undo.
 std::vector<PathEditor::EditorChart::Row> PathEditor::screen_rows()
 {
-    using E = PathEditor;
-    using C = const Command&;
     return {
         {State::path_screen, on<command::ToggleKeyFrames>, {}, nullptr, "key frames shown or hidden, the view fitted",
          [](E& e, C) { e.toggle_key_frames(); }},
@@ -87,15 +87,12 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::screen_rows()
          [](E& e, C) { e.undo(); }, State::staff},
         {State::path_screen, on<command::Undo>, {}, nullptr, "the waypoint edit taken back, the view fitted",
          [](E& e, C) { e.undo(); }, State::control_choice},
-
     };
 }
 
 // Check_GorL_Control and Scan_Control_Point.
 std::vector<PathEditor::EditorChart::Row> PathEditor::region_rows()
 {
-    using E = PathEditor;
-    using C = const Command&;
     return {
         {State::control_choice, on<command::ChooseGlobal>, {}, nullptr, "global control: the staff on the whole path",
          [](E& e, C) {
@@ -136,18 +133,19 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::region_rows()
              const RegionPick& pick = std::get<RegionPick>(e.m_mode);
              return *pick.arrow < *pick.first;
          },
-         "said: the last must come after the first", [](E& e, C) { e.pick_last_point(); }},
+         "said: the last must come after the first",
+         [](E& e, C) {
+             e.m_problem = "The last control point must come after the first (point " +
+                           std::to_string(*std::get<RegionPick>(e.m_mode).first + 1) + ")";
+         }},
         {State::region_last, on<command::Accept>, {}, nullptr, "the region logged, the staff on it",
          [](E& e, C) { e.pick_last_point(); }, State::staff},
-
     };
 }
 
 // Scan_Parameters: the staff's lines, and the "=" field on one.
 std::vector<PathEditor::EditorChart::Row> PathEditor::staff_rows()
 {
-    using E = PathEditor;
-    using C = const Command&;
     return {
         {State::staff, on<command::StaffStep>, {}, nullptr, "the line's value stepped (one tnextpixel)",
          [](E& e, C c) {
@@ -181,15 +179,12 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::staff_rows()
          [](E& e, C) { std::get<Staff>(e.m_mode).field.reset(); }, State::staff},
         // The key map sends U there as typed text; the chart keeps undo from under an open field.
         {State::value_field, on<command::Undo>, {}, nullptr, "the field takes text keys only"},
-
     };
 }
 
 // The waypoint editor and Ask_Adjusting.
 std::vector<PathEditor::EditorChart::Row> PathEditor::waypoint_and_question_rows()
 {
-    using E = PathEditor;
-    using C = const Command&;
     return {
         {State::waypoints, on<command::ChoosePoint>, {}, nullptr, "another point chosen",
          [](E& e, C c) { e.waypoint_editor().choose(std::get<command::ChoosePoint>(c).by); }},

@@ -10,6 +10,18 @@
 // skipped or left.
 namespace apcs {
 
+namespace {
+
+// The goal as the student waiting at it sees it: its feedback on the message line, its point
+// marked while it does not hold.
+void show_standing(Session& session, const ScriptGoal& goal, const GoalProgress& progress)
+{
+    session.say_goal(goal_feedback(progress), goal_feedback_briefly(progress));
+    session.mark_goal(progress.reached ? std::nullopt : goal_point(goal));
+}
+
+} // namespace
+
 // On a terminal the replay settles after everything the session does; headless, before each key
 // (the moment the headless transcript has always printed a caption).
 void ReplayDriver::after_change()
@@ -126,8 +138,7 @@ ReplayDriver::GoalCheck ReplayDriver::check_waiting_goal()
     if (m_mode == Mode::at_goal && !progress.reached && staff && m_waiting_staff && staff != m_waiting_staff &&
         progress.value == m_waiting_progress.value)
         explain_unmoved(progress, goal, *m_session);
-    m_session->say_goal(goal_feedback(progress), goal_feedback_briefly(progress));
-    m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
+    show_standing(*m_session, goal, progress);
     const bool holds = progress.reached;
     m_waiting_progress = std::move(progress);
     m_waiting_staff = staff;
@@ -260,9 +271,8 @@ void ReplayDriver::open_goal_headless()
     tell_captions(goal.captions_before);
     m_open = OpenGoal{m_next_goal++, std::nullopt, {}, std::nullopt};
     follow_open_goal();
-    const GoalProgress progress = open_goal_as_it_stands();
-    say_goal_headless(goal_feedback(progress), goal_feedback_briefly(progress));
-    m_session->mark_goal(progress.reached ? std::nullopt : goal_point(goal));
+    show_standing(*m_session, goal, open_goal_as_it_stands());
+    m_goal_said_at = m_played; // until the next key
 }
 
 // The open goal judged if its path was left or its judging comes at `played`: the captions before
@@ -296,10 +306,11 @@ bool ReplayDriver::judge_goal_headless(std::size_t played)
     return true;
 }
 
-void ReplayDriver::say_goal_headless(std::string feedback, std::string briefly)
+// Headless, what the replay says of a goal stays on the message line until the next key.
+void ReplayDriver::say_goal_headless(std::string said)
 {
-    m_goal_said_at = feedback.empty() ? std::nullopt : std::optional<std::size_t>(m_played);
-    m_session->say_goal(std::move(feedback), std::move(briefly));
+    m_goal_said_at = said.empty() ? std::nullopt : std::optional<std::size_t>(m_played);
+    m_session->say_goal(std::move(said));
 }
 
 // apcs.log's line for the goal: "goal reached: tension +0.45 at key 12", "goal not reached: tension

@@ -76,9 +76,7 @@ AnimationPlayer::Outcome AnimationPlayer::update(const Command& command)
 {
     m_notice.clear();
     m_finished = false;
-    const State from = leaf();
-    if (const PlayerChart::Row* row = chart().row_for(*this, from, command))
-        chart().take(*this, from, *row, command, [](const AnimationPlayer& player) { return player.leaf(); });
+    chart().fire(*this, command, [](const AnimationPlayer& player) { return player.leaf(); });
     return m_finished ? Outcome::finished : Outcome::showing;
 }
 

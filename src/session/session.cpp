@@ -151,10 +151,8 @@ void Session::dispatch_to_step(const Command& command)
                    [](step::Finished&) { return StepResult{}; },
                    [&](auto&) -> StepResult {
                        m_console_result = {};
-                       const ConsoleState leaf = console_leaf();
-                       if (const ConsoleChart::Row* row = console_chart().row_for(*this, leaf, command))
-                           console_chart().take(*this, leaf, *row, command,
-                                               [](const Session& session) { return session.console_leaf(); });
+                       console_chart().fire(*this, command,
+                                            [](const Session& session) { return session.console_leaf(); });
                        return std::exchange(m_console_result, {});
                    }},
         m_step);

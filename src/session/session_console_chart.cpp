@@ -33,15 +33,14 @@ KeyContext Session::key_context_of(ConsoleState leaf)
     return KeyContext::text_line;
 }
 
+// The leaf that listens with the step's keys (a text prompt's, else a question's or the split's).
 Session::ConsoleState Session::console_leaf() const
 {
-    switch (step_key_context()) {
-    case KeyContext::splitting: return State::splitting;
-    case KeyContext::yes_to_go_on: return State::yes_question;
-    case KeyContext::enter_to_go_on: return State::enter_question;
-    case KeyContext::any_key: return State::any_key_question;
-    default: return State::text_line;
-    }
+    const KeyContext keys = step_key_context();
+    for (const State leaf : {State::splitting, State::yes_question, State::enter_question, State::any_key_question})
+        if (key_context_of(leaf) == keys)
+            return leaf;
+    return State::text_line;
 }
 
 Session::ConsoleChart Session::make_console_chart()

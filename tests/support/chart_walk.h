@@ -15,26 +15,33 @@
 
 namespace apcs::test {
 
+// The commands the key map sends in `keys` that the overlays hand to the step, each once, in the
+// key map's order.
+inline std::vector<std::size_t> step_events(KeyContext keys)
+{
+    std::vector<std::size_t> events;
+    for (const KeyBinding& binding : key_bindings()) {
+        const std::size_t event = binding.command.index();
+        Overlays overlays;
+        if (binding.contexts.contains(keys) &&
+            overlays.handle(keys, binding.command, {QuitAsks::question_first, {}}) == OverlayAnswer::step_command &&
+            std::find(events.begin(), events.end(), event) == events.end())
+            events.push_back(event);
+    }
+    return events;
+}
+
 // "staff --StaffStep" for each leaf and command that no row of `chart` answers; `keys_of(leaf)`
 // gives the key context the leaf listens with.
 template <typename Machine, typename State, typename KeysOf>
 std::vector<std::string> chart_gaps(const Chart<Machine, State>& chart, KeysOf keys_of)
 {
     std::vector<std::string> missing;
-    for (const auto& state : chart.states()) {
-        if (!chart.is_leaf(state.state))
-            continue;
-        const KeyContext keys = keys_of(state.state);
-        for (const KeyBinding& binding : key_bindings()) {
-            if (!binding.contexts.contains(keys))
-                continue;
-            Overlays overlays;
-            if (overlays.handle(keys, binding.command, {QuitAsks::question_first, {}}) != OverlayAnswer::step_command)
-                continue;
-            if (!chart.answers(state.state, binding.command.index()))
-                missing.push_back(std::string(state.name) + " --" + std::string(command_name(binding.command.index())));
-        }
-    }
+    for (const auto& state : chart.states())
+        if (chart.is_leaf(state.state))
+            for (const std::size_t event : step_events(keys_of(state.state)))
+                if (!chart.answers(state.state, event))
+                    missing.push_back(std::string(state.name) + " --" + std::string(command_name(event)));
     return missing;
 }
 
@@ -49,35 +56,19 @@ std::string chart_walk_text(const Chart<Machine, State>& chart, KeysOf keys_of)
     for (const auto& state : chart.states()) {
         if (!chart.is_leaf(state.state))
             continue;
-        const KeyContext keys = keys_of(state.state);
-        std::vector<std::size_t> events;
-        for (const KeyBinding& binding : key_bindings()) {
-            const std::size_t event = binding.command.index();
-            Overlays overlays;
-            if (binding.contexts.contains(keys) &&
-                overlays.handle(keys, binding.command, {QuitAsks::question_first, {}}) == OverlayAnswer::step_command &&
-                std::find(events.begin(), events.end(), event) == events.end())
-                events.push_back(event);
-        }
-        for (const std::size_t event : events) {
+        for (const std::size_t event : step_events(keys_of(state.state))) {
             text += std::string(state.name) + " + " + std::string(command_name(event)) + ":";
-            bool met = false;
-            for (std::optional<State> around = state.state; around && !met; around = chart.info(*around).parent)
-                for (const auto& row : chart.rows()) {
-                    if (row.from != *around || row.event != event)
-                        continue;
-                    text += " " + std::string(chart.info(row.from).name);
-                    if (row.guard)
-                        text += " [" + std::string(row.guard_name) + "]";
-                    text += row.ignores() ? " ignored" : " -> " + (row.to ? std::string(chart.info(*row.to).name)
-                                                                          : std::string("(stays)"));
-                    if (!row.guard) {
-                        met = true;
-                        break;
-                    }
+            const auto met = chart.candidates(state.state, event);
+            for (const auto* row : met) {
+                if (row != met.front())
                     text += ", else";
-                }
-            text += met ? "\n" : " NOTHING\n";
+                text += " " + std::string(chart.info(row->from).name);
+                if (row->guard)
+                    text += " [" + std::string(row->guard_name) + "]";
+                text += row->ignores() ? " ignored"
+                                       : " -> " + (row->to ? std::string(chart.info(*row->to).name) : std::string("(stays)"));
+            }
+            text += chart.answers(state.state, event) ? "\n" : " NOTHING\n";
         }
     }
     return text;

@@ -2,6 +2,7 @@
 
 #include "apcs/input/command.h"
 
+#include <algorithm>
 #include <cassert>
 #include <cstddef>
 #include <optional>
@@ -73,14 +74,29 @@ public:
     {
     }
 
-    // The row `command` meets in `leaf`: the leaf's first row for its event whose guard holds, else
-    // its parent's, up to the root; none when no state on the way has a row for it.
+    // The rows `event` may meet in `leaf`, in the order their guards are tried: the leaf's rows for
+    // it, then its parent's, up to the root, ending at the first without a guard (empty: none).
+    std::vector<const Row*> candidates(State leaf, std::size_t event) const
+    {
+        std::vector<const Row*> met;
+        for (std::optional<State> state = leaf; state; state = info(*state).parent)
+            for (const Row& row : m_rows) {
+                if (row.from != *state || row.event != event)
+                    continue;
+                met.push_back(&row);
+                if (!row.guard)
+                    return met;
+            }
+        return met;
+    }
+
+    // The row `command` meets in `leaf`: the first candidate whose guard holds; none when no state
+    // on the way has a row for it.
     const Row* row_for(const Machine& machine, State leaf, const Command& command) const
     {
-        for (std::optional<State> state = leaf; state; state = info(*state).parent)
-            for (const Row& row : m_rows)
-                if (row.from == *state && row.event == command.index() && (!row.guard || row.guard(machine, command)))
-                    return &row;
+        for (const Row* row : candidates(leaf, command.index()))
+            if (!row->guard || row->guard(machine, command))
+                return row;
         return nullptr;
     }
 
@@ -99,6 +115,15 @@ public:
                 info(*state).on_exit(machine);
     }
 
+    // `command` in the machine's leaf (`now`): the row it meets taken, if any.
+    template <typename Now>
+    void fire(Machine& machine, const Command& command, Now now) const
+    {
+        const State leaf = now(machine);
+        if (const Row* row = row_for(machine, leaf, command))
+            take(machine, leaf, *row, command, now);
+    }
+
     // Whether `outer` is `state` or one of its parents.
     bool encloses(State outer, State state) const
     {
@@ -108,36 +133,23 @@ public:
         return false;
     }
 
-    // Whether `event` meets a row in `leaf` whatever the guards say: a row of the leaf or of a
-    // state around it without a guard.
+    // Whether `event` meets a row in `leaf` whatever the guards say: its candidates end unguarded.
     bool answers(State leaf, std::size_t event) const
     {
-        for (std::optional<State> state = leaf; state; state = info(*state).parent)
-            for (const Row& row : m_rows)
-                if (row.from == *state && row.event == event && !row.guard)
-                    return true;
-        return false;
+        const std::vector<const Row*> met = candidates(leaf, event);
+        return !met.empty() && !met.back()->guard;
     }
 
-    // Whether row `index` can be met: some leaf, on the way up from it, reaches the row before an
-    // unguarded row for the same event.
+    // Whether row `index` can be met: it is a candidate in some leaf.
     bool reachable(std::size_t index) const
     {
         const Row& target = m_rows[index];
         for (const StateInfo& leaf : m_states) {
-            if (!is_leaf(leaf.state) || !encloses(target.from, leaf.state))
+            if (!is_leaf(leaf.state))
                 continue;
-            const Row* first_unguarded = nullptr;
-            for (std::optional<State> state = leaf.state; state && !first_unguarded; state = info(*state).parent)
-                for (const Row& row : m_rows)
-                    if (row.from == *state && row.event == target.event) {
-                        if (&row == &target)
-                            return true;
-                        if (!row.guard) {
-                            first_unguarded = &row;
-                            break;
-                        }
-                    }
+            const std::vector<const Row*> met = candidates(leaf.state, target.event);
+            if (std::find(met.begin(), met.end(), &target) != met.end())
+                return true;
         }
         return false;
     }

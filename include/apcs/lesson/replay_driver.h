@@ -182,7 +182,7 @@ private:
     void settle_headless(std::size_t played);
     void open_goal_headless();
     bool judge_goal_headless(std::size_t played);
-    void say_goal_headless(std::string feedback, std::string briefly = {});
+    void say_goal_headless(std::string said);
     void judged(std::size_t goal, GoalOutcome::Verdict verdict, const GoalProgress& progress);
     void skip_goal();
     void leave_exercise();
