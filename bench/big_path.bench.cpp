@@ -79,7 +79,7 @@ void staff_key(benchmark::State& state, Shape shape)
     PathEditor editor(long_path(static_cast<std::size_t>(state.range(0)), static_cast<Spacing>(state.range(2)), shape),
                       log);
     go_to_staff(editor, static_cast<KeyKind>(state.range(1)));
-    if (editor.phase() != SessionPhase::staff) {
+    if (editor.leaf() != PathEditor::State::staff) {
         state.SkipWithError("the editor is not on the staff: the key would change nothing");
         return;
     }
@@ -110,7 +110,7 @@ void staff_key_in_steps(benchmark::State& state, Shape shape)
                       log);
     go_to_staff(editor, static_cast<KeyKind>(state.range(1)));
     refine_all(editor);
-    if (editor.phase() != SessionPhase::staff) {
+    if (editor.leaf() != PathEditor::State::staff) {
         state.SkipWithError("the editor is not on the staff: the key would change nothing");
         return;
     }
@@ -145,7 +145,7 @@ void waypoint_key(benchmark::State& state, Shape shape)
     UnloggedSteps log;
     PathEditor editor(long_path(points, Spacing::nearest, shape), log);
     apply(editor, {command::OpenWaypoints{}, command::ChoosePoint{static_cast<int>(points / 2)}});
-    if (editor.phase() != SessionPhase::waypoints) {
+    if (editor.leaf() != PathEditor::State::waypoints) {
         state.SkipWithError("the waypoint editor is not open");
         return;
     }

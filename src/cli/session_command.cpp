@@ -136,7 +136,7 @@ std::size_t run_headless_session(ReplayDriver& replay, const Session& session, G
     std::string shown = screen_text(session.screen(), glyphs);
     std::size_t drawn = 1;
     bool shown_is_current = true;
-    SessionPhase shown_phase = session.phase();
+    std::string_view shown_title = session.step_title();
     const auto draw_current = [&] {
         if (!shown_is_current) {
             shown = screen_text(session.screen(), glyphs);
@@ -144,7 +144,7 @@ std::size_t run_headless_session(ReplayDriver& replay, const Session& session, G
         }
         shown_is_current = true;
     };
-    const auto print_shown = [&] { out << "--- " << phase_name(shown_phase) << '\n' << shown; };
+    const auto print_shown = [&] { out << "--- " << shown_title << '\n' << shown; };
     // Nobody can press Esc: each split runs to its end, and the animation's last frame ends its
     // step.
     IdleDrive drive;
@@ -157,12 +157,12 @@ std::size_t run_headless_session(ReplayDriver& replay, const Session& session, G
     drive.after_step = [&] {
         if (session.busy())
             return;
-        if (session.phase() != shown_phase) {
+        if (session.step_title() != shown_title) {
             assert(shown_is_current && "a key vouched to keep its step ended it");
             print_shown();
         }
         shown_is_current = false;
-        shown_phase = session.phase();
+        shown_title = session.step_title();
     };
     play_to_idle(replay, drive);
     draw_current();
@@ -354,7 +354,7 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
     if (!session.writes())
         kept.unwritten = session.writes().error();
     if (!session.finished())
-        err << "apcs: the key script ended at " << phase_name(session.phase()) << '\n';
+        err << "apcs: the key script ended at " << session.step_title() << '\n';
     if (!replay.goals())
         return report_bad_input(replay.goals().error(), err);
     if (!session.writes()) {

@@ -198,20 +198,6 @@ bool PathEditor::zoom()
     return true;
 }
 
-SessionPhase PathEditor::phase() const
-{
-    return std::visit(Overloaded{
-                          [](const ControlChoice&) { return SessionPhase::choose_control; },
-                          [](const RegionPick& pick) {
-                              return pick.first ? SessionPhase::pick_region_last : SessionPhase::pick_region_first;
-                          },
-                          [](const Staff&) { return SessionPhase::staff; },
-                          [](const Waypoints&) { return SessionPhase::waypoints; },
-                          [](const AskAgain&) { return SessionPhase::ask_again; },
-                      },
-                      m_mode);
-}
-
 PathEditor::State PathEditor::leaf() const
 {
     return std::visit(Overloaded{

@@ -2,7 +2,7 @@
 
 // The editor's chart: every command the key map lets through in each of its leaves is a row here
 // or a written ignore (tests/input/charts.test.cpp walks them; the chart prints itself
-// to tests/golden/path_editor_chart.txt).
+// to tests/golden/session_chart.txt, below the session's).
 namespace apcs {
 
 namespace {
@@ -15,43 +15,24 @@ using C = const Command&;
 
 } // namespace
 
-const PathEditor::EditorChart& PathEditor::chart()
-{
-    static const EditorChart chart = make_chart();
-    return chart;
-}
-
-KeyContext PathEditor::key_context_of(State leaf)
-{
-    switch (leaf) {
-    case State::region_pick:
-    case State::region_first:
-    case State::region_last: return KeyContext::region_pick;
-    case State::staff: return KeyContext::staff;
-    case State::value_field: return KeyContext::value_field;
-    case State::waypoints: return KeyContext::waypoints;
-    case State::ask_again: return KeyContext::adjust_again;
-    case State::path_screen:
-    case State::control_choice:
-    case State::changing_path: break;
-    }
-    return KeyContext::control_choice;
-}
+const PathEditor::EditorChart& PathEditor::chart() { return EditorChart::once<&make_chart>(); }
 
 PathEditor::EditorChart PathEditor::make_chart()
 {
     std::vector<EditorChart::StateInfo> states = {
         {State::path_screen, "path_screen", std::nullopt},
-        {State::control_choice, "control_choice", State::path_screen},
-        {State::region_pick, "region_pick", State::path_screen},
-        {State::region_first, "region_first", State::region_pick},
-        {State::region_last, "region_last", State::region_pick},
-        {State::changing_path, "changing_path", State::path_screen, "the view fitted to the path as it now stands",
+        {State::control_choice, "control_choice", State::path_screen, KeyContext::control_choice,
+         "step 3: global or local control"},
+        {State::region_pick, "region_pick", State::path_screen, KeyContext::region_pick},
+        {State::region_first, "region_first", State::region_pick, {}, "step 3: first control point of the region"},
+        {State::region_last, "region_last", State::region_pick, {}, "step 3: last control point of the region"},
+        {State::changing_path, "changing_path", State::path_screen, {}, {}, "the view fitted to the path as it now stands",
          [](E& e) { e.fit_view(); }},
-        {State::staff, "staff", State::changing_path},
-        {State::value_field, "value_field", State::changing_path},
-        {State::waypoints, "waypoints", State::changing_path},
-        {State::ask_again, "ask_again", State::path_screen},
+        {State::staff, "staff", State::changing_path, KeyContext::staff, "step 4: four-line staff"},
+        // The field is a line of the staff: a transcript names the staff.
+        {State::value_field, "value_field", State::changing_path, KeyContext::value_field, "step 4: four-line staff"},
+        {State::waypoints, "waypoints", State::changing_path, KeyContext::waypoints, "step 3: waypoint editor"},
+        {State::ask_again, "ask_again", State::path_screen, KeyContext::adjust_again, "step 5: adjust again"},
     };
     std::vector<Row> rows;
     for (std::vector<Row> (*part)() : {screen_rows, region_rows, staff_rows, waypoint_and_question_rows}) {

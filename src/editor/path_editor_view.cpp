@@ -130,8 +130,7 @@ PathEditor::Look PathEditor::look() const
     const PathScreenContent content = screen_content(MoveText::left_unmeasured);
     return Look{m_document->revision(),
                 m_picture->revision(),
-                phase(),
-                key_context(),
+                leaf(),
                 content.message,
                 region_staff(),
                 content.active_line,

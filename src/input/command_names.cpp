@@ -16,8 +16,7 @@ constexpr std::array<std::string_view, 34> names = {
     "StopAnimation", "Pause",          "Replay",         "StepFrame",
 };
 static_assert(names.size() == std::variant_size_v<Command>, "a name for every command");
-static_assert(command_index<command::StepFrame>() == 33 && command_index<command::Undo>() == 23 &&
-                  command_index<command::OpenValueField>() == 18,
+static_assert(on<command::StepFrame> == 33 && on<command::Undo> == 23 && on<command::OpenValueField> == 18,
               "names in Command's order");
 
 } // namespace

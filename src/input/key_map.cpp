@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <array>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 namespace apcs {
@@ -321,6 +323,43 @@ CellGrid key_help_screen(std::string_view what, KeyContext context, std::string_
     grid.put_text(0, ctrl_keys_row, "  Ctrl-L redraws the screen; Ctrl-C ends APCS at once (every file stays whole).");
     grid.put_text(0, rows - 1, "Any key closes this help.");
     return grid;
+}
+
+std::string_view key_context_name(KeyContext context)
+{
+    switch (context) {
+    case KeyContext::text_line: return "text_line";
+    case KeyContext::yes_to_go_on: return "yes_to_go_on";
+    case KeyContext::enter_to_go_on: return "enter_to_go_on";
+    case KeyContext::any_key: return "any_key";
+    case KeyContext::splitting: return "splitting";
+    case KeyContext::any_key_graphics: return "any_key_graphics";
+    case KeyContext::control_choice: return "control_choice";
+    case KeyContext::region_pick: return "region_pick";
+    case KeyContext::staff: return "staff";
+    case KeyContext::value_field: return "value_field";
+    case KeyContext::waypoints: return "waypoints";
+    case KeyContext::adjust_again: return "adjust_again";
+    case KeyContext::animation: return "animation";
+    case KeyContext::quit_question: return "quit_question";
+    case KeyContext::help_screen: return "help_screen";
+    case KeyContext::finished: return "finished";
+    }
+    return "?";
+}
+
+bool stays_in_step(KeyContext context, const Command& command)
+{
+    const auto is = [&command]<typename... Kinds>(Kinds...) { return (std::holds_alternative<Kinds>(command) || ...); };
+    using namespace command;
+    switch (context) {
+    case KeyContext::text_line:
+    case KeyContext::value_field: return is(TypeCharacter{}, EraseCharacter{});
+    case KeyContext::staff: return is(StaffStep{});
+    case KeyContext::region_pick: return is(ArrowMove{});
+    case KeyContext::waypoints: return is(ChoosePoint{}, MovePoint{}, InsertPoint{}, DeletePoint{}, Undo{}, Zoom{});
+    default: return false;
+    }
 }
 
 } // namespace apcs

@@ -1,6 +1,5 @@
 #include "apcs/lesson/replay_driver.h"
 
-#include "apcs/input/session_phase.h"
 
 #include <algorithm>
 #include <utility>
@@ -39,7 +38,7 @@ ReplayState ReplayDriver::state() const
     case Mode::deck:
     case Mode::step_held: break;
     }
-    if (m_session->phase() == SessionPhase::animating) {
+    if (m_session->showing_frames()) {
         if (!m_session->animating())
             return ReplayState::animation_paused;
         return m_mode == Mode::step_held ? ReplayState::animation_step_held : ReplayState::animation_playing;
@@ -60,7 +59,7 @@ bool ReplayDriver::playing() const
 
 bool ReplayDriver::session_idle() const
 {
-    return !m_session->working() && !m_session->animating() && m_session->phase() != SessionPhase::animating;
+    return !m_session->working() && !m_session->animating() && !m_session->showing_frames();
 }
 
 bool ReplayDriver::script_ready() const

@@ -292,4 +292,11 @@ std::string_view replay_action_name(ReplayAction action)
     return names[static_cast<std::size_t>(action)];
 }
 
+std::string_view replay_guard_name(ReplayGuard guard)
+{
+    constexpr std::array<std::string_view, 7> names{"always", "paced", "at once", "on Space", "not on Space",
+                                                    "typing", "not typing"};
+    return names[static_cast<std::size_t>(guard)];
+}
+
 } // namespace apcs

@@ -49,14 +49,6 @@ AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::a
               " ms each");
 }
 
-SessionPhase AnimationPlayer::phase() const
-{
-    return std::visit(Overloaded{[](const Showing&) { return SessionPhase::animating; },
-                                 [](const Stopped&) { return SessionPhase::animation_done; },
-                                 [](const Overlaid&) { return SessionPhase::overlay; }},
-                      m_mode);
-}
-
 bool AnimationPlayer::playing() const
 {
     const auto* showing = std::get_if<Showing>(&m_mode);

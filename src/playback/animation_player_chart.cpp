@@ -1,9 +1,9 @@
 #include "apcs/playback/animation_player.h"
 
 // The player's chart: every command the key map lets through in each of its leaves is a row here
-// (tests/input/charts.test.cpp walks them; the chart prints itself to
-// tests/golden/animation_player_chart.txt). The clock's ticks are not commands: tick() moves the
-// frames, and stops at the last.
+// (tests/input/charts.test.cpp walks them; the chart prints itself to tests/golden/session_chart.txt,
+// below the session's). The clock's ticks are not commands: tick() moves the frames, and stops at
+// the last.
 namespace apcs {
 
 namespace {
@@ -12,36 +12,19 @@ using State = AnimationPlayer::State;
 
 } // namespace
 
-const AnimationPlayer::PlayerChart& AnimationPlayer::chart()
-{
-    static const PlayerChart chart = make_chart();
-    return chart;
-}
-
-KeyContext AnimationPlayer::key_context_of(State leaf)
-{
-    switch (leaf) {
-    case State::player:
-    case State::showing:
-    case State::running:
-    case State::paused: return KeyContext::animation;
-    case State::stopped:
-    case State::overlaid: break;
-    }
-    return KeyContext::any_key_graphics;
-}
+const AnimationPlayer::PlayerChart& AnimationPlayer::chart() { return PlayerChart::once<&make_chart>(); }
 
 AnimationPlayer::PlayerChart AnimationPlayer::make_chart()
 {
     using P = AnimationPlayer;
     using C = const Command&;
     std::vector<PlayerChart::StateInfo> states = {
-        {State::player, "player", std::nullopt},
-        {State::showing, "showing", State::player},
+        {State::player, "player", std::nullopt, KeyContext::any_key_graphics},
+        {State::showing, "showing", State::player, KeyContext::animation, "step 6: animation"},
         {State::running, "running", State::showing},
         {State::paused, "paused", State::showing},
-        {State::stopped, "stopped", State::player},
-        {State::overlaid, "overlaid", State::player},
+        {State::stopped, "stopped", State::player, {}, "step 6: animation done"},
+        {State::overlaid, "overlaid", State::player, {}, "step 6: all frames"},
     };
     std::vector<PlayerChart::Row> rows = {
         {State::showing, on<command::StopAnimation>, {}, nullptr, "the frame shown stays",

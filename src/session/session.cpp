@@ -3,12 +3,12 @@
 #include "apcs/formats/numbered_files.h"
 #include "apcs/base/overloaded.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/session/session_graph.h"
 #include "apcs/session/session_pictures.h"
 #include "apcs/screens/curve_raster.h"
 #include "apcs/screens/session_text.h"
 
 #include <algorithm>
+#include <cassert>
 #include <utility>
 
 namespace apcs {
@@ -60,20 +60,16 @@ StepContext Session::context()
     return {m_settings, m_files, m_model, m_console, m_notice};
 }
 
-SessionPhase Session::phase() const
-{
-    return std::visit([](const auto& step) { return step.phase(); }, m_step);
-}
-
 bool Session::animating() const
 {
     const auto* playing = std::get_if<step::Playing>(&m_step);
     return playing != nullptr && playing->player.playing();
 }
 
-KeyContext Session::step_key_context() const
+bool Session::showing_frames() const
 {
-    return std::visit([](const auto& step) { return step.key_context(); }, m_step);
+    const auto* playing = std::get_if<step::Playing>(&m_step);
+    return playing != nullptr && AnimationPlayer::chart().encloses(AnimationPlayer::State::showing, playing->player.leaf());
 }
 
 bool Session::takes_typed_text() const
@@ -84,9 +80,9 @@ bool Session::takes_typed_text() const
 
 bool Session::keeps_phase(const KeyEvent& event) const
 {
-    const KeyContext keys = m_overlays.key_context(step_key_context());
+    const KeyContext keys = key_context();
     const std::optional<Command> command = command_for(keys, event);
-    return !command || stays_in_phase(keys, *command);
+    return !command || stays_in_step(keys, *command);
 }
 
 void Session::handle(const KeyEvent& event)
@@ -127,37 +123,26 @@ void Session::mark_goal(std::optional<Vec3> point)
 
 void Session::take_key(const KeyEvent& event)
 {
-    const KeyContext keys = m_overlays.key_context(step_key_context());
-    const std::optional<Command> command = command_for(keys, event);
+    const std::optional<Command> command = command_for(key_context(), event);
     if (!command)
         return;
     m_notice.clear();
-    // Only an unsaved path is worth a question; elsewhere every file is already written.
-    const QuitAsks quit_asks = std::holds_alternative<step::Shaping>(m_step) ? QuitAsks::question_first : QuitAsks::at_once;
-    switch (m_overlays.handle(keys, *command, {quit_asks, empty_answer()})) {
-    case OverlayAnswer::step_command: return dispatch_to_step(*command);
-    case OverlayAnswer::handled: return;
-    case OverlayAnswer::save_picture: return save_picture();
-    case OverlayAnswer::quit: return quit();
-    }
+    m_step_result = {};
+    chart().fire(*this, *command, [](const Session& session) { return session.leaf(); });
+    follow(std::exchange(m_step_result, {}));
 }
 
-void Session::dispatch_to_step(const Command& command)
+// A command the path screen or the animation takes by its own chart, through its step.
+void Session::update_step(const Command& command)
 {
     StepContext step_context = context();
-    const StepResult result = std::visit(
-        Overloaded{[&](step::Shaping& shaping) { return shaping.update(step_context, command); },
-                   [&](step::Playing& playing) { return playing.update(step_context, command); },
-                   [](step::Finished&) { return StepResult{}; },
-                   [&](auto&) -> StepResult {
-                       m_console_result = {};
-                       console_chart().fire(*this, command,
-                                            [](const Session& session) { return session.console_leaf(); });
-                       return std::exchange(m_console_result, {});
-                   }},
-        m_step);
-    follow(result);
+    if (auto* shaping = std::get_if<step::Shaping>(&m_step))
+        m_step_result = shaping->update(step_context, command);
+    else if (auto* playing = std::get_if<step::Playing>(&m_step))
+        m_step_result = playing->update(step_context, command);
 }
+
+void Session::open_help() { m_overlays.open_help(step_key_context(), empty_answer()); }
 
 void Session::type_into_line(char32_t character)
 {
@@ -179,7 +164,7 @@ void Session::submit_line()
 {
     StepContext step_context = context();
     const std::string typed = typed_answer();
-    m_console_result = std::visit(
+    m_step_result = std::visit(
         [&](auto& prompt) -> StepResult {
             if constexpr (requires { prompt.default_answer(step_context); }) {
                 const std::string answer = typed.empty() ? prompt.default_answer(step_context) : typed;
@@ -197,7 +182,7 @@ void Session::submit_line()
 void Session::answer_question()
 {
     StepContext step_context = context();
-    m_console_result = std::visit(
+    m_step_result = std::visit(
         [&](auto& question) -> StepResult {
             if constexpr (requires { question.submit(step_context, std::string()); } &&
                           !requires { question.default_answer(step_context); })
@@ -225,20 +210,17 @@ std::string Session::empty_answer()
 void Session::follow(StepResult result)
 {
     while (result.outcome != StepOutcome::stay) {
+        const bool followed = graph().fire(*this, result, [](const Session& session) { return session.step_leaf(); });
+        assert(followed && "a step ended in a way the steps' graph does not know");
         StepContext step_context = context();
-        std::optional<Step> next = next_step(m_step, result.outcome, step_context);
-        if (!next) {
-            // A row missing from the graph (an assert in debug builds): say so, never drop a
-            // refusal unread.
-            m_files.log("no step follows " + std::string(phase_name(phase())) + " on outcome " +
-                        std::to_string(static_cast<int>(result.outcome)));
+        if (!followed) {
+            // Never drop a refusal unread.
+            m_files.log("no step follows " + std::string(step_title()) + " on " +
+                        std::string(StepGraph::event_name(ChartEvents<StepResult>::index(result))));
             if (!result.problem.empty())
                 step_context.say(result.problem);
             return;
         }
-        // Steps that keep a reference (to the log) cannot be assigned: each is made in place.
-        std::visit([this](auto&& made) { m_step.emplace<std::decay_t<decltype(made)>>(std::move(made)); },
-                   std::move(*next));
         const std::string problem = std::move(result.problem);
         result = std::visit(
             [&](auto& step) -> StepResult {
@@ -314,7 +296,7 @@ void Session::work()
 SessionScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
-        return {false, key_help_screen(phase_name(phase()), help->keys, help->empty_answer), {}};
+        return {false, key_help_screen(step_title(), help->keys, help->empty_answer), {}};
     return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point, {m_goal_feedback, m_goal_briefly})); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
@@ -380,7 +362,8 @@ void Session::save_picture()
 
 void Session::quit()
 {
-    m_files.log("quit at " + std::string(phase_name(phase())));
+    m_files.log("quit at " + std::string(step_title()));
+    m_overlays.close();
     StepContext step_context = context();
     if (auto* splitting = std::get_if<step::Splitting>(&m_step))
         static_cast<void>(splitting->close(step_context));
@@ -413,7 +396,7 @@ std::uint64_t Session::key_work() const { return 1 + std::uint64_t{largest_path(
 
 std::uint64_t Session::key_work(const KeyEvent& event) const
 {
-    if (m_overlays.key_context(step_key_context()) != KeyContext::waypoints || !keeps_phase(event))
+    if (key_context() != KeyContext::waypoints || !keeps_phase(event))
         return key_work();
     const std::size_t largest = largest_path(m_model, path_editor());
     return 1 + 2 * std::uint64_t{CurveRaster::block_segments(largest)} + largest / 64;

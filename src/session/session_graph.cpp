@@ -1,87 +1,83 @@
-// The session's whole graph in one table (boost-ext/sml's make_transition_table is the model):
-// the step on the screen, how it ended, the step that follows. How each step is made from the one
-// before it is that step's `after` (session_steps.h): a row without one does not compile.
-#include "apcs/session/session_graph.h"
+// The steps' graph, a chart whose events are how a step ended (boost-ext/sml's make_transition_table
+// is the model): the step on the screen, its outcome, the step that follows. How each step is made
+// from the one before it is that step's `after` (session_steps.h): a row without one does not
+// compile. Quitting (q, or Y to a quit question) goes from any step to the end by the session's
+// chart (session_chart.cpp).
+#include "apcs/session/session.h"
 
-#include <algorithm>
-#include <cassert>
+#include "step_leaves.h"
+
+#include <array>
 #include <type_traits>
 
 namespace apcs {
 
-namespace {
-
-template <typename T, typename Variant>
-struct IndexIn;
-
-template <typename T, typename... Alternatives>
-struct IndexIn<T, std::variant<Alternatives...>> {
-    static constexpr std::size_t value = [] {
-        constexpr bool same[] = {std::is_same_v<T, Alternatives>...};
-        return static_cast<std::size_t>(std::find(std::begin(same), std::end(same), true) - std::begin(same));
-    }();
-    static_assert(value < sizeof...(Alternatives), "not a step of the session");
-};
-
-template <typename T>
-constexpr std::size_t step_index = IndexIn<T, Step>::value;
-
-struct Transition {
-    std::size_t from;
-    StepOutcome outcome;
-    Step (*next)(Step& from, StepContext& context);
-};
-
-template <typename From, StepOutcome outcome, typename To>
-constexpr Transition row()
+std::string_view ChartEvents<StepResult>::name(std::size_t index)
 {
-    return {step_index<From>, outcome,
-            [](Step& from, StepContext& context) -> Step { return To::after(std::get<From>(from), context); }};
+    constexpr std::array<std::string_view, 7> names = {"stay", "answered", "refused", "stopped",
+                                                       "done", "first_path_accepted", "last_path_accepted"};
+    static_assert(static_cast<std::size_t>(StepOutcome::last_path_accepted) == names.size() - 1,
+                  "a name for every outcome, in StepOutcome's order");
+    return index < names.size() ? names[index] : "?";
 }
 
-using namespace step;
-using enum StepOutcome;
+// The step `To`, made from `From` before `From` is gone; made in place, as steps that keep a
+// reference (to the log) cannot be assigned.
+template <typename From, typename To>
+void Session::make_step_after()
+{
+    StepContext step_context = context();
+    To made = To::after(std::get<From>(m_step), step_context);
+    m_step.emplace<To>(std::move(made));
+}
 
-// Quitting (q, or Y to a quit question: after q on the path screen, after Esc on an empty prompt)
-// goes from any step to Finished, outside this table.
-constexpr Transition session_graph[] = {
-    // Step 1: the key frames, then the split into path files.
-    row<Key1Prompt, answered, Key2Prompt>(),
-    row<Key1Prompt, refused, Key1Prompt>(),
-    row<Key2Prompt, answered, Splitting>(),
-    row<Key2Prompt, refused, Key2Prompt>(),
-    row<Splitting, done, ViewPrompt>(),
-    row<Splitting, stopped, Key2Prompt>(),
-    row<Splitting, refused, Key2Prompt>(),
-    // Step 2: the view.
-    row<ViewPrompt, answered, PathPrompt>(),
-    row<ViewPrompt, refused, ViewPrompt>(),
-    // Steps 3–5: each of the two paths read, its slopes, shaped in graphics mode.
-    row<PathPrompt, answered, SlopesPrompt>(),
-    row<PathPrompt, refused, PathPrompt>(),
-    row<SlopesPrompt, answered, Shaping>(),
-    row<SlopesPrompt, refused, SlopesPrompt>(),
-    row<Shaping, first_path_accepted, AskNext>(),
-    row<AskNext, answered, PathPrompt>(),
-    row<Shaping, last_path_accepted, AskStop>(),
-    // Step 6: surface fitting, the animation, the end.
-    row<AskStop, answered, Fitted>(),
-    row<Fitted, refused, AskStop>(),
-    row<Fitted, answered, Playing>(),
-    row<Playing, done, Finished>(),
-};
+namespace {
+
+using State = Session::State;
+using Graph = Session::StepGraph;
+using enum StepOutcome;
+using session_leaves::of;
 
 } // namespace
 
-std::optional<Step> next_step(Step& from, StepOutcome outcome, StepContext& context)
+const Session::StepGraph& Session::graph() { return StepGraph::once<&make_graph>(); }
+
+Session::StepGraph Session::make_graph()
 {
-    const auto found = std::find_if(std::begin(session_graph), std::end(session_graph), [&](const Transition& row) {
-        return row.from == from.index() && row.outcome == outcome;
-    });
-    assert(found != std::end(session_graph) && "a step ended in a way the session's graph does not know");
-    if (found == std::end(session_graph))
-        return std::nullopt;
-    return found->next(from, context);
+    // `From` ended with `outcome`: `To` follows, made from it.
+    const auto row = []<typename From, typename To>(StepOutcome outcome, std::string_view what) -> Graph::Row {
+        return {of<From>, static_cast<std::size_t>(outcome), {}, nullptr, what,
+                [](Session& s, const StepResult&) { s.make_step_after<From, To>(); }, of<To>};
+    };
+    using namespace step;
+    std::vector<Graph::Row> rows = {
+        // Step 1: the key frames, then the split into path files.
+        row.operator()<Key1Prompt, Key2Prompt>(answered, "KEY1 read"),
+        row.operator()<Key1Prompt, Key1Prompt>(refused, "asked again"),
+        row.operator()<Key2Prompt, Splitting>(answered, "KEY2 read, the points made equal"),
+        row.operator()<Key2Prompt, Key2Prompt>(refused, "asked again"),
+        row.operator()<Splitting, ViewPrompt>(done, "every path file written"),
+        row.operator()<Splitting, Key2Prompt>(stopped, "the files written stay, KEY2 asked again"),
+        row.operator()<Splitting, Key2Prompt>(refused, "a write failed: KEY2 asked again"),
+        // Step 2: the view.
+        row.operator()<ViewPrompt, PathPrompt>(answered, "the view and delay set: the first path's file"),
+        row.operator()<ViewPrompt, ViewPrompt>(refused, "asked again"),
+        // Steps 3-5: each of the two paths read, its slopes, shaped in graphics mode.
+        row.operator()<PathPrompt, SlopesPrompt>(answered, "the path read"),
+        row.operator()<PathPrompt, PathPrompt>(refused, "asked again"),
+        row.operator()<SlopesPrompt, Shaping>(answered, "the slopes set: graphics mode"),
+        row.operator()<SlopesPrompt, SlopesPrompt>(refused, "asked again"),
+        row.operator()<Shaping, AskNext>(first_path_accepted, "the first path written"),
+        row.operator()<AskNext, PathPrompt>(answered, "the last path's file"),
+        row.operator()<Shaping, AskStop>(last_path_accepted, "the last path written"),
+        // Step 6: surface fitting, the animation, the end.
+        row.operator()<AskStop, Fitted>(answered, "the in-betweens fitted and written"),
+        row.operator()<Fitted, AskStop>(refused, "a write failed: asked again"),
+        row.operator()<Fitted, Playing>(answered, "the animation"),
+        row.operator()<Playing, Finished>(done, "the files written listed"),
+    };
+    const auto states = chart().states();
+    return StepGraph({states.begin(), states.end()}, std::move(rows));
 }
 
 } // namespace apcs

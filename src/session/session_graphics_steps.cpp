@@ -123,7 +123,7 @@ StepResult Playing::update(StepContext& context, const Command& command)
 {
     if (player.update(command) == AnimationPlayer::Outcome::finished)
         return {StepOutcome::done};
-    if (player.phase() == SessionPhase::overlay && !overlay_written)
+    if (player.leaf() == AnimationPlayer::State::overlaid && !overlay_written)
         write_overlay(context);
     return {};
 }

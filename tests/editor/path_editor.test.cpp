@@ -32,15 +32,15 @@ TEST_CASE("the path editor takes the staff line by line and is accepted when not
 {
     LogLines log;
     PathEditor editor(four_point_path(), log);
-    REQUIRE(editor.phase() == SessionPhase::choose_control);
+    REQUIRE(editor.leaf() == PathEditor::State::control_choice);
     REQUIRE(editor.key_context() == KeyContext::control_choice);
     apply(editor, {cmd::ChooseGlobal{}});
-    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(editor.leaf() == PathEditor::State::staff);
     REQUIRE(message_of(editor.view()) == "way1.dat: TENSION  control points 1 to 4 of 4");
     apply(editor, {cmd::StaffStep{+3}, cmd::StaffStep{-1}, cmd::Accept{}});
     REQUIRE(message_of(editor.view()) == "way1.dat: CONTINUITY  control points 1 to 4 of 4");
     apply(editor, {cmd::StaffStep{+1}, cmd::Keep{}, cmd::StaffStep{-1}, cmd::Accept{}, cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.leaf() == PathEditor::State::ask_again);
     REQUIRE(editor.update(cmd::No{}) == PathEditor::Outcome::accepted);
     for (const ControlPoint& point : editor.points())
         REQUIRE(point.staff == StaffValues{0.1, 0.0, -0.05, 0.0});
@@ -157,9 +157,9 @@ TEST_CASE("the region's arrow starts at the first control point and cannot leave
     LogLines log;
     PathEditor editor(four_point_path(), log);
     apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{-1}, cmd::ArrowMove{-1}, cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::pick_region_last);
+    REQUIRE(editor.leaf() == PathEditor::State::region_last);
     apply(editor, {cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(editor.leaf() == PathEditor::State::staff);
     REQUIRE(log.lines.back() == "local control: control points 1 to 4");
 }
 
@@ -168,11 +168,11 @@ TEST_CASE("Esc while picking goes one step back, Y after the staff to the contro
     LogLines log;
     PathEditor editor(four_point_path(), log);
     apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{+1}, cmd::Accept{}, cmd::Back{}});
-    REQUIRE(editor.phase() == SessionPhase::pick_region_first);
+    REQUIRE(editor.leaf() == PathEditor::State::region_first);
     apply(editor, {cmd::Back{}});
-    REQUIRE(editor.phase() == SessionPhase::choose_control);
+    REQUIRE(editor.leaf() == PathEditor::State::control_choice);
     apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Yes{}});
-    REQUIRE(editor.phase() == SessionPhase::choose_control);
+    REQUIRE(editor.leaf() == PathEditor::State::control_choice);
 }
 
 TEST_CASE("a path that could not be written is asked about again with the reason shown", "[session][editor]")
@@ -182,7 +182,7 @@ TEST_CASE("a path that could not be written is asked about again with the reason
     apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}, cmd::Accept{}});
     REQUIRE(editor.update(cmd::No{}) == PathEditor::Outcome::accepted);
     editor.show_problem("way1.dat: cannot write: Read-only file system");
-    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.leaf() == PathEditor::State::ask_again);
     REQUIRE(message_of(editor.view()) == "way1.dat: cannot write: Read-only file system");
 }
 
@@ -202,10 +202,10 @@ TEST_CASE("the animation player shows one frame per tick, then all frames, then 
     player.tick();
     REQUIRE(message_of(player.view()) == "KEY2: k2.dat");
     player.tick();
-    REQUIRE(player.phase() == SessionPhase::animation_done);
+    REQUIRE(player.leaf() == AnimationPlayer::State::stopped);
     REQUIRE(player.key_context() == KeyContext::any_key_graphics);
     REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::showing);
-    REQUIRE(player.phase() == SessionPhase::overlay);
+    REQUIRE(player.leaf() == AnimationPlayer::State::overlaid);
     REQUIRE(player.update(cmd::Continue{}) == AnimationPlayer::Outcome::finished);
     REQUIRE(log.lines == std::vector<std::string>{"animation: 3 frames, 50 ms each", "showed all 3 frames overlaid"});
 }
@@ -223,7 +223,7 @@ TEST_CASE("comma and full stop pause the animation and step a frame back and on,
     player.update(cmd::StepFrame{+1});
     player.update(cmd::StepFrame{+1});
     REQUIRE(message_of(player.view()) == "KEY2: k2.dat  (paused)");
-    REQUIRE(player.phase() == SessionPhase::animating);
+    REQUIRE(player.leaf() == AnimationPlayer::State::paused);
     player.update(cmd::StepFrame{-1});
     player.update(cmd::StepFrame{-1});
     player.update(cmd::StepFrame{-1});
@@ -261,7 +261,7 @@ TEST_CASE("a long path's screen and numbers, kept across waypoint keys and exact
             const GraphicsScreen shown = editor.view();
             PathScreenContent content = path_screen_content(editor.points(), fresh);
             content.region = region;
-            if (editor.phase() == SessionPhase::waypoints) {
+            if (editor.leaf() == PathEditor::State::waypoints) {
                 // The waypoint editor boxes its chosen point: "control point N of M  depth …".
                 const std::size_t chosen = std::stoul(message_of(shown).substr(std::string("control point ").size())) - 1;
                 content.region = ControlRegion{chosen, chosen};

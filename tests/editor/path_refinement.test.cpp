@@ -300,7 +300,7 @@ TEST_CASE("an opened path's 8/2 question stands on its first picture, and 8 or 2
         REQUIRE_FALSE(has_inbetween_marks(editor.view()));
         const Command choice = global ? Command{cmd::ChooseGlobal{}} : Command{cmd::ChooseLocal{}};
         apply(editor, {choice});
-        REQUIRE(editor.phase() == (global ? SessionPhase::staff : SessionPhase::pick_region_first));
+        REQUIRE(editor.leaf() == (global ? PathEditor::State::staff : PathEditor::State::region_first));
         REQUIRE(editor.refining());
         REQUIRE(message_of(editor.view()).starts_with("measuring arc lengths for exact spacing"));
         refine_editor(editor);

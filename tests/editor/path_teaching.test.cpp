@@ -225,13 +225,13 @@ TEST_CASE("Enter twice on one control point adjusts it alone and skips ACCELERAT
     LogLines log;
     PathEditor editor(zigzag(), log);
     apply(editor, {cmd::ChooseLocal{}, cmd::ArrowMove{+1}, cmd::ArrowMove{+1}, cmd::Accept{}, cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(editor.leaf() == PathEditor::State::staff);
     REQUIRE(log.lines.back() == "local control: control point 2");
     REQUIRE(message_of(editor.view()) == "way1.dat: TENSION  control point 2 of 4 (no span, no ACCELERATION)");
     apply(editor, {cmd::StaffStep{+3}, cmd::StaffStep{+3}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{-1}});
     REQUIRE(staff_line_label(editor.view()) == "BIAS");
     apply(editor, {cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.leaf() == PathEditor::State::ask_again);
     for (std::size_t k = 0; k < 4; ++k) {
         const StaffValues expected = k == 1 ? StaffValues{0.3, 0.0, -0.05, 0.0} : StaffValues{};
         REQUIRE(editor.points()[k].staff == expected);
@@ -254,9 +254,9 @@ TEST_CASE("U takes every change back, in reverse, to the staff line it was made 
     type(editor, "1");
     apply(editor, {cmd::SubmitLine{}, cmd::StaffStep{+1}, cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{+1},
                    cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.leaf() == PathEditor::State::ask_again);
     apply(editor, {cmd::Undo{}});
-    REQUIRE(editor.phase() == SessionPhase::staff);
+    REQUIRE(editor.leaf() == PathEditor::State::staff);
     REQUIRE(staff_line_label(editor.view()) == "ACCELERATION");
     REQUIRE(message_of(editor.view()) == "Undone: ACCELERATION back to +0.00; 2 changes left to undo");
     apply(editor, {cmd::Undo{}});
@@ -298,7 +298,7 @@ TEST_CASE("the teaching screens match their approved cells in each glyph set", "
         PathEditor editor(zigzag(), log);
         apply(editor, {cmd::OpenWaypoints{}, cmd::ChoosePoint{+1}, cmd::InsertPoint{}, cmd::MovePoint{0, 1, 0},
                        cmd::MovePoint{0, 1, 0}, cmd::MovePoint{+3, 0, 0}});
-        REQUIRE(editor.phase() == SessionPhase::waypoints);
+        REQUIRE(editor.leaf() == PathEditor::State::waypoints);
         check("path_waypoints", editor.view());
     }
     SECTION("a region of one control point")

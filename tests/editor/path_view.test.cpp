@@ -176,7 +176,7 @@ TEST_CASE("the view stays still while the staff changes the path and is filled a
     apply(editor, {cmd::Accept{}});
     REQUIRE(editor.view_transform() == opened);
     apply(editor, {cmd::Accept{}});
-    REQUIRE(editor.phase() == SessionPhase::ask_again);
+    REQUIRE(editor.leaf() == PathEditor::State::ask_again);
     REQUIRE_FALSE(editor.view_transform() == opened);
     require_filled(shown_extent(editor, {}));
     PathEditor::Setup changed = shipped_setup({"n-to-l", "way1.dat", {0, 90}});

@@ -331,7 +331,7 @@ TEST_CASE("the terminal paints a screen only when its revision changes: once per
         play_to_idle(replay);
     };
     type(U"\n\n0 90 100\nway1.dat\n\n8");
-    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(session.leaf_name() == "staff");
     const auto paints_of = [&](char32_t key) {
         const std::uint64_t before = replay.screen_revision();
         replay.handle(KeyEvent::typed(key));
@@ -378,11 +378,11 @@ TEST_CASE("a paced replay at a long path's slopes prompt waits for Space while t
     settings.refinement = Refinement::in_steps;
     Session session(settings, files);
     ReplayDriver replay(session, *script, "long.keys", {ReplayPace::Kind::on_space, 0}, {}, ReplayAudience::terminal);
-    for (int step = 0; step < 10 && session.phase() != SessionPhase::ask_slopes; ++step) {
+    for (int step = 0; step < 10 && session.leaf_name() != "ask_slopes"; ++step) {
         play_to_idle(replay);
         replay.handle(space);
     }
-    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    REQUIRE(session.leaf_name() == "ask_slopes");
     REQUIRE(session.preparing());
     REQUIRE(replay.state() == ReplayState::waiting_for_space);
     const std::size_t handled = replay.handled().size();
@@ -392,5 +392,5 @@ TEST_CASE("a paced replay at a long path's slopes prompt waits for Space while t
     REQUIRE_FALSE(session.preparing());
     replay.handle(space);
     play_to_idle(replay);
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
 }

@@ -80,7 +80,7 @@ TEST_CASE("apcs play ends after the frames overlaid, as the session's animation 
     program.handle(KeyEvent::of(Key::escape));
     REQUIRE_FALSE(program.animating());
     program.handle(KeyEvent::typed('x'));
-    REQUIRE(player.phase() == SessionPhase::overlay);
+    REQUIRE(player.leaf() == AnimationPlayer::State::overlaid);
     REQUIRE_FALSE(program.finished());
     program.handle(KeyEvent::typed('x'));
     REQUIRE(program.finished());
@@ -97,7 +97,7 @@ TEST_CASE("Ctrl-L repaints apcs play's screen and neither closes its help nor en
     program.handle(KeyEvent::typed('x'));
     program.handle(KeyEvent::of(Key::escape));
     program.handle(KeyEvent::typed('x'));
-    REQUIRE(player.phase() == SessionPhase::overlay);
+    REQUIRE(player.leaf() == AnimationPlayer::State::overlaid);
     program.handle(KeyEvent::of(Key::redraw));
     REQUIRE_FALSE(program.finished());
 }

@@ -286,7 +286,7 @@ TEST_CASE("on the terminal the overlay draws the first, middle and last frames a
     while (player.playing())
         player.tick();
     player.update(command::Continue{});
-    REQUIRE(player.phase() == SessionPhase::overlay);
+    REQUIRE(player.leaf() == AnimationPlayer::State::overlaid);
     const GraphicsScreen screen = player.view();
     const GraphicsScreen picture = player.picture();
     REQUIRE(picture.bitmap == player.overlay_picture().bitmap);

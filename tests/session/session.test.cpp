@@ -63,7 +63,7 @@ void reach_view_prompt(Session& session)
 {
     type(session, "");
     type(session, "");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
 }
 
 // Through steps 1–3 with the thesis' default answers and way1.dat as the first path.
@@ -84,11 +84,11 @@ TEST_CASE("step 1 and 2 print the thesis' words with the real file names", "[ses
     REQUIRE(screen_text(session).starts_with("Please keyin the KEY1 filename!\n_"));
     type(session, "");
     type(session, "KEY2.DAT"); // a missing name: asked again
-    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(session.leaf_name() == "ask_key2");
     REQUIRE(screen_text(session).find("KEY2.DAT: cannot open: No such file or directory\n"
                                       "Please keyin the KEY2 filename!") != std::string::npos);
     type(session, "key2.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     const std::string expected = "Please keyin the KEY1 filename!\n"
                                  "key1.dat\n"
                                  "Please keyin the KEY2 filename!\n"
@@ -116,39 +116,39 @@ TEST_CASE("a wrong answer at each prompt says why and asks again", "[session]")
     files.files["off.dat"] = "0 1 0\n0 0 10\n";
     Session session({}, files);
     type(session, "nothing.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    REQUIRE(session.leaf_name() == "ask_key1");
     type(session, "bad.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    REQUIRE(session.leaf_name() == "ask_key1");
     REQUIRE(screen_text(session).find("bad.dat:2: expected a number, found 'x'") != std::string::npos);
     type(session, "");
     type(session, "");
     type(session, "30 forty 200");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     type(session, "30 40");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     type(session, "30 40 -5");
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     type(session, "30, 40, 200");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     type(session, "../way1.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     REQUIRE(screen_text(session).find("../way1.dat: expected a file in the session's folder") != std::string::npos);
     type(session, "/tmp/way1.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     type(session, "off.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     REQUIRE(screen_text(session).find("off.dat:1: the path starts at (0, 1, 0); expected the first graphic point's "
                                       "KEY1\n position (0, 0, 0)") != std::string::npos);
     type(session, "ani4.dat"); // the last point's path offered for the first point
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     type(session, "");
-    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    REQUIRE(session.leaf_name() == "ask_slopes");
     type(session, "1.5 1");
-    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    REQUIRE(session.leaf_name() == "ask_slopes");
     type(session, "0.5"); // one slope per line, as in fig. 4.2.3
-    REQUIRE(session.phase() == SessionPhase::ask_slopes);
+    REQUIRE(session.leaf_name() == "ask_slopes");
     type(session, "0");
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
     REQUIRE(session.screen().graphics);
 }
 
@@ -157,18 +157,18 @@ TEST_CASE("global control applies every staff key to all control points", "[sess
     MemoryFiles files = example_files();
     Session session({}, files);
     reach_control_choice(session);
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
     press(session, {ch('8')});
-    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(session.leaf_name() == "staff");
     // TENSION: 6 6 6 (+0.15), 4 (−0.05), L (+0.15), J (−0.15), right arrow (+0.05) = +0.15.
     press(session, {ch('6'), ch('6'), ch('6'), ch('4'), ch('L'), ch('J'), KeyEvent::of(Key::right), enter});
     // CONTINUITY: 4 4, then Esc puts it back to 0.
     press(session, {ch('4'), ch('4'), escape});
     // BIAS: left arrow −0.05; ACCELERATION: L L +0.30.
     press(session, {KeyEvent::of(Key::left), enter, ch('L'), ch('L'), enter});
-    REQUIRE(session.phase() == SessionPhase::ask_again);
+    REQUIRE(session.leaf_name() == "ask_again");
     press(session, {ch('N')});
-    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    REQUIRE(session.leaf_name() == "ask_next_path");
     REQUIRE(files.files["way1.dat"] == "SLOPES 1 1\n0 0 0 0.15 0 -0.05 0.3\n3 -4 5 0.15 0 -0.05 0.3\n1 1 7 0.15 0 -0.05 0.3\n"
                                        "0 0 10 0.15 0 -0.05 0.3\n");
 }
@@ -194,15 +194,15 @@ TEST_CASE("local control changes the picked middle region only", "[session][staf
     Session session({}, files);
     reach_control_choice(session);
     press(session, {ch('2')});
-    REQUIRE(session.phase() == SessionPhase::pick_region_first);
+    REQUIRE(session.leaf_name() == "region_first");
     // The arrow starts at the top-left; the first 6 moves it to control point 1, the next to 2.
     press(session, {ch('6'), ch('6'), enter});
-    REQUIRE(session.phase() == SessionPhase::pick_region_last);
+    REQUIRE(session.leaf_name() == "region_last");
     press(session, {ch('4'), enter}); // point 1 is before the first: refused
-    REQUIRE(session.phase() == SessionPhase::pick_region_last);
+    REQUIRE(session.leaf_name() == "region_last");
     REQUIRE(graphics_message(session) == "The last control point must come after the first (point 2)");
     press(session, {KeyEvent::of(Key::right), KeyEvent::of(Key::right), enter});
-    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(session.leaf_name() == "staff");
     press(session, {ch('6'), ch('6'), enter, enter, enter, ch('6'), enter, ch('N')});
     // Points 2 and 3 (indices 1, 2) get t = 0.1; a = 0.05 starts at point 2 and ends at point 3.
     REQUIRE(files.files["way1.dat"] == "SLOPES 1 1\n0 0 0 0 0 0 0\n3 -4 5 0.1 0 0 0.05\n1 1 7 0.1 0 0 0\n0 0 10 0 0 0 0\n");
@@ -214,7 +214,7 @@ TEST_CASE("Y adjusts the path again from the control choice", "[session]")
     Session session({}, files);
     reach_control_choice(session);
     press(session, {ch('8'), enter, enter, enter, enter, ch('y')});
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
 }
 
 TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[session]")
@@ -227,16 +227,16 @@ TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[ses
     reach_control_choice(session);
     press(session, {ch('8'), enter, enter, enter, enter, ch('N')});
     press(session, {ch('x')}); // only Y goes on
-    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    REQUIRE(session.leaf_name() == "ask_next_path");
     press(session, {ch('Y')});
     type(session, "way4.dat");
     type(session, "1 1");
     press(session, {ch('8'), enter, enter, enter, enter, ch('N')});
-    REQUIRE(session.phase() == SessionPhase::ask_stop);
+    REQUIRE(session.leaf_name() == "ask_stop");
     press(session, {ch('x')});
-    REQUIRE(session.phase() == SessionPhase::ask_stop);
+    REQUIRE(session.leaf_name() == "ask_stop");
     press(session, {enter});
-    REQUIRE(session.phase() == SessionPhase::ask_draw);
+    REQUIRE(session.leaf_name() == "ask_draw");
     REQUIRE(screen_text(session).find("Press <ENTER> to Stop the work !\n"
                                       "Please wait a moment! Surface Fitting is working now .....\n"
                                       "Surface-Fitting work is done.\n"
@@ -251,9 +251,9 @@ TEST_CASE("a whole session writes the paths, the in-betweens and the log", "[ses
     press(session, {KeyEvent::of(Key::space)});
     for (int i = 0; i < 10; ++i)
         session.tick();
-    REQUIRE(session.phase() == SessionPhase::animation_done);
+    REQUIRE(session.leaf_name() == "stopped");
     press(session, {enter});
-    REQUIRE(session.phase() == SessionPhase::overlay);
+    REQUIRE(session.leaf_name() == "overlaid");
     press(session, {enter});
     REQUIRE(session.finished());
     REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n") != std::string::npos);
@@ -276,7 +276,7 @@ TEST_CASE("in-betweens left by an earlier, longer run are pointed out on screen 
     type(session, "way4.dat");
     type(session, "1 1");
     press(session, {ch('8'), enter, enter, enter, enter, ch('N'), enter});
-    REQUIRE(session.phase() == SessionPhase::ask_draw);
+    REQUIRE(session.leaf_name() == "ask_draw");
     const std::string note = "inb006.dat to inb009.dat (3 files) are from an earlier run (not rewritten)";
     REQUIRE(screen_text(session).find(note + "\n") != std::string::npos);
     REQUIRE(std::find(files.log_lines.begin(), files.log_lines.end(), note) != files.log_lines.end());
@@ -289,7 +289,7 @@ TEST_CASE("a number too small for a double is 0 at a prompt, as in a .dat file",
     Session session({}, files);
     reach_view_prompt(session);
     type(session, "1e-400 -1e-310 200");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
 }
 
 TEST_CASE("wide characters typed at a prompt take two columns, zero-width ones are refused, and a wide name reads",
@@ -308,7 +308,7 @@ TEST_CASE("wide characters typed at a prompt take two columns, zero-width ones a
     REQUIRE(grid.at(4, row) == U'.');
     REQUIRE(grid.at(8, row) == U'_');
     session.handle(enter);
-    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(session.leaf_name() == "ask_key2");
 
     // 41 wide characters are 82 columns: the 41st wraps to the next row whole.
     std::string long_line;
@@ -368,7 +368,7 @@ TEST_CASE("a key file is never written, even when it shares a name the session w
     type(session, "ANI1.DAT");
     type(session, "");
     // The split would write ani1.dat: refused, KEY2 asked again, the key untouched.
-    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(session.leaf_name() == "ask_key2");
     REQUIRE(screen_text(session).find("ani1.dat: is a key file; key files are never written") != std::string::npos);
     REQUIRE(files.files.count("ani1.dat") == 0);
     REQUIRE(files.files["ANI1.DAT"] == files.files["key1.dat"]);
@@ -391,7 +391,7 @@ TEST_CASE("the animation stops on Esc and replays from the start on R", "[sessio
     press(session, {ch('R')});
     REQUIRE(graphics_message(session) == "KEY1: key1.dat");
     press(session, {escape});
-    REQUIRE(session.phase() == SessionPhase::animation_done);
+    REQUIRE(session.leaf_name() == "stopped");
     REQUIRE_FALSE(session.animating());
 }
 
@@ -407,13 +407,13 @@ TEST_CASE("? and F1 open the help screen of the step, any key closes it", "[sess
     type(session, "?"); // the answer ? alone is the help too
     REQUIRE(screen_text(session).starts_with("APCS help"));
     press(session, {enter});
-    REQUIRE(session.phase() == SessionPhase::ask_key1);
+    REQUIRE(session.leaf_name() == "ask_key1");
     reach_control_choice(session);
     press(session, {ch('8'), ch('?')});
     REQUIRE_FALSE(session.screen().graphics);
     REQUIRE(screen_text(session).find("  J, L            three steps left, right (Shift-J, Shift-L)") != std::string::npos);
     press(session, {ch('6')}); // closes the help; the staff is unchanged
-    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(session.leaf_name() == "staff");
     REQUIRE(graphics_message(session) == "way1.dat: TENSION  control points 1 to 4 of 4");
 }
 
@@ -427,7 +427,7 @@ TEST_CASE("q asks before quitting an unsaved path, Enter means N, Y ends with th
     press(session, {ch('6')}); // not an answer
     REQUIRE(graphics_message(session) == "Quit without saving this path ? (Y/N)");
     press(session, {enter});
-    REQUIRE(session.phase() == SessionPhase::staff);
+    REQUIRE(session.leaf_name() == "staff");
     press(session, {ch('Q'), ch('y')});
     REQUIRE(session.finished());
     REQUIRE(screen_text(session).find("APCS is done. Files written:\n  ani1.dat\n") != std::string::npos);
@@ -452,13 +452,13 @@ TEST_CASE("Esc on an empty prompt asks Quit APCS ? (Y/N) — N, Esc and Enter go
         REQUIRE(screen_text(session) != prompt);
         press(session, {back});
         REQUIRE(screen_text(session) == prompt);
-        REQUIRE(session.phase() == SessionPhase::ask_key1);
+        REQUIRE(session.leaf_name() == "ask_key1");
     }
     // The line is kept through the question: Esc on typed text clears it (as DOS did), never asks.
     press(session, {ch('a'), ch('b'), escape});
     REQUIRE(screen_text(session) == prompt);
     type(session, "key1.dat");
-    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(session.leaf_name() == "ask_key2");
 }
 
 TEST_CASE("Y to Quit APCS ? at a prompt ends the session as q does, with the files written listed", "[session][quit]")
@@ -568,7 +568,7 @@ TEST_CASE("the session's --png writes the overlay of all frames when the animati
         session.tick();
     REQUIRE(files.files.count("all.png") == 0);
     press(session, {enter});
-    REQUIRE(session.phase() == SessionPhase::overlay);
+    REQUIRE(session.leaf_name() == "overlaid");
     REQUIRE(test::grey_picture(files.files["all.png"]).height == 522);
     REQUIRE(graphics_message(session) == "wrote all.png");
 }

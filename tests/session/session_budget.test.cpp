@@ -51,7 +51,7 @@ TEST_CASE("frames over the memory limit are refused after KEY2, which is asked a
     Session session(settings, files);
     type(session, "key1.dat");
     type(session, "key2.dat");
-    CHECK(session.phase() == SessionPhase::ask_key2);
+    CHECK(session.leaf_name() == "ask_key2");
     CHECK(files.files.count("ani1.dat") == 0);
     CHECK(shows(session, "1002 frames of 4 points (--inbetweens 1000) need 96.3 KiB; the memory "
                                     "limit is 64 KiB (APCS_MEMORY_LIMIT); use key frames of fewer points, or start "
@@ -63,7 +63,7 @@ TEST_CASE("frames over the memory limit are refused after KEY2, which is asked a
     type(allowed, "key2.dat");
     while (allowed.busy())
         allowed.work();
-    CHECK(allowed.phase() == SessionPhase::ask_view);
+    CHECK(allowed.leaf_name() == "ask_view");
 }
 
 TEST_CASE("a path file over the memory limit is refused, and asked again", "[session][memory]")
@@ -84,9 +84,9 @@ TEST_CASE("a path file over the memory limit is refused, and asked again", "[ses
     while (session.busy())
         session.work();
     type(session, "");
-    REQUIRE(session.phase() == SessionPhase::ask_path_file);
+    REQUIRE(session.leaf_name() == "ask_path_file");
     type(session, "way1.dat");
-    CHECK(session.phase() == SessionPhase::ask_path_file);
+    CHECK(session.leaf_name() == "ask_path_file");
     CHECK(shows(session, "way1.dat: 200 control points x 1000 samples per segment (--samples) and 12 "
                                     "in-betweens (--inbetweens) need 63.1 KiB; the memory limit is 40 KiB "
                                     "(APCS_MEMORY_LIMIT); use a path of fewer control points, or start apcs with a "
@@ -131,7 +131,7 @@ TEST_CASE("the slopes prompt of a long path makes its evaluation's arrays while 
         auto session = std::make_unique<Session>(settings, files);
         for (const std::string answer : {"", "", "0 90 0", path.c_str()})
             type(*session, answer);
-        REQUIRE(session->phase() == SessionPhase::ask_slopes);
+        REQUIRE(session->leaf_name() == "ask_slopes");
         return session;
     };
     std::unique_ptr<Session> terminal = at_slopes(Refinement::in_steps, "long.dat");
@@ -140,9 +140,9 @@ TEST_CASE("the slopes prompt of a long path makes its evaluation's arrays while 
     REQUIRE_FALSE(terminal->working()); // a replay routes keys as at any prompt
     terminal->work();
     REQUIRE_FALSE(terminal->busy());
-    REQUIRE(terminal->phase() == SessionPhase::ask_slopes);
+    REQUIRE(terminal->leaf_name() == "ask_slopes");
     type(*terminal, "");
-    REQUIRE(terminal->phase() == SessionPhase::choose_control);
+    REQUIRE(terminal->leaf_name() == "control_choice");
     REQUIRE(terminal->path_editor()->evaluated().curve.segments.size() == long_count - 1);
     // Headless (the whole picture at once) and a short path: the prompt never sets it to work.
     REQUIRE_FALSE(at_slopes(Refinement::at_once, "long.dat")->busy());

@@ -71,7 +71,7 @@ TEST_CASE("a large split goes on in work() and shows its progress on the message
     submit_default(session);
     submit_default(session);
     REQUIRE(session.busy());
-    REQUIRE(session.phase() == SessionPhase::splitting);
+    REQUIRE(session.leaf_name() == "splitting");
     const int first_batch = path_files_in(files);
     REQUIRE(first_batch > 0);
     REQUIRE(first_batch < large_count);
@@ -81,7 +81,7 @@ TEST_CASE("a large split goes on in work() and shows its progress on the message
     REQUIRE(path_files_in(files) > first_batch);
     while (session.busy())
         session.work();
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     REQUIRE(path_files_in(files) == large_count);
     REQUIRE(files.writes.size() == static_cast<std::size_t>(large_count));
     // The split's files are the thesis' (split_path_file), and its one barrier came after them.
@@ -102,7 +102,7 @@ TEST_CASE("Esc stops the split: the files written stay, KEY2 is asked again", "[
     const int written = path_files_in(files);
     session.handle(KeyEvent::of(Key::escape));
     REQUIRE_FALSE(session.busy());
-    REQUIRE(session.phase() == SessionPhase::ask_key2);
+    REQUIRE(session.leaf_name() == "ask_key2");
     session.work(); // nothing more to do
     REQUIRE(path_files_in(files) == written);
     REQUIRE(files.writes.size() == static_cast<std::size_t>(written));
@@ -115,7 +115,7 @@ TEST_CASE("Esc stops the split: the files written stay, KEY2 is asked again", "[
     submit_default(session);
     while (session.busy())
         session.work();
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     REQUIRE(path_files_in(files) == large_count);
 }
 
@@ -145,7 +145,7 @@ TEST_CASE("keys of a batch or fewer points are split at once, as the thesis did"
     submit_default(session);
     submit_default(session);
     REQUIRE_FALSE(session.busy());
-    REQUIRE(session.phase() == SessionPhase::ask_view);
+    REQUIRE(session.leaf_name() == "ask_view");
     REQUIRE(path_files_in(files) == 10);
     REQUIRE(files.batches_ended == 1);
 }
@@ -162,7 +162,7 @@ TEST_CASE("a split stopped in a folder leaves whole files and no temporary file"
         submit_default(session);
         session.work();
         session.handle(KeyEvent::of(Key::escape));
-        REQUIRE(session.phase() == SessionPhase::ask_key2);
+        REQUIRE(session.leaf_name() == "ask_key2");
     }
     int path_files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder.path())) {

@@ -38,7 +38,7 @@ void open_path(Session& session, const std::string& view)
     type(session, view);
     type(session, "two.dat");
     type(session, "");
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
 }
 
 std::vector<DatPoint> points_of(const std::string& text)
@@ -57,9 +57,9 @@ TEST_CASE("a waypoint inserted and moved up 4 steps is written to the path file 
     Session session({}, files);
     open_path(session, "30 40 200");
     press(session, "WI8888\n");
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
     press(session, "8\n\n\n\nN");
-    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    REQUIRE(session.leaf_name() == "ask_next_path");
     const std::string written = files.files["two.dat"];
     REQUIRE(written.starts_with("; the thesis' ani1.dat, two points\n"));
     const std::vector<DatPoint> points = points_of(written);
@@ -92,7 +92,7 @@ TEST_CASE("undoing every change and accepting writes the path file as it was", "
     REQUIRE(points_of(files.files["two.dat"]).size() == 3);
     for (int change = 0; change < 7; ++change)
         press(session, "U");
-    REQUIRE(session.phase() == SessionPhase::choose_control);
+    REQUIRE(session.leaf_name() == "control_choice");
     press(session, "U");
     REQUIRE(session.screen().picture.text.size() > 0);
     bool nothing_left = false;
@@ -103,7 +103,7 @@ TEST_CASE("undoing every change and accepting writes the path file as it was", "
     // with the slopes it was shaped with (1 1) before its first point (SPEC §2.1).
     press(session, "2" "6\n\n");
     press(session, "\n\n\n\n");
-    REQUIRE(session.phase() == SessionPhase::ask_next_path);
+    REQUIRE(session.leaf_name() == "ask_next_path");
     std::string with_slopes = original;
     with_slopes.insert(with_slopes.find('\n') + 1, "SLOPES 1 1\n");
     REQUIRE(files.files["two.dat"] == with_slopes);

@@ -13,7 +13,6 @@
 #include "apcs/editor/path_picture.h"
 #include "apcs/screens/path_screen.h"
 #include "apcs/base/session_log.h"
-#include "apcs/input/session_phase.h"
 #include "apcs/input/value_field.h"
 #include "apcs/editor/waypoint_editor.h"
 
@@ -66,8 +65,6 @@ public:
     using EditorChart = Chart<PathEditor, State>;
     // Every row of the editor: which command does what in which state.
     static const EditorChart& chart();
-    // The keys a leaf listens with.
-    static KeyContext key_context_of(State leaf);
 
     struct Setup {
         std::string path_name;
@@ -100,8 +97,9 @@ public:
     // All of it (P writes a final picture).
     void refine();
 
-    SessionPhase phase() const;
-    KeyContext key_context() const { return key_context_of(leaf()); }
+    // The keys the editor listens with, and what a transcript calls its step: its leaf's.
+    KeyContext key_context() const { return *chart().keys(leaf()); }
+    std::string_view title() const { return chart().title(leaf()); }
     // The leaf of the chart the editor is in.
     State leaf() const;
     const std::string& path_name() const { return m_setup.path_name; }
@@ -128,8 +126,7 @@ public:
     struct Look {
         std::uint64_t document = 0;
         PathPicture::Revision picture;
-        SessionPhase phase = SessionPhase::choose_control;
-        KeyContext keys = KeyContext::control_choice;
+        State leaf = State::control_choice;
         std::string message;
         std::optional<StaffValues> staff;
         std::optional<StaffLine> line;
@@ -148,7 +145,7 @@ public:
 
 private:
     // The editor's modes (lager's model: each owns what it alone needs; update visits them, so a
-    // mode without a case does not compile). phase() names them in transcripts.
+    // mode without a case does not compile). leaf() names them as the chart does.
     struct ControlChoice {};
     // Scan_Control_Point: the arrow waits at the top-left until moved; the region's first point
     // once picked (then the last is picked).

@@ -1,10 +1,13 @@
 #pragma once
 
+#include "apcs/base/variant_index.h"
 #include "apcs/input/command.h"
+#include "apcs/input/key_map.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -24,49 +27,59 @@ namespace apcs {
 // The name of Command's alternative `index`, as the printed chart writes an event: "StaffStep".
 std::string_view command_name(std::size_t index);
 
-// The index of `Event` among Command's alternatives.
-template <typename Event, std::size_t Index = 0>
-consteval std::size_t command_index()
-{
-    static_assert(Index < std::variant_size_v<Command>, "not a Command");
-    if constexpr (std::is_same_v<std::variant_alternative_t<Index, Command>, Event>)
-        return Index;
-    else
-        return command_index<Event, Index + 1>();
-}
-
 // A row's event: `on<command::StaffStep>`.
 template <typename Event>
-inline constexpr std::size_t on = command_index<Event>();
+inline constexpr std::size_t on = variant_index<Command, Event>();
+
+// A row's event that every event meets which no row of its state, nor of a state around it, takes:
+// a state whose other events go to a chart of their own (the path screen's to the path editor's).
+inline constexpr std::size_t any_other_event = std::numeric_limits<std::size_t>::max();
+
+// How a chart numbers and names its events: Command's alternatives, unless a chart says otherwise
+// (the session's steps end in outcomes, session_steps.h).
+template <typename Event>
+struct ChartEvents;
+
+template <>
+struct ChartEvents<Command> {
+    static std::size_t index(const Command& command) { return command.index(); }
+    static std::string_view name(std::size_t index) { return command_name(index); }
+};
 
 template <typename Machine, typename State>
 struct ChartState {
     State state;
     std::string_view name;
     std::optional<State> parent; // none: the root
+    // The keys the state listens with (key_map.h); none: its parent's.
+    std::optional<KeyContext> keys = {};
+    // What a transcript and the help screen call the step ("step 4: four-line staff"); empty: its
+    // parent's.
+    std::string_view title = {};
     // What leaving the state does (the machine already in the state it goes to); none: nothing.
     std::string_view exit_name = {};
     void (*on_exit)(Machine&) = nullptr;
 };
 
-template <typename Machine, typename State>
+template <typename Machine, typename State, typename Event = Command>
 struct ChartRow {
     State from;
-    std::size_t event = 0; // Command's alternative
+    std::size_t event = 0; // ChartEvents<Event>::index, or any_other_event
     std::string_view guard_name = {};
-    bool (*guard)(const Machine&, const Command&) = nullptr; // none: always
+    bool (*guard)(const Machine&, const Event&) = nullptr; // none: always
     // What the row does; a written ignore has no action and says here why the key means nothing.
     std::string_view action_name = {};
-    void (*action)(Machine&, const Command&) = nullptr;
+    void (*action)(Machine&, const Event&) = nullptr;
     std::optional<State> to = {}; // none: the machine stays in the state it is in
     bool ignores() const { return action == nullptr; }
 };
 
-template <typename Machine, typename State>
+template <typename Machine, typename State, typename Event = Command>
 class Chart {
 public:
-    using Row = ChartRow<Machine, State>;
+    using Row = ChartRow<Machine, State, Event>;
     using StateInfo = ChartState<Machine, State>;
+    using Events = ChartEvents<Event>;
 
     // `states` lists every state once, a parent before its children; among a state's rows for one
     // event, the last has no guard (the chart's "else").
@@ -75,27 +88,29 @@ public:
     }
 
     // The rows `event` may meet in `leaf`, in the order their guards are tried: the leaf's rows for
-    // it, then its parent's, up to the root, ending at the first without a guard (empty: none).
+    // it, then its parent's, up to the root, then the rows for any other event the same way; ending
+    // at the first without a guard (empty: none).
     std::vector<const Row*> candidates(State leaf, std::size_t event) const
     {
         std::vector<const Row*> met;
-        for (std::optional<State> state = leaf; state; state = info(*state).parent)
-            for (const Row& row : m_rows) {
-                if (row.from != *state || row.event != event)
-                    continue;
-                met.push_back(&row);
-                if (!row.guard)
-                    return met;
-            }
+        for (const std::size_t wanted : {event, any_other_event})
+            for (std::optional<State> state = leaf; state; state = info(*state).parent)
+                for (const Row& row : m_rows) {
+                    if (row.from != *state || row.event != wanted)
+                        continue;
+                    met.push_back(&row);
+                    if (!row.guard)
+                        return met;
+                }
         return met;
     }
 
     // The row `command` meets in `leaf`: the first candidate whose guard holds; none when no state
     // on the way has a row for it.
-    const Row* row_for(const Machine& machine, State leaf, const Command& command) const
+    const Row* row_for(const Machine& machine, State leaf, const Event& event) const
     {
-        for (const Row* row : candidates(leaf, command.index()))
-            if (!row->guard || row->guard(machine, command))
+        for (const Row* row : candidates(leaf, Events::index(event)))
+            if (!row->guard || row->guard(machine, event))
                 return row;
         return nullptr;
     }
@@ -103,11 +118,11 @@ public:
     // The row met, taken: its action, then what leaving does for every state around `leaf` that is
     // not around the state the machine is in afterwards (`now`, read once the action has run).
     template <typename Now>
-    void take(Machine& machine, State leaf, const Row& row, const Command& command, Now now) const
+    void take(Machine& machine, State leaf, const Row& row, const Event& event, Now now) const
     {
         if (row.ignores())
             return;
-        row.action(machine, command);
+        row.action(machine, event);
         const State after = now(machine);
         assert(!row.to || encloses(*row.to, after));
         for (std::optional<State> state = leaf; state; state = info(*state).parent)
@@ -115,13 +130,46 @@ public:
                 info(*state).on_exit(machine);
     }
 
-    // `command` in the machine's leaf (`now`): the row it meets taken, if any.
+    // `event` in the machine's leaf (`now`): the row it meets taken, if any; whether there was one.
     template <typename Now>
-    void fire(Machine& machine, const Command& command, Now now) const
+    bool fire(Machine& machine, const Event& event, Now now) const
     {
         const State leaf = now(machine);
-        if (const Row* row = row_for(machine, leaf, command))
-            take(machine, leaf, *row, command, now);
+        const Row* row = row_for(machine, leaf, event);
+        if (row != nullptr)
+            take(machine, leaf, *row, event, now);
+        return row != nullptr;
+    }
+
+    // The keys `state` listens with: its own, else the nearest state's around it that names them.
+    std::optional<KeyContext> keys(State state) const
+    {
+        for (std::optional<State> around = state; around; around = info(*around).parent)
+            if (info(*around).keys)
+                return info(*around).keys;
+        return std::nullopt;
+    }
+
+    // What a transcript calls `state`: its title, else the nearest one around it.
+    std::string_view title(State state) const
+    {
+        for (std::optional<State> around = state; around; around = info(*around).parent)
+            if (!info(*around).title.empty())
+                return info(*around).title;
+        return {};
+    }
+
+    // The chart `make` builds, built once (a room's chart() accessor).
+    template <Chart (*make)()>
+    static const Chart& once()
+    {
+        static const Chart chart = make();
+        return chart;
+    }
+
+    static std::string_view event_name(std::size_t event)
+    {
+        return event == any_other_event ? std::string_view("(any other)") : Events::name(event);
     }
 
     // Whether `outer` is `state` or one of its parents.
@@ -147,7 +195,9 @@ public:
         for (const StateInfo& leaf : m_states) {
             if (!is_leaf(leaf.state))
                 continue;
-            const std::vector<const Row*> met = candidates(leaf.state, target.event);
+            // An event no row names meets the rows for any other event alone.
+            const std::size_t probe = target.event == any_other_event ? any_other_event - 1 : target.event;
+            const std::vector<const Row*> met = candidates(leaf.state, probe);
             if (std::find(met.begin(), met.end(), &target) != met.end())
                 return true;
         }
@@ -182,8 +232,7 @@ public:
         return Chart(m_states, std::move(rows));
     }
 
-    // The states as a tree, then one row a line: "staff --Accept[last line] / log the line--> ask_again",
-    // "(stays)" for a row that leaves the machine where it is, "ignored: WHY" for a written ignore.
+    // The states as a tree, then printed_rows().
     std::string printed() const
     {
         std::string text;
@@ -191,12 +240,24 @@ public:
             text += "state " + std::string(state.name);
             if (state.parent)
                 text += " in " + std::string(info(*state.parent).name);
+            if (state.keys)
+                text += ", keys " + std::string(key_context_name(*state.keys));
+            if (!state.title.empty())
+                text += ", \"" + std::string(state.title) + "\"";
             if (state.on_exit)
                 text += ", on leaving: " + std::string(state.exit_name);
             text += '\n';
         }
+        return text + printed_rows();
+    }
+
+    // One row a line: "staff --Accept[last line] / log the line--> ask_again", "(stays)" for a row
+    // that leaves the machine where it is, "ignored: WHY" for a written ignore.
+    std::string printed_rows() const
+    {
+        std::string text;
         for (const Row& row : m_rows) {
-            text += std::string(info(row.from).name) + " --" + std::string(command_name(row.event));
+            text += std::string(info(row.from).name) + " --" + std::string(event_name(row.event));
             if (row.guard)
                 text += "[" + std::string(row.guard_name) + "]";
             if (row.ignores()) {

@@ -34,6 +34,15 @@ enum class KeyContext {
     finished,       // nothing is read
 };
 
+// The context's name as the enum spells it ("value_field"), for the printed charts.
+std::string_view key_context_name(KeyContext context);
+
+// Whether `command`, met in `context`, is known to leave the step where it is: typing a line, a
+// staff step, the region's arrow, a waypoint edit. A headless transcript prints each step's last
+// screen, the one before the key that ends it: it draws a screen only before a key this does not
+// vouch for. False says nothing (the command may end its step or not).
+bool stays_in_step(KeyContext context, const Command& command);
+
 // The contexts a binding holds in.
 class KeyContexts {
 public:

@@ -56,6 +56,7 @@ public:
     // overlay). q on the path screen opens it through handle(); the session opens it for Esc on an
     // empty text prompt, which the key map cannot tell from Esc on a typed line.
     void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
+    void close() { m_open.reset(); }
 
     const overlay::HelpScreen* help() const;
     const overlay::QuitQuestion* quit_question() const;

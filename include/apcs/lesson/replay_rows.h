@@ -111,5 +111,6 @@ std::optional<ReplayAction> replay_action(ReplayState state, ReplayKey key, cons
 std::string_view replay_state_name(ReplayState state);
 std::string_view replay_key_name(ReplayKey key);
 std::string_view replay_action_name(ReplayAction action);
+std::string_view replay_guard_name(ReplayGuard guard);
 
 } // namespace apcs

@@ -9,7 +9,6 @@
 #include "apcs/screens/frames_overlay.h"
 #include "apcs/input/key_map.h"
 #include "apcs/base/session_log.h"
-#include "apcs/input/session_phase.h"
 
 #include <array>
 #include <cstddef>
@@ -40,8 +39,6 @@ public:
     using PlayerChart = Chart<AnimationPlayer, State>;
     // Every row of the player: which command does what in which state.
     static const PlayerChart& chart();
-    // The keys a leaf listens with.
-    static KeyContext key_context_of(State leaf);
 
     // `structure` gives the parts that draw each frame (the equalised KEY1); `key_names` name the
     // first and the last frame on the screen.
@@ -58,9 +55,10 @@ public:
     // What P writes: the screen, with every frame where the screen overlays three.
     GraphicsScreen picture() const;
 
-    SessionPhase phase() const;
     bool playing() const;
-    KeyContext key_context() const { return key_context_of(leaf()); }
+    // The keys the player listens with, and what a transcript calls its step: its leaf's.
+    KeyContext key_context() const { return *chart().keys(leaf()); }
+    std::string_view title() const { return chart().title(leaf()); }
     // The leaf of the chart the player is in.
     State leaf() const;
 

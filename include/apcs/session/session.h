@@ -7,7 +7,6 @@
 #include "apcs/input/overlays.h"
 #include "apcs/session/session_files.h"
 #include "apcs/session/session_model.h"
-#include "apcs/input/session_phase.h"
 #include "apcs/session/session_settings.h"
 #include "apcs/session/session_steps.h"
 #include "apcs/screens/text_console.h"
@@ -24,29 +23,43 @@ namespace apcs {
 //
 // The session holds the step on the screen (session_steps.h), the overlays over it (help, the
 // quit question) and what the steps made (SessionModel). Keys become commands through the key
-// map (key_map.h) in the context of the step; the step says how it ended, and the transition
-// table (session_graph.cpp) says which step follows.
+// map (key_map.h) in the keys of the chart's leaf; a row of the chart takes each, the step says
+// how it ended, and the steps' graph (session_graph.cpp) says which step follows.
 class Session final : public InteractiveProgram {
 public:
     Session(SessionSettings settings, SessionFiles& files);
 
-    // The text console's steps as a chart (session_console_chart.cpp): a prompt's line being typed
-    // and answered, the questions that wait for Y, Enter or any key, and the split Esc stops.
-    // Which step an answer leads to is the session's graph (session_graph.cpp); the path screen
-    // and the animation are their own charts (PathEditor::chart, AnimationPlayer::chart).
-    enum class ConsoleState {
-        console,          // every text step
-        text_line,        // KEY1, KEY2, the view, a path file, its slopes
-        splitting,        // the path files being written
-        question,         // the questions
-        yes_question,     // "Press 'Y' to adjust the next path !"
-        enter_question,   // "Press <ENTER> to Stop the work !"
-        any_key_question, // "Press any key ..." on the console
+    // The session's chart (session_chart.cpp): the steps of thesis Ch. 4.2 as its leaves, the help
+    // and the quit question laid over them, and the keys the session takes itself (?, P, q). The
+    // path screen and the animation hand every other command to their own charts
+    // (PathEditor::chart, AnimationPlayer::chart); how a step ends leads to the next by the steps'
+    // graph (session_graph.cpp).
+    enum class State {
+        session,          // the root
+        overlays,         // laid over the step, which stays underneath as it was; one alone takes keys
+        help,             // ? or F1: the keys of the step, until any key
+        quit_question,    // "Quit APCS ? (Y/N)", "Quit without saving this path ? (Y/N)"
+        steps,            // the step on the screen: ?, P and q are the session's
+        console,          // the text steps
+        text_line,        // a prompt's line being typed
+        ask_key1,         // step 1: the KEY1 file
+        ask_key2,         // and KEY2
+        splitting,        // the path files being written: Esc stops it
+        ask_view,         // step 2: the view and the delay
+        ask_path_file,    // step 3: a path file
+        ask_slopes,       // and its end slopes
+        question,         // a question waiting for one key
+        ask_next_path,    // "Press 'Y' to adjust the next path !"
+        ask_stop,         // "Press <ENTER> to Stop the work !"
+        ask_draw,         // "Press any key ..." after surface fitting
+        path_screen,      // steps 3-5 in graphics mode: the path editor's chart
+        player,           // step 6, the animation: the player's chart
+        finished,         // the end: nothing is read
     };
-    using ConsoleChart = Chart<Session, ConsoleState>;
-    static const ConsoleChart& console_chart();
-    // The keys a leaf listens with.
-    static KeyContext key_context_of(ConsoleState leaf);
+    using SessionChart = Chart<Session, State>;
+    using StepGraph = Chart<Session, State, StepResult>;
+    static const SessionChart& chart();
+    static const StepGraph& graph();
 
     void handle(const KeyEvent& event) override;
     void tick() override;
@@ -54,8 +67,10 @@ public:
     // stops it at once; the screen shows how far it is. While a path is shaped, work() is a step of
     // its picture's refinement.
     void work() override;
-    bool finished() const override { return phase() == SessionPhase::finished; }
+    bool finished() const override { return std::holds_alternative<step::Finished>(m_step); }
     bool animating() const override;
+    // The animation shows its frames, running or paused (not yet stopped at the last).
+    bool showing_frames() const;
     // Busy while working() or preparing(): a step of either per work().
     bool busy() const override;
     // The step works between keys: a split, or the path editor refining its picture
@@ -71,12 +86,22 @@ public:
     // leaves it; any other key, tick or work advances it.
     std::uint64_t screen_revision() const override { return m_revision; }
 
-    SessionPhase phase() const;
+    // The leaf of the session's chart: an overlay's while one is open, else the step's.
+    State leaf() const;
+    // The step's leaf, under any overlay.
+    State step_leaf() const;
+    // The innermost leaf's name, the path editor's or the player's on their screens ("staff",
+    // "running", "ask_view"), as the printed charts spell it.
+    std::string_view leaf_name() const;
+    // What a transcript and the help screen call the step ("step 4: four-line staff").
+    std::string_view step_title() const;
+    // The keys the session listens with now (an overlay's, else the step's).
+    KeyContext key_context() const;
     // Whether the help (? or F1) is over the step: a whole screen of its own until a key closes it.
     bool showing_help() const;
     // Whether the step now takes typed text: a prompt's line, or a staff value after '='.
     bool takes_typed_text() const;
-    // Whether `event`, typed now, is known to leave the step where it is (stays_in_phase; a key
+    // Whether `event`, typed now, is known to leave the step where it is (stays_in_step; a key
     // the step ignores stays too). False says nothing.
     bool keeps_phase(const KeyEvent& event) const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
@@ -116,15 +141,20 @@ private:
     };
     std::optional<ShapingLook> shaping_look() const;
     void take_key(const KeyEvent& event);
+    // A command the path screen or the animation takes by its own chart (the session chart's rows).
+    void update_step(const Command& command);
     StepContext context();
     // The path whose evaluation's arrays the slopes prompt makes while it waits, if any.
     SessionPath* path_wanting_room();
     const SessionPath* path_wanting_room() const;
     KeyContext step_key_context() const;
-    void dispatch_to_step(const Command& command);
-    // The text step on the screen as a leaf of the prompt chart.
-    ConsoleState console_leaf() const;
-    static ConsoleChart make_console_chart();
+    static SessionChart make_chart();
+    static std::vector<SessionChart::Row> any_step_rows();
+    static std::vector<SessionChart::Row> console_rows();
+    static StepGraph make_graph();
+    // The graph's rows' action: the step `To` made from the step `From` on the screen.
+    template <typename From, typename To>
+    void make_step_after();
     // The rows' actions: the line typed, the answer (an empty line: the prompt's) submitted, a
     // question answered or the split stopped; what the step said, for follow().
     void type_into_line(char32_t character);
@@ -134,9 +164,10 @@ private:
     void submit_line();
     void answer_question();
     std::string empty_answer();
-    // Follows the transition table from the step on the screen for `result`.
+    // Follows the steps' graph from the step on the screen for `result`.
     void follow(StepResult result);
     void ask(const std::string& problem);
+    void open_help();
     void save_picture();
     void quit();
     SessionScreen graphics_screen(GraphicsScreen picture) const;
@@ -154,8 +185,8 @@ private:
     std::string m_goal_feedback;
     std::string m_goal_briefly;
     std::uint64_t m_revision = 0;
-    // How the text step the last command answered ended (console_chart's rows), for follow().
-    StepResult m_console_result;
+    // How the step the last command answered ended (set by the chart's rows), for follow().
+    StepResult m_step_result;
 };
 
 } // namespace apcs

@@ -5,7 +5,7 @@
 #include "apcs/input/key_map.h"
 #include "apcs/editor/path_editor.h"
 #include "apcs/session/session_model.h"
-#include "apcs/input/session_phase.h"
+#include "apcs/input/chart.h"
 
 #include <cstddef>
 #include <optional>
@@ -16,7 +16,7 @@
 
 // The steps of the 1989 session (thesis Ch. 4.2, SPEC §3), each a state that owns what it alone
 // uses; what later steps read goes into the SessionModel. A step acts on its commands and says
-// how it ended (StepResult); the session's transition table (session_graph.cpp) says which step
+// how it ended (StepResult); the session's steps' graph (session_graph.cpp) says which step
 // follows, and each step's `after` says how it is made from the step before it.
 //
 // A text prompt gives: lines() printed when it begins, again() after a refusal, default_answer()
@@ -37,6 +37,13 @@ struct StepResult {
     static StepResult refused(std::string why) { return {StepOutcome::refused, std::move(why)}; }
 };
 
+// The steps' graph (session_graph.cpp) is a chart whose events are how a step ended.
+template <>
+struct ChartEvents<StepResult> {
+    static std::size_t index(const StepResult& result) { return static_cast<std::size_t>(result.outcome); }
+    static std::string_view name(std::size_t index);
+};
+
 namespace step {
 
 struct AskNext;
@@ -45,8 +52,6 @@ using Lines = std::vector<std::string>;
 
 // Step 1 (fig. 4.2.1): the key frames.
 struct Key1Prompt {
-    SessionPhase phase() const { return SessionPhase::ask_key1; }
-    KeyContext key_context() const { return KeyContext::text_line; }
     Lines lines(const StepContext&) const;
     Lines again(const StepContext& context) const { return lines(context); }
     std::string default_answer(const StepContext&) const { return "key1.dat"; }
@@ -56,8 +61,6 @@ struct Key1Prompt {
 };
 
 struct Key2Prompt {
-    SessionPhase phase() const { return SessionPhase::ask_key2; }
-    KeyContext key_context() const { return KeyContext::text_line; }
     Lines lines(const StepContext&) const;
     Lines again(const StepContext& context) const { return lines(context); }
     std::string default_answer(const StepContext&) const { return "key2.dat"; }
@@ -74,8 +77,6 @@ struct Splitting {
     std::vector<Vec3> key2;
     std::size_t written = 0;
 
-    SessionPhase phase() const { return SessionPhase::splitting; }
-    KeyContext key_context() const { return KeyContext::splitting; }
     Lines lines(const StepContext&) const { return {}; }
     Lines again(const StepContext&) const { return {}; }
     StepResult start(StepContext& context);
@@ -96,8 +97,6 @@ private:
 
 // Step 2 (fig. 4.2.2), Define_View_Parameters.
 struct ViewPrompt {
-    SessionPhase phase() const { return SessionPhase::ask_view; }
-    KeyContext key_context() const { return KeyContext::text_line; }
     Lines lines(const StepContext& context) const;
     Lines again(const StepContext& context) const;
     std::string default_answer(const StepContext& context) const;
@@ -111,8 +110,6 @@ struct ViewPrompt {
 struct PathPrompt {
     int path = 0;
 
-    SessionPhase phase() const { return SessionPhase::ask_path_file; }
-    KeyContext key_context() const { return KeyContext::text_line; }
     Lines lines(const StepContext& context) const;
     Lines again(const StepContext& context) const { return lines(context); }
     std::string default_answer(const StepContext& context) const;
@@ -129,8 +126,6 @@ struct SlopesPrompt {
     // DS[0] typed alone on its line, waiting for DD[N].
     std::optional<double> first;
 
-    SessionPhase phase() const { return SessionPhase::ask_slopes; }
-    KeyContext key_context() const { return KeyContext::text_line; }
     Lines lines(const StepContext& context) const;
     Lines again(const StepContext& context) const;
     std::string default_answer(const StepContext& context) const;
@@ -146,8 +141,6 @@ struct Shaping {
     int path = 0;
     PathEditor editor;
 
-    SessionPhase phase() const { return editor.phase(); }
-    KeyContext key_context() const { return editor.key_context(); }
     Lines lines(const StepContext&) const { return {}; }
     Lines again(const StepContext&) const { return {}; }
     StepResult update(StepContext& context, const Command& command);
@@ -160,8 +153,6 @@ private:
 
 // Step 5: "Adjust the next path ? (Y)".
 struct AskNext {
-    SessionPhase phase() const { return SessionPhase::ask_next_path; }
-    KeyContext key_context() const { return KeyContext::yes_to_go_on; }
     Lines lines(const StepContext&) const;
     Lines again(const StepContext& context) const { return lines(context); }
     StepResult submit(StepContext& context, const std::string& answer);
@@ -171,8 +162,6 @@ struct AskNext {
 
 // Step 6 (fig. 4.2.7): "Stop the work ? (Enter)", then s_fiting.c.
 struct AskStop {
-    SessionPhase phase() const { return SessionPhase::ask_stop; }
-    KeyContext key_context() const { return KeyContext::enter_to_go_on; }
     Lines lines(const StepContext&) const;
     Lines again(const StepContext& context) const { return lines(context); }
     StepResult submit(StepContext& context, const std::string& answer);
@@ -185,8 +174,6 @@ struct AskStop {
 struct Fitted {
     FrameSequence frames;
 
-    SessionPhase phase() const { return SessionPhase::ask_draw; }
-    KeyContext key_context() const { return KeyContext::any_key; }
     Lines lines(const StepContext&) const;
     Lines again(const StepContext& context) const { return lines(context); }
     StepResult start(StepContext& context);
@@ -200,8 +187,6 @@ struct Playing {
     AnimationPlayer player;
     bool overlay_written = false;
 
-    SessionPhase phase() const { return player.phase(); }
-    KeyContext key_context() const { return player.key_context(); }
     Lines lines(const StepContext&) const { return {}; }
     Lines again(const StepContext&) const { return {}; }
     StepResult update(StepContext& context, const Command& command);
@@ -214,8 +199,6 @@ private:
 
 // The end: the files written.
 struct Finished {
-    SessionPhase phase() const { return SessionPhase::finished; }
-    KeyContext key_context() const { return KeyContext::finished; }
     Lines lines(const StepContext& context) const;
     Lines again(const StepContext& context) const { return lines(context); }
     StepResult start(StepContext& context);
