@@ -1,7 +1,7 @@
-#include "apcs/cli/draw_command.h"
+#include "draw_command.h"
 
 #include "apcs/cli/path_command.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/raster/painter.h"
 #include "apcs/screens/frames_overlay.h"

@@ -1,10 +1,10 @@
 #include "apcs/cli/export_command.h"
 
 #include "apcs/animation/memory_budget.h"
-#include "apcs/cli/fit_command.h"
-#include "apcs/cli/memory_limit.h"
+#include "fit_command.h"
+#include "memory_limit.h"
 #include "apcs/cli/path_command.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/path_files.h"
 

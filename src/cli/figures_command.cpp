@@ -1,10 +1,10 @@
-#include "apcs/cli/figures_command.h"
+#include "figures_command.h"
 
 #include "apcs/animation/surface_fit.h"
 #include "apcs/base/utf8.h"
 #include "apcs/cli/data_folder.h"
 #include "apcs/cli/path_command.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/numbered_files.h"
 #include "apcs/formats/path_files.h"

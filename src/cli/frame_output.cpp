@@ -1,7 +1,7 @@
-#include "apcs/cli/frame_output.h"
+#include "frame_output.h"
 
 #include "apcs/cli/path_command.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/cli/write_progress.h"
 
 #include "apcs/formats/inbetween_files.h"

@@ -3,8 +3,8 @@
 #include "grade_run.h"
 
 #include "apcs/base/utf8.h"
-#include "apcs/cli/memory_limit.h"
-#include "apcs/cli/report.h"
+#include "memory_limit.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/unfinished_files.h"
 #include "apcs/lesson/gradebook.h"

@@ -3,7 +3,7 @@
 #include "apcs/animation/memory_budget.h"
 #include "apcs/base/parallel_work.h"
 #include "apcs/base/utf8.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/cli/script_options.h"
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/file_io.h"

@@ -1,4 +1,4 @@
-#include "apcs/cli/handout_writer.h"
+#include "handout_writer.h"
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/numbered_files.h"

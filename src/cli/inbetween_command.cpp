@@ -1,10 +1,10 @@
-#include "apcs/cli/inbetween_command.h"
+#include "inbetween_command.h"
 
 #include "apcs/animation/add_points.h"
 #include "apcs/animation/memory_budget.h"
-#include "apcs/cli/frame_output.h"
-#include "apcs/cli/memory_limit.h"
-#include "apcs/cli/report.h"
+#include "frame_output.h"
+#include "memory_limit.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "apcs/cli/memory_limit.h"
+#include "memory_limit.h"
 
 #include "apcs/animation/memory_budget.h"
 

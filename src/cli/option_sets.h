@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apcs/cli/export_command.h"
-#include "apcs/cli/inbetween_command.h"
+#include "inbetween_command.h"
 #include "apcs/cli/options.h"
 
 #include <CLI/CLI.hpp>

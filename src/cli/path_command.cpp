@@ -1,8 +1,8 @@
 #include "apcs/cli/path_command.h"
 
 #include "apcs/animation/memory_budget.h"
-#include "apcs/cli/memory_limit.h"
-#include "apcs/cli/report.h"
+#include "memory_limit.h"
+#include "report.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/key_file_guard.h"
 #include "apcs/formats/path_files.h"

@@ -1,10 +1,10 @@
 #include "apcs/cli/play_command.h"
 
 #include "apcs/animation/memory_budget.h"
-#include "apcs/cli/frame_output.h"
-#include "apcs/cli/memory_limit.h"
+#include "frame_output.h"
+#include "memory_limit.h"
 #include "apcs/cli/path_command.h"
-#include "apcs/cli/report.h"
+#include "report.h"
 #include "apcs/cli/write_progress.h"
 #include "apcs/cli/session_command.h"
 #include "apcs/formats/dat_file.h"

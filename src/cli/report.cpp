@@ -1,4 +1,4 @@
-#include "apcs/cli/report.h"
+#include "report.h"
 
 #include "apcs/base/utf8.h"
 

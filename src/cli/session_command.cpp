@@ -1,9 +1,9 @@
 #include "apcs/cli/session_command.h"
 
 #include "apcs/base/utf8.h"
-#include "apcs/cli/handout_writer.h"
-#include "apcs/cli/memory_limit.h"
-#include "apcs/cli/report.h"
+#include "handout_writer.h"
+#include "memory_limit.h"
+#include "report.h"
 #include "apcs/cli/script_options.h"
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/inbetween_files.h"

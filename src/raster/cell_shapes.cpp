@@ -1,4 +1,4 @@
-#include "apcs/raster/cell_shapes.h"
+#include "cell_shapes.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "apcs/raster/graphics_screen.h"
 
-#include "apcs/raster/cell_shapes.h"
+#include "cell_shapes.h"
 #include "apcs/raster/font.h"
 #include "apcs/raster/painter.h"
 #include "apcs/raster/short_screen.h"

@@ -1,4 +1,4 @@
-#include "apcs/scene/move_align.h"
+#include "move_align.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "apcs/scene/roll_turn.h"
+#include "roll_turn.h"
 
 #include "apcs/scene/actor_state.h"
 

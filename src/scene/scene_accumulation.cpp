@@ -2,7 +2,7 @@
 #include "apcs/scene/scene_animation.h"
 
 #include "apcs/base/parallel_work.h"
-#include "apcs/scene/roll_turn.h"
+#include "roll_turn.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,10 +5,10 @@
 #include "apcs/animation/speed_law.h"
 #include "apcs/base/parallel_work.h"
 #include "apcs/animation/surface_fit.h"
-#include "apcs/scene/move_align.h"
+#include "move_align.h"
 #include "apcs/geometry/bounding_box.h"
 #include "apcs/scene/scene_file.h"
-#include "apcs/scene/scene_numbers.h"
+#include "scene_numbers.h"
 #include "apcs/scene/timed_distance.h"
 
 #include <algorithm>

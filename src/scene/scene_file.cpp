@@ -1,7 +1,7 @@
 #include "apcs/scene/scene_file.h"
 #include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene_joints.h"
-#include "apcs/scene/scene_numbers.h"
+#include "scene_numbers.h"
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/number_text.h"

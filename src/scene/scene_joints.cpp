@@ -5,7 +5,7 @@
 #include "apcs/formats/text_fields.h"
 #include "apcs/scene/scene_animation.h"
 #include "apcs/scene/scene_file.h"
-#include "apcs/scene/scene_numbers.h"
+#include "scene_numbers.h"
 
 #include <algorithm>
 #include <cmath>

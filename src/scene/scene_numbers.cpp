@@ -1,4 +1,4 @@
-#include "apcs/scene/scene_numbers.h"
+#include "scene_numbers.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "apcs/formats/numbered_files.h"
 #include "apcs/base/overloaded.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/session/session_pictures.h"
+#include "session_pictures.h"
 #include "apcs/screens/curve_raster.h"
 #include "apcs/screens/session_text.h"
 

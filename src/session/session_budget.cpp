@@ -1,4 +1,4 @@
-#include "apcs/session/session_budget.h"
+#include "session_budget.h"
 
 #include "apcs/animation/memory_budget.h"
 

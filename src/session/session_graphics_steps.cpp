@@ -6,7 +6,7 @@
 #include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/raster/svg_encoder.h"
-#include "apcs/session/session_pictures.h"
+#include "session_pictures.h"
 #include "apcs/screens/session_text.h"
 
 #include <utility>

@@ -1,4 +1,4 @@
-#include "apcs/session/session_pictures.h"
+#include "session_pictures.h"
 
 #include "apcs/raster/painter.h"
 

@@ -6,7 +6,7 @@
 #include "apcs/formats/number_text.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/sif_path.h"
-#include "apcs/session/session_budget.h"
+#include "session_budget.h"
 #include "apcs/screens/session_text.h"
 
 #include <algorithm>

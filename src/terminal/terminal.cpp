@@ -1,4 +1,4 @@
-#include "apcs/terminal/terminal.h"
+#include "terminal.h"
 
 #include "apcs/terminal/curses_keys.h"
 #include "stop_signals.h"

@@ -1,6 +1,6 @@
 #include "apcs/terminal/terminal_session.h"
 
-#include "apcs/terminal/terminal.h"
+#include "terminal.h"
 #include "apcs/terminal/terminal_pixels.h"
 
 #include <memory>
