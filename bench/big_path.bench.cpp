@@ -11,7 +11,7 @@
 #include "apcs/raster/graphics_screen.h"
 #include "apcs/input/command.h"
 #include "apcs/editor/path_editor.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include <benchmark/benchmark.h>
 

@@ -10,7 +10,7 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/scene/scene_file.h"
 #include "apcs/playback/animation_player.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include <benchmark/benchmark.h>
 

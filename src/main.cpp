@@ -2,7 +2,7 @@
 #include "apcs/cli/command_line.h"
 #include "apcs/formats/unfinished_files.h"
 #include "apcs/base/exit_status.h"
-#include "apcs/terminal/terminal_session.h"
+#include "apcs/terminal/run_terminal_program.h"
 
 #include <clocale>
 #include <csignal>

@@ -4,7 +4,7 @@
 #include "apcs/formats/numbered_files.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/handout_index.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include <algorithm>
 #include <string>
@@ -94,12 +94,12 @@ std::vector<std::string> HandoutWriter::earlier_pages() const
     return earlier;
 }
 
-void HandoutWriter::write(int number, std::size_t count, PageCaption caption, const SessionScreen& screen,
+void HandoutWriter::write(int number, std::size_t count, PageCaption caption, const ProgramScreen& screen,
                           GlyphSet glyphs, const KeyFileGuard& inputs)
 {
     if (!m_outcome || is_empty_prompt(screen))
         return;
-    const SessionScreen shown = with_caption(screen, caption.shown);
+    const ProgramScreen shown = with_caption(screen, caption.shown);
     const std::string stem = handout_file_stem(number, count, caption.written);
     const std::filesystem::path picture = m_folder / (stem + ".png");
     const Expected<std::string> png = encode_png(render_raster(screen_picture(shown)), PngShape::monitor, m_ink);

@@ -6,7 +6,7 @@
 #include "apcs/lesson/handout_index.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/png_encoder.h"
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 #include <filesystem>
 #include <map>
@@ -45,7 +45,7 @@ public:
     // never one of `inputs`. When the PNG's old content took NN-STEP.bak this time, the text's goes
     // to NN-STEP.b01 …, so that one backup never replaces the other. The first problem is kept
     // (outcome()); after it nothing more is written. A caption written again replaces its page.
-    void write(int number, std::size_t count, PageCaption caption, const SessionScreen& screen, GlyphSet glyphs,
+    void write(int number, std::size_t count, PageCaption caption, const ProgramScreen& screen, GlyphSet glyphs,
                const KeyFileGuard& inputs);
 
     // DIR/index.html of the pages written, titled `title`, written as the pages are (never one of

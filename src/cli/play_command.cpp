@@ -19,7 +19,7 @@
 #include "apcs/scene/scene_joints.h"
 #include "apcs/scene/scene_tree.h"
 #include "apcs/screens/frames_overlay.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 #include "apcs/playback/scene_player.h"
 
 #include <unistd.h>

@@ -129,7 +129,7 @@ SessionSettings session_settings(const CommonOptions& options)
 
 std::size_t run_headless_session(ReplayDriver& replay, const Session& session, GlyphSet glyphs, std::ostream& out)
 {
-    // A step's screen is printed when the next one changes the phase (the transcript's steps): the
+    // A step's screen is printed when the next one has another title (the transcript's steps): the
     // screen after the last key the step took. It is drawn only before a key that may end the step
     // (a path of 16,000 waypoints inserted, 10^6 staff keys: a screen a key would be most of the
     // replay's time).
@@ -151,7 +151,7 @@ std::size_t run_headless_session(ReplayDriver& replay, const Session& session, G
     drive.before_step = [&] {
         // While the session works (a split), its screens are not a step's last: the last was drawn
         // before the key that set it to work.
-        if (!session.busy() && !replay.next_work_keeps_phase())
+        if (!session.busy() && !replay.next_work_keeps_step())
             draw_current();
     };
     drive.after_step = [&] {
@@ -331,7 +331,7 @@ ExitStatus replay_headless(Session& session, const KeyScript& script, const std:
 {
     if (transcript.out != nullptr)
         hooks.caption_reached = [out = transcript.out, &script, pages = std::move(hooks.caption_reached)](
-                                    std::size_t index, const SessionScreen& shown) {
+                                    std::size_t index, const ProgramScreen& shown) {
             *out << ";; " << script.captions[index].text << '\n';
             if (pages)
                 pages(index, shown);
@@ -540,7 +540,7 @@ ReplayHooks replay_hooks(std::optional<HandoutWriter>& handout, const CommonOpti
     ReplayHooks hooks;
     if (handout)
         hooks.caption_ended = [&handout, &options, &script, glyphs, folder](
-                                  std::size_t index, const std::string& caption, const SessionScreen& screen,
+                                  std::size_t index, const std::string& caption, const ProgramScreen& screen,
                                   const std::vector<std::string>& keys) {
             handout->write(static_cast<int>(index) + 1, script.captions.size(),
                            {script.captions[index].text, caption}, screen, glyphs, files_read(options, keys, folder));

@@ -146,7 +146,7 @@ std::string changes_text(std::size_t count) { return std::to_string(count) + (co
 
 } // namespace
 
-PathEditor::PathEditor(Setup setup, SessionLog& log)
+PathEditor::PathEditor(Setup setup, StepLog& log)
     : m_setup(std::move(setup))
     , m_log(log)
     , m_document(std::make_unique<PathDocument>(std::exchange(m_setup.points, {})))

@@ -1,7 +1,6 @@
 #include "apcs/input/overlays.h"
 
 #include "apcs/base/overloaded.h"
-#include "apcs/screens/session_text.h"
 
 namespace apcs {
 
@@ -22,21 +21,16 @@ const overlay::QuitQuestion* Overlays::quit_question() const
     return m_open ? std::get_if<overlay::QuitQuestion>(&*m_open) : nullptr;
 }
 
-OverlayAnswer Overlays::handle(KeyContext context, const Command& command, const OverlayStep& step)
+OverlayAnswer Overlays::handle(KeyContext context, const Command& command)
 {
     if (m_open)
         return answer_open(command);
     return std::visit(Overloaded{[&](const command::ShowHelp&) {
-                                     open_help(context, step.empty_answer);
+                                     open_help(context, {});
                                      return OverlayAnswer::handled;
                                  },
                                  [](const command::SavePicture&) { return OverlayAnswer::save_picture; },
-                                 [&](const command::Quit&) {
-                                     if (step.quit == QuitAsks::at_once)
-                                         return OverlayAnswer::quit;
-                                     ask_quit(session_text::quit_question);
-                                     return OverlayAnswer::handled;
-                                 },
+                                 [](const command::Quit&) { return OverlayAnswer::quit; },
                                  // Every other command is the step's: the overlays take only these three.
                                  [](const auto&) { return OverlayAnswer::step_command; }},
                       command);

@@ -109,7 +109,7 @@ std::string handout_file_stem(int number, std::size_t count, std::string_view ca
     return digits + handout_step_name(caption);
 }
 
-std::string screen_text(const SessionScreen& screen, GlyphSet glyphs)
+std::string screen_text(const ProgramScreen& screen, GlyphSet glyphs)
 {
     const CellGrid grid = screen.graphics
                               ? render_cells(screen.picture, {text_screen_columns, text_screen_rows}, glyphs)
@@ -123,7 +123,7 @@ std::string screen_text(const SessionScreen& screen, GlyphSet glyphs)
     return text;
 }
 
-bool is_empty_prompt(const SessionScreen& screen)
+bool is_empty_prompt(const ProgramScreen& screen)
 {
     if (screen.graphics)
         return false;
@@ -137,7 +137,7 @@ bool is_empty_prompt(const SessionScreen& screen)
     return rows_written <= 1;
 }
 
-GraphicsScreen screen_picture(const SessionScreen& screen)
+GraphicsScreen screen_picture(const ProgramScreen& screen)
 {
     if (screen.graphics)
         return screen.picture;

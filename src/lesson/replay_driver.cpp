@@ -221,16 +221,16 @@ void ReplayDriver::play_headless()
     play_scripted();
 }
 
-bool ReplayDriver::next_work_keeps_phase() const
+bool ReplayDriver::next_work_keeps_step() const
 {
     // Its captions and goals, reached first (settle), change the message line, never the step.
     return m_audience == ReplayAudience::headless && !m_session->working() && playing() && !m_session->animating() &&
-           m_session->keeps_phase(m_script.events[m_played]);
+           m_session->keeps_step(m_script.events[m_played]);
 }
 
-SessionScreen ReplayDriver::screen() const
+ProgramScreen ReplayDriver::screen() const
 {
-    SessionScreen screen = m_session->screen();
+    ProgramScreen screen = m_session->screen();
     // The help fills the screen from its title to "Any key closes this help.": a caption there
     // would push the title off, the badge cover its first key line. Both come back as it closes.
     if (m_session->showing_help())

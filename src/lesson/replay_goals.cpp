@@ -1,7 +1,7 @@
 #include "apcs/lesson/replay_driver.h"
 
 #include "apcs/lesson/goal_check.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include <algorithm>
 #include <utility>
@@ -284,7 +284,7 @@ bool ReplayDriver::judge_goal_headless(std::size_t played)
     // that may, and when judged, not before every key (a NEAR goal's look reads the whole curve,
     // and a recording may insert 16,000 waypoints).
     const bool judging = judging_end(m_open->goal) <= played;
-    const bool look = judging || played >= m_script.events.size() || !m_session->keeps_phase(m_script.events[played]);
+    const bool look = judging || played >= m_script.events.size() || !m_session->keeps_step(m_script.events[played]);
     if (follow_open_goal(look) != GoalPath::left && !judging)
         return false;
     const std::vector<ScriptGoal>& goals = m_script.goals;

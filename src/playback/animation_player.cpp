@@ -36,7 +36,7 @@ GraphicsScreen draw_frame(const FrameSequence& frames, const Graphic& structure,
 } // namespace
 
 AnimationPlayer::AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names,
-                                 ViewAngles angles, int delay_ms, SessionLog& log)
+                                 ViewAngles angles, int delay_ms, StepLog& log)
     : m_frames(std::move(frames))
     , m_structure(std::move(structure))
     , m_key_names(std::move(key_names))

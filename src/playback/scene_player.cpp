@@ -23,7 +23,7 @@ void ScenePlayer::take(const KeyEvent& event)
     const std::optional<Command> command = command_for(keys, event);
     if (!command)
         return;
-    switch (m_overlays.handle(keys, *command, OverlayStep{})) {
+    switch (m_overlays.handle(keys, *command)) {
     case OverlayAnswer::step_command:
         m_finished = m_player.update(*command) == AnimationPlayer::Outcome::finished;
         return;
@@ -33,7 +33,7 @@ void ScenePlayer::take(const KeyEvent& event)
     }
 }
 
-SessionScreen ScenePlayer::screen() const
+ProgramScreen ScenePlayer::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
         return {false, key_help_screen("playing a scene", help->keys), {}};

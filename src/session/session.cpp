@@ -78,7 +78,7 @@ bool Session::takes_typed_text() const
     return context == KeyContext::text_line || context == KeyContext::value_field;
 }
 
-bool Session::keeps_phase(const KeyEvent& event) const
+bool Session::keeps_step(const KeyEvent& event) const
 {
     const KeyContext keys = key_context();
     const std::optional<Command> command = command_for(keys, event);
@@ -147,11 +147,10 @@ void Session::open_help() { m_overlays.open_help(step_key_context(), empty_answe
 void Session::type_into_line(char32_t character)
 {
     std::string input = m_console.input();
+    append_utf8(input, character);
     // A zero-width or control character would change the answer where nobody can see it.
-    if (input.size() < max_answer_bytes && cell_width(character) > 0) {
-        append_utf8(input, character);
+    if (input.size() <= max_answer_bytes && cell_width(character) > 0)
         m_console.set_input(input);
-    }
 }
 
 void Session::erase_last_typed() { m_console.set_input(without_last_character(m_console.input())); }
@@ -293,14 +292,14 @@ void Session::work()
     follow(splitting->work(step_context));
 }
 
-SessionScreen Session::screen() const
+ProgramScreen Session::screen() const
 {
     if (const overlay::HelpScreen* help = m_overlays.help())
         return {false, key_help_screen(step_title(), help->keys, help->empty_answer), {}};
     return std::visit(Overloaded{[&](const step::Shaping& shaping) { return graphics_screen(shaping.editor.view(m_goal_point, {m_goal_feedback, m_goal_briefly})); },
                                  [&](const step::Playing& playing) { return graphics_screen(playing.player.view()); },
                                  [&](const auto& text_step) {
-                                     SessionScreen shown{false, console_screen(), {}};
+                                     ProgramScreen shown{false, console_screen(), {}};
                                      std::string message = m_notice;
                                      if constexpr (std::is_same_v<std::decay_t<decltype(text_step)>, step::Splitting>)
                                          message = text_step.progress();
@@ -326,7 +325,7 @@ CellGrid Session::console_screen() const
 }
 
 // The message line, by priority (SPEC §7.3): an open question, then what the last key did.
-SessionScreen Session::graphics_screen(GraphicsScreen picture) const
+ProgramScreen Session::graphics_screen(GraphicsScreen picture) const
 {
     const overlay::QuitQuestion* asking = m_overlays.quit_question();
     const std::string message = asking != nullptr ? std::string(asking->question) : m_notice;
@@ -342,7 +341,7 @@ void Session::save_picture()
     // The picture written is the final one, never a first picture still refined.
     if (auto* shaping = std::get_if<step::Shaping>(&m_step))
         shaping->editor.refine();
-    SessionScreen shown = screen();
+    ProgramScreen shown = screen();
     if (!shown.graphics) {
         m_notice = "P writes a picture in graphics mode only";
         return;
@@ -396,7 +395,7 @@ std::uint64_t Session::key_work() const { return 1 + std::uint64_t{largest_path(
 
 std::uint64_t Session::key_work(const KeyEvent& event) const
 {
-    if (key_context() != KeyContext::waypoints || !keeps_phase(event))
+    if (key_context() != KeyContext::waypoints || !keeps_step(event))
         return key_work();
     const std::size_t largest = largest_path(m_model, path_editor());
     return 1 + 2 * std::uint64_t{CurveRaster::block_segments(largest)} + largest / 64;

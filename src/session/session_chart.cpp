@@ -112,10 +112,6 @@ std::vector<Session::SessionChart::Row> Session::any_step_rows()
         {State::steps, on<command::SavePicture>, {}, nullptr,
          "the screen written to the first free apcs001.png ... apcs999.png (graphics mode only: said)",
          [](S& s, C) { s.save_picture(); }},
-        {State::steps, on<command::Quit>, "a path being shaped (it is not saved)",
-         [](const S& s, C) { return std::holds_alternative<step::Shaping>(s.m_step); },
-         "asked: Quit without saving this path ? (Y/N)",
-         [](S& s, C) { s.m_overlays.ask_quit(session_text::quit_question); }, State::quit_question},
         {State::steps, on<command::Quit>, {}, nullptr, "quit: the files written listed, logged",
          [](S& s, C) { s.quit(); }, State::finished},
     };
@@ -152,7 +148,9 @@ std::vector<Session::SessionChart::Row> Session::console_rows()
          State::steps},
         {State::question, on<command::Continue>, {}, nullptr, "answered: the steps' graph",
          [](S& s, C) { s.answer_question(); }, State::steps},
-        // The screens with charts of their own.
+        // The screens with charts of their own; only a path being shaped is not yet saved.
+        {State::path_screen, on<command::Quit>, {}, nullptr, "asked: Quit without saving this path ? (Y/N)",
+         [](S& s, C) { s.m_overlays.ask_quit(session_text::quit_question); }, State::quit_question},
         {State::path_screen, any_other_event, {}, nullptr,
          "to the path editor's chart (an accepted path: the steps' graph)", [](S& s, C c) { s.update_step(c); },
          State::steps},

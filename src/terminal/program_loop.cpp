@@ -1,7 +1,7 @@
 #include "apcs/terminal/program_loop.h"
 
 #include "apcs/input/play_to_idle.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/raster/short_screen.h"
 
 #include <algorithm>
@@ -15,7 +15,7 @@ namespace apcs {
 
 namespace {
 
-CellGrid grid_for(const SessionScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
+CellGrid grid_for(const ProgramScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
     if (!area)
@@ -33,7 +33,7 @@ CellGrid grid_for(const SessionScreen& screen, TerminalSize size, GlyphSet glyph
 void show_screen(TerminalDevice& terminal, TerminalPixels& pixels, const InteractiveProgram& program, GlyphSet glyphs,
                  AsciiGlyphCache& cache)
 {
-    SessionScreen screen = program.screen();
+    ProgramScreen screen = program.screen();
     const std::string caption = screen.caption.empty() ? std::string(pixels.notice()) : std::move(screen.caption);
     screen = with_caption(std::move(screen), caption);
     const TerminalSize size = terminal.size();

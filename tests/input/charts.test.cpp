@@ -75,7 +75,7 @@ template <typename Machine, typename State, typename EventsOf>
 std::string checked_chart(const Chart<Machine, State>& chart, EventsOf events_of, int least_alone)
 {
     CHECK(test::chart_gaps(chart, events_of).empty());
-    CHECK(test::check_rows_alone_leave_gaps(chart, events_of) >= least_alone);
+    CHECK(test::rows_alone(chart, events_of) >= least_alone);
     test::check_rows_met_and_guards_end(chart);
     return chart.printed() + "\nThe walk: what each command the keys send meets in each leaf\n" +
            test::chart_walk_text(chart, events_of);
@@ -102,7 +102,9 @@ TEST_CASE("the session's chart, with the path editor's and the player's below it
           "send in every leaf, each row can be met and counts, and it prints as approved",
           "[session][chart]")
 {
-    std::string map = "# The session (src/session/session_chart.cpp)\n" +
+    std::string map = "# The session (src/session/session_chart.cpp)\n"
+                      "# A row to `steps` leaves the step to say how it ended: the steps' graph, below, says which "
+                      "step follows (or none: the step stays).\n" +
                       checked_chart(Session::chart(), session_events, 12);
     test::check_rows_met_and_guards_end(Session::graph());
     map += "\n# The steps' graph: how a step ended, the step that follows (src/session/session_graph.cpp)\n" +
@@ -115,6 +117,27 @@ TEST_CASE("the session's chart, with the path editor's and the player's below it
            "(src/lesson/replay_rows.cpp)\n" +
            replay_printed();
     test::check_golden("session_chart.txt", map);
+}
+
+TEST_CASE("the session keeps ?, P and q for itself and hands every other command the path screen's and the "
+          "animation's keys send to their charts",
+          "[session][chart]")
+{
+    const std::vector<std::size_t> kept = {on<command::ShowHelp>, on<command::SavePicture>, on<command::Quit>};
+    const auto check_handed = [&](Leaf screen, KeyContext keys) {
+        std::vector<std::size_t> expected;
+        for (const std::size_t event : test::commands_sent(keys))
+            if (std::find(kept.begin(), kept.end(), event) == kept.end())
+                expected.push_back(event);
+        CAPTURE(key_context_name(keys));
+        CHECK(handed_down(screen, keys) == expected);
+    };
+    for (const auto& state : PathEditor::chart().states())
+        if (PathEditor::chart().is_leaf(state.state))
+            check_handed(Leaf::path_screen, *PathEditor::chart().keys(state.state));
+    for (const auto& state : AnimationPlayer::chart().states())
+        if (AnimationPlayer::chart().is_leaf(state.state))
+            check_handed(Leaf::player, *AnimationPlayer::chart().keys(state.state));
 }
 
 TEST_CASE("every step of the session is a leaf of its chart with a title, and the keys of a leaf without a chart of "

@@ -47,11 +47,11 @@ struct CaptionLog {
 ReplayHooks logging_hooks(CaptionLog& log, const Session& session)
 {
     ReplayHooks hooks;
-    hooks.caption_reached = [&log, &session](std::size_t index, const SessionScreen&) {
+    hooks.caption_reached = [&log, &session](std::size_t index, const ProgramScreen&) {
         log.events.push_back("reached " + std::to_string(index));
         log.reached.push_back(screen_text(session.screen(), GlyphSet::ascii));
     };
-    hooks.caption_ended = [&log](std::size_t index, const std::string& caption, const SessionScreen& screen,
+    hooks.caption_ended = [&log](std::size_t index, const std::string& caption, const ProgramScreen& screen,
                                 const std::vector<std::string>&) {
         log.events.push_back("ended " + std::to_string(index));
         log.ended_captions.push_back(caption);

@@ -4,7 +4,7 @@
 // headless run found it not reached, and each says so in its own words.
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include "support/replay_deck.h"
 #include "support/run_apcs.h"
@@ -115,7 +115,7 @@ TEST_CASE("each PgDn of a lesson shows at 80x24 what the handout's page for that
     std::size_t pages = 0;
     for (std::size_t caption = 0; caption < script.captions.size(); ++caption) {
         deck.press(KeyEvent::of(Key::page_down));
-        const SessionScreen shown = deck.replay->screen();
+        const ProgramScreen shown = deck.replay->screen();
         INFO("caption " << caption + 1 << ": " << script.captions[caption].text);
         REQUIRE(shown.caption == script.captions[caption].text);
         const fs::path page = handout / (handout_file_stem(static_cast<int>(caption) + 1, script.captions.size(),
@@ -149,7 +149,7 @@ TEST_CASE("each PgDn of an exercise shows at 80x24 the handout's page: the task'
     test::Deck deck(script, "exercises");
     for (std::size_t caption = 0; caption < script.captions.size(); ++caption) {
         deck.press(KeyEvent::of(Key::page_down));
-        const SessionScreen shown = deck.replay->screen();
+        const ProgramScreen shown = deck.replay->screen();
         INFO("caption " << caption + 1 << ": " << shown.caption);
         const fs::path page = handout / (handout_file_stem(static_cast<int>(caption) + 1, script.captions.size(),
                                                            script.captions[caption].text) +
@@ -214,7 +214,7 @@ TEST_CASE("on a terminal a caption closing a goal is never said 'not reached': P
     REQUIRE_FALSE(deck.replay->goal_outcomes().empty());
     REQUIRE(deck.replay->goal_outcomes()[0].verdict == GoalOutcome::Verdict::not_reached);
     deck.press(KeyEvent::of(Key::page_up));
-    const SessionScreen shown = deck.replay->screen();
+    const ProgramScreen shown = deck.replay->screen();
     INFO(shown.caption);
     REQUIRE_FALSE(shown.caption.empty());
     REQUIRE_FALSE(shown.caption.starts_with(not_reached_caption_prefix));

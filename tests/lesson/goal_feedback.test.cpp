@@ -4,7 +4,7 @@
 // tokens between the script's GOAL line and its closing caption.
 #include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_driver.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/screens/session_text.h"
 #include "apcs/session/session_files.h"
 #include "support/replay_support.h"
@@ -218,12 +218,12 @@ TEST_CASE("the help over a paced replay keeps its title and last line: no captio
     Exercise exercise("exercise-2-continuity.keys");
     exercise.replay->handle(KeyEvent::typed(U'?'));
     play_to_idle(*exercise.replay);
-    const SessionScreen help = exercise.replay->screen();
+    const ProgramScreen help = exercise.replay->screen();
     REQUIRE_FALSE(help.graphics);
     CHECK(help.caption.empty());
     CHECK(help.badge.empty());
     // As the terminal lays it out (with_caption): the title on the top row, the last line last.
-    const SessionScreen shown = with_caption(help, help.caption);
+    const ProgramScreen shown = with_caption(help, help.caption);
     CHECK(shown.text.row_text(0).starts_with("APCS help - the keys of step 4: four-line staff"));
     CHECK(shown.text.row_text(shown.text.rows() - 1).starts_with("Any key closes this help."));
     // Closed, the task is on the caption row again and the goal on the message line.

@@ -67,7 +67,7 @@ TEST_CASE("a handout's folder holds its index, its pages and what was kept of th
 
 TEST_CASE("the text console's page is its rows drawn in the font, graphics mode's its picture", "[session][handout]")
 {
-    SessionScreen console;
+    ProgramScreen console;
     console.text = CellGrid(80, 24);
     console.text.put_text(0, 0, "Please keyin the KEY1 filename!");
     console.text.put_text(0, 23, " a caption", CellStyle::reverse);
@@ -88,7 +88,7 @@ TEST_CASE("a handout page keeps a Thai caption's combining marks: in its text, a
     // font, which has no Thai: each letter is a '?' there (manual section 12), and a mark takes no
     // cell of its own, so what follows stays in its column.
     const std::string thai = "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35";
-    SessionScreen console;
+    ProgramScreen console;
     console.text = CellGrid(80, 24);
     const std::string caption = " " + thai + " x";
     console.text.put_text(0, 23, caption, CellStyle::reverse);
@@ -108,24 +108,24 @@ TEST_CASE("a handout page keeps a Thai caption's combining marks: in its text, a
 
 TEST_CASE("an empty prompt is the text console with a question and nothing typed", "[session][handout]")
 {
-    SessionScreen console;
+    ProgramScreen console;
     console.text = CellGrid(80, 24);
     REQUIRE(is_empty_prompt(console));
     console.text.put_text(0, 0, "Please keyin the KEY1 filename!");
     console.text.put_text(0, 1, "_");
     REQUIRE(is_empty_prompt(console));
     // An answer begun, or a second line of text (what the earlier steps printed), is not empty.
-    SessionScreen typed = console;
+    ProgramScreen typed = console;
     typed.text.put_text(0, 1, "key1.dat_");
     REQUIRE_FALSE(is_empty_prompt(typed));
-    SessionScreen answered = console;
+    ProgramScreen answered = console;
     answered.text.put_text(0, 0, "Please keyin the KEY1 filename!");
     answered.text.put_text(0, 1, "key1.dat");
     answered.text.put_text(0, 2, "Please keyin the KEY2 filename!");
     answered.text.put_text(0, 3, "_");
     REQUIRE_FALSE(is_empty_prompt(answered));
     // Graphics mode is never an empty prompt, whatever it shows.
-    SessionScreen graphics;
+    ProgramScreen graphics;
     graphics.graphics = true;
     REQUIRE_FALSE(is_empty_prompt(graphics));
 }

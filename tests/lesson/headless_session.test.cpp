@@ -4,7 +4,7 @@
 #include "apcs/formats/key_event.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/session/session_files.h"
 
 #include "support/golden.h"
@@ -268,7 +268,7 @@ std::string caption_screens(const std::string& lesson, GlyphSet glyphs)
     std::ostream no_screens(nullptr);
     const KeyScript script = read_lesson(lesson);
     ReplayHooks hooks;
-    hooks.caption_ended = [&](std::size_t index, const std::string&, const SessionScreen& shown,
+    hooks.caption_ended = [&](std::size_t index, const std::string&, const ProgramScreen& shown,
                              const std::vector<std::string>&) {
         screens += "=== " + std::to_string(++number) + ": " + script.captions[index].text + "\n";
         screens += screen_text(with_caption(shown, script.captions[index].text), glyphs);

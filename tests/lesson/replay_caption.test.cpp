@@ -1,6 +1,6 @@
 // Captions of a guided replay: ";;" comments of a key script, laid over the screen.
 #include "apcs/formats/key_event.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/session/session_files.h"
 
 #include "support/session_keys.h"
@@ -48,7 +48,7 @@ void open_waypoint_editor(Session& session, MemoryFiles& files)
 }
 
 // Row `row` of a graphics screen as an 80x24 terminal shows it.
-std::string shown_row(const SessionScreen& screen, int row)
+std::string shown_row(const ProgramScreen& screen, int row)
 {
     return render_cells(screen.picture, {80, 24}, GlyphSet::ascii).row_text(row);
 }
@@ -63,7 +63,7 @@ TEST_CASE("a caption takes the key-hint row of graphics mode and leaves the mess
     open_waypoint_editor(session, files);
     REQUIRE(session.screen().graphics);
     REQUIRE(test::message_of(session.screen().picture).starts_with("control point 2 of 3"));
-    const SessionScreen captioned = with_caption(session.screen(), "W opens the waypoint editor");
+    const ProgramScreen captioned = with_caption(session.screen(), "W opens the waypoint editor");
     // The message line is what it is without the caption; the caption is where the hints were.
     REQUIRE(shown_row(captioned, 18) == shown_row(session.screen(), 18));
     REQUIRE(shown_row(captioned, 18).starts_with(" control point 2 of 3"));
@@ -85,7 +85,7 @@ TEST_CASE("on the text console a caption takes the bottom row, the console scrol
     files.files["key1.dat"] = "0 0 0\n0 6 0\n";
     files.files["key2.dat"] = "0 0 10\n0 6 10\n";
     Session session({}, files);
-    const SessionScreen text = with_caption(session.screen(), "Step 1: KEY1 is the first key frame");
+    const ProgramScreen text = with_caption(session.screen(), "Step 1: KEY1 is the first key frame");
     REQUIRE(text.text.row_text(23).starts_with(" Step 1: KEY1 is the first key frame   "));
     REQUIRE(text.text.style_at(0, 23) == CellStyle::reverse);
     REQUIRE(text.text.style_at(79, 23) == CellStyle::reverse);
@@ -109,13 +109,13 @@ TEST_CASE("a Thai caption keeps its combining marks on the caption row, in graph
     const std::string thai = "\u0E2A\u0E27\u0E31\u0E2A\u0E14\u0E35";
     MemoryFiles files;
     Session session({}, files);
-    const SessionScreen text = with_caption(session.screen(), "Step 1: " + thai);
+    const ProgramScreen text = with_caption(session.screen(), "Step 1: " + thai);
     REQUIRE(text.text.row_text(23).starts_with(" Step 1: " + thai + "   "));
     REQUIRE(text.text.style_at(79, 23) == CellStyle::reverse);
     // Scrolled up under a later caption's row, it keeps them too.
     for (int wrong = 0; wrong < 12; ++wrong)
         test::type(session, "missing.dat");
-    SessionScreen full = session.screen();
+    ProgramScreen full = session.screen();
     full.text.put_text(0, 23, thai);
     REQUIRE(with_caption(full, "x").text.row_text(22).starts_with(thai + " "));
     MemoryFiles graphics_files;

@@ -1,7 +1,7 @@
 // The slide-deck keys of a paced replay (SPEC §3.1): START, PgDn, PgUp, Home, the caption count,
 // Esc, the end of the script and a skipped goal, driven headless as a terminal would drive them.
 #include "apcs/lesson/replay_driver.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/session/rewindable_files.h"
 
 #include "support/replay_deck.h"
@@ -30,7 +30,7 @@ void press(ReplayDriver& replay, KeyEvent key)
     play_to_idle(replay);
 }
 
-CellGrid cells_of(const SessionScreen& screen)
+CellGrid cells_of(const ProgramScreen& screen)
 {
     return screen.graphics ? render_cells(screen.picture, {80, 24}, GlyphSet::ascii) : screen.text;
 }
@@ -95,7 +95,7 @@ TEST_CASE("a paced lesson begins after its preamble with no caption yet, the bad
     REQUIRE(script.preamble_end == 21);
     Deck deck(script, "n-to-l");
     REQUIRE(deck.replay->handled().size() == 21);
-    const SessionScreen shown = deck.replay->screen();
+    const ProgramScreen shown = deck.replay->screen();
     REQUIRE(shown.graphics);
     REQUIRE(shown.caption.empty());
     REQUIRE(shown.badge == "START");
@@ -104,7 +104,7 @@ TEST_CASE("a paced lesson begins after its preamble with no caption yet, the bad
         " key START | caption 0 of 3   "));
     press(*deck.replay, page_down);
     REQUIRE(deck.replay->handled().size() == 22);
-    const SessionScreen first = deck.replay->screen();
+    const ProgramScreen first = deck.replay->screen();
     REQUIRE(first.caption == "one");
     REQUIRE(first.badge_place == "caption 1 of 3");
     REQUIRE(cells_of(with_caption(first, first.caption)).row_text(23).starts_with(" one"));
@@ -126,7 +126,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
     Deck deck(script, "n-to-l");
     press(*deck.replay, KeyEvent::typed(U'8'));
     REQUIRE(deck.replay->handled().size() == 21); // not played: the keys are the script's
-    const SessionScreen told = deck.replay->screen();
+    const ProgramScreen told = deck.replay->screen();
     REQUIRE(told.badge_place == replay_keys_on_space);
     REQUIRE(with_played_key(CellGrid(80, 24), told.badge, told.badge_place).row_text(0).ends_with(
         " key START | Space next step  PgDn next caption  Esc your keyboard   "));
@@ -138,7 +138,7 @@ TEST_CASE("a key a paced replay does not take puts in the badge the keys it does
     Deck typed(long_step, "n-to-l"); // the replay keeps a reference to its script
     press(*typed.replay, space);
     press(*typed.replay, KeyEvent::typed(U'x'));
-    const SessionScreen long_label = typed.replay->screen();
+    const ProgramScreen long_label = typed.replay->screen();
     REQUIRE(long_label.badge == "TEXT my-f...");
     REQUIRE(with_played_key(CellGrid(80, 24), long_label.badge, long_label.badge_place).row_text(0).ends_with(
         " key TEXT my-f... | Space next step  PgDn next caption  Esc your keyboard   "));

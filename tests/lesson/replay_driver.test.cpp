@@ -1,7 +1,7 @@
 // The one replay driver, headless: a paced, captioned lesson and an exercise with its goal played
 // as a terminal would play them (Space for each step, the clock, the student's keys), without one.
 #include "apcs/lesson/replay_driver.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 #include "apcs/session/session_files.h"
 
 #include "support/replay_support.h"
@@ -35,7 +35,7 @@ std::size_t step_count(const KeyScript& script)
 const KeyEvent space = KeyEvent::of(Key::space);
 
 // A screen as 80x24 cells, graphics or text.
-CellGrid cells_of(const SessionScreen& screen)
+CellGrid cells_of(const ProgramScreen& screen)
 {
     return screen.graphics ? render_cells(screen.picture, {80, 24}, GlyphSet::ascii) : screen.text;
 }
@@ -65,7 +65,7 @@ TEST_CASE("lesson-continuity.keys paced a step per Space: every step once, each 
     Session session({}, files);
     std::vector<std::size_t> told;
     ReplayHooks hooks;
-    hooks.caption_reached = [&](std::size_t index, const SessionScreen& shown) {
+    hooks.caption_reached = [&](std::size_t index, const ProgramScreen& shown) {
         told.push_back(index);
         // The screen handed over is the session's with the caption laid on its caption row.
         const CellGrid cells = cells_of(shown);
@@ -134,7 +134,7 @@ TEST_CASE("a paced replay shows the screens the headless replay prints, caption 
         Session session({}, files);
         std::vector<CellGrid> screens;
         ReplayHooks hooks;
-        hooks.caption_reached = [&](std::size_t, const SessionScreen& shown) {
+        hooks.caption_reached = [&](std::size_t, const ProgramScreen& shown) {
             screens.push_back(cells_of(shown));
         };
         ReplayDriver replay(session, script, "lesson.keys", {ReplayPace::Kind::every, 100}, hooks, audience);

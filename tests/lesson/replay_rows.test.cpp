@@ -1,7 +1,7 @@
 // The replay's chart (SPEC §3.1, §3.2): every (state, key) is a row or a written ignore, and a walk
 // that brings a real replay into each state and presses each key there sees the row's effect.
 #include "apcs/lesson/replay_rows.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include "support/replay_deck.h"
 #include "support/replay_support.h"
@@ -204,7 +204,7 @@ struct Seen {
 
     static Seen of(const ReplayDriver& replay)
     {
-        const SessionScreen screen = replay.screen();
+        const ProgramScreen screen = replay.screen();
         Seen seen{replay.handled().size(), std::nullopt, replay.state(), screen.caption, screen.badge,
                   screen.badge_place, message_line(replay), 0};
         if (!replay.handled().empty())

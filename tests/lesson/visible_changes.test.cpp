@@ -93,7 +93,7 @@ std::vector<std::filesystem::path> captioned_scripts()
 
 // The screens of a headless replay of `script` in a fresh copy of its folder: the one each caption
 // is told over, then the last.
-std::vector<SessionScreen> caption_screens(const std::filesystem::path& script_file, const KeyScript& script,
+std::vector<ProgramScreen> caption_screens(const std::filesystem::path& script_file, const KeyScript& script,
                                            GlyphSet glyphs)
 {
     const test::TempFolder folder;
@@ -106,9 +106,9 @@ std::vector<SessionScreen> caption_screens(const std::filesystem::path& script_f
             std::filesystem::copy_file(entry.path(), folder / entry.path().filename().string());
     FolderFiles files(folder.path());
     Session session({}, files);
-    std::vector<SessionScreen> screens;
+    std::vector<ProgramScreen> screens;
     ReplayHooks hooks;
-    hooks.caption_reached = [&](std::size_t, const SessionScreen& shown) { screens.push_back(shown); };
+    hooks.caption_reached = [&](std::size_t, const ProgramScreen& shown) { screens.push_back(shown); };
     ReplayDriver replay(session, script, script_file.string(), ReplayPace{}, hooks, ReplayAudience::headless);
     std::ostream no_screens(nullptr);
     run_headless_session(replay, session, glyphs, no_screens);
@@ -116,8 +116,8 @@ std::vector<SessionScreen> caption_screens(const std::filesystem::path& script_f
     return screens;
 }
 
-// The screen on an 80x23 pane, as the terminal lays it (terminal_session.cpp).
-CellGrid cells_of(const SessionScreen& screen, GlyphSet glyphs)
+// The screen on an 80x23 pane, as the terminal lays it (run_terminal_program.cpp).
+CellGrid cells_of(const ProgramScreen& screen, GlyphSet glyphs)
 {
     return screen.graphics ? render_cells(screen.picture, {80, short_screen_rows}, glyphs)
                            : text_on_short_screen(screen.text);
@@ -129,8 +129,8 @@ bool is_blank(char32_t glyph) { return glyph == U' ' || glyph == U'\u2800'; }
 // before or after and differ in character or role; a cell another thing the caption names shows
 // before or after is not counted (hiding the tangents uncovers the curve under them: that is no
 // change of the curve).
-int changed_cells_of(ColourRole role, const std::vector<ColourRole>& named, const SessionScreen& before,
-                     const SessionScreen& after, GlyphSet glyphs)
+int changed_cells_of(ColourRole role, const std::vector<ColourRole>& named, const ProgramScreen& before,
+                     const ProgramScreen& after, GlyphSet glyphs)
 {
     const CellGrid a = cells_of(before, glyphs);
     const CellGrid b = cells_of(after, glyphs);
@@ -166,7 +166,7 @@ TEST_CASE("a caption that names a visible change names what changes, and at leas
                                                                       (data_folder / script_file).string());
         REQUIRE(script);
         for (const GlyphSet glyphs : {GlyphSet::braille, GlyphSet::ascii, GlyphSet::blocks}) {
-            const std::vector<SessionScreen> screens = caption_screens(script_file, *script, glyphs);
+            const std::vector<ProgramScreen> screens = caption_screens(script_file, *script, glyphs);
             REQUIRE(screens.size() == script->captions.size() + 1);
             for (std::size_t k = 0; k < script->captions.size(); ++k) {
                 const ScriptCaption& caption = script->captions[k];

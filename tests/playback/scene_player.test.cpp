@@ -13,7 +13,7 @@ using apcs::test::message_of;
 namespace {
 
 // The stick's three frames as a scene's player shows them.
-AnimationPlayer scene_stick_player(SessionLog& log)
+AnimationPlayer scene_stick_player(StepLog& log)
 {
     AnimationPlayer player = test::stick_player(log);
     player.name_frames_by_scene("stick.scn");
@@ -22,7 +22,7 @@ AnimationPlayer scene_stick_player(SessionLog& log)
 
 std::string message_of(const ScenePlayer& program)
 {
-    const SessionScreen screen = program.screen();
+    const ProgramScreen screen = program.screen();
     REQUIRE(screen.graphics);
     return test::message_of(screen.picture);
 }
@@ -46,7 +46,7 @@ TEST_CASE("apcs play's help screen lists the player's keys and holds the frames 
     AnimationPlayer player = scene_stick_player(log);
     ScenePlayer program(player, 50, [](const GraphicsScreen&) { return std::string(); });
     program.handle(KeyEvent::typed('?'));
-    const SessionScreen help = program.screen();
+    const ProgramScreen help = program.screen();
     REQUIRE_FALSE(help.graphics);
     REQUIRE(help.text.row_text(0).find("playing a scene") != std::string::npos);
     // The loop ticks only while the program animates: the frames wait under the help.

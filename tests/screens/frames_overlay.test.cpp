@@ -4,7 +4,7 @@
 #include "apcs/playback/animation_player.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include "support/xml_elements.h"
 

@@ -43,13 +43,13 @@ TEST_CASE("every key stream of the session fuzzing corpus plays without a crash 
 }
 
 // A headless transcript draws a step's last screen only before a key that may end the step
-// (Session::keeps_phase): a key vouched for must never end it, or the transcript would print a
+// (Session::keeps_step): a key vouched for must never end it, or the transcript would print a
 // screen the step never showed last.
 TEST_CASE("a key the session vouches keeps its step never changes the phase, over the whole fuzzing corpus",
           "[session][fuzz]")
 {
     std::size_t vouched = 0;
-    std::size_t changed_phase = 0;
+    std::size_t changed_step = 0;
     for (const auto& [name, bytes] : corpus_streams()) {
         MemoryFiles files = fuzzing::example_files();
         SessionSettings settings;
@@ -59,19 +59,19 @@ TEST_CASE("a key the session vouches keeps its step never changes the phase, ove
         for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
             const KeyEvent key = fuzzing::key_from(static_cast<std::uint8_t>(bytes[i]));
             const std::string_view before = session.step_title();
-            const bool keeps = session.keeps_phase(key);
+            const bool keeps = session.keeps_step(key);
             session.handle(key);
             if (keeps) {
                 ++vouched;
                 CAPTURE(name, i, before);
                 REQUIRE(session.step_title() == before);
             }
-            changed_phase += session.step_title() != before;
+            changed_step += session.step_title() != before;
             for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
                 session.tick();
         }
     }
     // The corpus tries both: keys vouched for, and keys that end steps.
     REQUIRE(vouched > 10000);
-    REQUIRE(changed_phase > 1000);
+    REQUIRE(changed_step > 1000);
 }

@@ -292,6 +292,26 @@ TEST_CASE("a number too small for a double is 0 at a prompt, as in a .dat file",
     REQUIRE(session.leaf_name() == "ask_path_file");
 }
 
+TEST_CASE("a typed answer keeps 200 bytes at most: a character that would pass them is refused, a shorter one after "
+          "it fits",
+          "[session][cells]")
+{
+    MemoryFiles files = example_files();
+    Session session(SessionSettings{}, files);
+    for (int typed = 0; typed < 199; ++typed)
+        session.handle(KeyEvent::typed(U'a'));
+    session.handle(KeyEvent::typed(U'\u6F22')); // 3 bytes: 202
+    session.handle(KeyEvent::typed(U'b'));       // 1 byte: 200
+    session.handle(KeyEvent::typed(U'c'));       // 201
+    std::string shown;
+    const CellGrid grid = session.screen().text;
+    for (int row = 0; row < grid.rows(); ++row)
+        shown += grid.row_text(row);
+    CHECK(shown.find("\u6F22") == std::string::npos);
+    CHECK(shown.find("ab_") != std::string::npos);
+    CHECK(shown.find('c') == std::string::npos);
+}
+
 TEST_CASE("wide characters typed at a prompt take two columns, zero-width ones are refused, and a wide name reads",
           "[session][cells]")
 {

@@ -49,7 +49,7 @@ struct Deck {
         , m_drive{animations, {}, {}, {}}
     {
         ReplayHooks hooks;
-        hooks.caption_reached = [this](std::size_t index, const SessionScreen&) { told.push_back(index); };
+        hooks.caption_reached = [this](std::size_t index, const ProgramScreen&) { told.push_back(index); };
         hooks.log = [this](const std::string& line) { files.log(line); };
         hooks.session_as_started = [this] {
             files.rewind();

@@ -36,7 +36,7 @@ inline KeyScript read_script(const std::filesystem::path& file)
 // caption on the caption row above it.
 inline std::string message_line(const ReplayDriver& replay)
 {
-    const SessionScreen screen = replay.screen();
+    const ProgramScreen screen = replay.screen();
     if (screen.graphics)
         return message_of(screen.picture);
     std::string row = screen.text.row_text(screen.text.rows() - 1);

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apcs/session/session.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include <catch2/catch.hpp>
 
@@ -19,7 +19,7 @@ inline void type(Session& session, const std::string& line)
 }
 
 // What a step logs, kept for the test to read.
-struct LogLines final : SessionLog {
+struct LogLines final : StepLog {
     std::vector<std::string> lines;
     void log(const std::string& line) override { lines.push_back(line); }
 };
@@ -34,7 +34,7 @@ inline std::string message_of(const GraphicsScreen& screen)
 }
 
 // Three frames of a stick moving up (KEY1 k1.dat, one in-between, KEY2 k2.dat), 50 ms each.
-inline AnimationPlayer stick_player(SessionLog& log)
+inline AnimationPlayer stick_player(StepLog& log)
 {
     FrameSequence frames(3, 2);
     for (std::size_t k = 0; k < 3; ++k) {

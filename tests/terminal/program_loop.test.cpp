@@ -5,7 +5,7 @@
 #include "apcs/terminal/program_loop.h"
 
 #include "apcs/lesson/handout.h"
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include "support/fake_terminal.h"
 #include "support/replay_support.h"
@@ -51,9 +51,9 @@ public:
     bool finished() const override { return !handled.empty() && handled.back() == KeyEvent::typed(U'q'); }
     bool animating() const override { return frames_left > 0; }
     int delay_ms() const override { return 50; }
-    SessionScreen screen() const override
+    ProgramScreen screen() const override
     {
-        SessionScreen screen;
+        ProgramScreen screen;
         screen.text = CellGrid(80, 24);
         screen.text.put_text(0, 0, "keys: " + std::to_string(handled.size()));
         screen.text.put_text(0, 1, "frames left: " + std::to_string(frames_left));
@@ -187,7 +187,7 @@ TEST_CASE("a lesson's PgDn through the loop paints at 80x24 the handout's page o
         MemoryFiles files = test::example_files("n-to-l");
         Session session({}, files);
         ReplayHooks hooks;
-        hooks.caption_ended = [&](std::size_t, const std::string& caption, const SessionScreen& screen,
+        hooks.caption_ended = [&](std::size_t, const std::string& caption, const ProgramScreen& screen,
                                   const std::vector<std::string>&) {
             pages.push_back(screen_text(with_caption(screen, caption), GlyphSet::ascii));
         };

@@ -12,7 +12,7 @@
 #include "apcs/editor/path_document.h"
 #include "apcs/editor/path_picture.h"
 #include "apcs/screens/path_screen.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 #include "apcs/input/value_field.h"
 #include "apcs/editor/waypoint_editor.h"
 
@@ -83,7 +83,7 @@ public:
 
     // Initial_Graphics: evaluates the path and fixes the view for the whole adjusting, so that
     // each key's effect is seen against a still picture.
-    PathEditor(Setup setup, SessionLog& log);
+    PathEditor(Setup setup, StepLog& log);
 
     // A staff step or a waypoint edit adds to what the keys before it left to refine (a key held
     // down on a long path); any other command first finishes it, and so acts on the final picture.
@@ -225,7 +225,7 @@ private:
     PathScreenContent screen_content(MoveText move = MoveText::measured) const;
 
     Setup m_setup;
-    SessionLog& m_log;
+    StepLog& m_log;
     // The path (its points, origins and undo history) and its picture: evaluated and drawn in the
     // view fixed for the adjusting, kept between keys, every change refreshing only what it
     // touched. Both editors change them in place; held apart so that their addresses outlive a

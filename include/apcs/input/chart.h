@@ -19,9 +19,9 @@
 
 // A small statechart, after boost-ext/sml's one transition table: states in a tree (a parent is
 // tried when a leaf has no row for an event), rows `From --Event[guard] / action--> To` whose events
-// are Command's alternatives, a written ignore where a key means nothing in a state, and what leaving
-// a state does. The machine keeps its own data (its modes); the chart says which row a command
-// meets and prints itself.
+// are Command's alternatives (or a chart's own: the session's steps' outcomes), a written ignore
+// where a key means nothing in a state, and what leaving a state does. The machine keeps its own
+// data (its modes); the chart says which row an event meets and prints itself.
 namespace apcs {
 
 // The name of Command's alternative `index`, as the printed chart writes an event: "StaffStep".
@@ -105,7 +105,7 @@ public:
         return met;
     }
 
-    // The row `command` meets in `leaf`: the first candidate whose guard holds; none when no state
+    // The row `event` meets in `leaf`: the first candidate whose guard holds; none when no state
     // on the way has a row for it.
     const Row* row_for(const Machine& machine, State leaf, const Event& event) const
     {

@@ -3,7 +3,7 @@
 #include <cstdint>
 
 #include "apcs/formats/key_event.h"
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 namespace apcs {
 
@@ -21,7 +21,7 @@ public:
     virtual bool animating() const = 0;
     virtual bool busy() const { return false; }
     virtual int delay_ms() const = 0;
-    virtual SessionScreen screen() const = 0;
+    virtual ProgramScreen screen() const = 0;
     // Advanced whenever screen() would show something else: the terminal composes and paints a
     // screen only when it changed (or the terminal did).
     virtual std::uint64_t screen_revision() const = 0;

@@ -29,17 +29,6 @@ struct QuitQuestion {
 };
 } // namespace overlay
 
-// Quit at once, or ask first (only an unsaved path is worth the question).
-enum class QuitAsks { at_once, question_first };
-
-// What the step under the overlays tells them.
-struct OverlayStep {
-    // What q does there.
-    QuitAsks quit = QuitAsks::at_once;
-    // At a text prompt, the answer an empty line takes, for the help screen; else empty.
-    std::string empty_answer;
-};
-
 // What a command meant to the overlays: nothing (it is the step's), done, or what the program
 // must do for them.
 enum class OverlayAnswer { step_command, handled, save_picture, quit };
@@ -48,13 +37,14 @@ class Overlays {
 public:
     // The keys in force: the open overlay's, else the step's (`step`).
     KeyContext key_context(KeyContext step) const;
-    // `command` as read in `context` (key_context's). Opens and closes the overlays.
-    OverlayAnswer handle(KeyContext context, const Command& command, const OverlayStep& step);
+    // `command` as read in `context` (key_context's), for a program whose steps keep nothing
+    // unsaved (apcs play: q quits at once; the session's chart has rows of its own). Opens and
+    // closes the help.
+    OverlayAnswer handle(KeyContext context, const Command& command);
     // The help screen for `keys` (a prompt's answer "?" asks for it too).
     void open_help(KeyContext keys, std::string empty_answer) { m_open = overlay::HelpScreen{keys, std::move(empty_answer)}; }
     // The quit question in the words `question` (a session_text constant: the view outlives the
-    // overlay). q on the path screen opens it through handle(); the session opens it for Esc on an
-    // empty text prompt, which the key map cannot tell from Esc on a typed line.
+    // overlay): the session's chart asks it for q on the path screen and Esc on an empty prompt.
     void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
     void close() { m_open.reset(); }
 

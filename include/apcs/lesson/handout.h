@@ -2,7 +2,7 @@
 
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/graphics_screen.h"
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 #include <string>
 #include <string_view>
@@ -40,16 +40,16 @@ bool is_handout_file_name(std::string_view name);
 // The 80x24 screen as text, one line a row, trailing blanks removed, each line ending in a newline:
 // graphics mode mapped to characters in `glyphs`, the console as it is. What headless replays print
 // for each step and what the lessons' golden screens hold.
-std::string screen_text(const SessionScreen& screen, GlyphSet glyphs);
+std::string screen_text(const ProgramScreen& screen, GlyphSet glyphs);
 
 // Whether `screen` (the session's, no caption laid on) is an empty prompt: the text console showing
 // a question and nothing else, its answer not begun (a row holding only the cursor '_' counts as
 // empty). A handout has no page of it: it says nothing a caption could be about (issue 42: the
 // opening KEY1 prompt was page 01).
-bool is_empty_prompt(const SessionScreen& screen);
+bool is_empty_prompt(const ProgramScreen& screen);
 
 // The screen as the Hercules card showed it: graphics mode's picture, or the text console's rows
 // drawn in the 9x14 font on an empty raster (80 columns fill its 720 pixels, 24 rows its top 336).
-GraphicsScreen screen_picture(const SessionScreen& screen);
+GraphicsScreen screen_picture(const ProgramScreen& screen);
 
 } // namespace apcs

@@ -84,14 +84,14 @@ public:
     int delay_ms() const override;
     // The session's screen with the caption reached (or the goal's feedback) and, when paced, the
     // step just played.
-    SessionScreen screen() const override;
+    ProgramScreen screen() const override;
     // The session's, advanced too when the caption or the badge changes: a key the replay swallows
     // leaves it.
     std::uint64_t screen_revision() const override { return m_session->screen_revision() + m_revision; }
 
     // Headless: whether the next work() is a script key known to leave the session's step where it
-    // is (Session::keeps_phase). False says nothing.
-    bool next_work_keeps_phase() const;
+    // is (Session::keeps_step). False says nothing.
+    bool next_work_keeps_step() const;
 
     // The state a key typed now meets (terminal).
     ReplayState state() const;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 #include <cstddef>
 #include <functional>
@@ -19,7 +19,7 @@ struct ReplayHooks {
     // the caption laid on (with_caption). Called once per caption, in the script's order, when the
     // session has played the keys before it and is neither splitting nor animating (the moment the
     // headless replay reaches it too). The headless transcript prints the caption here.
-    std::function<void(std::size_t index, const SessionScreen& shown)> caption_reached;
+    std::function<void(std::size_t index, const ProgramScreen& shown)> caption_reached;
     // Caption `index` has played its keys: `caption` is its text as shown then ("(not reached) …"
     // when it closes a goal judged not reached), `screen` the session's screen (no caption laid on)
     // once they have, when the next caption is reached or the script's keys are all played (Esc
@@ -27,7 +27,7 @@ struct ReplayHooks {
     // so each caption's screen shows what the caption says. --handout writes its pages here;
     // `key_files` are the KEY files the replay's sessions have read so far (key_files_read), which
     // a page must not replace.
-    std::function<void(std::size_t index, const std::string& caption, const SessionScreen& screen,
+    std::function<void(std::size_t index, const std::string& caption, const ProgramScreen& screen,
                        const std::vector<std::string>& key_files)>
         caption_ended;
     // A line for apcs.log ("goal skipped").

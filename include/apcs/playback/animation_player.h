@@ -8,7 +8,7 @@
 #include "apcs/input/command.h"
 #include "apcs/screens/frames_overlay.h"
 #include "apcs/input/key_map.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include <array>
 #include <cstddef>
@@ -43,7 +43,7 @@ public:
     // `structure` gives the parts that draw each frame (the equalised KEY1); `key_names` name the
     // first and the last frame on the screen.
     AnimationPlayer(FrameSequence frames, Graphic structure, std::array<std::string, 2> key_names, ViewAngles angles,
-                    int delay_ms, SessionLog& log);
+                    int delay_ms, StepLog& log);
 
     Outcome update(const Command& command);
     void tick();
@@ -83,7 +83,7 @@ private:
     std::string m_notice;
     FramesOverlay m_overlay; // the legend's names, and lettered points
     ViewTransform m_view;
-    SessionLog& m_log;
+    StepLog& m_log;
     // The frames one at a time (Esc stops, Space pauses, R replays), the last frame shown until a
     // key, then all frames overlaid until a key ends it.
     struct Showing {

@@ -29,7 +29,7 @@ public:
     bool finished() const override { return m_finished; }
     bool animating() const override { return m_player.playing() && m_overlays.help() == nullptr; }
     int delay_ms() const override { return m_delay_ms; }
-    SessionScreen screen() const override;
+    ProgramScreen screen() const override;
     // Every key and tick may change what is shown.
     std::uint64_t screen_revision() const override { return m_revision; }
 

@@ -81,7 +81,7 @@ public:
     // arrays made so far).
     bool preparing() const { return path_wanting_room() != nullptr; }
     int delay_ms() const override { return m_model.delay_ms; }
-    SessionScreen screen() const override;
+    ProgramScreen screen() const override;
     // A key that changes nothing on the path screen (a staff step past +1, a key no mode takes)
     // leaves it; any other key, tick or work advances it.
     std::uint64_t screen_revision() const override { return m_revision; }
@@ -103,7 +103,7 @@ public:
     bool takes_typed_text() const;
     // Whether `event`, typed now, is known to leave the step where it is (stays_in_step; a key
     // the step ignores stays too). False says nothing.
-    bool keeps_phase(const KeyEvent& event) const;
+    bool keeps_step(const KeyEvent& event) const;
     const std::vector<std::string>& written_files() const { return m_model.written.names(); }
     // The KEY1 and KEY2 files as typed (empty until read), relative to the session's folder.
     const std::array<std::string, 2>& key_names() const { return m_model.key_names; }
@@ -170,7 +170,7 @@ private:
     void open_help();
     void save_picture();
     void quit();
-    SessionScreen graphics_screen(GraphicsScreen picture) const;
+    ProgramScreen graphics_screen(GraphicsScreen picture) const;
     CellGrid console_screen() const;
 
     SessionSettings m_settings;

@@ -5,7 +5,7 @@
 #include "apcs/formats/dat_file.h"
 #include "apcs/base/diagnostic.h"
 #include "apcs/formats/key_file_guard.h"
-#include "apcs/base/session_log.h"
+#include "apcs/base/step_log.h"
 
 #include <filesystem>
 #include <map>
@@ -23,7 +23,7 @@ struct DatText {
     std::string text;
 };
 
-class SessionFiles : public SessionLog {
+class SessionFiles : public StepLog {
 public:
     // The whole text of a file (a regular file; FILE: reason otherwise).
     [[nodiscard]] virtual Expected<std::string> read_text(const std::string& name) = 0;

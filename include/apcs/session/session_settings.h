@@ -4,7 +4,7 @@
 #include "apcs/animation/memory_budget.h"
 #include "apcs/animation/motion_path.h"
 #include "apcs/animation/surface_construction.h"
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 #include <cstdint>
 #include <optional>

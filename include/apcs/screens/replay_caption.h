@@ -1,7 +1,7 @@
 #pragma once
 
 #include "apcs/raster/cell_grid.h"
-#include "apcs/raster/session_screen.h"
+#include "apcs/screens/program_screen.h"
 
 #include <string_view>
 
@@ -11,7 +11,7 @@ namespace apcs {
 // the message line (DS/DD, "control point 2 of 3", questions, errors) stays in view: in graphics
 // mode on the key-hint row, in place of the hints; on the text console on the bottom row, the
 // console scrolled up one row when that row is in use. An empty caption leaves the screen as it is.
-SessionScreen with_caption(SessionScreen screen, std::string_view caption);
+ProgramScreen with_caption(ProgramScreen screen, std::string_view caption);
 
 // The most columns the played-key badge takes; a longer TEXT line is cut, ending in "...".
 inline constexpr int max_played_key_columns = 32;

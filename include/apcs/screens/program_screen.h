@@ -7,10 +7,11 @@
 
 namespace apcs {
 
-// What the terminal shows now: the DOS text console or the graphics screen, and what a replay lays
+// What an interactive program (a replay of the session, apcs play) shows now: the DOS text console
+// or the graphics screen, and what a replay lays
 // over it where it is shown (replay_caption.h): its caption on a row of its own, and the step it
 // just played at the top right.
-struct SessionScreen {
+struct ProgramScreen {
     bool graphics = false;
     CellGrid text;          // 80x24, when !graphics
     GraphicsScreen picture; // when graphics

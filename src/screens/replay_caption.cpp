@@ -1,4 +1,4 @@
-#include "apcs/raster/replay_caption.h"
+#include "apcs/screens/replay_caption.h"
 
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/painter.h"
@@ -60,7 +60,7 @@ std::string played_key_badge(std::string_view label)
 
 } // namespace
 
-SessionScreen with_caption(SessionScreen screen, std::string_view caption)
+ProgramScreen with_caption(ProgramScreen screen, std::string_view caption)
 {
     if (caption.empty())
         return screen;

@@ -1,4 +1,4 @@
-#include "apcs/terminal/terminal_session.h"
+#include "apcs/terminal/run_terminal_program.h"
 
 #include "terminal.h"
 #include "apcs/terminal/terminal_pixels.h"
