@@ -7,7 +7,7 @@
 #include "apcs/base/diagnostic.h"
 #include "apcs/base/exit_status.h"
 #include "apcs/cli/options.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 #include "apcs/lesson/grade.h"
 
 #include <cstdint>

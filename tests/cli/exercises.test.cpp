@@ -1,4 +1,4 @@
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 
 #include "support/run_apcs.h"
 #include "support/temp_folder.h"

@@ -1,6 +1,6 @@
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/handout_index.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 
 #include "support/png_pixels.h"
 #include "support/run_apcs.h"

@@ -1,5 +1,5 @@
 #include "apcs/formats/input_check.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 
 #include "support/temp_folder.h"
 

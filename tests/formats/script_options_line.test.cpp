@@ -1,4 +1,4 @@
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 #include "apcs/formats/key_recording.h"
 
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+#include "apcs/formats/key_script.h"
 #include "apcs/input/key_map.h"
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,5 @@
 // Captions of a guided replay: ";;" comments of a key script, laid over the screen.
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 #include "apcs/screens/replay_caption.h"
 #include "apcs/session/session_files.h"
 

@@ -1,3 +1,4 @@
+#include "apcs/formats/key_script.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/session.h"
 #include "apcs/screens/session_text.h"

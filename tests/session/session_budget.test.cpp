@@ -1,3 +1,4 @@
+#include "apcs/formats/key_script.h"
 #include "apcs/session/session.h"
 #include "apcs/session/session_files.h"
 

@@ -7,6 +7,7 @@
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/pixel_picture.h"
 #include "apcs/formats/key_event.h"
+#include "apcs/lesson/replay_pace.h"
 
 #include <cstdint>
 #include <filesystem>

@@ -2,7 +2,7 @@
 
 #include "apcs/base/diagnostic.h"
 #include "apcs/cli/options.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 
 #include <array>
 #include <functional>

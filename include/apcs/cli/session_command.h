@@ -4,7 +4,7 @@
 #include "apcs/cli/options.h"
 #include "apcs/base/exit_status.h"
 #include "apcs/cli/terminal_runner.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/session/session.h"
 

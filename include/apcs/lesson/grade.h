@@ -1,6 +1,6 @@
 #pragma once
 
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 #include "apcs/lesson/replay_driver.h"
 
 #include <cstdint>

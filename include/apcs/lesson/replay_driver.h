@@ -1,7 +1,8 @@
 #pragma once
 
 #include "apcs/base/diagnostic.h"
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
+#include "apcs/lesson/replay_pace.h"
 #include "apcs/formats/key_recording.h"
 #include "apcs/input/interactive_program.h"
 #include "apcs/lesson/goal_check.h"

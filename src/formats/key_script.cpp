@@ -1,4 +1,4 @@
-#include "apcs/formats/key_event.h"
+#include "apcs/formats/key_script.h"
 
 #include "apcs/base/utf8.h"
 #include "apcs/formats/number_text.h"
