@@ -32,7 +32,7 @@ double snapped(double value) { return limits::staff_value.clamp(std::round(value
 enum class KeyFrames { shown, hidden };
 
 // What the view keeps in sight: the path, its control points, and both key frames while K shows them.
-ViewScene shown_scene(const PathEditor::Setup& setup, const ControlPoints& points, const EvaluatedPath& path,
+ViewScene shown_scene(const PathEditor::Options& setup, const ControlPoints& points, const EvaluatedPath& path,
                       KeyFrames key_frames)
 {
     PathScreenContent shown = path_screen_content(points, path);
@@ -147,11 +147,11 @@ std::string changes_text(std::size_t count) { return std::to_string(count) + (co
 } // namespace
 
 PathEditor::PathEditor(Setup setup, StepLog& log)
-    : m_setup(std::move(setup))
+    : m_options(std::move(static_cast<Options&>(setup)))
     , m_log(log)
-    , m_document(std::make_unique<PathDocument>(std::exchange(m_setup.points, {})))
-    , m_picture(std::make_unique<PathPicture>(*m_document, m_setup.settings, m_setup.refinement,
-                                              std::exchange(m_setup.evaluation_room, {})))
+    , m_document(std::make_unique<PathDocument>(std::move(setup.points)))
+    , m_picture(std::make_unique<PathPicture>(*m_document, m_options.settings, m_options.refinement,
+                                              std::move(setup.evaluation_room)))
 {
     assert(points().size() >= 2);
     fit_view();
@@ -163,7 +163,7 @@ PathEditor::PathEditor(Setup setup, StepLog& log)
 void PathEditor::fit_view()
 {
     const KeyFrames key_frames = m_show_key_frames ? KeyFrames::shown : KeyFrames::hidden;
-    m_fitted_view = shown_scene(m_setup, points(), evaluated(), key_frames).fill(m_setup.view_angles, layout::view_area);
+    m_fitted_view = shown_scene(m_options, points(), evaluated(), key_frames).fill(m_options.view_angles, layout::view_area);
     // The arrows keep the fitted view's scale: Z magnifies them with the curve.
     m_tangent_scale = tangent_arrow_scale(points(), *m_fitted_view);
     show_view();
@@ -250,8 +250,8 @@ void PathEditor::measure_move_when_refined() const
         return;
     const auto& key = std::get<StaffEdit>(m_document->edits()[*m_move_unmeasured]);
     const std::vector<SegmentBeforeKey> before =
-        segments_before_key(points(), m_setup.settings.slopes, key.region, key.points_before);
-    m_moved = curve_move_text(curve_move(before, points(), m_setup.settings.slopes,
+        segments_before_key(points(), m_options.settings.slopes, key.region, key.points_before);
+    m_moved = curve_move_text(curve_move(before, points(), m_options.settings.slopes,
                                          m_picture->evaluated().curve.basis, m_picture->view()));
     m_move_unmeasured.reset();
 }
@@ -475,7 +475,7 @@ void PathEditor::undo_change(const WaypointChange& change)
 PathEditor::Waypoints PathEditor::open_waypoints()
 {
     m_log.log("waypoint editor");
-    const double step = waypoint_step(shown_scene(m_setup, points(), evaluated(), KeyFrames::shown).bounds());
+    const double step = waypoint_step(shown_scene(m_options, points(), evaluated(), KeyFrames::shown).bounds());
     return Waypoints{WaypointEditor(*m_document, *m_picture, {m_picture->view(), step})};
 }
 

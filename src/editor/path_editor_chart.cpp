@@ -132,7 +132,7 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::staff_rows()
          [](E& e, C c) {
              Staff& staff = std::get<Staff>(e.m_mode);
              e.set_staff_value(staff, staff.staff[staff.line] +
-                                          std::get<command::StaffStep>(c).steps * e.m_setup.staff_step);
+                                          std::get<command::StaffStep>(c).steps * e.m_options.staff_step);
          }},
         {State::staff, on<command::OpenValueField>, {}, nullptr, "the field opened on the message line",
          [](E& e, C) { std::get<Staff>(e.m_mode).field.emplace(); }, State::value_field},

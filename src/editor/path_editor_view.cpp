@@ -101,7 +101,7 @@ std::string PathEditor::with_move(const std::string& shown, const Staff& staff, 
         return shown + "  " + m_moved;
     if (evaluated().frames_freeze())
         return shown;
-    return m_setup.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
+    return m_options.path_name + ": " + std::string(staff_line_name(staff.line)) + "  " + m_moved;
 }
 
 std::string PathEditor::staff_message(const Staff& staff) const
@@ -111,7 +111,7 @@ std::string PathEditor::staff_message(const Staff& staff) const
     // animator sees nothing move and cannot tell why.
     if (points().size() == 2 && staff.line != StaffLine::acceleration)
         return line + std::string(text::no_interior_points);
-    std::string message = m_setup.path_name + ": " + line;
+    std::string message = m_options.path_name + ": " + line;
     // The frames that freeze matter more than the region, whose marks the picture shows: the two
     // do not fit one 79-column line together.
     if (evaluated().frames_freeze())
@@ -223,7 +223,7 @@ GraphicsScreen PathEditor::view(std::optional<Vec3> goal_point, const GoalSaid& 
     else if (m_problem.empty() && m_picture->refining())
         content.message = refining_message();
     if (m_show_key_frames)
-        content.key_frame_polylines = m_setup.key_frame_polylines;
+        content.key_frame_polylines = m_options.key_frame_polylines;
     // A pinned reference is what the curve is compared with: the ghost steps aside meanwhile.
     content.ghost = m_show_ghost && !m_picture->has_reference();
     if (m_show_tangents)

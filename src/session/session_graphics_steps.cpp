@@ -45,10 +45,11 @@ Shaping Shaping::after(const SlopesPrompt& slopes, StepContext& context)
         for (auto& polyline : key->polylines(key->all_points()))
             key_frames.push_back(std::move(polyline));
     return {slopes.path,
-            PathEditor(PathEditor::Setup{path.name, std::move(path.points), context.path_settings(slopes.path), model.view_angles,
-                                         std::move(key_frames), context.settings.step,
-                                         PictureRefinement{.when = context.settings.refinement,
-                                                           .seen = context.settings.pictures_seen},
+            PathEditor(PathEditor::Setup{{path.name, context.path_settings(slopes.path), model.view_angles,
+                                          std::move(key_frames), context.settings.step,
+                                          PictureRefinement{.when = context.settings.refinement,
+                                                            .seen = context.settings.pictures_seen}},
+                                         std::move(path.points),
                                          std::exchange(path.evaluation_room, {})},
                        context.files)};
 }

@@ -16,6 +16,11 @@ using apcs::test::apply;
 using apcs::test::stick_player;
 using apcs::test::LogLines;
 using apcs::test::message_of;
+
+// What the editor keeps of its setup has no points and no arrays: the document and the picture
+// take them as it opens, and nothing can read them back empty.
+static_assert(!requires(PathEditor::Options options) { options.points; } &&
+              !requires(PathEditor::Options options) { options.evaluation_room; });
 namespace cmd = apcs::command;
 
 namespace {

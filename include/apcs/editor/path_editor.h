@@ -66,9 +66,9 @@ public:
     // Every row of the editor: which command does what in which state.
     static const EditorChart& chart();
 
-    struct Setup {
+    // What the editor is opened with and keeps while it shapes the path.
+    struct Options {
         std::string path_name;
-        ControlPoints points; // at least two: they become the document's
         PathSettings settings;
         ViewAngles view_angles;
         // Both key frames as polylines: the view keeps them in sight, and K shows them.
@@ -76,6 +76,11 @@ public:
         double staff_step = 0.05;
         // The terminal's: a key's first picture at once, the rest in refine_step() (path_picture.h).
         PictureRefinement refinement;
+    };
+    // The options, and what the editor hands over as it opens: the points become the document's,
+    // the arrays the picture's.
+    struct Setup : Options {
+        ControlPoints points; // at least two
         // Arrays for the path's evaluation made ahead (make_room), or none.
         EvaluatedPath evaluation_room;
     };
@@ -102,8 +107,8 @@ public:
     std::string_view title() const { return chart().title(leaf()); }
     // The leaf of the chart the editor is in.
     State leaf() const;
-    const std::string& path_name() const { return m_setup.path_name; }
-    const PathSettings& settings() const { return m_setup.settings; }
+    const std::string& path_name() const { return m_options.path_name; }
+    const PathSettings& settings() const { return m_options.settings; }
     // The path as edited (in the waypoint editor too).
     const ControlPoints& points() const { return m_document->points(); }
     // Parallel to points(): each point's index among the path file's points, or new_point for one
@@ -224,7 +229,7 @@ private:
     std::string with_move(const std::string& shown, const Staff& staff, MoveText move) const;
     PathScreenContent screen_content(MoveText move = MoveText::measured) const;
 
-    Setup m_setup;
+    Options m_options;
     StepLog& m_log;
     // The path (its points, origins and undo history) and its picture: evaluated and drawn in the
     // view fixed for the adjusting, kept between keys, every change refreshing only what it
