@@ -19,8 +19,9 @@ using apcs::test::message_of;
 
 // What the editor keeps of its setup has no points and no arrays: the document and the picture
 // take them as it opens, and nothing can read them back empty.
-static_assert(!requires(PathEditor::Options options) { options.points; } &&
-              !requires(PathEditor::Options options) { options.evaluation_room; });
+template <typename Kept>
+concept keeps_what_it_hands_over = requires(Kept kept) { kept.points; } || requires(Kept kept) { kept.evaluation_room; };
+static_assert(!keeps_what_it_hands_over<PathEditor::Options> && keeps_what_it_hands_over<PathEditor::Setup>);
 namespace cmd = apcs::command;
 
 namespace {
