@@ -4,12 +4,11 @@
 #include "handout_writer.h"
 #include "memory_limit.h"
 #include "report.h"
+#include "session_parts.h"
 #include "apcs/cli/script_options.h"
-#include "apcs/formats/file_io.h"
 #include "apcs/formats/inbetween_files.h"
 #include "apcs/formats/input_check.h"
 #include "apcs/formats/key_file_guard.h"
-#include "apcs/formats/text_fields.h"
 #include "apcs/input/play_to_idle.h"
 #include "apcs/lesson/handout.h"
 #include "apcs/lesson/replay_driver.h"
@@ -17,9 +16,7 @@
 
 #include <algorithm>
 #include <cassert>
-#include <cctype>
 #include <cstdlib>
-#include <langinfo.h>
 #include <memory>
 #include <limits>
 #include <optional>
@@ -28,73 +25,6 @@
 #include <unistd.h>
 
 namespace apcs {
-
-namespace {
-
-std::string_view glyph_set_name(GlyphSet glyphs)
-{
-    switch (glyphs) {
-    case GlyphSet::braille: return "braille";
-    case GlyphSet::blocks: return "blocks";
-    case GlyphSet::ascii: return "ascii";
-    case GlyphSet::automatic: break;
-    }
-    return "automatic";
-}
-
-// The terminal's type, "" when TERM is unset.
-std::string_view term_of_environment()
-{
-    const char* term = std::getenv("TERM");
-    return term == nullptr ? std::string_view() : std::string_view(term);
-}
-
-// The locale the environment asks for the character set: LC_ALL, else LC_CTYPE, else LANG (as
-// setlocale reads them); "" when none is set.
-std::string_view locale_of_environment()
-{
-    for (const char* name : {"LC_ALL", "LC_CTYPE", "LANG"})
-        if (const char* value = std::getenv(name); value != nullptr && *value != '\0')
-            return value;
-    return {};
-}
-
-} // namespace
-
-bool is_utf8_codeset(std::string_view codeset)
-{
-    std::string letters;
-    for (const char c : codeset)
-        if (c != '-' && c != '_')
-            letters += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return letters == "utf8";
-}
-
-GlyphSet default_glyphs(std::string_view codeset, std::string_view term)
-{
-    const bool linux_console = term == "linux" || term.starts_with("linux-");
-    const bool dec_terminal =
-        term.size() > 2 && term.starts_with("vt") && std::isdigit(static_cast<unsigned char>(term[2])) != 0;
-    const bool shows_braille = !term.empty() && !linux_console && !dec_terminal && term != "dumb";
-    return is_utf8_codeset(codeset) && shows_braille ? GlyphSet::braille : GlyphSet::ascii;
-}
-
-Expected<GlyphSet> terminal_glyphs(GlyphSet asked, std::string_view codeset, std::string_view term,
-                                   std::string_view locale_asked)
-{
-    if (asked == GlyphSet::automatic)
-        return default_glyphs(codeset, term);
-    if (asked == GlyphSet::ascii || is_utf8_codeset(codeset))
-        return asked;
-    const std::string needs = "--glyphs " + std::string(glyph_set_name(asked)) + " needs a UTF-8 locale";
-    const std::string lower = ascii_lower_case(locale_asked);
-    if (lower.find("utf-8") != std::string::npos || lower.find("utf8") != std::string::npos)
-        return Diagnostic{"apcs", 0,
-                          needs + ": " + std::string(locale_asked) +
-                              " is not installed here (locale -a lists those that are); use LANG=C.UTF-8, or "
-                              "--glyphs ascii"};
-    return Diagnostic{"apcs", 0, needs + " (LANG=C.UTF-8 or similar); use --glyphs ascii"};
-}
 
 SessionSettings session_settings(const CommonOptions& options)
 {
@@ -170,11 +100,6 @@ std::size_t run_headless_session(ReplayDriver& replay, const Session& session, G
     // The last step: the end, or where a script that ends mid-step stopped and why.
     print_shown();
     return drawn;
-}
-
-Expected<GlyphSet> terminal_glyphs_here(GlyphSet asked)
-{
-    return terminal_glyphs(asked, nl_langinfo(CODESET), term_of_environment(), locale_of_environment());
 }
 
 namespace {
@@ -283,15 +208,6 @@ std::optional<ExitStatus> refuse_replay_without_its_needs(const CommonOptions& o
     return std::nullopt;
 }
 
-// The glyphs the screens are drawn in: ascii for a replay without a terminal unless --glyphs says
-// otherwise; on a terminal, what it can show.
-Expected<GlyphSet> session_glyphs(GlyphSet asked, bool headless)
-{
-    if (headless)
-        return asked == GlyphSet::automatic ? GlyphSet::ascii : asked;
-    return terminal_glyphs_here(asked);
-}
-
 // What a replay keeps for after it: the keys for --record, each goal's outcome for apcs grade.
 struct ReplayKept {
     KeyRecording recording;
@@ -394,129 +310,6 @@ ExitStatus run_on_terminal(Session& session, const KeyScript& script, const Comm
     for (const std::string& name : written)
         out << escape_controls(name) << '\n';
     return status;
-}
-
-// ani1.dat …, inb001.dat …: names the session writes frames under, whatever the answers (any case).
-bool is_session_frame_name(const std::filesystem::path& target)
-{
-    std::string name = target.filename().string();
-    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-    return name.ends_with(".dat") && (name.starts_with("ani") || name.starts_with("inb"));
-}
-
-// The names the script's TEXT lines type (SPEC §3: line ends LF, CRLF or CR), cut at spaces.
-std::vector<std::string> typed_names(std::string_view script_text)
-{
-    std::vector<std::string> names;
-    constexpr std::string_view text_token = "TEXT ";
-    while (!script_text.empty()) {
-        const std::size_t end = std::min(script_text.find_first_of("\r\n"), script_text.size());
-        std::string_view line = script_text.substr(0, end);
-        script_text.remove_prefix(std::min(end + 1, script_text.size()));
-        if (!line.starts_with(text_token))
-            continue;
-        line.remove_prefix(text_token.size());
-        while (!line.empty()) {
-            const std::size_t space = std::min(line.find(' '), line.size());
-            if (space > 0)
-                names.emplace_back(line.substr(0, space));
-            line.remove_prefix(std::min(space + 1, line.size()));
-        }
-    }
-    return names;
-}
-
-// Why --record may not write its target: a file the session reads or writes (the key script,
-// the example key files, apcs.log, a frame file, a name the script types), found at start so the
-// session never runs for a recording that would replace one; nullopt for none.
-std::optional<std::string> record_target_clash(const CommonOptions& options, std::string_view script_text,
-                                               const std::filesystem::path& folder)
-{
-    const std::filesystem::path& target = *options.record;
-    KeyFileGuard script_file;
-    if (options.keys && *options.keys != "-")
-        script_file.protect(*options.keys);
-    const std::string never = "; --record never writes over it";
-    if (script_file.guards(target))
-        return "is the key script of this session (--keys)" + never;
-    if (is_session_frame_name(target))
-        return "is a name the session writes its frames under (ani*.dat, inb*.dat)" + never;
-    const auto names = [&](const std::string& name) {
-        KeyFileGuard used;
-        used.protect(folder / name);
-        return used.guards(target);
-    };
-    if (names("apcs.log"))
-        return "is the session's log" + never;
-    if (names("key1.dat") || names("key2.dat"))
-        return std::string("is a key file; key files are never written (the session did not start)");
-    for (const std::string& name : typed_names(script_text))
-        if (names(name))
-            return "is a file the key script names at a prompt (" + name + ")" + never;
-    return std::nullopt;
-}
-
-// --record checked before the session runs: "-" is standard output, which must not be the
-// terminal nor the session's screen; a file is neither one the session uses nor unwritable.
-std::optional<ExitStatus> refuse_record_target(const CommonOptions& options, std::string_view script_text,
-                                               const std::filesystem::path& folder, bool headless,
-                                               std::ostream& err)
-{
-    if (!options.record)
-        return std::nullopt;
-    if (*options.record == "-") {
-        if (::isatty(STDOUT_FILENO)) {
-            err << "apcs: --record -: standard output is a terminal; redirect it, or give --record FILE\n";
-            return ExitStatus::bad_usage;
-        }
-        if (!headless) {
-            err << "apcs: --record -: the session's screen is standard output; give --record FILE\n";
-            return ExitStatus::bad_usage;
-        }
-        return std::nullopt;
-    }
-    if (const std::optional<std::string> clash = record_target_clash(options, script_text, folder))
-        return report_bad_input({options.record->string(), 0, *clash}, err);
-    if (const Expected<void> writable = check_writable(*options.record); !writable)
-        return report_bad_input(writable.error(), err);
-    return std::nullopt;
-}
-
-// The files the session read that a recording (or its backup) must never replace: the key script
-// and the key frames as typed at the KEY prompts.
-KeyFileGuard files_read(const CommonOptions& options, const std::vector<std::string>& key_files,
-                        const std::filesystem::path& folder)
-{
-    KeyFileGuard read;
-    if (options.keys && *options.keys != "-")
-        read.protect(*options.keys);
-    for (const std::string& key : key_files)
-        read.protect(folder / key);
-    return read;
-}
-
-// --record FILE: the keys handled, as a script with the options that shaped them; "-" writes
-// them to `out`. The target was checked before the session (refuse_record_target) and guarded
-// during it, so the session wrote nothing there; a KEY answer typed live may still have named it,
-// and then it is a key file.
-std::optional<ExitStatus> record_keys(const CommonOptions& options, const KeyFileGuard& read, KeyRecording& recorded,
-                                      std::ostream& out, std::ostream& err)
-{
-    if (!options.record)
-        return std::nullopt;
-    recorded.add_options(carried_options_words(options));
-    if (*options.record == "-") {
-        out << recorded.text();
-        return std::nullopt;
-    }
-    if (read.guards(*options.record))
-        return report_bad_input({options.record->string(), 0,
-                                 "is a key file; key files are never written (the keystrokes were not recorded)"},
-                                err);
-    const Expected<WriteResult> written = write_file_atomically(*options.record, recorded.text(), &read);
-    if (!written)
-        return report_bad_input(written.error(), err);
-    return std::nullopt;
 }
 
 // --handout DIR: its folder made before the session starts; nullopt without --handout.
