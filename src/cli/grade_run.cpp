@@ -327,6 +327,40 @@ std::optional<ExitStatus> GradeRun::add_exercise(const fs::path& file, const Com
     return std::nullopt;
 }
 
+// `answered` replayed in a work folder of its own (removed after it) with the options `taken`: each
+// goal's outcome, or none when no verdict stands (why, on `err`).
+std::optional<std::vector<GoalOutcome>> GradeRun::replay_recording(const GradeExercise& exercise,
+                                                                   const KeyScript& answered, const fs::path& recording,
+                                                                   CommonOptions taken, std::size_t index,
+                                                                   std::ostream& err)
+{
+    const std::string work_name = "work-" + std::to_string(index);
+    const fs::path work = m_folder->path() / work_name;
+    if (const Expected<void> made = fresh_work_folder(exercise, *m_folder, work_name); !made) {
+        err << made.error().to_string() << '\n';
+        return std::nullopt;
+    }
+    // The session's own checks (a path or the frames too large) against the replays' whole
+    // budget: the same for every recording of the exercise, however many keys it has.
+    taken.memory_limit = m_replay_bytes;
+    // The report is the grade: a replay's "goal not reached" and the like are not shown.
+    std::ostream unheard(nullptr);
+    HeadlessReplay replayed = replay_in_folder(answered, recording.string(), taken, work, unheard, m_work_budget);
+    std::error_code ignored;
+    fs::remove_all(work, ignored);
+    if (replayed.over_budget) {
+        err << recording.string() << ": too long: its keys cost more than " << m_work_budget
+            << " operations, the work budget of a replay\n";
+        return std::nullopt;
+    }
+    // A file the session could not write changed where the keys went: no verdict stands.
+    if (replayed.unwritten) {
+        err << recording.string() << ": not graded: " << replayed.unwritten->to_string() << '\n';
+        return std::nullopt;
+    }
+    return std::move(replayed.goals);
+}
+
 // One recording's rows: error when it cannot be read or replayed, other when it is another
 // exercise's, else each goal as its replay in a work folder of its own left it.
 RecordingGrade GradeRun::grade_task(const GradeTask& task, std::size_t index, const CommonOptions& options)
@@ -377,32 +411,11 @@ RecordingGrade GradeRun::grade_task(const GradeTask& task, std::size_t index, co
             << " for itself)\n";
         return unreplayed(GradeVerdict::error);
     }
-    const std::string work_name = "work-" + std::to_string(index);
-    const fs::path work = m_folder->path() / work_name;
-    if (const Expected<void> made = fresh_work_folder(exercise, *m_folder, work_name); !made) {
-        err << made.error().to_string() << '\n';
-        return unreplayed(GradeVerdict::error);
-    }
     const KeyScript answered = with_answers_to_next_goal(*script);
-    // The session's own checks (a path or the frames too large) against the replays' whole
-    // budget: the same for every recording of the exercise, however many keys it has.
-    taken->memory_limit = m_replay_bytes;
-    // The report is the grade: a replay's "goal not reached" and the like are not shown.
-    std::ostream unheard(nullptr);
-    const HeadlessReplay replayed = replay_in_folder(answered, recording.string(), *taken, work, unheard, m_work_budget);
-    std::error_code ignored;
-    fs::remove_all(work, ignored);
-    if (replayed.over_budget) {
-        err << recording.string() << ": too long: its keys cost more than " << m_work_budget
-            << " operations, the work budget of a replay\n";
+    const std::optional<std::vector<GoalOutcome>> goals = replay_recording(exercise, answered, recording, *taken, index, err);
+    if (!goals)
         return unreplayed(GradeVerdict::error);
-    }
-    // A file the session could not write changed where the keys went: no verdict stands.
-    if (replayed.unwritten) {
-        err << recording.string() << ": not graded: " << replayed.unwritten->to_string() << '\n';
-        return unreplayed(GradeVerdict::error);
-    }
-    grade.rows = replayed_rows(names, answered, replayed.goals);
+    grade.rows = replayed_rows(names, answered, *goals);
     if (script->options.words != exercise.script.options.words)
         for (GradeRow& row : grade.rows)
             row.options = script->options.words;

@@ -77,6 +77,9 @@ public:
 
 private:
     RecordingGrade grade_task(const GradeTask& task, std::size_t index, const CommonOptions& options);
+    std::optional<std::vector<GoalOutcome>> replay_recording(const GradeExercise& exercise, const KeyScript& answered,
+                                                             const std::filesystem::path& recording,
+                                                             CommonOptions taken, std::size_t index, std::ostream& err);
 
     std::uint64_t m_replay_bytes;
     std::uint64_t m_work_budget;

@@ -252,6 +252,30 @@ std::string_view keyword_in_capitals(std::string_view line, std::string& respell
     return line;
 }
 
+// A line of key tokens: its keys into `events`; its comment's caption, if the comment is one.
+Expected<std::optional<std::string>> take_key_line(std::string_view line, std::vector<KeyEvent>& events,
+                                                   const std::string& file_name, int line_number)
+{
+    const std::size_t comment = line.find(';');
+    const Expected<std::optional<std::string>> caption =
+        comment == std::string_view::npos ? Expected<std::optional<std::string>>(std::nullopt)
+                                          : checked_caption(line.substr(comment), file_name, line_number);
+    if (!caption)
+        return caption.error();
+    std::optional<Diagnostic> problem;
+    for_each_field(line.substr(0, comment), [&](std::string_view token) {
+        if (problem)
+            return;
+        if (const std::optional<KeyEvent> event = key_of_token(token))
+            events.push_back(*event);
+        else
+            problem = Diagnostic{file_name, line_number, expected_token() + "; found " + quote_field(token)};
+    });
+    if (problem)
+        return *problem;
+    return *caption;
+}
+
 // The script's events; its captions, TEXT lines and goals into `kept` unless it is null.
 Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::string& file_name, KeyScript* kept,
                                              std::size_t most_keys = std::numeric_limits<std::size_t>::max())
@@ -275,7 +299,6 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
                           "too long: more than " + std::to_string(most_keys) + " keys, at most " +
                               std::to_string(most_keys) + " are read"};
     };
-    std::optional<Diagnostic> problem;
     int line_number = 0;
     ScriptState state;
     while (!text.empty()) {
@@ -296,23 +319,9 @@ Expected<std::vector<KeyEvent>> parse_script(std::string_view text, const std::s
             return directive.error();
         if (*directive)
             continue;
-        const std::size_t comment = line.find(';');
-        const Expected<std::optional<std::string>> caption =
-            comment == std::string_view::npos ? Expected<std::optional<std::string>>(std::nullopt)
-                                              : checked_caption(line.substr(comment), file_name, line_number);
+        const Expected<std::optional<std::string>> caption = take_key_line(line, events, file_name, line_number);
         if (!caption)
             return caption.error();
-        line = line.substr(0, comment);
-        for_each_field(line, [&](std::string_view token) {
-            if (problem)
-                return;
-            if (const std::optional<KeyEvent> event = key_of_token(token))
-                events.push_back(*event);
-            else
-                problem = Diagnostic{file_name, line_number, expected_token() + "; found " + quote_field(token)};
-        });
-        if (problem)
-            return *problem;
         if (events.size() > most_keys)
             return too_many_keys(line_number);
         note_lines(line_number);

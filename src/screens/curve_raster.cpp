@@ -134,6 +134,32 @@ void CurveRaster::start_blocks(std::size_t segment_count)
     }
 }
 
+// Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
+std::size_t CurveRaster::draw_stale_blocks(const std::vector<std::pair<std::size_t, std::size_t>>& stale,
+                                           const SampledCurve& curve, std::size_t most_work)
+{
+    std::size_t done = 0;
+    std::size_t work = 0;
+    std::size_t round = most_work == all_work ? stale.size() : 2;
+    while (done < stale.size() && work < most_work) {
+        const std::size_t count = std::min(round, stale.size() - done);
+        std::array<std::size_t, 2> halves{};
+        // A thread is worth some 4096 segments (a block of a long path's; many small ones).
+        split_across_cores(count, most_segments_per_block / m_block_segments, [&](std::size_t first, std::size_t end) {
+            std::size_t half = 0;
+            for (std::size_t i = done + first; i < done + end; ++i)
+                half += draw_block(m_blocks[stale[i].first], curve, stale[i].second);
+            halves[first == 0 ? 0 : 1] = half;
+        });
+        done += count;
+        work += halves[0] + halves[1];
+        m_work_done += halves[0] + halves[1];
+        // As many blocks as the work left allows at the cost of those drawn, two at the least.
+        round = std::max<std::size_t>(2, work == 0 || work >= most_work ? 2 * round : (most_work - work) * done / work);
+    }
+    return done;
+}
+
 void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, PixelRect clip, std::size_t most_work,
                          SegmentRange unmade)
 {
@@ -165,26 +191,7 @@ void CurveRaster::update(const SampledCurve& curve, const ViewTransform& view, P
             compose_stale_rows();
         return;
     }
-    // Blocks are independent: a global change of 10^6 control points draws its 245 on two cores.
-    std::size_t done = 0;
-    std::size_t work = 0;
-    std::size_t round = most_work == all_work ? stale.size() : 2;
-    while (done < stale.size() && work < most_work) {
-        const std::size_t count = std::min(round, stale.size() - done);
-        std::array<std::size_t, 2> halves{};
-        // A thread is worth some 4096 segments (a block of a long path's; many small ones).
-        split_across_cores(count, most_segments_per_block / m_block_segments, [&](std::size_t first, std::size_t end) {
-            std::size_t half = 0;
-            for (std::size_t i = done + first; i < done + end; ++i)
-                half += draw_block(m_blocks[stale[i].first], curve, stale[i].second);
-            halves[first == 0 ? 0 : 1] = half;
-        });
-        done += count;
-        work += halves[0] + halves[1];
-        m_work_done += halves[0] + halves[1];
-        // As many blocks as the work left allows at the cost of those drawn, two at the least.
-        round = std::max<std::size_t>(2, work == 0 || work >= most_work ? 2 * round : (most_work - work) * done / work);
-    }
+    const std::size_t done = draw_stale_blocks(stale, curve, most_work);
     // Blocks drawn on top of a picture of current blocks only are laid over it (a picture drawn
     // in steps); else all are laid again.
     if (!m_composed_whole)

@@ -108,6 +108,10 @@ private:
     bool too_many_blocks() const;
     // Returns the work it did.
     std::size_t draw_block(Block& block, const SampledCurve& curve, std::size_t first_segment) const;
+    // The stale blocks (block, its first segment) drawn, in rounds until `most_work` is done: how
+    // many were drawn, from the first.
+    std::size_t draw_stale_blocks(const std::vector<std::pair<std::size_t, std::size_t>>& stale, const SampledCurve& curve,
+                                  std::size_t most_work);
     void compose();
     // The rows m_stale_rows laid again from the current blocks alone: an edit's few rows, not the
     // whole picture (an edit of a path of 16,000 points lays a few rows of its some 100 blocks).
