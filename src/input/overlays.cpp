@@ -41,7 +41,7 @@ OverlayAnswer Overlays::handle(KeyContext context, const Command& command)
 OverlayAnswer Overlays::answer_open(const Command& command)
 {
     const bool quitting = asking_quit() && std::holds_alternative<command::Yes>(command);
-    m_open.reset();
+    close();
     return quitting ? OverlayAnswer::quit : OverlayAnswer::handled;
 }
 

@@ -33,6 +33,8 @@ std::vector<std::string> wrap(const std::string& line)
 
 void TextConsole::print(const std::string& text)
 {
+    if (!text.empty())
+        ++m_revision;
     for (const char c : text) {
         if (c == '\n') {
             for (std::string& piece : wrap(m_partial))

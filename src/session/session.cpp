@@ -88,10 +88,14 @@ bool Session::keeps_step(const KeyEvent& event) const
 void Session::handle(const KeyEvent& event)
 {
     const std::optional<ShapingLook> before = shaping_look();
+    const std::uint64_t counted = counted_changes();
+    const std::string notice = m_notice;
     take_key(event);
-    if (!before || shaping_look() != before)
+    if (before ? shaping_look() != before : counted_changes() != counted || m_notice != notice)
         ++m_revision;
 }
+
+std::uint64_t Session::counted_changes() const { return m_console.revision() + m_overlays.revision() + m_step_changes; }
 
 std::optional<Session::ShapingLook> Session::shaping_look() const
 {
@@ -138,8 +142,11 @@ void Session::update_step(const Command& command)
     StepContext step_context = context();
     if (auto* shaping = std::get_if<step::Shaping>(&m_step))
         m_step_result = shaping->update(step_context, command);
-    else if (auto* playing = std::get_if<step::Playing>(&m_step))
+    else if (auto* playing = std::get_if<step::Playing>(&m_step)) {
+        // Each command the player's chart takes shows another frame or says paused.
         m_step_result = playing->update(step_context, command);
+        ++m_step_changes;
+    }
 }
 
 void Session::open_help() { m_overlays.open_help(step_key_context(), empty_answer()); }
@@ -210,6 +217,7 @@ void Session::follow(StepResult result)
 {
     while (result.outcome != StepOutcome::stay) {
         const bool followed = graph().fire(*this, result, [](const Session& session) { return session.step_leaf(); });
+        ++m_step_changes;
         assert(followed && "a step ended in a way the steps' graph does not know");
         StepContext step_context = context();
         if (!followed) {
@@ -367,6 +375,7 @@ void Session::quit()
     if (auto* splitting = std::get_if<step::Splitting>(&m_step))
         static_cast<void>(splitting->close(step_context));
     m_step.emplace<step::Finished>();
+    ++m_step_changes;
     static_cast<void>(std::get<step::Finished>(m_step).start(step_context));
     ask({});
 }

@@ -45,7 +45,7 @@ TEST_CASE("every key stream of the session fuzzing corpus plays without a crash 
 // A headless transcript draws a step's last screen only before a key that may end the step
 // (Session::keeps_step): a key vouched for must never end it, or the transcript would print a
 // screen the step never showed last.
-TEST_CASE("a key the session vouches keeps its step never changes the phase, over the whole fuzzing corpus",
+TEST_CASE("a key the session vouches keeps its step never ends the step, over the whole fuzzing corpus",
           "[session][fuzz]")
 {
     std::size_t vouched = 0;
@@ -74,4 +74,45 @@ TEST_CASE("a key the session vouches keeps its step never changes the phase, ove
     // The corpus tries both: keys vouched for, and keys that end steps.
     REQUIRE(vouched > 10000);
     REQUIRE(changed_step > 1000);
+}
+
+// The terminal paints when the screen's revision has advanced (program_loop.cpp): a key that
+// changes the screen without advancing it would leave the terminal showing what was, until some
+// later key; one that advances it on an unchanged screen paints it again for nothing (a path of
+// 10^6 points drawn anew).
+TEST_CASE("over the whole fuzzing corpus, a key changes the session's screen if and only if it advances its "
+          "revision",
+          "[session][fuzz]")
+{
+    std::size_t changed = 0;
+    std::size_t missed = 0;
+    for (const auto& [name, bytes] : corpus_streams()) {
+        MemoryFiles files = fuzzing::example_files();
+        SessionSettings settings;
+        settings.samples_per_segment = 4;
+        settings.inbetween_count = 3;
+        Session session(settings, files);
+        ProgramScreen shown = session.screen();
+        for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
+            const std::uint64_t revision = session.screen_revision();
+            session.handle(fuzzing::key_from(static_cast<std::uint8_t>(bytes[i])));
+            ProgramScreen now = session.screen();
+            const bool screen_changed = !(now == shown);
+            const bool revision_advanced = session.screen_revision() != revision;
+            changed += screen_changed ? 1 : 0;
+            if (screen_changed != revision_advanced && ++missed <= 20) {
+                UNSCOPED_INFO(name << " key " << i << " at " << session.leaf_name() << ": the screen "
+                                   << (screen_changed ? "changed" : "stayed") << ", the revision "
+                                   << (revision_advanced ? "advanced" : "stayed"));
+            }
+            const bool ticks_ran = session.animating();
+            for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
+                session.tick();
+            shown = std::move(now);
+            if (ticks_ran)
+                shown = session.screen();
+        }
+    }
+    CHECK(missed == 0);
+    REQUIRE(changed > 10000);
 }

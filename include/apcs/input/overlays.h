@@ -3,6 +3,7 @@
 #include "apcs/input/command.h"
 #include "apcs/input/key_map.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -42,11 +43,26 @@ public:
     // closes the help.
     OverlayAnswer handle(KeyContext context, const Command& command);
     // The help screen for `keys` (a prompt's answer "?" asks for it too).
-    void open_help(KeyContext keys, std::string empty_answer) { m_open = overlay::HelpScreen{keys, std::move(empty_answer)}; }
+    void open_help(KeyContext keys, std::string empty_answer)
+    {
+        m_open = overlay::HelpScreen{keys, std::move(empty_answer)};
+        ++m_revision;
+    }
     // The quit question in the words `question` (a session_text constant: the view outlives the
     // overlay): the session's chart asks it for q on the path screen and Esc on an empty prompt.
-    void ask_quit(std::string_view question) { m_open = overlay::QuitQuestion{question}; }
-    void close() { m_open.reset(); }
+    void ask_quit(std::string_view question)
+    {
+        m_open = overlay::QuitQuestion{question};
+        ++m_revision;
+    }
+    void close()
+    {
+        if (m_open)
+            ++m_revision;
+        m_open.reset();
+    }
+    // Advanced by every overlay opened or closed.
+    std::uint64_t revision() const { return m_revision; }
 
     const overlay::HelpScreen* help() const;
     const overlay::QuitQuestion* quit_question() const;
@@ -56,6 +72,7 @@ private:
     OverlayAnswer answer_open(const Command& command);
 
     std::optional<std::variant<overlay::HelpScreen, overlay::QuitQuestion>> m_open;
+    std::uint64_t m_revision = 0;
 };
 
 } // namespace apcs

@@ -17,6 +17,7 @@ struct TextLine {
     std::string text; // UTF-8
     CellStyle style = CellStyle::plain;
     ColourRole role = ColourRole::monitor;
+    bool operator==(const TextLine&) const = default;
 };
 
 // What a mark stands for. Marks are kept apart from the raster's lines so that at any terminal size
@@ -37,6 +38,7 @@ struct PixelMark {
     MarkKind kind = MarkKind::control_point;
     CellStyle style = CellStyle::plain;
     ColourRole role = ColourRole::monitor;
+    bool operator==(const PixelMark&) const = default;
 };
 
 // A horizontal line with upright ticks: a line of the four-line staff (fig. 3.1.5), in raster
@@ -51,6 +53,7 @@ struct TickedLine {
     int y = 0;
     std::vector<int> ticks;   // each tick's x, in [left, right]
     int tick_half_height = 0; // a tick runs from y − this to y + this
+    bool operator==(const TickedLine&) const = default;
 };
 
 // A tangent arrow of the path screen (T), from `tail` to `tip` in raster pixels. Pictures draw its
@@ -63,6 +66,7 @@ struct CellArrow {
     PixelPoint tip;
     LineStyle style = LineStyle::solid;
     ColourRole role = ColourRole::tangent;
+    bool operator==(const CellArrow&) const = default;
 };
 
 // What graphics mode shows: the 720x348 raster of lines, the ticked lines, the marks and the text
@@ -83,6 +87,7 @@ struct GraphicsScreen {
     // The colour role of each raster pixel (row by row), empty while every lit pixel is the
     // monitor's; paint_layer fills it. Pictures ignore it (SPEC §7.1: the monitor had one colour).
     std::vector<ColourRole> pixel_roles;
+    bool operator==(const GraphicsScreen&) const = default;
 };
 
 // Lights the pixels `layer` lights, in `role`: a pixel lit before keeps the role of higher

@@ -18,6 +18,7 @@ struct Stroke {
     std::vector<PixelPoint> points;
     LineStyle style = LineStyle::solid;
     std::optional<PixelRect> clip;
+    bool operator==(const Stroke&) const = default;
 };
 
 } // namespace apcs

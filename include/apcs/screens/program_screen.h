@@ -18,6 +18,7 @@ struct ProgramScreen {
     std::string caption = {};
     std::string badge = {};
     std::string badge_place = {}; // beside the badge: "caption 2 of 7"
+    bool operator==(const ProgramScreen&) const = default;
 };
 
 } // namespace apcs

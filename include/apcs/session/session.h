@@ -82,8 +82,10 @@ public:
     bool preparing() const { return path_wanting_room() != nullptr; }
     int delay_ms() const override { return m_model.delay_ms; }
     ProgramScreen screen() const override;
-    // A key that changes nothing on the path screen (a staff step past +1, a key no mode takes)
-    // leaves it; any other key, tick or work advances it.
+    // A key advances it when it changes what is shown: the path screen as its look compares, else
+    // what the console, the overlays, the steps and the player count of their own changes, and the
+    // message line; a key that changes nothing (a staff step past +1, a key no step takes, Backspace
+    // on an empty answer) leaves it. A tick or a step of work always advances it.
     std::uint64_t screen_revision() const override { return m_revision; }
 
     // The leaf of the session's chart: an overlay's while one is open, else the step's.
@@ -140,6 +142,9 @@ private:
         bool operator==(const ShapingLook&) const = default;
     };
     std::optional<ShapingLook> shaping_look() const;
+    // What the text steps and the animation count of their own changes: the console's, the
+    // overlays', the steps begun and the commands the player took.
+    std::uint64_t counted_changes() const;
     void take_key(const KeyEvent& event);
     // A command the path screen or the animation takes by its own chart (the session chart's rows).
     void update_step(const Command& command);
@@ -185,6 +190,7 @@ private:
     std::string m_goal_feedback;
     std::string m_goal_briefly;
     std::uint64_t m_revision = 0;
+    std::uint64_t m_step_changes = 0;
     // How the step the last command answered ended (set by the chart's rows), for follow().
     StepResult m_step_result;
 };
