@@ -23,6 +23,26 @@ std::vector<std::pair<std::string, std::string>> corpus_streams()
     return streams;
 }
 
+// Every key of every stream of the corpus, each stream played into a session of its own (few samples
+// and in-betweens: the corpus is large): `play(name, index, session, key)` plays one, then the
+// animation it started runs to its end (100 ticks at most).
+template <typename Play>
+void play_corpus(Play play)
+{
+    for (const auto& [name, bytes] : corpus_streams()) {
+        MemoryFiles files = fuzzing::example_files();
+        SessionSettings settings;
+        settings.samples_per_segment = 4;
+        settings.inbetween_count = 3;
+        Session session(settings, files);
+        for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
+            play(name, i, session, fuzzing::key_from(static_cast<std::uint8_t>(bytes[i])));
+            for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
+                session.tick();
+        }
+    }
+}
+
 } // namespace
 
 TEST_CASE("every key stream of the session fuzzing corpus plays without a crash and writes only in the folder",
@@ -50,27 +70,17 @@ TEST_CASE("a key the session vouches keeps its step never ends the step, over th
 {
     std::size_t vouched = 0;
     std::size_t changed_step = 0;
-    for (const auto& [name, bytes] : corpus_streams()) {
-        MemoryFiles files = fuzzing::example_files();
-        SessionSettings settings;
-        settings.samples_per_segment = 4;
-        settings.inbetween_count = 3;
-        Session session(settings, files);
-        for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
-            const KeyEvent key = fuzzing::key_from(static_cast<std::uint8_t>(bytes[i]));
-            const std::string_view before = session.step_title();
-            const bool keeps = session.keeps_step(key);
-            session.handle(key);
-            if (keeps) {
-                ++vouched;
-                CAPTURE(name, i, before);
-                REQUIRE(session.step_title() == before);
-            }
-            changed_step += session.step_title() != before;
-            for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
-                session.tick();
+    play_corpus([&](const std::string& name, std::size_t i, Session& session, const KeyEvent& key) {
+        const std::string_view before = session.step_title();
+        const bool keeps = session.keeps_step(key);
+        session.handle(key);
+        if (keeps) {
+            ++vouched;
+            CAPTURE(name, i, before);
+            REQUIRE(session.step_title() == before);
         }
-    }
+        changed_step += session.step_title() != before;
+    });
     // The corpus tries both: keys vouched for, and keys that end steps.
     REQUIRE(vouched > 10000);
     REQUIRE(changed_step > 1000);
@@ -86,33 +96,19 @@ TEST_CASE("over the whole fuzzing corpus, a key changes the session's screen if 
 {
     std::size_t changed = 0;
     std::size_t missed = 0;
-    for (const auto& [name, bytes] : corpus_streams()) {
-        MemoryFiles files = fuzzing::example_files();
-        SessionSettings settings;
-        settings.samples_per_segment = 4;
-        settings.inbetween_count = 3;
-        Session session(settings, files);
-        ProgramScreen shown = session.screen();
-        for (std::size_t i = 0; i < bytes.size() && !session.finished(); ++i) {
-            const std::uint64_t revision = session.screen_revision();
-            session.handle(fuzzing::key_from(static_cast<std::uint8_t>(bytes[i])));
-            ProgramScreen now = session.screen();
-            const bool screen_changed = !(now == shown);
-            const bool revision_advanced = session.screen_revision() != revision;
-            changed += screen_changed ? 1 : 0;
-            if (screen_changed != revision_advanced && ++missed <= 20) {
-                UNSCOPED_INFO(name << " key " << i << " at " << session.leaf_name() << ": the screen "
-                                   << (screen_changed ? "changed" : "stayed") << ", the revision "
-                                   << (revision_advanced ? "advanced" : "stayed"));
-            }
-            const bool ticks_ran = session.animating();
-            for (int ticks = 0; session.animating() && ticks < 100; ++ticks)
-                session.tick();
-            shown = std::move(now);
-            if (ticks_ran)
-                shown = session.screen();
-        }
-    }
+    play_corpus([&](const std::string& name, std::size_t i, Session& session, const KeyEvent& key) {
+        // The screen the key meets: the last key's and its animation's, or the session's first.
+        const ProgramScreen shown = session.screen();
+        const std::uint64_t revision = session.screen_revision();
+        session.handle(key);
+        const bool screen_changed = !(session.screen() == shown);
+        const bool revision_advanced = session.screen_revision() != revision;
+        changed += screen_changed ? 1 : 0;
+        if (screen_changed != revision_advanced && ++missed <= 20)
+            UNSCOPED_INFO(name << " key " << i << " at " << session.leaf_name() << ": the screen "
+                               << (screen_changed ? "changed" : "stayed") << ", the revision "
+                               << (revision_advanced ? "advanced" : "stayed"));
+    });
     CHECK(missed == 0);
     REQUIRE(changed > 10000);
 }
