@@ -313,6 +313,26 @@ TEST_CASE("a typed answer keeps 200 bytes at most: a character that would pass t
     CHECK(shown.find('c') == std::string::npos);
 }
 
+TEST_CASE("a typed answer holds 66 Chinese characters, as the manual says (3 bytes each: 198 of 200)",
+          "[session][cells]")
+{
+    MemoryFiles files = example_files();
+    Session session(SessionSettings{}, files);
+    for (int typed = 0; typed < 70; ++typed)
+        session.handle(KeyEvent::typed(U'\u5B57'));
+    session.handle(enter);
+    // The answer is refused (no such file) and the refusal names it whole.
+    std::string shown;
+    const CellGrid grid = session.screen().text;
+    for (int row = 0; row < grid.rows(); ++row)
+        shown += grid.row_text(row);
+    std::string sixty_six;
+    for (int typed = 0; typed < 66; ++typed)
+        sixty_six += "\u5B57";
+    CHECK(shown.find(sixty_six) != std::string::npos);
+    CHECK(shown.find(sixty_six + "\u5B57") == std::string::npos);
+}
+
 TEST_CASE("wide characters typed at a prompt take two columns, zero-width ones are refused, and a wide name reads",
           "[session][cells]")
 {
