@@ -4,7 +4,10 @@
 #include "session_parts.h"
 #include "apcs/formats/text_fields.h"
 
+#include <cctype>
+#include <cstdlib>
 #include <langinfo.h>
+#include <string>
 
 namespace apcs {
 

@@ -1,6 +1,8 @@
 #pragma once
 
-// The parts of run_session_command kept in files of their own: the glyphs, and --record.
+// The steps of run_session_command kept in files of their own: the glyphs the screens are drawn in
+// (session_glyphs.cpp), and the files the session read, which neither a recording nor a handout may
+// replace, with --record's target checked and its keys written (session_record.cpp).
 #include "apcs/cli/options.h"
 #include "apcs/base/exit_status.h"
 #include "apcs/formats/key_file_guard.h"

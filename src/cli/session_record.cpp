@@ -1,4 +1,5 @@
-// --record: its target checked before the session runs, and the keys written after it.
+// The files the session read, which neither a recording nor a handout may replace; --record's
+// target checked before the session runs, and its keys written after it.
 #include "session_parts.h"
 
 #include "report.h"

@@ -32,12 +32,12 @@ double snapped(double value) { return limits::staff_value.clamp(std::round(value
 enum class KeyFrames { shown, hidden };
 
 // What the view keeps in sight: the path, its control points, and both key frames while K shows them.
-ViewScene shown_scene(const PathEditor::Options& setup, const ControlPoints& points, const EvaluatedPath& path,
+ViewScene shown_scene(const PathEditor::Options& options, const ControlPoints& points, const EvaluatedPath& path,
                       KeyFrames key_frames)
 {
     PathScreenContent shown = path_screen_content(points, path);
     if (key_frames == KeyFrames::shown)
-        shown.key_frame_polylines = setup.key_frame_polylines;
+        shown.key_frame_polylines = options.key_frame_polylines;
     return path_screen_scene(shown);
 }
 

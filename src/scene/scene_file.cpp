@@ -1,8 +1,6 @@
 #include "apcs/scene/scene_file.h"
 #include "scene_parser.h"
-#include "apcs/scene/rigid_turn.h"
 #include "apcs/scene/scene_joints.h"
-#include "scene_numbers.h"
 
 #include "apcs/formats/file_io.h"
 #include "apcs/formats/number_text.h"

@@ -1,7 +1,6 @@
 // A scene file's JOINT and RIGID lines (SPEC §8.1).
 #include "scene_parser.h"
 #include "apcs/scene/rigid_turn.h"
-#include "apcs/scene/scene_joints.h"
 #include "scene_numbers.h"
 
 #include "apcs/formats/number_text.h"

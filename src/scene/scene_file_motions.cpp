@@ -8,6 +8,20 @@
 
 namespace apcs::scene_parsing {
 
+namespace {
+
+// The scene's largest scale: a SCALE whose power over its frames leaves 1e-6 … 1e6 is refused.
+constexpr double most_scale_growth = 1e6;
+
+// ALIGN's directions are differences of points on the path, squared for their length: a path (or
+// an AHEAD distance) of 1e-150 or less has steps whose squares vanish below the smallest double,
+// and one of 1e-12 of its coordinates or less has steps made of round-off (issue 45: AHEAD 1e-300
+// gave NaN turns; a path 1e-300 long silently did not turn).
+constexpr double shortest_align_span = 1e-150;
+constexpr double least_align_fraction = 1e-12;
+
+} // namespace
+
 Expected<void> SceneParser::parse_move(const Fields& fields)
 {
     if (auto outcome = once(object().move.has_value(), "MOVE"); !outcome)

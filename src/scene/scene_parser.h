@@ -6,7 +6,7 @@
 // (JOINT and RIGID).
 #include "apcs/scene/scene_file.h"
 
-#include "apcs/formats/path_files.h"
+#include "apcs/formats/dat_file.h"
 #include "apcs/formats/text_fields.h"
 
 #include <algorithm>
@@ -19,18 +19,6 @@
 namespace apcs::scene_parsing {
 
 using Fields = std::vector<std::string_view>;
-
-// The scene's largest scale: a SCALE whose power over its frames leaves 1e-6 … 1e6 is refused.
-inline constexpr double most_scale_growth = 1e6;
-
-// ALIGN's directions are differences of points on the path, squared for their length: a path (or
-// an AHEAD distance) of 1e-150 or less has steps whose squares vanish below the smallest double,
-// and one of 1e-12 of its coordinates or less has steps made of round-off (issue 45: AHEAD 1e-300
-// gave NaN turns; a path 1e-300 long silently did not turn).
-inline constexpr double shortest_align_span = 1e-150;
-inline constexpr double least_align_fraction = 1e-12;
-
-
 
 // A path file, kept until the object's staff values are known.
 struct PendingPath {

@@ -14,7 +14,7 @@
 namespace apcs {
 
 // The session's options that shape what its keys do, which a key script may carry on its OPTIONS
-// line (key_event.h): with another staff step, in-between count or spacing the same keys reach
+// line (key_script.h): with another staff step, in-between count or spacing the same keys reach
 // other values, so a recording made with them rechecks and grades only with them too. The
 // options that choose how the session looks (--glyphs, --color, --pixels) or where it reads and
 // writes (--workdir, --png, --record ...) are never a script's.

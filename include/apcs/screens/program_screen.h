@@ -8,9 +8,8 @@
 namespace apcs {
 
 // What an interactive program (a replay of the session, apcs play) shows now: the DOS text console
-// or the graphics screen, and what a replay lays
-// over it where it is shown (replay_caption.h): its caption on a row of its own, and the step it
-// just played at the top right.
+// or the graphics screen, and what a replay lays over it where it is shown (replay_caption.h): its
+// caption on a row of its own, and the step it just played at the top right.
 struct ProgramScreen {
     bool graphics = false;
     CellGrid text;          // 80x24, when !graphics
