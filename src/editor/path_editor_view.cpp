@@ -4,11 +4,11 @@
 #include "apcs/base/overloaded.h"
 #include "apcs/base/utf8.h"
 #include "apcs/screens/path_overlays.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 namespace apcs {
 
-namespace text = session_text;
+namespace text = words;
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include "apcs/raster/painter.h"
 #include "apcs/base/overloaded.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 #include "apcs/screens/world_drawing.h"
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 
 namespace apcs {
 
-namespace text = session_text;
+namespace text = words;
 
 namespace {
 

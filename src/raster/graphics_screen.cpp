@@ -3,7 +3,6 @@
 #include "cell_shapes.h"
 #include "apcs/raster/font.h"
 #include "apcs/raster/painter.h"
-#include "apcs/raster/short_screen.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -271,10 +270,6 @@ CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyp
 
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
-    // The short screen's layout fills 23 of the 24 text rows: the 24th is left out.
-    if (is_short_area(area))
-        return without_row(render_cells(on_short_screen(screen), {area.columns, text_screen_rows}, glyphs, cache),
-                           text_screen_rows - 1);
     CellGrid grid = screen.arrows.empty() ? map_to_cells(screen.bitmap, area, glyphs, cache)
                                           : map_to_cells(raster_for_cells(screen), area, glyphs, cache);
     lay_roles_under_marks(grid, screen, area);

@@ -5,7 +5,7 @@
 #include "apcs/raster/screen_layout.h"
 #include "session_pictures.h"
 #include "apcs/screens/curve_raster.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include <algorithm>
 #include <cassert>

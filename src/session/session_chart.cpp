@@ -1,6 +1,6 @@
 #include "apcs/session/session.h"
 
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include "step_leaves.h"
 
@@ -127,7 +127,7 @@ std::vector<Session::SessionChart::Row> Session::console_rows()
         {State::text_line, on<command::EraseCharacter>, {}, nullptr, "the answer's last character erased",
          [](S& s, C) { s.erase_last_typed(); }},
         {State::text_line, on<command::ClearLine>, "the line empty", [](const S& s, C) { return s.m_console.input().empty(); },
-         "asked: Quit APCS ? (Y/N)", [](S& s, C) { s.m_overlays.ask_quit(session_text::quit_apcs_question); },
+         "asked: Quit APCS ? (Y/N)", [](S& s, C) { s.m_overlays.ask_quit(words::quit_apcs_question); },
          State::quit_question},
         {State::text_line, on<command::ClearLine>, {}, nullptr, "the line cleared",
          [](S& s, C) { s.m_console.set_input(""); }},
@@ -150,7 +150,7 @@ std::vector<Session::SessionChart::Row> Session::console_rows()
          [](S& s, C) { s.answer_question(); }, State::steps},
         // The screens with charts of their own; only a path being shaped is not yet saved.
         {State::path_screen, on<command::Quit>, {}, nullptr, "asked: Quit without saving this path ? (Y/N)",
-         [](S& s, C) { s.m_overlays.ask_quit(session_text::quit_question); }, State::quit_question},
+         [](S& s, C) { s.m_overlays.ask_quit(words::quit_question); }, State::quit_question},
         {State::path_screen, any_other_event, {}, nullptr,
          "to the path editor's chart (an accepted path: the steps' graph)", [](S& s, C c) { s.update_step(c); },
          State::steps},

@@ -7,13 +7,13 @@
 #include "apcs/formats/path_files.h"
 #include "apcs/raster/svg_encoder.h"
 #include "session_pictures.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include <utility>
 
 namespace apcs::step {
 
-namespace text = session_text;
+namespace text = words;
 
 namespace {
 

@@ -7,7 +7,7 @@
 #include "apcs/formats/path_files.h"
 #include "apcs/formats/sif_path.h"
 #include "session_budget.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include <algorithm>
 #include <cassert>
@@ -16,7 +16,7 @@
 
 namespace apcs::step {
 
-namespace text = session_text;
+namespace text = words;
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include "apcs/input/play_to_idle.h"
 #include "apcs/screens/replay_caption.h"
-#include "apcs/raster/short_screen.h"
+#include "apcs/screens/short_screen.h"
 
 #include <algorithm>
 #include <chrono>
@@ -98,7 +98,7 @@ CellGrid too_small_grid(TerminalSize size)
 CellGrid graphics_grid(const GraphicsScreen& screen, TerminalSize size, GlyphSet glyphs, AsciiGlyphCache& cache)
 {
     const std::optional<CellArea> area = fit_cell_area(size.columns, size.rows);
-    return area ? render_cells(screen, *area, glyphs, cache) : too_small_grid(size);
+    return area ? render_screen_cells(screen, *area, glyphs, cache) : too_small_grid(size);
 }
 
 ExitStatus run_program_on(InteractiveProgram& program, TerminalDevice& terminal, TerminalPixels& pixels,

@@ -3,7 +3,7 @@
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/terminal_picture.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/raster/short_screen.h"
+#include "apcs/screens/short_screen.h"
 
 #include <algorithm>
 #include <utility>

@@ -5,7 +5,7 @@
 #include "apcs/screens/curve_raster.h"
 #include "apcs/editor/path_editor.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include "support/same_path.h"
 #include "support/session_keys.h"
@@ -209,7 +209,7 @@ int refine_editor(PathEditor& editor)
         const GraphicsScreen first = editor.view();
         const std::string message = message_of(first);
         // The 8/2 question stays, what is left following it in a few words.
-        const std::string question(session_text::choose_control);
+        const std::string question(words::choose_control);
         const bool says_so = message.starts_with("drawing the curve: ") || message.starts_with("measuring arc lengths") ||
                              message == question + "    (drawing the curve...)" ||
                              message == question + "    (measuring arc lengths...)";
@@ -287,7 +287,7 @@ TEST_CASE("an opened path's 8/2 question stands on its first picture, and 8 or 2
           "[session][editor][refinement]")
 {
     LogLines log;
-    const std::string question(session_text::choose_control);
+    const std::string question(words::choose_control);
     for (const bool global : {true, false}) {
         CAPTURE(global);
         PathEditor editor(zigzag_setup(Spacing::exact, Refinement::in_steps), log);

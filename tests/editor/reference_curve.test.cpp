@@ -2,7 +2,7 @@
 // dashed in a colour role of its own beside the live curve until C unpins it.
 #include "apcs/editor/path_editor.h"
 #include "apcs/screens/reference_curve.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 
 #include "support/session_keys.h"
 
@@ -105,9 +105,9 @@ TEST_CASE("C pins the curve as reference A beside the live curve until C unpins 
     }
     // A key that leaves the curve as it is: the message line still says why A cannot be seen.
     apply(editor, {cmd::ToggleLawGraph{}, cmd::ToggleLawGraph{}});
-    CHECK(editor.look().message == session_text::reference_under_curve);
+    CHECK(editor.look().message == words::reference_under_curve);
     continuity_steps(editor, +14); // +1
-    CHECK(editor.look().message != session_text::reference_under_curve);
+    CHECK(editor.look().message != words::reference_under_curve);
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
         CAPTURE(glyphs);
         const CellGrid compared = render_cells(editor.view(), {80, 24}, glyphs);
@@ -183,7 +183,7 @@ TEST_CASE("a pinned A stays under the curve through an acceleration step, and T'
     apply(editor, {cmd::ChooseGlobal{}, cmd::Accept{}, cmd::StaffStep{-3}, cmd::PinReference{}});
     // Down to ACCELERATION and a step there: the in-betweens move, the curve does not.
     apply(editor, {cmd::Accept{}, cmd::Accept{}, cmd::StaffStep{+3}});
-    CHECK(editor.look().message == session_text::reference_under_curve);
+    CHECK(editor.look().message == words::reference_under_curve);
     apply(editor, {cmd::ToggleTangents{}});
     CHECK(editor.look().message.starts_with("point 2  DS "));
     CHECK(editor.look().message.ends_with("  (A under the curve)"));

@@ -5,7 +5,7 @@
 #include "apcs/lesson/goal_check.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/screens/replay_caption.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 #include "apcs/session/session_files.h"
 #include "support/replay_support.h"
 

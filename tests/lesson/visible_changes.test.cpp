@@ -6,7 +6,7 @@
 #include "apcs/cli/session_command.h"
 #include "apcs/lesson/replay_driver.h"
 #include "apcs/raster/screen_layout.h"
-#include "apcs/raster/short_screen.h"
+#include "apcs/screens/short_screen.h"
 #include "apcs/session/session_files.h"
 
 #include "support/temp_folder.h"
@@ -119,7 +119,7 @@ std::vector<ProgramScreen> caption_screens(const std::filesystem::path& script_f
 // The screen on an 80x23 pane, as the terminal lays it (run_terminal_program.cpp).
 CellGrid cells_of(const ProgramScreen& screen, GlyphSet glyphs)
 {
-    return screen.graphics ? render_cells(screen.picture, {80, short_screen_rows}, glyphs)
+    return screen.graphics ? render_screen_cells(screen.picture, {80, short_screen_rows}, glyphs)
                            : text_on_short_screen(screen.text);
 }
 

@@ -4,6 +4,7 @@
 #include "apcs/playback/animation_player.h"
 #include "apcs/raster/glyph_mapper.h"
 #include "apcs/raster/screen_layout.h"
+#include "apcs/screens/short_screen.h"
 #include "apcs/base/step_log.h"
 
 #include "support/xml_elements.h"
@@ -181,7 +182,7 @@ TEST_CASE("an overlay's first, last and middle frames are told apart in colour i
     const GraphicsScreen screen = three_levels_overlay();
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
         CAPTURE(static_cast<int>(glyphs));
-        const CellGrid grid = render_cells(screen, {80, short_screen_rows}, glyphs);
+        const CellGrid grid = render_screen_cells(screen, {80, short_screen_rows}, glyphs);
         for (const ColourRole role : {ColourRole::monitor, ColourRole::inbetween, ColourRole::key_frame}) {
             CAPTURE(colour_role_name(role));
             int cells = 0;

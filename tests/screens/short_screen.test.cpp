@@ -1,4 +1,4 @@
-#include "apcs/raster/short_screen.h"
+#include "apcs/screens/short_screen.h"
 #include "apcs/raster/screen_layout.h"
 #include "apcs/screens/path_screen.h"
 
@@ -89,7 +89,7 @@ TEST_CASE("at 80x23 every text row of the path screen stays as at 80x24 and the 
     const GraphicsScreen screen = full_path_screen();
     for (const GlyphSet glyphs : {GlyphSet::ascii, GlyphSet::braille, GlyphSet::blocks}) {
         const CellGrid full = render_cells(screen, {80, 24}, glyphs);
-        const CellGrid short_grid = render_cells(screen, {80, 23}, glyphs);
+        const CellGrid short_grid = render_screen_cells(screen, {80, 23}, glyphs);
         CAPTURE(static_cast<int>(glyphs));
         INFO("80x24:\n" << full.to_text() << "80x23:\n" << short_grid.to_text());
         REQUIRE(short_grid.columns() == 80);
@@ -133,7 +133,7 @@ TEST_CASE("the short screen shows as many control points and picked ones as 80x2
         return found;
     };
     const CellGrid full = render_cells(screen, {80, 24}, GlyphSet::ascii);
-    const CellGrid short_grid = render_cells(screen, {80, 23}, GlyphSet::ascii);
+    const CellGrid short_grid = render_screen_cells(screen, {80, 23}, GlyphSet::ascii);
     // Two control points outside the region, two in it, each an x of its own cell.
     REQUIRE(count(full, layout::message_row, U'x', false) == 2);
     REQUIRE(count(full, layout::message_row, U'x', true) == 2);

@@ -1,7 +1,7 @@
 #include "apcs/formats/key_script.h"
 #include "apcs/formats/path_files.h"
 #include "apcs/session/session.h"
-#include "apcs/screens/session_text.h"
+#include "apcs/screens/words.h"
 #include "apcs/screens/text_console.h"
 
 #include "apcs/session/session_files.h"

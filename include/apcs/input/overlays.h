@@ -23,7 +23,7 @@ struct HelpScreen {
     std::string empty_answer;
 };
 // "Quit without saving this path ? (Y/N)" after q on the path screen, "Quit APCS ? (Y/N)" after
-// Esc on an empty text prompt (session_text.h holds both): Y quits; N, Enter or Esc goes back to
+// Esc on an empty text prompt (words.h holds both): Y quits; N, Enter or Esc goes back to
 // the step as it was; other keys do nothing.
 struct QuitQuestion {
     std::string_view question;
@@ -48,7 +48,7 @@ public:
         m_open = overlay::HelpScreen{keys, std::move(empty_answer)};
         ++m_revision;
     }
-    // The quit question in the words `question` (a session_text constant: the view outlives the
+    // The quit question in the words `question` (a words.h constant: the view outlives the
     // overlay): the session's chart asks it for q on the path screen and Esc on an empty prompt.
     void ask_quit(std::string_view question)
     {

@@ -22,7 +22,7 @@ enum class GlyphSet {
 // what terminal emulators and SSH clients open with.
 inline constexpr int text_screen_columns = 80;
 inline constexpr int text_screen_rows = 24;
-// The fewest rows the screen is shown on: one less than 80x24 (short_screen.h), what tmux or screen
+// The fewest rows the screen is shown on: one less than 80x24 (screens/short_screen.h), what tmux or screen
 // leaves under its status line.
 inline constexpr int short_screen_rows = text_screen_rows - 1;
 

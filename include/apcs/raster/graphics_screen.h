@@ -119,7 +119,8 @@ Bitmap render_raster(const GraphicsScreen& screen);
 // real characters, each at its share of the area (80x24 text cells scale with the area). Marks take the cell their
 // pixel falls in, control points before the others; two or more in-betweens in one cell show their
 // count (2 … 9). A raster cell's colour role is the highest colour_priority of its lit pixels'; a
-// mark or text cell has the mark's or the text's. An 80x23 area shows the short screen (short_screen.h).
+// mark or text cell has the mark's or the text's. The 80x23 short screen lays the screen out anew
+// first (screens/short_screen.h: render_screen_cells).
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
 CellGrid render_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
 

@@ -2,9 +2,9 @@
 
 #include <string_view>
 
-// The session's words, byte for byte those of the thesis' figures 4.2.1–4.2.7 (SPEC §3), and the
-// few of our own (marked).
-namespace apcs::session_text {
+// The words APCS shows: those of the 1989 session, byte for byte as the thesis' figures 4.2.1–4.2.7
+// give them (SPEC §3), and the few of our own (marked).
+namespace apcs::words {
 
 inline constexpr std::string_view ask_key1 = "Please keyin the KEY1 filename!";
 inline constexpr std::string_view ask_key2 = "Please keyin the KEY2 filename!";
@@ -43,4 +43,4 @@ inline constexpr std::string_view quit_apcs_question = "Quit APCS ? (Y/N)";
 // After a staff line's name, for a path of two control points.
 inline constexpr std::string_view no_interior_points = " acts at interior control points: add one with W at the 8/2 choice";
 
-} // namespace apcs::session_text
+} // namespace apcs::words

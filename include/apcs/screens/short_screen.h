@@ -31,4 +31,9 @@ CellGrid text_on_short_screen(const CellGrid& text);
 // `grid` without row `row`: the rows below it move up one.
 CellGrid without_row(const CellGrid& grid, int row);
 
+// What a terminal shows of `screen` in `area` (fit_cell_area's): render_cells, or on the short
+// screen its layout (on_short_screen) in 23 of the 24 text rows.
+CellGrid render_screen_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache);
+CellGrid render_screen_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs);
+
 } // namespace apcs

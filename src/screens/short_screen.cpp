@@ -1,4 +1,4 @@
-#include "apcs/raster/short_screen.h"
+#include "apcs/screens/short_screen.h"
 
 #include "apcs/geometry/hercules.h"
 #include "apcs/raster/screen_layout.h"
@@ -137,6 +137,21 @@ CellGrid without_row(const CellGrid& grid, int row)
         }
     }
     return kept;
+}
+
+CellGrid render_screen_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs, AsciiGlyphCache& cache)
+{
+    // The short screen's layout fills 23 of the 24 text rows: the 24th is left out.
+    if (is_short_area(area))
+        return without_row(render_cells(on_short_screen(screen), {area.columns, text_screen_rows}, glyphs, cache),
+                           text_screen_rows - 1);
+    return render_cells(screen, area, glyphs, cache);
+}
+
+CellGrid render_screen_cells(const GraphicsScreen& screen, CellArea area, GlyphSet glyphs)
+{
+    AsciiGlyphCache cache;
+    return render_screen_cells(screen, area, glyphs, cache);
 }
 
 } // namespace apcs
