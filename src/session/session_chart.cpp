@@ -16,6 +16,17 @@ using State = Session::State;
 using S = Session;
 using C = const Command&;
 
+// `ask` of the chart below the step, the path editor's or the player's; none at a step without one.
+template <typename Ask>
+auto ask_chart_below(const Step& step, Ask ask) -> std::optional<decltype(ask(std::declval<const PathEditor&>()))>
+{
+    if (const auto* shaping = std::get_if<step::Shaping>(&step))
+        return ask(shaping->editor);
+    if (const auto* playing = std::get_if<step::Playing>(&step))
+        return ask(playing->player);
+    return std::nullopt;
+}
+
 } // namespace
 
 const Session::SessionChart& Session::chart() { return SessionChart::once<&make_chart>(); }
@@ -33,29 +44,19 @@ Session::State Session::leaf() const
 
 std::string_view Session::leaf_name() const
 {
-    if (const auto* shaping = std::get_if<step::Shaping>(&m_step); shaping != nullptr && leaf() == State::path_screen)
-        return PathEditor::chart().info(shaping->editor.leaf()).name;
-    if (const auto* playing = std::get_if<step::Playing>(&m_step); playing != nullptr && leaf() == State::player)
-        return AnimationPlayer::chart().info(playing->player.leaf()).name;
-    return chart().info(leaf()).name;
+    const auto below = ask_chart_below(m_step, [](const auto& room) { return room.chart().info(room.leaf()).name; });
+    return below && leaf() == step_leaf() ? *below : chart().info(leaf()).name;
 }
 
 std::string_view Session::step_title() const
 {
-    if (const auto* shaping = std::get_if<step::Shaping>(&m_step))
-        return shaping->editor.title();
-    if (const auto* playing = std::get_if<step::Playing>(&m_step))
-        return playing->player.title();
-    return chart().title(step_leaf());
+    return ask_chart_below(m_step, [](const auto& room) { return room.title(); }).value_or(chart().title(step_leaf()));
 }
 
 KeyContext Session::step_key_context() const
 {
-    if (const auto* shaping = std::get_if<step::Shaping>(&m_step))
-        return shaping->editor.key_context();
-    if (const auto* playing = std::get_if<step::Playing>(&m_step))
-        return playing->player.key_context();
-    return *chart().keys(step_leaf());
+    const auto below = ask_chart_below(m_step, [](const auto& room) { return room.key_context(); });
+    return below ? *below : *chart().keys(step_leaf());
 }
 
 KeyContext Session::key_context() const

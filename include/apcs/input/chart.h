@@ -89,30 +89,41 @@ public:
 
     // The rows `event` may meet in `leaf`, in the order their guards are tried: the leaf's rows for
     // it, then its parent's, up to the root, then the rows for any other event the same way; ending
-    // at the first without a guard (empty: none).
-    std::vector<const Row*> candidates(State leaf, std::size_t event) const
+    // at the first without a guard. `visit(row)` sees each until it returns true; returns that row,
+    // or none.
+    template <typename Visit>
+    const Row* find_candidate(State leaf, std::size_t event, Visit visit) const
     {
-        std::vector<const Row*> met;
         for (const std::size_t wanted : {event, any_other_event})
             for (std::optional<State> state = leaf; state; state = info(*state).parent)
                 for (const Row& row : m_rows) {
                     if (row.from != *state || row.event != wanted)
                         continue;
-                    met.push_back(&row);
+                    if (visit(row))
+                        return &row;
                     if (!row.guard)
-                        return met;
+                        return nullptr;
                 }
+        return nullptr;
+    }
+
+    // The same rows, all of them (empty: none).
+    std::vector<const Row*> candidates(State leaf, std::size_t event) const
+    {
+        std::vector<const Row*> met;
+        find_candidate(leaf, event, [&met](const Row& row) {
+            met.push_back(&row);
+            return false;
+        });
         return met;
     }
 
     // The row `event` meets in `leaf`: the first candidate whose guard holds; none when no state
-    // on the way has a row for it.
+    // on the way has a row for it. Every key asks it: it walks the rows without keeping them.
     const Row* row_for(const Machine& machine, State leaf, const Event& event) const
     {
-        for (const Row* row : candidates(leaf, Events::index(event)))
-            if (!row->guard || row->guard(machine, event))
-                return row;
-        return nullptr;
+        return find_candidate(leaf, Events::index(event),
+                              [&](const Row& row) { return !row.guard || row.guard(machine, event); });
     }
 
     // The row met, taken: its action, then what leaving does for every state around `leaf` that is
@@ -141,22 +152,28 @@ public:
         return row != nullptr;
     }
 
+    // `state`, else the nearest state around it, for which `holds(info)`; none if no state does.
+    template <typename Holds>
+    const StateInfo* nearest(State state, Holds holds) const
+    {
+        for (std::optional<State> around = state; around; around = info(*around).parent)
+            if (holds(info(*around)))
+                return &info(*around);
+        return nullptr;
+    }
+
     // The keys `state` listens with: its own, else the nearest state's around it that names them.
     std::optional<KeyContext> keys(State state) const
     {
-        for (std::optional<State> around = state; around; around = info(*around).parent)
-            if (info(*around).keys)
-                return info(*around).keys;
-        return std::nullopt;
+        const StateInfo* naming = nearest(state, [](const StateInfo& around) { return around.keys.has_value(); });
+        return naming != nullptr ? naming->keys : std::nullopt;
     }
 
     // What a transcript calls `state`: its title, else the nearest one around it.
     std::string_view title(State state) const
     {
-        for (std::optional<State> around = state; around; around = info(*around).parent)
-            if (!info(*around).title.empty())
-                return info(*around).title;
-        return {};
+        const StateInfo* titled = nearest(state, [](const StateInfo& around) { return !around.title.empty(); });
+        return titled != nullptr ? titled->title : std::string_view();
     }
 
     // The chart `make` builds, built once (a room's chart() accessor).
@@ -175,10 +192,7 @@ public:
     // Whether `outer` is `state` or one of its parents.
     bool encloses(State outer, State state) const
     {
-        for (std::optional<State> around = state; around; around = info(*around).parent)
-            if (*around == outer)
-                return true;
-        return false;
+        return nearest(state, [outer](const StateInfo& around) { return around.state == outer; }) != nullptr;
     }
 
     // Whether `event` meets a row in `leaf` whatever the guards say: its candidates end unguarded.
