@@ -166,4 +166,14 @@ std::string escape_controls(std::string_view text)
     return shown;
 }
 
+bool append_utf8_within(std::string& text, char32_t code_point, std::size_t most_bytes)
+{
+    const std::size_t before = text.size();
+    append_utf8(text, code_point);
+    if (text.size() <= most_bytes)
+        return true;
+    text.resize(before);
+    return false;
+}
+
 } // namespace apcs

@@ -1,6 +1,7 @@
 #include "apcs/input/value_field.h"
 
 #include "apcs/animation/input_limits.h"
+#include "apcs/base/utf8.h"
 #include "apcs/formats/number_text.h"
 #include "apcs/raster/cell_grid.h"
 
@@ -42,8 +43,7 @@ void ValueField::type(char32_t character)
     m_problem.clear();
     if (m_text.empty() && character == U'=')
         return;
-    if (m_text.size() < longest_text)
-        append_utf8(m_text, character);
+    append_utf8_within(m_text, character, longest_text);
 }
 
 void ValueField::erase()

@@ -154,9 +154,8 @@ void Session::open_help() { m_overlays.open_help(step_key_context(), empty_answe
 void Session::type_into_line(char32_t character)
 {
     std::string input = m_console.input();
-    append_utf8(input, character);
     // A zero-width or control character would change the answer where nobody can see it.
-    if (input.size() <= max_answer_bytes && cell_width(character) > 0)
+    if (cell_width(character) > 0 && append_utf8_within(input, character, max_answer_bytes))
         m_console.set_input(input);
 }
 
@@ -217,7 +216,6 @@ void Session::follow(StepResult result)
 {
     while (result.outcome != StepOutcome::stay) {
         const bool followed = graph().fire(*this, result, [](const Session& session) { return session.step_leaf(); });
-        ++m_step_changes;
         assert(followed && "a step ended in a way the steps' graph does not know");
         StepContext step_context = context();
         if (!followed) {
@@ -228,6 +226,7 @@ void Session::follow(StepResult result)
                 step_context.say(result.problem);
             return;
         }
+        ++m_step_changes;
         const std::string problem = std::move(result.problem);
         result = std::visit(
             [&](auto& step) -> StepResult {

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <string>
 
 using namespace apcs;
 
@@ -117,4 +118,16 @@ TEST_CASE("every colour role stands at least 4.5:1 against black in xterm's defa
         REQUIRE(number < 16);
         CHECK(contrast_on_black(xterm_palette[static_cast<std::size_t>(number)]) >= 4.5);
     }
+}
+
+TEST_CASE("a character is appended within a byte limit whole or not at all", "[raster][cells]")
+{
+    std::string text(198, 'a');
+    REQUIRE_FALSE(append_utf8_within(text, U'\u6F22', 200)); // 3 bytes: 201
+    REQUIRE(text.size() == 198);
+    REQUIRE(append_utf8_within(text, U'\u00E9', 200)); // 2 bytes: 200
+    REQUIRE(text.size() == 200);
+    REQUIRE(text.ends_with("\xC3\xA9"));
+    REQUIRE_FALSE(append_utf8_within(text, U'b', 200));
+    REQUIRE(text.size() == 200);
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -10,6 +11,9 @@ namespace apcs {
 std::u32string decode_utf8(std::string_view utf8);
 
 void append_utf8(std::string& text, char32_t code_point);
+// append_utf8 where `text` stays `most_bytes` long at most; whether it did (a character that would
+// pass the limit is left out whole).
+bool append_utf8_within(std::string& text, char32_t code_point, std::size_t most_bytes);
 
 // How many terminal columns `code_point` takes: 1, 2 for East Asian wide ones (CJK, fullwidth
 // forms, most emoji), 0 for combining and other zero-width ones, -1 for control characters. The
