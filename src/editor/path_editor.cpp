@@ -135,12 +135,6 @@ std::string curve_move_text(const CurveMove& moved)
            (pixels == 0 ? std::string("under 1 px") : std::to_string(pixels) + " px");
 }
 
-// The ghost's way back over a staff change: the region's runs as they were.
-PathPicture::PointsBack staff_runs_back(ControlRegion region, std::vector<StaffRun> runs)
-{
-    return [region, runs = std::move(runs)](ControlPoints& points) { restore_staff_runs(points, region, runs); };
-}
-
 // "1 change", "3 changes".
 std::string changes_text(std::size_t count) { return std::to_string(count) + (count == 1 ? " change" : " changes"); }
 
@@ -354,32 +348,17 @@ PathEditor::Staff PathEditor::start_staff(ControlRegion region)
 // past the end of the line) is not.
 void PathEditor::set_staff_value(Staff& staff, double value)
 {
-    StaffEdit change{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
+    StaffEdit edit{staff.region, staff.line, staff.staff, staff.line_start_value, {}};
     staff.staff[staff.line] = snapped(value);
-    PathDocument::StaffSet set = m_document->set_staff(staff.region, staff.staff);
-    change.points_before = std::move(set.runs_before);
-    if (staff.staff == change.staff && !set.changed)
+    const std::optional<PathChange> change = m_document->set_staff(std::move(edit), staff.staff);
+    if (!change)
         return;
-    const PathChange::What what =
-        runs_change_shape(change.points_before, staff.staff) ? PathChange::What::staff : PathChange::What::accelerations;
-    PathPicture::PointsBack back = staff_runs_back(staff.region, change.points_before);
-    m_document->record(std::move(change));
-    reevaluate_region(staff.region, what, std::move(back));
     // An acceleration moves no segment.
-    if (what == PathChange::What::accelerations) {
+    if (change->what == PathChange::What::accelerations) {
         m_moved = "only the in-betweens moved";
         return;
     }
     m_move_unmeasured = m_document->edit_count() - 1;
-}
-
-// A key changes the staff values of a region: only the segments their tangents shape are sampled
-// again, and an acceleration alone moves only the in-betweens (a path of 10^6 control points stays
-// interactive).
-void PathEditor::reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back)
-{
-    const std::size_t count = region.last - region.first + 1;
-    m_picture->refresh(PathChange{region.first, count, count, what}, std::move(back));
 }
 
 // A single control point starts no span of its own: its acceleration line is skipped.
@@ -432,35 +411,29 @@ bool PathEditor::last_edit_is_staff() const
     return m_document->edit_count() > 0 && std::holds_alternative<StaffEdit>(m_document->edits().back());
 }
 
-// U with a change to take back: the last one, whichever it is.
+// U with a change to take back: the last one, whichever it is. The picture takes the change back
+// as it is next read: only the segments the change's points shape are sampled again (a path of
+// 10^6 control points stays interactive), and the ghost is the path with the change.
 void PathEditor::undo()
 {
-    const PathEdit change = m_document->take_last_edit();
+    const PathEdit change = m_document->undo();
     m_problem.clear();
-    std::visit([this](const auto& last) { undo_change(last); }, change);
+    std::visit([this](const auto& last) { undone(last); }, change);
     m_notice += "; " + changes_text(m_document->edit_count()) + " left to undo";
     m_log.log(m_notice);
 }
 
 // Back to the staff line the change was made on, with the staff as it was.
-void PathEditor::undo_change(const StaffEdit& change)
+void PathEditor::undone(const StaffEdit& change)
 {
-    const PathChange::What what = runs_change_shape(change.points_before, points()[change.region.first].staff)
-                                      ? PathChange::What::staff
-                                      : PathChange::What::accelerations;
-    PathPicture::PointsBack back = staff_runs_back(change.region, staff_runs(points(), change.region));
-    m_document->restore_staff(change.region, change.points_before);
-    reevaluate_region(change.region, what, std::move(back));
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
     m_mode = Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt};
 }
 
 // A waypoint edit is undone at the choice of control, where the editor was opened.
-void PathEditor::undo_change(const WaypointChange& change)
+void PathEditor::undone(const WaypointChange& change)
 {
-    // The ghost: the path with the edit, as it was before U.
-    take_back_waypoint_edit(*m_document, *m_picture, change);
     const std::string point = "control point " + std::to_string(change.index + 1);
     switch (change.kind) {
     case WaypointChange::Kind::insert: m_notice = "Undone: the insertion of " + point; break;

@@ -7,10 +7,10 @@
 
 namespace apcs {
 
-PathPicture::PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement,
-                         EvaluatedPath room)
-    : m_document(&document)
-    , m_document_revision(document.revision())
+PointsPicture::PointsPicture(const ControlPoints& shown_points, const PathSettings& settings, PictureRefinement refinement,
+                             EvaluatedPath room)
+    : m_points(&shown_points)
+    , m_point_count(shown_points.size())
     , m_settings(settings)
     , m_refinement(refinement)
     , m_evaluated(std::move(room))
@@ -19,7 +19,7 @@ PathPicture::PathPicture(const PathDocument& document, const PathSettings& setti
     refine_if_quick();
 }
 
-void PathPicture::refresh(const PathChange& change, PointsBack back)
+void PointsPicture::refresh(const PathChange& change, PointsBack back)
 {
     if (!m_refinement.seen) {
         remake(change);
@@ -39,15 +39,15 @@ void PathPicture::refresh(const PathChange& change, PointsBack back)
     remake(change);
 }
 
-void PathPicture::refresh(const PathChange& change)
+void PointsPicture::remake_whole()
 {
     drop_ghost();
-    remake(change);
+    remake(PathChange{0, m_point_count, points().size(), PathChange::What::positions});
 }
 
-void PathPicture::remake(const PathChange& change)
+void PointsPicture::remake(const PathChange& change)
 {
-    m_document_revision = m_document->revision();
+    m_point_count = points().size();
     ++m_revision;
     // A change of a step's segments or fewer (a local key, an acceleration, a waypoint edit) on a
     // refined path is evaluated at once: its first picture is its final one.
@@ -68,19 +68,19 @@ void PathPicture::remake(const PathChange& change)
 
 // Arc lengths left of no more than a step's segments (a path that short, or a local change over
 // one that was) are measured at once; a global change's all wait for the steps.
-void PathPicture::refine_if_quick()
+void PointsPicture::refine_if_quick()
 {
     if (m_evaluated.segments_unmade.empty() && m_evaluated.arc_lengths.segments_pending() <= m_refinement.segments_a_step)
         refine_path(points(), m_settings, m_evaluated, m_refinement.segments_a_step);
 }
 
-bool PathPicture::refining() const { return !m_evaluated.inbetweens_current || curve_left(); }
+bool PointsPicture::refining() const { return !m_evaluated.inbetweens_current || curve_left(); }
 
-bool PathPicture::curve_left() const { return m_view && m_refinement.seen && !m_curve.drawn(); }
+bool PointsPicture::curve_left() const { return m_view && m_refinement.seen && !m_curve.drawn(); }
 
 // The segments first, and the blocks they complete drawn; then the rest of the curve (the
 // picture); then the arc lengths.
-void PathPicture::refine_step()
+void PointsPicture::refine_step()
 {
     ++m_revision;
     if (!m_evaluated.segments_unmade.empty()) {
@@ -94,7 +94,7 @@ void PathPicture::refine_step()
     }
 }
 
-void PathPicture::refine()
+void PointsPicture::refine()
 {
     if (refining())
         ++m_revision;
@@ -104,7 +104,7 @@ void PathPicture::refine()
         m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary);
 }
 
-std::string PathPicture::refining_message() const
+std::string PointsPicture::refining_message() const
 {
     if (curve_left())
         return "drawing the curve: " + std::to_string(m_curve.blocks_drawn()) + " of " +
@@ -114,7 +114,7 @@ std::string PathPicture::refining_message() const
     return {};
 }
 
-std::string PathPicture::refining_words() const
+std::string PointsPicture::refining_words() const
 {
     if (curve_left())
         return "drawing the curve";
@@ -123,7 +123,7 @@ std::string PathPicture::refining_words() const
     return {};
 }
 
-void PathPicture::set_view(const ViewTransform& view)
+void PointsPicture::set_view(const ViewTransform& view)
 {
     ++m_revision;
     m_view = view;
@@ -152,7 +152,7 @@ Bitmap curve_pixels(const ControlPoints& points, const PathSettings& settings, c
 } // namespace
 
 // The ghost's pixels in this view, from its path: the points now taken back over the last change.
-void PathPicture::draw_ghost()
+void PointsPicture::draw_ghost()
 {
     if (!m_ghost || !m_ghost_back)
         return;
@@ -161,7 +161,7 @@ void PathPicture::draw_ghost()
     m_ghost = curve_pixels(before, m_settings, *m_view);
 }
 
-void PathPicture::pin_reference(std::string label)
+void PointsPicture::pin_reference(std::string label)
 {
     ++m_revision;
     m_reference = Reference{points(), std::move(label), {}};
@@ -175,7 +175,7 @@ void PathPicture::pin_reference(std::string label)
         draw_reference();
 }
 
-bool PathPicture::reference_under_curve() const
+bool PointsPicture::reference_under_curve() const
 {
     const auto same_curve = [](const ControlPoint& a, const ControlPoint& b) {
         return a.position == b.position && a.staff.tension == b.staff.tension &&
@@ -185,20 +185,20 @@ bool PathPicture::reference_under_curve() const
                                      points().end(), same_curve);
 }
 
-void PathPicture::unpin_reference()
+void PointsPicture::unpin_reference()
 {
     if (m_reference)
         ++m_revision;
     m_reference.reset();
 }
 
-void PathPicture::draw_reference()
+void PointsPicture::draw_reference()
 {
     if (m_reference && m_refinement.seen)
         m_reference->pixels = curve_pixels(m_reference->points, m_settings, *m_view);
 }
 
-void PathPicture::drop_ghost()
+void PointsPicture::drop_ghost()
 {
     if (m_ghost)
         ++m_revision;
@@ -206,7 +206,7 @@ void PathPicture::drop_ghost()
     m_ghost_back = nullptr;
 }
 
-void PathPicture::box_region(std::optional<ControlRegion> region)
+void PointsPicture::box_region(std::optional<ControlRegion> region)
 {
     if (region == m_region)
         return;
@@ -216,14 +216,14 @@ void PathPicture::box_region(std::optional<ControlRegion> region)
         m_point_marks = control_point_marks(m_point_runs, m_region);
 }
 
-void PathPicture::draw_curve()
+void PointsPicture::draw_curve()
 {
     m_curve.update(m_evaluated.curve, *m_view, layout::inside_boundary,
                    m_refinement.when == Refinement::at_once ? CurveRaster::all_work : m_refinement.drawing_a_step,
                    m_evaluated.segments_unmade);
 }
 
-GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
+GraphicsScreen PointsPicture::draw(const PathScreenContent& content) const
 {
     const Bitmap* ghost = content.ghost && m_ghost ? &*m_ghost : nullptr;
     KeptPathLayers kept{m_curve.pixels(), m_point_marks, ghost, nullptr, {}};
@@ -234,14 +234,24 @@ GraphicsScreen PathPicture::draw(const PathScreenContent& content) const
     return draw_path_screen(content, *m_view, kept);
 }
 
-void make_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change)
+PathPicture::PathPicture(PathDocument& document, const PathSettings& settings, PictureRefinement refinement,
+                         EvaluatedPath room)
+    : m_document(&document)
+    , m_document_revision(document.revision())
+    , m_picture(document.points(), settings, refinement, std::move(room))
 {
-    picture.refresh(document.apply(change), [change](ControlPoints& points) { revert_change(points, change); });
 }
 
-void take_back_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change)
+PointsPicture& PathPicture::current()
 {
-    picture.refresh(document.revert(change), [change](ControlPoints& points) { apply_change(points, change); });
+    if (m_document_revision == m_document->revision())
+        return m_picture;
+    if (std::optional<ChangesTaken> taken = m_document->take_changes(m_document_revision))
+        m_picture.refresh(taken->change, std::move(taken->back));
+    else
+        m_picture.remake_whole();
+    m_document_revision = m_document->revision();
+    return m_picture;
 }
 
 } // namespace apcs

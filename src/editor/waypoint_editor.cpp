@@ -75,18 +75,10 @@ void WaypointEditor::discard_changes()
     m_picture->drop_ghost();
 }
 
-void WaypointEditor::apply(const WaypointChange& change)
-{
-    // SPEC §7.2.1: the curve before the edit stays, dotted.
-    make_waypoint_edit(*m_document, *m_picture, change);
-    m_document->record(change);
-}
-
 void WaypointEditor::revert_last()
 {
     // Only waypoint edits are made while the editor is open.
-    const WaypointChange change = std::get<WaypointChange>(m_document->take_last_edit());
-    take_back_waypoint_edit(*m_document, *m_picture, change);
+    const WaypointChange change = std::get<WaypointChange>(m_document->undo());
     m_chosen = std::min(change.index, points().size() - 1);
 }
 
@@ -111,7 +103,7 @@ void WaypointEditor::insert_point()
     // The segment from the points, as the curve makes it (the curve's own may wait for a refinement).
     const HermiteSegment segment = kb_segment(points(), m_picture->settings().slopes, from);
     change.point = {halfway_along(std::span(&segment, 1), 0), points()[m_chosen].staff};
-    apply(change);
+    m_document->apply(change);
     m_chosen = change.index;
 }
 
@@ -124,7 +116,7 @@ void WaypointEditor::delete_point()
     change.index = m_chosen;
     change.point = points()[m_chosen];
     change.origin = origins()[m_chosen];
-    apply(change);
+    m_document->apply(change);
     m_chosen = std::min(m_chosen, points().size() - 2);
 }
 
@@ -138,7 +130,7 @@ void WaypointEditor::move_point(const command::MovePoint& move)
     change.index = m_chosen;
     change.offset = m_setup.step * (move.right * view.screen_right() + move.up * view.screen_up() +
                                     move.toward * view.toward_viewer());
-    apply(change);
+    m_document->apply(change);
 }
 
 void WaypointEditor::undo_last()

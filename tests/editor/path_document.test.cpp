@@ -1,6 +1,7 @@
 #include "apcs/editor/path_document.h"
 #include "apcs/editor/path_picture.h"
 #include "apcs/animation/view_transform.h"
+#include "apcs/screens/path_screen.h"
 #include "support/same_path.h"
 
 #include <catch2/catch.hpp>
@@ -18,35 +19,56 @@ ControlPoints three_points()
 
 } // namespace
 
-TEST_CASE("a path document: every change of its points advances its revision, a change of nothing does not",
+namespace {
+
+// A staff key on `region` with the staff shown as `shown` before it (on the TENSION line).
+StaffEdit staff_key(ControlRegion region, const StaffValues& shown) { return {region, StaffLine::tension, shown, 0.0, {}}; }
+
+} // namespace
+
+TEST_CASE("a path document: every change of its points advances its revision and joins its history, a change of "
+          "nothing does neither",
           "[editor][document]")
 {
     PathDocument document(three_points());
     REQUIRE(document.origins() == std::vector<std::size_t>{0, 1, 2});
     REQUIRE(document.revision() == 0);
     const ControlRegion whole{0, 2};
+    const StaffValues shown{0.5, 0, 0, 0};
 
-    const PathDocument::StaffSet tighter = document.set_staff(whole, {0.6, 0, 0, 0});
-    REQUIRE(tighter.changed);
+    const std::optional<PathChange> tighter = document.set_staff(staff_key(whole, shown), {0.6, 0, 0, 0});
+    REQUIRE(tighter.has_value());
+    REQUIRE((tighter->first == 0 && tighter->removed == 3 && tighter->inserted == 3));
+    REQUIRE(tighter->what == PathChange::What::staff);
     REQUIRE(document.revision() == 1);
+    REQUIRE(document.edit_count() == 1);
     REQUIRE(document.points()[1].staff.tension == 0.6);
-    // The same values again (a step past the end of a line) change no point.
-    REQUIRE_FALSE(document.set_staff(whole, {0.6, 0, 0, 0}).changed);
+    // The same values again, the staff shown already at them (a step past the end of a line).
+    const StaffValues now{0.6, 0, 0, 0};
+    REQUIRE_FALSE(document.set_staff(staff_key(whole, now), now).has_value());
     REQUIRE(document.revision() == 1);
+    REQUIRE(document.edit_count() == 1);
+    // An acceleration moves no segment.
+    REQUIRE(document.set_staff(staff_key(whole, now), {0.6, 0, 0, 0.5})->what == PathChange::What::accelerations);
 
-    document.restore_staff(whole, tighter.runs_before);
+    // U takes back the newest first, each a change of its own.
+    REQUIRE(std::get<StaffEdit>(document.undo()).staff == now);
+    REQUIRE(document.points()[1].staff.acceleration == 0.0);
+    REQUIRE(std::get<StaffEdit>(document.undo()).staff == shown);
     REQUIRE(document.points()[1].staff.tension == 0.5);
-    REQUIRE(document.revision() == 2);
+    REQUIRE(document.revision() == 4);
+    REQUIRE(document.edit_count() == 0);
 }
 
 TEST_CASE("a staff key's change is told from the region's runs as apply_staff_to_region leaves the points",
           "[editor][document]")
 {
-    // Point by point, what staff_runs reads after the key, against what the document says.
+    // Point by point, what staff_runs reads after the key, against what the document says (the
+    // staff shown already at the values: only a point's change makes an edit).
     const auto changes_as_the_points_do = [](ControlRegion region, const StaffValues& staff) {
         PathDocument document(three_points());
         const std::vector<StaffRun> before = staff_runs(document.points(), region);
-        const bool changed = document.set_staff(region, staff).changed;
+        const bool changed = document.set_staff(staff_key(region, staff), staff).has_value();
         REQUIRE(changed == (staff_runs(document.points(), region) != before));
         return changed;
     };
@@ -73,7 +95,6 @@ TEST_CASE("a path document's waypoint edits revert exactly, origins with them, a
     insert.point = {{0, 1, 1}, {}};
     const PathChange inserted = document.apply(insert);
     REQUIRE(inserted.inserted == 1);
-    document.record(insert);
     REQUIRE(document.points().size() == 4);
     REQUIRE(document.origins() == std::vector<std::size_t>{0, new_point, 1, 2});
 
@@ -82,14 +103,13 @@ TEST_CASE("a path document's waypoint edits revert exactly, origins with them, a
     move.index = 2;
     move.offset = {0, 0, 1};
     document.apply(move);
-    document.record(move);
     REQUIRE(document.points()[2].position == Vec3{0, 3, 5});
     REQUIRE(document.edit_count() == 2);
     REQUIRE(document.revision() == 2);
 
     // Newest first, as U takes them back.
-    document.revert(std::get<WaypointChange>(document.take_last_edit()));
-    document.revert(std::get<WaypointChange>(document.take_last_edit()));
+    REQUIRE(std::get<WaypointChange>(document.undo()).kind == WaypointChange::Kind::move);
+    REQUIRE(std::get<WaypointChange>(document.undo()).kind == WaypointChange::Kind::insert);
     REQUIRE(document.edit_count() == 0);
     REQUIRE(document.origins() == std::vector<std::size_t>{0, 1, 2});
     const ControlPoints original = three_points();
@@ -98,29 +118,95 @@ TEST_CASE("a path document's waypoint edits revert exactly, origins with them, a
     REQUIRE(document.revision() == 4);
 }
 
-TEST_CASE("a path picture reads its document: refreshed after a change it is the picture of the changed points, "
-          "and its revision follows the document's",
+// Worked by hand from the ranges: each change's points in the points between the two.
+TEST_CASE("two changes as one: the range covering both, from the points before the first to those after the second",
+          "[editor][document]")
+{
+    using What = PathChange::What;
+    // Point 5 moved, then point 2 deleted: between them 5..5 and 2..2; before, 2..5 (4 points);
+    // after, 2..4 (3 points).
+    const PathChange moved_then_deleted = combined({5, 1, 1, What::positions}, {2, 1, 0, What::positions});
+    REQUIRE((moved_then_deleted.first == 2 && moved_then_deleted.removed == 4 && moved_then_deleted.inserted == 3));
+    // A point inserted at 3 (none by one), then points 1..2 given a tension: between them 1..3;
+    // before, 1..2; after, 1..3.
+    const PathChange inserted_then_staff = combined({3, 0, 1, What::positions}, {1, 2, 2, What::staff});
+    REQUIRE((inserted_then_staff.first == 1 && inserted_then_staff.removed == 2 && inserted_then_staff.inserted == 3));
+    REQUIRE(inserted_then_staff.what == What::positions);
+    // Two accelerations far apart: the points between are covered, still no segment.
+    const PathChange far_apart = combined({0, 1, 1, What::accelerations}, {9, 1, 1, What::accelerations});
+    REQUIRE((far_apart.first == 0 && far_apart.removed == 10 && far_apart.inserted == 10));
+    REQUIRE(far_apart.what == What::accelerations);
+}
+
+namespace {
+
+// The picture's segments are those of a picture made afresh of the document, to the bit.
+void require_picture_of(PathPicture& picture, PathDocument& document, const PathSettings& settings)
+{
+    PathPicture afresh(document, settings);
+    const auto& kept = picture.evaluated().curve.segments;
+    const auto& made = afresh.evaluated().curve.segments;
+    REQUIRE(kept.size() == made.size());
+    for (std::size_t k = 0; k < made.size(); ++k)
+        REQUIRE((kept[k].start == made[k].start && kept[k].end == made[k].end &&
+                 kept[k].start_tangent == made[k].start_tangent && kept[k].end_tangent == made[k].end_tangent));
+}
+
+} // namespace
+
+TEST_CASE("a path picture pulls its document's changes: told nothing, it is the picture of the points as they are, "
+          "its ghost the curve before the changes it took together",
           "[editor][document]")
 {
     PathDocument document(three_points());
     const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
     PathPicture picture(document, settings);
-    REQUIRE(picture.revision().document == 0);
+    const std::vector<Vec3> scene{{-5, -5, -5}, {5, 5, 5}};
+    const ViewTransform view = ViewTransform::fit({30, 40}, scene, {0, 0, 720, 348});
+    picture.set_view(view);
+    const std::uint64_t revision = picture.revision();
+
+    WaypointChange insert;
+    insert.kind = WaypointChange::Kind::insert;
+    insert.index = 1;
+    insert.point = {{0, 1, 2}, {}};
     WaypointChange move;
     move.kind = WaypointChange::Kind::move;
-    move.index = 1;
+    move.index = 3;
     move.offset = {0, 2, 0};
-    picture.refresh(document.apply(move));
-    REQUIRE(picture.revision().document == document.revision());
-    // What a picture made afresh of the document shows, to the bit.
-    const PathPicture afresh(document, settings);
-    REQUIRE(picture.evaluated().curve.segments.size() == afresh.evaluated().curve.segments.size());
-    for (std::size_t k = 0; k < afresh.evaluated().curve.segments.size(); ++k) {
-        const HermiteSegment& kept = picture.evaluated().curve.segments[k];
-        const HermiteSegment& made = afresh.evaluated().curve.segments[k];
-        REQUIRE((kept.start == made.start && kept.end == made.end && kept.start_tangent == made.start_tangent &&
-                 kept.end_tangent == made.end_tangent));
-    }
+    document.apply(insert);
+    document.apply(move);
+    // Read after both: one catch-up.
+    REQUIRE(picture.revision() == revision + 1);
+    require_picture_of(picture, document, settings);
+    REQUIRE(picture.has_ghost());
+    // The ghost's pixels (the screen with it, less the screen without) lie on the curve of the
+    // points before both changes, none off it: not the curve between them.
+    PathScreenContent content = path_screen_content(document.points(), picture.evaluated());
+    const Bitmap without_ghost = picture.draw(content).bitmap;
+    content.ghost = true;
+    const Bitmap with_ghost = picture.draw(content).bitmap;
+    PathDocument before(three_points());
+    PathPicture of_before(before, settings);
+    of_before.set_view(view);
+    const Bitmap was = of_before.draw(path_screen_content(before.points(), of_before.evaluated())).bitmap;
+    std::size_t ghost_pixels = 0;
+    std::size_t off_the_curve_before = 0;
+    for (int y = 0; y < was.height(); ++y)
+        for (int x = 0; x < was.width(); ++x)
+            if (with_ghost.get(x, y) && !without_ghost.get(x, y)) {
+                ++ghost_pixels;
+                off_the_curve_before += !was.get(x, y);
+            }
+    REQUIRE(ghost_pixels > 20);
+    REQUIRE(off_the_curve_before == 0);
+
+    // Another reader took the changes: the picture is made again whole, without a ghost.
+    const std::uint64_t seen = document.revision();
+    document.undo();
+    REQUIRE(document.take_changes(seen).has_value());
+    require_picture_of(picture, document, settings);
+    REQUIRE_FALSE(picture.has_ghost());
 }
 
 TEST_CASE("a picture nobody sees evaluates the path as one that is seen, and draws no curve, ghost or reference",
@@ -139,8 +225,8 @@ TEST_CASE("a picture nobody sees evaluates the path as one that is seen, and dra
     move.kind = WaypointChange::Kind::move;
     move.index = 1;
     move.offset = {0, 2, 0};
-    make_waypoint_edit(seen_document, seen, move);
-    make_waypoint_edit(unseen_document, unseen, move);
+    seen_document.apply(move);
+    unseen_document.apply(move);
     unseen.pin_reference("A");
     const auto& kept = unseen.evaluated().curve;
     const auto& shown = seen.evaluated().curve;
@@ -166,7 +252,7 @@ TEST_CASE("a path picture made with arrays made ahead evaluates into them, to th
     for (int k = 0; k < 3000; ++k)
         points.push_back({{std::sin(k * 0.9) * 3.0, k * 0.5, std::cos(k * 0.7) * 4.0},
                           {k % 7 == 0 ? -0.5 : 0.2, std::sin(k * 0.3) * 0.4, 0.1, k < 1500 ? 0.0 : 0.45}});
-    const PathDocument document(points);
+    PathDocument document(points);
     for (const Spacing spacing : {Spacing::nearest, Spacing::exact})
         for (const Refinement when : {Refinement::at_once, Refinement::in_steps}) {
             CAPTURE(static_cast<int>(spacing), static_cast<int>(when));

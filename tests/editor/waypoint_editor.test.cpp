@@ -41,7 +41,7 @@ PathSetup two_point_path(ViewAngles angles = {0, 90})
             0.1};
 }
 
-PathPicture viewed(const PathDocument& document, const PathSetup& setup)
+PathPicture viewed(PathDocument& document, const PathSetup& setup)
 {
     PathPicture picture(document, setup.settings);
     picture.set_view(setup.view);

@@ -19,6 +19,10 @@ struct PathChange {
     What what = What::positions;
 };
 
+// `earlier`, then `later` (in the points `earlier` left), as one change: the range covering both,
+// from the points before `earlier` to those after `later`, with the larger `what`.
+PathChange combined(const PathChange& earlier, const PathChange& later);
+
 // When the work a change causes is done: all of it at once (scripts, tests, files), or the part a
 // first picture needs at once and the rest (exact spacing's arc lengths, the in-betweens on them,
 // the curve's pixels past a budget) in steps after it, while no key waits (the terminal).

@@ -7,6 +7,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -25,9 +27,22 @@ struct StaffEdit {
 // One change of the path for undo (U): a staff key or a waypoint edit.
 using PathEdit = std::variant<StaffEdit, WaypointChange>;
 
+// Turns the points after a change back into those before it: the ghost's path (SPEC §7.2.1: the
+// curve before the last change, dotted).
+using PointsBack = std::function<void(ControlPoints&)>;
+
+// What the document's changes since a revision did together: the range they cover (path_change.h)
+// and the way back over all of them.
+struct ChangesTaken {
+    PathChange change;
+    PointsBack back;
+};
+
 // The path being shaped, the one copy of it: its control points, where each came from in the path
-// file, every edit since it was opened (oldest first) and a revision that every change of the
-// points advances. Both editors change it in place; its picture (PathPicture) reads it.
+// file, every edit since it was opened (oldest first) and a revision that every change advances.
+// It records its own edits: a staff key, a waypoint edit and an undo each change the points, join
+// (or leave) the history and are kept as a change for its picture (PathPicture), which takes them
+// when it is next read. Both editors change it in place.
 class PathDocument {
 public:
     // A path as read: point k is the file's point k.
@@ -37,34 +52,43 @@ public:
     const ControlPoints& points() const { return m_points; }
     // Parallel to points() (waypoint_change.h).
     const std::vector<std::size_t>& origins() const { return m_origins; }
-    // Advanced by every change of the points.
+    // Advanced by every change.
     std::uint64_t revision() const { return m_revision; }
 
-    // A waypoint edit made or taken back; returns what changed, for the picture to follow.
+    // A staff key: the region's points given `staff` (edit.region; edit.points_before is filled
+    // here). It is an edit, recorded for undo, when it changed a point or the staff shown
+    // (edit.staff, as it was before the key); a step past the end of a line is neither and leaves
+    // the revision. Returns the change, none for no edit.
+    std::optional<PathChange> set_staff(StaffEdit edit, const StaffValues& staff);
+    // A waypoint edit made and recorded; returns what changed.
     PathChange apply(const WaypointChange& change);
-    PathChange revert(const WaypointChange& change);
-    // New staff values for a region's points: the region's runs as they were, and whether any
-    // point changed (a step past the end of a line changes none, and leaves the revision).
-    struct StaffSet {
-        std::vector<StaffRun> runs_before;
-        bool changed = false;
-    };
-    StaffSet set_staff(ControlRegion region, const StaffValues& staff);
-    // A region's runs put back as they were.
-    void restore_staff(ControlRegion region, const std::vector<StaffRun>& runs);
+    // U: the newest edit taken back and out of the history (there is one); returns it.
+    PathEdit undo();
 
-    // The undo history: edits are recorded once made, and taken back newest first.
-    void record(PathEdit edit) { m_edits.push_back(std::move(edit)); }
     std::size_t edit_count() const { return m_edits.size(); }
     const std::vector<PathEdit>& edits() const { return m_edits; }
-    // The newest edit, out of the history (there is one).
-    PathEdit take_last_edit();
+
+    // The changes after `revision`, taken together and out of the document, for its one picture;
+    // none when there are none, or when they are no longer all kept (another reader took them):
+    // then the picture is made again whole. The document keeps only what is not taken yet.
+    std::optional<ChangesTaken> take_changes(std::uint64_t revision);
 
 private:
+    void changed(const PathChange& change, PointsBack back);
+    void take_back(const StaffEdit& edit);
+    void take_back(const WaypointChange& edit);
+
     ControlPoints m_points;
     std::vector<std::size_t> m_origins;
     std::uint64_t m_revision = 0;
     std::vector<PathEdit> m_edits;
+    // The changes the picture has not taken yet, oldest first: the revision each made.
+    struct Untaken {
+        std::uint64_t revision = 0;
+        PathChange change;
+        PointsBack back;
+    };
+    std::vector<Untaken> m_untaken;
 };
 
 } // namespace apcs

@@ -130,7 +130,7 @@ public:
     // screen.
     struct Look {
         std::uint64_t document = 0;
-        PathPicture::Revision picture;
+        std::uint64_t picture = 0;
         State leaf = State::control_choice;
         std::string message;
         std::optional<StaffValues> staff;
@@ -208,10 +208,9 @@ private:
     void measure_move_when_refined() const;
     // Whether the message measures a staff key's move, or leaves it for when it is shown.
     enum class MoveText { measured, left_unmeasured };
-    void reevaluate_region(ControlRegion region, PathChange::What what, PathPicture::PointsBack back);
     void undo();
-    void undo_change(const StaffEdit& change);
-    void undo_change(const WaypointChange& change);
+    void undone(const StaffEdit& change);
+    void undone(const WaypointChange& change);
     // The view filled with the path (and the key frames while K shows them), then zoomed.
     void fit_view();
     void show_view();

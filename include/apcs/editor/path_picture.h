@@ -36,16 +36,16 @@ struct PictureRefinement {
     bool seen = true;
 };
 
-// The picture of a path being edited (a PathDocument, which it reads and never changes) for a still view:
-// the path evaluated (with its arc lengths under exact spacing), its curve drawn block by block, the
-// control points' pixels and their marks. Every change of the points goes through refresh(change),
-// which makes again only what the change touched: the segments whose tangents the changed points
-// set, the blocks of the curve that hold them, the runs of control points around them. What it keeps
-// is what evaluating and drawing afresh gives, to the bit and to the pixel.
 // Z (SPEC §7.2.1): ×2, ×4, ×8 (levels 1-3), then the view it started from (level 0).
 inline int next_zoom_level(int level) { return level == 3 ? 0 : level + 1; }
 
-class PathPicture {
+// The picture of a path's control points for a still view, told each change of them: the path
+// evaluated (with its arc lengths under exact spacing), its curve drawn block by block, the control
+// points' pixels and their marks. refresh(change) makes again only what the change touched: the
+// segments whose tangents the changed points set, the blocks of the curve that hold them, the runs
+// of control points around them. What it keeps is what evaluating and drawing afresh gives, to the
+// bit and to the pixel. A PathPicture tells it its document's changes.
+class PointsPicture {
 public:
     // Evaluates the path; nothing is drawn until a view is set (the view is fitted to the path).
     // Refinement::in_steps (the terminal): a change, a view or opening does at once what the first
@@ -53,20 +53,17 @@ public:
     // no more than a step's are to be measured, as after a local key) and leaves the rest to
     // refine_step(); until then refining() is true and the in-betweens are not drawn.
     // Refinement::at_once does it all at once.
-    // `document` outlives the picture and keeps its address.
+    // `points` outlive the picture and keep their address.
     // `room`: arrays for the evaluation made ahead (make_room), or none.
-    PathPicture(const PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {},
-                EvaluatedPath room = {});
+    PointsPicture(const ControlPoints& points, const PathSettings& settings, PictureRefinement refinement = {},
+                  EvaluatedPath room = {});
 
-    // Turns the points after a change back into those before it: the ghost's path, drawn again
-    // when the view changes (SPEC §7.2.1: the ghost stays through Z and K).
-    using PointsBack = std::function<void(ControlPoints&)>;
-
-    // The document's points changed as `change` says (called once it has changed); the ghost goes.
-    void refresh(const PathChange& change);
-    // The same, and the curve as it was becomes the ghost (SPEC §7.2.1), its path `back` of the
-    // points; the next change replaces it.
+    // The points changed as `change` says (called once they have changed): the curve as it was
+    // becomes the ghost (SPEC §7.2.1), its path `back` of the points (drawn again when the view
+    // changes: the ghost stays through Z and K); the next change replaces it.
     void refresh(const PathChange& change, PointsBack back);
+    // The points changed in ways not told: everything made again, no ghost.
+    void remake_whole();
     // Another view: the curve, the control points and the ghost projected again.
     void set_view(const ViewTransform& view);
     // The region whose control points' marks are boxed; the marks are made again only when it
@@ -101,14 +98,9 @@ public:
     // CurveRaster::work_done of the curve's picture.
     std::size_t curve_work() const { return m_curve.work_done(); }
     const PathSettings& settings() const { return m_settings; }
-    // What the picture shows: the document's revision it was made of, and its own, which every
-    // change of the view, the ghost, the boxed region and every refinement step advance.
-    struct Revision {
-        std::uint64_t document = 0;
-        std::uint64_t picture = 0;
-        bool operator==(const Revision&) const = default;
-    };
-    Revision revision() const { return {m_document_revision, m_revision}; }
+    // Advanced by every change of what the picture shows: of the points, the view, the ghost, the
+    // boxed region, the reference, and by every refinement step.
+    std::uint64_t revision() const { return m_revision; }
     // Only after set_view.
     const ViewTransform& view() const { return *m_view; }
     // The path screen of `content` (whose path is evaluated()) in this view, with the curve and the
@@ -123,10 +115,11 @@ private:
     void draw_ghost();
     void draw_reference();
     void refine_if_quick();
-    const ControlPoints& points() const { return m_document->points(); }
+    const ControlPoints& points() const { return *m_points; }
 
-    const PathDocument* m_document;
-    std::uint64_t m_document_revision = 0;
+    const ControlPoints* m_points;
+    // The points' count the picture was made for (remake_whole's change).
+    std::size_t m_point_count = 0;
     std::uint64_t m_revision = 0;
     PathSettings m_settings;
     PictureRefinement m_refinement;
@@ -146,9 +139,45 @@ private:
     std::optional<Reference> m_reference;
 };
 
-// A waypoint edit made in `document`, or taken back, and `picture` (of the document) refreshed; the
-// ghost is the path on the other side of the edit (SPEC §7.2.1).
-void make_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change);
-void take_back_waypoint_edit(PathDocument& document, PathPicture& picture, const WaypointChange& change);
+// The picture of a path being edited (a PathDocument): a PointsPicture reached only through
+// current(), which first takes the document's changes since the picture last looked (their ghost is
+// the curve before them). Whoever changes the document tells the picture nothing; whatever reads
+// or draws it sees the document as it is: a stale picture cannot be drawn.
+class PathPicture {
+public:
+    // `document` outlives the picture and keeps its address; the picture is its one reader of
+    // changes (PathDocument::take_changes).
+    PathPicture(PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {},
+                EvaluatedPath room = {});
+
+    void set_view(const ViewTransform& view) { current().set_view(view); }
+    void box_region(std::optional<ControlRegion> region) { current().box_region(region); }
+    bool refining() { return current().refining(); }
+    void refine_step() { current().refine_step(); }
+    void refine() { current().refine(); }
+    std::string refining_message() { return current().refining_message(); }
+    std::string refining_words() { return current().refining_words(); }
+    void drop_ghost() { current().drop_ghost(); }
+    bool has_ghost() { return current().has_ghost(); }
+    void pin_reference(std::string label) { current().pin_reference(std::move(label)); }
+    void unpin_reference() { current().unpin_reference(); }
+    bool has_reference() { return current().has_reference(); }
+    bool reference_under_curve() { return current().reference_under_curve(); }
+    const EvaluatedPath& evaluated() { return current().evaluated(); }
+    std::size_t curve_work() { return current().curve_work(); }
+    const PathSettings& settings() const { return m_picture.settings(); }
+    // Advanced by every change of what the picture shows, its document's included.
+    std::uint64_t revision() { return current().revision(); }
+    const ViewTransform& view() { return current().view(); }
+    GraphicsScreen draw(const PathScreenContent& content) { return current().draw(content); }
+
+private:
+    // The picture of the document as it is now.
+    PointsPicture& current();
+
+    PathDocument* m_document;
+    std::uint64_t m_document_revision = 0;
+    PointsPicture m_picture;
+};
 
 } // namespace apcs

@@ -26,8 +26,8 @@ public:
         ViewTransform view; // the path screen's view: fixed while editing
         double step = 1.0;  // world units of one step (waypoint_step)
     };
-    // Edits `document` in place and keeps `picture` (of the document, in setup.view) up to date;
-    // both outlive the editor. Chooses the first control point. Its edits join the document's
+    // Edits `document` in place (its picture, `picture`, in setup.view, shows each edit as it is
+    // next read, the curve before it dotted: SPEC §7.2.1); both outlive the editor. Chooses the first control point. Its edits join the document's
     // history as they are made; Esc takes them back.
     WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup);
 
@@ -66,7 +66,6 @@ private:
     void undo_last();
     void zoom_view();
     void discard_changes();
-    void apply(const WaypointChange& change);
     // The last edit taken back, the ghost the path with it.
     void revert_last();
     // The key frames' points never move: true (and the message says why) for them.
