@@ -151,6 +151,23 @@ PathEditor::PathEditor(Setup setup, StepLog& log)
     fit_view();
 }
 
+void PathEditor::enter(Mode mode)
+{
+    m_mode = std::move(mode);
+    changed();
+}
+
+// A staff key's move not measured yet was never shown: the text before leaves it out as the
+// screen did.
+template <typename Change>
+void PathEditor::saying(Change change)
+{
+    const std::string said = message(MoveText::left_unmeasured);
+    change();
+    if (message(MoveText::left_unmeasured) != said)
+        changed();
+}
+
 // Initial_Graphics fits the view to the path (SPEC §7.2.1: filled); it stays fixed while the staff
 // or the waypoint editor changes the path, so that each key's effect is seen against a still
 // picture, and is fitted again when they are left.
@@ -207,9 +224,11 @@ PathEditor::State PathEditor::leaf() const
 // Only an accepted path is written: the editor is then asking whether to adjust again.
 void PathEditor::show_problem(const std::string& message)
 {
-    m_problem = message;
-    if (!std::holds_alternative<AskAgain>(m_mode))
-        m_mode = AskAgain{ControlRegion::whole(points()), points().front().staff};
+    saying([&] {
+        m_problem = message;
+        if (!std::holds_alternative<AskAgain>(m_mode))
+            enter(AskAgain{ControlRegion::whole(points()), points().front().staff});
+    });
 }
 
 namespace {
@@ -265,11 +284,14 @@ PathEditor::Outcome PathEditor::update(const Command& command)
 // mode and says which follows (path_editor_chart.cpp).
 PathEditor::Outcome PathEditor::take_command(const Command& command)
 {
-    m_notice.clear();
-    m_moved.clear();
-    m_move_unmeasured.reset();
     m_accepted = false;
-    chart().fire(*this, command, [](const PathEditor& editor) { return editor.leaf(); });
+    saying([&] {
+        // What the last key said is said once.
+        m_notice.clear();
+        m_moved.clear();
+        m_move_unmeasured.reset();
+        chart().fire(*this, command, [](const PathEditor& editor) { return editor.leaf(); });
+    });
     return m_accepted ? Outcome::accepted : Outcome::editing;
 }
 
@@ -278,6 +300,7 @@ PathEditor::Outcome PathEditor::take_command(const Command& command)
 void PathEditor::toggle_key_frames()
 {
     m_show_key_frames = !m_show_key_frames;
+    changed();
     if (!std::holds_alternative<Waypoints>(m_mode))
         fit_view();
 }
@@ -285,6 +308,7 @@ void PathEditor::toggle_key_frames()
 void PathEditor::toggle_ghost()
 {
     m_show_ghost = !m_show_ghost;
+    changed();
     m_notice = !m_show_ghost              ? "ghost hidden (O shows it)"
                : m_picture->has_ghost() ? "ghost shown: the curve before the last change, dotted"
                                         : "ghost shown after the next staff key or waypoint edit";
@@ -292,7 +316,11 @@ void PathEditor::toggle_ghost()
 
 void PathEditor::choose_tangent_point(const command::ChoosePoint& choose)
 {
-    m_tangent_point = wrapped_point(m_tangent_point, choose.by, points().size());
+    const std::size_t chosen = wrapped_point(m_tangent_point, choose.by, points().size());
+    // Only T shows the point (its arrows and numbers).
+    if (chosen != m_tangent_point && m_show_tangents)
+        changed();
+    m_tangent_point = chosen;
 }
 
 // C pins the curve as it is, labelled with the staff's values as they are (the region's, else the
@@ -317,7 +345,10 @@ void PathEditor::move_arrow(const command::ArrowMove& move)
     RegionPick& pick = std::get<RegionPick>(m_mode);
     const std::size_t last_index = points().size() - 1;
     const auto target = pick.arrow ? static_cast<long long>(*pick.arrow) + move.points : 0LL;
-    pick.arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
+    const auto arrow = static_cast<std::size_t>(std::clamp<long long>(target, 0, static_cast<long long>(last_index)));
+    if (pick.arrow != arrow)
+        changed();
+    pick.arrow = arrow;
 }
 
 // Enter at the region's last point, the arrow at or after the first (Enter twice on one control
@@ -331,7 +362,7 @@ void PathEditor::pick_last_point()
     m_log.log(last == first ? "local control: control point " + std::to_string(first + 1)
                             : "local control: control points " + std::to_string(first + 1) + " to " +
                                   std::to_string(last + 1));
-    m_mode = start_staff({first, last});
+    enter(start_staff({first, last}));
 }
 
 PathEditor::Staff PathEditor::start_staff(ControlRegion region)
@@ -384,9 +415,10 @@ void PathEditor::end_staff_line(LineEnding ending)
               (kept ? " (kept)" : ""));
     m_picture->drop_ghost(); // the ghost lasts until the next line
     if (staff_line_is_last()) {
-        m_mode = AskAgain{staff.region, staff.staff};
+        enter(AskAgain{staff.region, staff.staff});
         return;
     }
+    changed();
     staff.line = next_staff_line(staff.line);
     staff.line_start_value = staff.staff[staff.line];
 }
@@ -402,6 +434,7 @@ void PathEditor::set_typed_value()
     if (staff.field->clamped())
         m_notice = line + " set to " + format_staff_value(staff.staff[staff.line]) + ": the staff runs from -1 to 1";
     staff.field.reset();
+    changed();
 }
 
 void PathEditor::say_nothing_to_undo() { m_notice = "Nothing to undo: the path is as it was opened"; }
@@ -428,7 +461,7 @@ void PathEditor::undone(const StaffEdit& change)
 {
     m_notice = "Undone: " + std::string(staff_line_name(change.line)) + " back to " +
                format_staff_value(change.staff[change.line]);
-    m_mode = Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt};
+    enter(Staff{change.region, change.staff, change.line, change.line_start_value, std::nullopt});
 }
 
 // A waypoint edit is undone at the choice of control, where the editor was opened.
@@ -442,7 +475,7 @@ void PathEditor::undone(const WaypointChange& change)
     }
     m_tangent_point = std::min(m_tangent_point, points().size() - 1);
     fit_view();
-    m_mode = ControlChoice{};
+    enter(ControlChoice{});
 }
 
 PathEditor::Waypoints PathEditor::open_waypoints()
@@ -467,7 +500,7 @@ void PathEditor::leave_waypoints(WaypointsLeft left)
     }
     m_log.log(m_notice);
     m_tangent_point = std::min(m_tangent_point, points().size() - 1);
-    m_mode = ControlChoice{};
+    enter(ControlChoice{});
 }
 
 std::optional<StaffValues> PathEditor::region_staff() const

@@ -55,9 +55,15 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::screen_rows()
         {State::path_screen, on<command::PinReference>, {}, nullptr, "the curve pinned as A, or A unpinned",
          [](E& e, C) { e.pin_or_unpin_reference(); }},
         {State::path_screen, on<command::ToggleTangents>, {}, nullptr, "the tangents shown or hidden",
-         [](E& e, C) { e.m_show_tangents = !e.m_show_tangents; }},
+         [](E& e, C) {
+             e.m_show_tangents = !e.m_show_tangents;
+             e.changed();
+         }},
         {State::path_screen, on<command::ToggleLawGraph>, {}, nullptr, "the law graph shown or hidden",
-         [](E& e, C) { e.m_show_law = !e.m_show_law; }},
+         [](E& e, C) {
+             e.m_show_law = !e.m_show_law;
+             e.changed();
+         }},
         {State::path_screen, on<command::ChoosePoint>, {}, nullptr, "T's numbers at another control point",
          [](E& e, C c) { e.choose_tangent_point(std::get<command::ChoosePoint>(c)); }},
         {State::path_screen, on<command::Undo>, "nothing to undo",
@@ -78,20 +84,20 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::region_rows()
         {State::control_choice, on<command::ChooseGlobal>, {}, nullptr, "global control: the staff on the whole path",
          [](E& e, C) {
              e.m_log.log("global control");
-             e.m_mode = e.start_staff(ControlRegion::whole(e.points()));
+             e.enter(e.start_staff(ControlRegion::whole(e.points())));
          },
          State::staff},
         {State::control_choice, on<command::ChooseLocal>, {}, nullptr, "the arrow waits at the top-left",
-         [](E& e, C) { e.m_mode = RegionPick{}; }, State::region_first},
+         [](E& e, C) { e.enter(RegionPick{}); }, State::region_first},
         {State::control_choice, on<command::OpenWaypoints>, {}, nullptr, "the waypoint editor opened",
-         [](E& e, C) { e.m_mode = e.open_waypoints(); }, State::waypoints},
+         [](E& e, C) { e.enter(e.open_waypoints()); }, State::waypoints},
 
         {State::region_pick, on<command::ArrowMove>, {}, nullptr, "the arrow moved (its first move: to point 1)",
          [](E& e, C c) { e.move_arrow(std::get<command::ArrowMove>(c)); }},
         {State::region_first, on<command::Back>, {}, nullptr, "one step back",
          [](E& e, C) {
              e.m_problem.clear();
-             e.m_mode = ControlChoice{};
+             e.enter(ControlChoice{});
          },
          State::control_choice},
         {State::region_first, on<command::Accept>, "the arrow not moved yet",
@@ -100,13 +106,13 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::region_rows()
          [](E& e, C) {
              e.m_problem.clear();
              const std::optional<std::size_t> arrow = std::get<RegionPick>(e.m_mode).arrow;
-             e.m_mode = RegionPick{arrow, arrow};
+             e.enter(RegionPick{arrow, arrow});
          },
          State::region_last},
         {State::region_last, on<command::Back>, {}, nullptr, "the first point picked again",
          [](E& e, C) {
              e.m_problem.clear();
-             e.m_mode = RegionPick{std::get<RegionPick>(e.m_mode).arrow, std::nullopt};
+             e.enter(RegionPick{std::get<RegionPick>(e.m_mode).arrow, std::nullopt});
          },
          State::region_first},
         {State::region_last, on<command::Accept>, "the arrow before the first point",
@@ -135,7 +141,10 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::staff_rows()
                                           std::get<command::StaffStep>(c).steps * e.m_options.staff_step);
          }},
         {State::staff, on<command::OpenValueField>, {}, nullptr, "the field opened on the message line",
-         [](E& e, C) { std::get<Staff>(e.m_mode).field.emplace(); }, State::value_field},
+         [](E& e, C) {
+             std::get<Staff>(e.m_mode).field.emplace();
+             e.changed();
+         }, State::value_field},
         {State::staff, on<command::Accept>, "the last line", [](const E& e, C) { return e.staff_line_is_last(); },
          "the line's value logged", [](E& e, C) { e.end_staff_line(LineEnding::accepted); }, State::ask_again},
         {State::staff, on<command::Accept>, {}, nullptr, "the line's value logged, the next line",
@@ -157,7 +166,10 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::staff_rows()
         {State::value_field, on<command::SubmitLine>, {}, nullptr, "said why it is no number, the field emptied",
          [](E& e, C) { std::get<Staff>(e.m_mode).field->submit(); }},
         {State::value_field, on<command::ClearLine>, {}, nullptr, "the field closed, the value as it was",
-         [](E& e, C) { std::get<Staff>(e.m_mode).field.reset(); }, State::staff},
+         [](E& e, C) {
+             std::get<Staff>(e.m_mode).field.reset();
+             e.changed();
+         }, State::staff},
         // The key map sends U there as typed text; the chart keeps undo from under an open field.
         {State::value_field, on<command::Undo>, {}, nullptr, "the field takes text keys only"},
     };
@@ -180,7 +192,10 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::waypoint_and_question_rows
         {State::waypoints, on<command::Zoom>, {}, nullptr, "zoomed about the chosen point",
          [](E& e, C) { e.waypoint_editor().zoom(); }},
         {State::waypoints, on<command::ToggleKeyFrames>, {}, nullptr, "key frames shown or hidden, the view kept",
-         [](E& e, C) { e.m_show_key_frames = !e.m_show_key_frames; }},
+         [](E& e, C) {
+             e.m_show_key_frames = !e.m_show_key_frames;
+             e.changed();
+         }},
         {State::waypoints, on<command::Accept>, {}, nullptr, "the changes kept, said and logged",
          [](E& e, C) { e.leave_waypoints(WaypointsLeft::changes_kept); }, State::control_choice},
         {State::waypoints, on<command::Back>, {}, nullptr, "the changes undone, said and logged",
@@ -189,7 +204,7 @@ std::vector<PathEditor::EditorChart::Row> PathEditor::waypoint_and_question_rows
         {State::ask_again, on<command::Yes>, {}, nullptr, "the ghost dropped",
          [](E& e, C) {
              e.m_picture->drop_ghost();
-             e.m_mode = ControlChoice{};
+             e.enter(ControlChoice{});
          },
          State::control_choice},
         {State::ask_again, on<command::No>, {}, nullptr, "the path accepted: the session takes it",

@@ -125,23 +125,6 @@ std::string PathEditor::staff_message(const Staff& staff) const
     return message;
 }
 
-PathEditor::Look PathEditor::look() const
-{
-    const PathScreenContent content = screen_content(MoveText::left_unmeasured);
-    return Look{m_document->revision(),
-                m_picture->revision(),
-                leaf(),
-                content.message,
-                region_staff(),
-                content.active_line,
-                content.arrow_at,
-                law_point(),
-                m_tangent_point,
-                m_zoom_level,
-                {m_show_key_frames, m_show_ghost, m_show_tangents, m_show_law},
-                m_move_unmeasured};
-}
-
 // The span whose law G shows: the region's, the arrow's while picking, the chosen waypoint's.
 std::size_t PathEditor::law_point() const
 {

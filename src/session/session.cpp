@@ -87,23 +87,18 @@ bool Session::keeps_step(const KeyEvent& event) const
 
 void Session::handle(const KeyEvent& event)
 {
-    const std::optional<ShapingLook> before = shaping_look();
-    const std::uint64_t counted = counted_changes();
+    const ChangeCounts counted = counted_changes();
     const std::string notice = m_notice;
     take_key(event);
-    if (before ? shaping_look() != before : counted_changes() != counted || m_notice != notice)
+    if (counted_changes() != counted || m_notice != notice)
         ++m_revision;
 }
 
-std::uint64_t Session::counted_changes() const { return m_console.revision() + m_overlays.revision() + m_step_changes; }
-
-std::optional<Session::ShapingLook> Session::shaping_look() const
+Session::ChangeCounts Session::counted_changes() const
 {
     const auto* shaping = std::get_if<step::Shaping>(&m_step);
-    if (shaping == nullptr)
-        return std::nullopt;
-    const bool overlaid = m_overlays.help() != nullptr || m_overlays.quit_question() != nullptr;
-    return ShapingLook{shaping->editor.look(), m_notice, overlaid};
+    return {m_console.revision(), m_overlays.revision(), m_step_changes,
+            shaping != nullptr ? shaping->editor.revision() : 0};
 }
 
 bool Session::showing_help() const { return m_overlays.help() != nullptr; }

@@ -126,25 +126,12 @@ public:
     // The region boxed: the one on the staff or at "Adjust the path again ?", the first point
     // picked while the last is picked; none otherwise.
     std::optional<ControlRegion> region() const { return picked_region(); }
-    // What the path screen shows, as far as a command can change it: two equal looks are the same
-    // screen.
-    struct Look {
-        std::uint64_t document = 0;
-        std::uint64_t picture = 0;
-        State leaf = State::control_choice;
-        std::string message;
-        std::optional<StaffValues> staff;
-        std::optional<StaffLine> line;
-        std::optional<std::size_t> arrow;
-        std::size_t law_point = 0;
-        std::size_t tangent_point = 0;
-        int zoom_level = 0;
-        std::array<bool, 4> shown{}; // K, O, T, G
-        // A staff key's move, not measured for a look (the document's revision tells the key).
-        std::optional<std::size_t> move_unmeasured;
-        bool operator==(const Look&) const = default;
-    };
-    Look look() const;
+    // Advanced by every change of what the path screen shows: the editor's own, which the rows'
+    // actions report (the mode, what is shown over the path, the message line), and its picture's
+    // (the document's edits, the view, the ghost, the region boxed).
+    std::uint64_t revision() const { return m_changes + m_picture->revision(); }
+    // The message line as the path screen shows it (an exercise's goal aside).
+    std::string message_line() const { return message(); }
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);
 
@@ -182,6 +169,15 @@ private:
     enum class WaypointsLeft { changes_kept, changes_undone };
 
     Outcome take_command(const Command& command);
+    // A change of what the screen shows, reported by the action that made it.
+    void changed() { ++m_changes; }
+    // A mode entered: the screen shows another step (or the staff another region).
+    void enter(Mode mode);
+    // `change` done, and a change counted when the message line says another thing. Its words come
+    // from a dozen places in order (a problem, the field, what the last key did, the mode's
+    // question, T's numbers, the move a staff key made): only its text tells.
+    template <typename Change>
+    void saying(Change change);
     // The rows' actions and guards (path_editor_chart.cpp makes them the chart's rows).
     static EditorChart make_chart();
     static std::vector<EditorChart::Row> screen_rows();
@@ -266,6 +262,8 @@ private:
     // key's 4096 on 10^6 points) nor the search (about 8 ms) holds up the first picture. Every
     // command drops it, so the points are still those the key left.
     mutable std::optional<std::size_t> m_move_unmeasured;
+    // The editor's own changes (revision()).
+    std::uint64_t m_changes = 0;
 };
 
 } // namespace apcs

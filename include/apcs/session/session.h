@@ -134,17 +134,17 @@ public:
     void say_goal(std::string feedback, std::string briefly = {});
 
 private:
-    // What the path screen shows, as far as a key can change it: compared before and after a key.
-    struct ShapingLook {
-        PathEditor::Look editor;
-        std::string notice;
-        bool overlaid = false;
-        bool operator==(const ShapingLook&) const = default;
+    // What the parts of the screen count of their own changes: the console's, the overlays', the
+    // steps begun and the commands the player took, and the path editor's (its revision). A key
+    // that advances none and says nothing new leaves the screen as it was.
+    struct ChangeCounts {
+        std::uint64_t console = 0;
+        std::uint64_t overlays = 0;
+        std::uint64_t steps = 0;
+        std::uint64_t editor = 0;
+        bool operator==(const ChangeCounts&) const = default;
     };
-    std::optional<ShapingLook> shaping_look() const;
-    // What the text steps and the animation count of their own changes: the console's, the
-    // overlays', the steps begun and the commands the player took.
-    std::uint64_t counted_changes() const;
+    ChangeCounts counted_changes() const;
     void take_key(const KeyEvent& event);
     // A command the path screen or the animation takes by its own chart (the session chart's rows).
     void update_step(const Command& command);
