@@ -25,6 +25,7 @@ ReplayDriver::ReplayDriver(Session& session, const KeyScript& script, std::strin
             m_run_to = m_script.preamble_end;
         settle();
     }
+    m_laid = overlay_now();
 }
 
 ReplayState ReplayDriver::state() const
@@ -88,28 +89,31 @@ bool ReplayDriver::busy() const
 
 int ReplayDriver::delay_ms() const { return m_session->animating() ? m_session->delay_ms() : m_pace.milliseconds; }
 
-template <typename Change>
-void ReplayDriver::watching(Change change)
+void ReplayDriver::lay_overlay()
 {
-    const Shown before = shown();
-    change();
-    if (shown() != before)
-        ++m_revision;
+    Overlay now = overlay_now();
+    if (now == m_laid)
+        return;
+    m_laid = std::move(now);
+    ++m_revision;
 }
 
 void ReplayDriver::handle(const KeyEvent& key)
 {
-    watching([&] { take(key); });
+    take(key);
+    lay_overlay();
 }
 
 void ReplayDriver::tick()
 {
-    watching([&] { take_tick(); });
+    take_tick();
+    lay_overlay();
 }
 
 void ReplayDriver::work()
 {
-    watching([&] { take_work(); });
+    take_work();
+    lay_overlay();
 }
 
 ReplayGuardFacts ReplayDriver::guard_facts() const
@@ -133,7 +137,7 @@ void ReplayDriver::act(ReplayAction action, const KeyEvent& key)
     switch (action) {
     case ReplayAction::wait_for_unasked: m_typed_meanwhile.push_back(key); return;
     case ReplayAction::play_step: play_scripted(); return;
-    case ReplayAction::name_keys: return; // shown(): the badge names them until the next key
+    case ReplayAction::name_keys: return; // overlay_now(): the badge names them until the next key
     case ReplayAction::to_session: to_session(key); return;
     case ReplayAction::to_keyboard:
         stop();
@@ -235,20 +239,19 @@ ProgramScreen ReplayDriver::screen() const
     // would push the title off, the badge cover its first key line. Both come back as it closes.
     if (m_session->showing_help())
         return screen;
-    Shown over = shown();
-    screen.caption = std::move(over.caption);
-    screen.badge = std::move(over.badge);
-    screen.badge_place = std::move(over.place);
+    screen.caption = m_laid.caption;
+    screen.badge = m_laid.badge;
+    screen.badge_place = m_laid.place;
     return screen;
 }
 
-ReplayDriver::Shown ReplayDriver::shown() const
+ReplayDriver::Overlay ReplayDriver::overlay_now() const
 {
     if (m_mode == Mode::asking_to_leave)
         return {std::string(leave_exercise_question), {}, {}};
     if (m_mode == Mode::left)
         return {};
-    Shown over;
+    Overlay over;
     const std::optional<std::size_t> caption = caption_on_row();
     const bool typed_since_hand_over = m_mode == Mode::keyboard && m_handled.size() > m_handed_over_at;
     if (caption && !typed_since_hand_over)
@@ -289,18 +292,19 @@ void ReplayDriver::finish()
     if (m_audience == ReplayAudience::terminal) {
         // The program ends (the session did, or a signal or a lost terminal ended it): a goal not
         // judged yet is judged as it stands, as the headless recheck of the recording judges it.
-        if (!m_open)
-            return;
-        const bool waiting = waiting_goal().has_value();
-        follow_open_goal();
-        judge_open_goal(open_goal_as_it_stands());
-        if (waiting)
-            m_mode = Mode::left;
-        return;
+        if (m_open) {
+            const bool waiting = waiting_goal().has_value();
+            follow_open_goal();
+            judge_open_goal(open_goal_as_it_stands());
+            if (waiting)
+                m_mode = Mode::left;
+        }
+    } else {
+        settle();
+        settle_headless(m_script.events.size());
+        end_caption();
     }
-    settle();
-    settle_headless(m_script.events.size());
-    end_caption();
+    lay_overlay();
 }
 
 void ReplayDriver::play_scripted()

@@ -44,7 +44,7 @@ void ReplayDriver::rewind_to(std::size_t events, std::string label, std::size_t 
 {
     if (!m_hooks.session_as_started)
         return;
-    // Shown before the catch-up, whose recording holds the captions shown.
+    // Told before the catch-up, whose recording holds the captions shown.
     m_captions_shown = captions_shown;
     std::unique_ptr<Session> session = m_hooks.session_as_started();
     m_recording = KeyRecording();

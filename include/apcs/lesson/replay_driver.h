@@ -139,18 +139,19 @@ private:
         end_told,
         left, // the replay is over: the keyboard is the session's
     };
-    // What the replay lays over the session's screen.
-    struct Shown {
+    // The words the replay lays over the session's screen.
+    struct Overlay {
         std::string caption;
         std::string badge;
         std::string place; // "caption 2 of 7"
-        bool operator==(const Shown&) const = default;
+        bool operator==(const Overlay&) const = default;
     };
-    Shown shown() const;
+    // The words as the replay stands now.
+    Overlay overlay_now() const;
     std::string place_in_badge(std::optional<std::size_t> caption) const;
-    // `change` done, the revision advanced if what the replay shows changed.
-    template <typename Change>
-    void watching(Change change);
+    // The words as the replay stands laid, the revision advanced if they differ from those laid
+    // before: the screen shows only words laid, so none change unseen by the terminal.
+    void lay_overlay();
     void take(const KeyEvent& key);
     void act(ReplayAction action, const KeyEvent& key);
     void take_tick();
@@ -295,7 +296,9 @@ private:
     std::uint64_t m_work_done = 0;
     // Keys typed while the replay played unasked, taken once it has.
     std::deque<KeyEvent> m_typed_meanwhile;
+    // The replay's own part of the screen revision: its words laid, and the sessions replaced.
     std::uint64_t m_revision = 0;
+    Overlay m_laid;
 };
 
 } // namespace apcs
