@@ -9,7 +9,6 @@
 #include "apcs/editor/path_document.h"
 #include "apcs/screens/path_screen.h"
 
-#include <functional>
 #include <optional>
 #include <cstdint>
 #include <string>
