@@ -33,6 +33,8 @@ std::optional<ChangesTaken> PathDocument::take_changes(std::uint64_t revision)
     // Every change is kept until taken, one revision each: older ones were another reader's.
     const auto first = std::find_if(m_untaken.begin(), m_untaken.end(),
                                     [revision](const Untaken& untaken) { return untaken.revision == revision + 1; });
+    if (first == m_untaken.end())
+        return std::nullopt;
     std::optional<ChangesTaken> taken;
     for (auto next = first; next != m_untaken.end(); ++next) {
         if (!taken) {

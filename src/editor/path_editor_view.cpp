@@ -167,7 +167,8 @@ PathScreenContent PathEditor::screen_content(MoveText move) const
         content.record_strokes = false;
         content.region = ControlRegion{editor.chosen(), editor.chosen()};
         content.arrow_at = editor.chosen();
-        content.message = editor.message();
+        // What O or C said, else the waypoint editor's own line.
+        content.message = message(move);
         return content;
     }
     PathScreenContent content = path_screen_content(points(), evaluated());

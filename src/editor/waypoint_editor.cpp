@@ -69,8 +69,12 @@ void WaypointEditor::discard()
 
 void WaypointEditor::discard_changes()
 {
-    while (change_count() > 0)
+    // Each take-back taken by the picture before the next: far-apart edits taken together would
+    // cover the span between them (10^6 points made again, not a few).
+    while (change_count() > 0) {
         revert_last();
+        m_picture->catch_up();
+    }
     // Nothing was kept: no curve before a change is left to show.
     m_picture->drop_ghost();
 }

@@ -26,8 +26,8 @@ StaffEdit staff_key(ControlRegion region, const StaffValues& shown) { return {re
 
 } // namespace
 
-TEST_CASE("a path document: every change of its points advances its revision and joins its history, a change of "
-          "nothing does neither",
+TEST_CASE("a path document: every change of its points advances its revision, an edit joins its history and U "
+          "takes it out, a change of nothing does neither",
           "[editor][document]")
 {
     PathDocument document(three_points());
@@ -141,9 +141,9 @@ TEST_CASE("two changes as one: the range covering both, from the points before t
 namespace {
 
 // The picture's segments are those of a picture made afresh of the document, to the bit.
-void require_picture_of(PathPicture& picture, PathDocument& document, const PathSettings& settings)
+void require_picture_of(PathPicture& picture, const PathDocument& document, const PathSettings& settings)
 {
-    PathPicture afresh(document, settings);
+    PointsPicture afresh(document.points(), settings);
     const auto& kept = picture.evaluated().curve.segments;
     const auto& made = afresh.evaluated().curve.segments;
     REQUIRE(kept.size() == made.size());

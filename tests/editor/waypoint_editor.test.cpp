@@ -244,3 +244,30 @@ TEST_CASE("an insert costs the curve's picture the same work after 4000 inserts 
     REQUIRE(late <= 2 * early);
     REQUIRE(late <= 10 * 2 * (2 * CurveRaster::fewest_segments_per_block + 64));
 }
+
+TEST_CASE("Esc takes far-apart edits back one at a time: each stays a few segments, none left to refine",
+          "[session][waypoints]")
+{
+    // A change of more segments than a step's waits for the steps (exact spacing's arc lengths):
+    // the two take-backs taken together would cover the 2,000 points between them.
+    ControlPoints points;
+    for (int k = 0; k < 2000; ++k)
+        points.push_back({{std::sin(k * 0.9), k * 0.5, std::cos(k * 0.7)}, {}});
+    PathDocument document(points);
+    const PathSettings settings{{1, 1}, 8, 4, Spacing::exact};
+    PathPicture picture(document, settings, PictureRefinement{.when = Refinement::in_steps, .segments_a_step = 64});
+    const ViewTransform view = ViewTransform::fit({30, 40}, std::vector<Vec3>{{-1, 0, -1}, {1, 1000, 1}}, {0, 0, 720, 259});
+    picture.set_view(view);
+    picture.refine();
+    WaypointEditor editor(document, picture, {view, 0.1});
+    apply(editor, {cmd::ChoosePoint{+1}, cmd::MovePoint{1, 0, 0}, cmd::ChoosePoint{-3}, cmd::MovePoint{1, 0, 0}});
+    REQUIRE(editor.chosen() == 1998);
+    REQUIRE(editor.change_count() == 2);
+    REQUIRE_FALSE(picture.refining());
+    editor.discard();
+    REQUIRE(editor.change_count() == 0);
+    // Back where they were, as a move and its reverse in floating point leave them.
+    REQUIRE(length(editor.points()[1].position - points[1].position) < 1e-12);
+    REQUIRE(length(editor.points()[1998].position - points[1998].position) < 1e-12);
+    REQUIRE_FALSE(picture.refining());
+}

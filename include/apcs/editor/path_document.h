@@ -69,8 +69,9 @@ public:
     const std::vector<PathEdit>& edits() const { return m_edits; }
 
     // The changes after `revision`, taken together and out of the document, for its one picture;
-    // none when there are none, or when they are no longer all kept (another reader took them):
-    // then the picture is made again whole. The document keeps only what is not taken yet.
+    // none when there are none, or when they are no longer all kept (another reader took them:
+    // this one is then made again whole, and the changes kept stay for the reader they are for).
+    // The document keeps only what is not taken yet.
     std::optional<ChangesTaken> take_changes(std::uint64_t revision);
 
 private:

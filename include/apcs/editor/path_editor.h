@@ -130,7 +130,8 @@ public:
     // actions report (the mode, what is shown over the path, the message line), and its picture's
     // (the document's edits, the view, the ghost, the region boxed).
     std::uint64_t revision() const { return m_changes + m_picture->revision(); }
-    // The message line as the path screen shows it (an exercise's goal aside).
+    // What the editor says on the message line; view() may show over it a goal's feedback, or
+    // while the picture is refined what is left to do.
     std::string message_line() const { return message(); }
     // The accepted path could not be written: say why and ask again.
     void show_problem(const std::string& message);

@@ -148,6 +148,15 @@ public:
     // changes (PathDocument::take_changes).
     PathPicture(PathDocument& document, const PathSettings& settings, PictureRefinement refinement = {},
                 EvaluatedPath room = {});
+    // A copy would be a second reader of the document's changes; a move hands the one reading on.
+    PathPicture(const PathPicture&) = delete;
+    PathPicture& operator=(const PathPicture&) = delete;
+    PathPicture(PathPicture&&) = default;
+    PathPicture& operator=(PathPicture&&) = default;
+
+    // The document's changes taken now: a series of changes far apart, each taken as it is made,
+    // stays a few segments each, where taken together they cover the span between them.
+    void catch_up() { current(); }
 
     void set_view(const ViewTransform& view) { current().set_view(view); }
     void box_region(std::optional<ControlRegion> region) { current().box_region(region); }

@@ -27,8 +27,9 @@ public:
         double step = 1.0;  // world units of one step (waypoint_step)
     };
     // Edits `document` in place (its picture, `picture`, in setup.view, shows each edit as it is
-    // next read, the curve before it dotted: SPEC §7.2.1); both outlive the editor. Chooses the first control point. Its edits join the document's
-    // history as they are made; Esc takes them back.
+    // next read, the curve before it dotted: SPEC §7.2.1); both outlive the editor. Chooses the
+    // first control point. Its edits join the document's history as they are made; Esc takes them
+    // back.
     WaypointEditor(PathDocument& document, PathPicture& picture, Setup setup);
 
     // The keys of the editor, each a row of the path editor's chart (path_editor_chart.cpp); Enter
