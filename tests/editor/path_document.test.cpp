@@ -274,3 +274,28 @@ TEST_CASE("a path picture made with arrays made ahead evaluates into them, to th
             test::require_same_path(picture.evaluated(), without.evaluated());
         }
 }
+
+TEST_CASE("a second reader asking from too far back is made again whole, and leaves the first reader its changes",
+          "[editor][document]")
+{
+    PathDocument document(three_points());
+    const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
+    PathPicture first(document, settings);
+    PathPicture second(document, settings);
+    const ViewTransform view = ViewTransform::fit({30, 40}, std::vector<Vec3>{{-5, -5, -5}, {5, 5, 5}}, {0, 0, 720, 348});
+    first.set_view(view);
+    second.set_view(view);
+    WaypointChange move;
+    move.kind = WaypointChange::Kind::move;
+    move.index = 1;
+    move.offset = {0, 1, 0};
+    document.apply(move);
+    first.catch_up(); // the first takes change 1
+    document.apply(move);
+    // The second asks from revision 0: change 1 is gone, so it is made again whole, without a ghost.
+    require_picture_of(second, document, settings);
+    REQUIRE_FALSE(second.has_ghost());
+    // Change 2 stayed for the first, whose ghost is the curve before it.
+    require_picture_of(first, document, settings);
+    REQUIRE(first.has_ghost());
+}
