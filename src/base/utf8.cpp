@@ -40,6 +40,24 @@ int text_columns(std::string_view utf8)
     return columns;
 }
 
+std::string fitted_to_columns(std::string_view utf8, int columns)
+{
+    if (text_columns(utf8) <= columns)
+        return std::string(utf8);
+    constexpr std::string_view cut_mark = "...";
+    const int room = columns - static_cast<int>(cut_mark.size());
+    std::string fitted;
+    int taken = 0;
+    for (const char32_t character : decode_utf8(utf8)) {
+        taken += std::max(cell_width(character), 0);
+        if (taken > room)
+            break;
+        append_utf8(fitted, character);
+    }
+    return room < 0 ? std::string(cut_mark.substr(0, static_cast<std::size_t>(std::max(columns, 0))))
+                    : fitted + std::string(cut_mark);
+}
+
 int cell_width(char32_t code_point)
 {
     if (code_point >= 0x20 && code_point < 0x7F)

@@ -37,7 +37,9 @@ CellGrid scrolled_up(const CellGrid& grid)
 // row (put_text clips what is wider; a script's captions are never wider: max_caption_columns).
 std::string caption_bar(std::string_view text, int columns)
 {
-    std::string bar = " " + std::string(text);
+    // A caption fits 79 columns (the script's rule); "(skipped) " before one may push its end off
+    // the row: it ends in "..." then, so the row says it is cut.
+    std::string bar = " " + fitted_to_columns(text, columns - 1);
     // Padded by the columns the text takes, not its bytes: "สวัสดี" is 18 bytes in 4 columns.
     const int taken = text_columns(bar);
     if (taken < columns)

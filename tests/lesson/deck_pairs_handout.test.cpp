@@ -34,16 +34,26 @@ std::vector<std::string> rows_of(const std::string& text)
     return rows;
 }
 
+// A caption row's text without the bar's padding and the "..." that ends a caption cut.
+std::string uncut(std::string row)
+{
+    while (row.ends_with(' '))
+        row.pop_back();
+    if (row.ends_with("..."))
+        row.resize(row.size() - 3);
+    return row;
+}
+
 // The projector's row and the handout's are the same but for the verdict's words at their start:
-// the rest of the handout's row (cut at the screen's edge four columns sooner) begins the
-// projector's.
+// the rest of the handout's row (cut four columns sooner, where the caption does not fit the row)
+// begins the projector's.
 bool same_but_verdict(const std::string& shown, const std::string& page, const std::string& skipped,
                       const std::string& not_reached)
 {
     if (!shown.starts_with(skipped) || !page.starts_with(not_reached))
         return false;
-    const std::string shown_rest = shown.substr(skipped.size());
-    const std::string page_rest = page.substr(not_reached.size());
+    const std::string shown_rest = uncut(shown.substr(skipped.size()));
+    const std::string page_rest = uncut(page.substr(not_reached.size()));
     return shown_rest.starts_with(page_rest);
 }
 

@@ -102,6 +102,19 @@ TEST_CASE("on the text console a caption takes the bottom row, the console scrol
     REQUIRE(captioned.row_text(23).starts_with(" Step 1 "));
 }
 
+TEST_CASE("a caption longer than the row, as \"(skipped) \" makes the longest one, ends in \"...\" at the row's edge",
+          "[session][captions]")
+{
+    ProgramScreen console;
+    console.text = CellGrid(80, 24);
+    // 79 columns, the most a script allows, and the verdict's 10 before it: 89.
+    const std::string caption = "(skipped) " + std::string(71, 'a') + " the end";
+    // The bar's space, then 76 columns of the caption and "...": the row's 80.
+    REQUIRE(with_caption(console, caption).text.row_text(23) == " (skipped) " + std::string(66, 'a') + "...");
+    // A caption that fits is whole.
+    REQUIRE(with_caption(console, std::string(79, 'b')).text.row_text(23) == " " + std::string(79, 'b'));
+}
+
 TEST_CASE("a Thai caption keeps its combining marks on the caption row, in graphics mode and on the text console",
           "[session][captions]")
 {

@@ -131,3 +131,15 @@ TEST_CASE("a character is appended within a byte limit whole or not at all", "[r
     REQUIRE_FALSE(append_utf8_within(text, U'b', 200));
     REQUIRE(text.size() == 200);
 }
+
+TEST_CASE("text fitted to a number of columns is whole, or its first characters and \"...\" in them",
+          "[raster][cells]")
+{
+    REQUIRE(fitted_to_columns("abc", 3) == "abc");
+    REQUIRE(fitted_to_columns("abcdef", 5) == "ab...");
+    // 漢字漢字 takes 8 columns: in 6, 3 are left before "...", where the second 漢 (columns 3-4)
+    // does not fit whole.
+    REQUIRE(fitted_to_columns("\u6F22\u5B57\u6F22\u5B57", 6) == "\u6F22...");
+    REQUIRE(text_columns(fitted_to_columns("\u6F22\u5B57\u6F22\u5B57", 7)) == 7); // 漢字...
+    REQUIRE(fitted_to_columns("abcdef", 2) == "..");
+}

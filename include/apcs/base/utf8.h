@@ -24,6 +24,10 @@ int cell_width(char32_t code_point);
 // How many terminal columns `utf8` takes: its characters' cell_width, control characters none.
 int text_columns(std::string_view utf8);
 
+// `utf8` as it fits `columns` terminal columns: whole when it does, else its first characters that
+// leave room for "..." after them (a wide character that would straddle the edge left out whole).
+std::string fitted_to_columns(std::string_view utf8, int columns);
+
 // The first character of `utf8` that a terminal would obey rather than show: a C0 control but tab,
 // DEL, or a C1 control (U+0080-U+009F, or a stray byte 0x80-0x9F), or a bidi control that would
 // reorder what is shown around it (U+202A-U+202E, U+2066-U+2069, U+200E, U+200F, U+061C), named
