@@ -162,12 +162,18 @@ def changed_screen(session, before, most_seconds=10):
         time.sleep(0.05)
 
 
+def uncut(row):
+    """A caption row's text without the "..." that ends a caption cut at the row's edge."""
+    row = row.rstrip()
+    return row[:-3] if row.endswith("...") else row
+
+
 def shown_as(caption, row):
     """Whether the caption row `row` shows `caption`: as it is, or as a goal skipped by PgDn marks
-    the caption that closes it ("(skipped) ...", cut at the screen's edge)."""
+    the caption that closes it ("(skipped) ...", ending in "..." where the row cuts it)."""
     if row == caption:
         return True
-    return row.startswith(SKIPPED) and len(row) > len(SKIPPED) and caption.startswith(row[len(SKIPPED):])
+    return row.startswith(SKIPPED) and len(row) > len(SKIPPED) and caption.startswith(uncut(row[len(SKIPPED):]))
 
 
 def caption_row(screen):
@@ -279,9 +285,10 @@ def below_badge(screen):
 
 def same_but_verdict(shown, page, skipped, not_reached):
     """The projector's row says `skipped` where the handout's says `not_reached`, the rest the same
-    (the handout's row, cut at the screen's edge sooner, begins the projector's)."""
+    (the handout's row, cut four columns sooner where the caption does not fit, begins the
+    projector's)."""
     return shown.startswith(skipped) and page.startswith(not_reached) and \
-        shown[len(skipped):].startswith(page[len(not_reached):])
+        uncut(shown[len(skipped):]).startswith(uncut(page[len(not_reached):]))
 
 
 def pairs(screen, page):
