@@ -17,6 +17,30 @@ ControlPoints three_points()
     return {{{0, 0, 0}, {0.5, 0, 0, 0}}, {{0, 3, 4}, {0.5, 0, 0, 0}}, {{0, 0, 10}, {0.5, 0, 0, 0}}};
 }
 
+WaypointChange moved(std::size_t index, Vec3 offset)
+{
+    WaypointChange move;
+    move.kind = WaypointChange::Kind::move;
+    move.index = index;
+    move.offset = offset;
+    return move;
+}
+
+WaypointChange inserted(std::size_t index, Vec3 position)
+{
+    WaypointChange insert;
+    insert.kind = WaypointChange::Kind::insert;
+    insert.index = index;
+    insert.point = {position, {}};
+    return insert;
+}
+
+// The box from (-5, -5, -5) to (5, 5, 5) filling the raster, seen from theta 30, phi 40.
+ViewTransform box_view()
+{
+    return ViewTransform::fit({30, 40}, std::vector<Vec3>{{-5, -5, -5}, {5, 5, 5}}, {0, 0, 720, 348});
+}
+
 } // namespace
 
 namespace {
@@ -89,19 +113,13 @@ TEST_CASE("a path document's waypoint edits revert exactly, origins with them, a
           "[editor][document]")
 {
     PathDocument document(three_points());
-    WaypointChange insert;
-    insert.kind = WaypointChange::Kind::insert;
-    insert.index = 1;
-    insert.point = {{0, 1, 1}, {}};
+    const WaypointChange insert = inserted(1, {0, 1, 1});
     const PathChange inserted = document.apply(insert);
     REQUIRE(inserted.inserted == 1);
     REQUIRE(document.points().size() == 4);
     REQUIRE(document.origins() == std::vector<std::size_t>{0, new_point, 1, 2});
 
-    WaypointChange move;
-    move.kind = WaypointChange::Kind::move;
-    move.index = 2;
-    move.offset = {0, 0, 1};
+    const WaypointChange move = moved(2, {0, 0, 1});
     document.apply(move);
     REQUIRE(document.points()[2].position == Vec3{0, 3, 5});
     REQUIRE(document.edit_count() == 2);
@@ -161,19 +179,12 @@ TEST_CASE("a path picture pulls its document's changes: told nothing, it is the 
     PathDocument document(three_points());
     const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
     PathPicture picture(document, settings);
-    const std::vector<Vec3> scene{{-5, -5, -5}, {5, 5, 5}};
-    const ViewTransform view = ViewTransform::fit({30, 40}, scene, {0, 0, 720, 348});
+    const ViewTransform view = box_view();
     picture.set_view(view);
     const std::uint64_t revision = picture.revision();
 
-    WaypointChange insert;
-    insert.kind = WaypointChange::Kind::insert;
-    insert.index = 1;
-    insert.point = {{0, 1, 2}, {}};
-    WaypointChange move;
-    move.kind = WaypointChange::Kind::move;
-    move.index = 3;
-    move.offset = {0, 2, 0};
+    const WaypointChange insert = inserted(1, {0, 1, 2});
+    const WaypointChange move = moved(3, {0, 2, 0});
     document.apply(insert);
     document.apply(move);
     // Read after both: one catch-up.
@@ -217,14 +228,10 @@ TEST_CASE("a picture nobody sees evaluates the path as one that is seen, and dra
     const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
     PathPicture seen(seen_document, settings);
     PathPicture unseen(unseen_document, settings, PictureRefinement{.seen = false});
-    const std::vector<Vec3> scene{{-5, -5, -5}, {5, 5, 5}};
-    const ViewTransform view = ViewTransform::fit({30, 40}, scene, {0, 0, 720, 348});
+    const ViewTransform view = box_view();
     seen.set_view(view);
     unseen.set_view(view);
-    WaypointChange move;
-    move.kind = WaypointChange::Kind::move;
-    move.index = 1;
-    move.offset = {0, 2, 0};
+    const WaypointChange move = moved(1, {0, 2, 0});
     seen_document.apply(move);
     unseen_document.apply(move);
     unseen.pin_reference("A");
@@ -282,13 +289,10 @@ TEST_CASE("a second reader asking from too far back is made again whole, and lea
     const PathSettings settings{{1, 1}, 8, 4, Spacing::nearest};
     PathPicture first(document, settings);
     PathPicture second(document, settings);
-    const ViewTransform view = ViewTransform::fit({30, 40}, std::vector<Vec3>{{-5, -5, -5}, {5, 5, 5}}, {0, 0, 720, 348});
+    const ViewTransform view = box_view();
     first.set_view(view);
     second.set_view(view);
-    WaypointChange move;
-    move.kind = WaypointChange::Kind::move;
-    move.index = 1;
-    move.offset = {0, 1, 0};
+    const WaypointChange move = moved(1, {0, 1, 0});
     document.apply(move);
     first.catch_up(); // the first takes change 1
     document.apply(move);
